@@ -1,0 +1,87 @@
+//! Accuracy levels: the user's trade between speed and accuracy.
+
+use crate::error::{Error, Result};
+
+/// How accurately restitution coefficients are computed.
+///
+/// Each level carries a documented bound on the relative error of ε_N (where ε_N > 1e-6), checked by
+/// the test suite against an independent high-precision reference.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Accuracy {
+    /// Tabulated master curve, interpolated: relative error ≤ 1e-6 (see [`crate::master`]).
+    Fast,
+    /// Adaptive Dormand–Prince at a moderate tolerance: relative error ≤ 1e-6.
+    #[default]
+    Balanced,
+    /// Adaptive Dormand–Prince at a tight tolerance: relative error ≤ 1e-10.
+    Precise,
+    /// Adaptive Dormand–Prince with this relative tolerance (in `[1e-14, 1e-2]`).
+    Tolerance(f64),
+}
+
+impl Accuracy {
+    /// The three named levels, in cycling order.
+    pub const LEVELS: [Accuracy; 3] = [Accuracy::Fast, Accuracy::Balanced, Accuracy::Precise];
+
+    /// Name used on the command line: `fast`, `balanced`, `precise`, or the tolerance as a number.
+    pub fn name(self) -> &'static str {
+        match self {
+            Accuracy::Fast => "fast",
+            Accuracy::Balanced => "balanced",
+            Accuracy::Precise => "precise",
+            Accuracy::Tolerance(_) => "tolerance",
+        }
+    }
+
+    /// Parses `fast`, `balanced`, `precise` or a relative tolerance such as `1e-8`.
+    pub fn parse(text: &str) -> Result<Accuracy> {
+        match text.trim() {
+            "fast" => Ok(Accuracy::Fast),
+            "balanced" => Ok(Accuracy::Balanced),
+            "precise" => Ok(Accuracy::Precise),
+            other => match other.parse::<f64>() {
+                Ok(t) if t.is_finite() && (1e-14..=1e-2).contains(&t) => Ok(Accuracy::Tolerance(t)),
+                Ok(t) => Err(Error::OutOfRange {
+                    field: "accuracy",
+                    value: t,
+                    expected: "a tolerance must lie in [1e-14, 1e-2]",
+                }),
+                Err(_) => Err(Error::InvalidValue {
+                    field: "accuracy",
+                    expected: "fast, balanced, precise, or a relative tolerance like 1e-8",
+                }),
+            },
+        }
+    }
+
+    /// The next named level (for the explorer's `a` key).
+    pub fn next(self) -> Accuracy {
+        match self {
+            Accuracy::Fast => Accuracy::Balanced,
+            Accuracy::Balanced => Accuracy::Precise,
+            Accuracy::Precise | Accuracy::Tolerance(_) => Accuracy::Fast,
+        }
+    }
+
+    /// The documented (and tested) bound on the relative error of ε_N.
+    pub fn error_bound(self) -> f64 {
+        match self {
+            Accuracy::Fast => 1e-6,
+            Accuracy::Balanced => 1e-6,
+            Accuracy::Precise => 1e-10,
+            Accuracy::Tolerance(t) => t,
+        }
+    }
+
+    /// Relative tolerance handed to the integrator so that the result meets [`Self::error_bound`].
+    pub(crate) fn integrator_rtol(self) -> f64 {
+        match self {
+            // Fast falls back to the integrator only where no table applies.
+            Accuracy::Fast => 1e-8,
+            Accuracy::Balanced => 1e-8,
+            Accuracy::Precise => 1e-12,
+            // Global error is a small multiple of the local tolerance; keep a safety factor of 100.
+            Accuracy::Tolerance(t) => (t * 1e-2).max(1e-14),
+        }
+    }
+}

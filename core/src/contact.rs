@@ -1,0 +1,180 @@
+//! Derived contact constants, computed once per scene.
+
+use crate::error::{Error, Result};
+use crate::math::{powf, sqrt};
+use crate::scene::{AdhesionModulus, ContactEnd, Friction, LayerReading, Scene};
+
+/// Constants of the soft layer model, Eq. (8)–(10).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LayerConstants {
+    /// Total thickness `D` [m].
+    pub thickness: f64,
+    /// Drag constant `√R_eff/(K m_eff) = √R_eff η*/m_eff` [m^(-1/2) s^-1] of Eq. (9).
+    pub drag: f64,
+    /// Critical velocity `g_s = √R_eff/(K m_eff) D^(3/2)` [m/s], Eq. (10).
+    pub critical_velocity: f64,
+    /// Which reading of Eq. (8).
+    pub reading: LayerReading,
+}
+
+/// Constants of the adhesion model, Eq. (12)–(17).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AdhesionConstants {
+    /// Surface energy `γ` [J/m²].
+    pub surface_energy: f64,
+    /// Modulus `E` [Pa] entering Eq. (12) and (15).
+    pub modulus: f64,
+    /// JKR separation energy `W_s` [J], Eq. (12).
+    pub separation_energy: f64,
+    /// Critical rebound velocity `g_s` [m/s], Eq. (15).
+    pub critical_velocity: f64,
+}
+
+/// Everything a collision needs, derived once from a [`Scene`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Contact {
+    /// Mass of grain 1 [kg].
+    pub mass_1: f64,
+    /// Mass of grain 2 [kg].
+    pub mass_2: f64,
+    /// Effective radius `R_eff = R₁R₂/(R₁+R₂)` [m].
+    pub r_eff: f64,
+    /// Effective mass `m_eff = m₁m₂/(m₁+m₂)` [kg].
+    pub m_eff: f64,
+    /// Hertz constant `ρ_H = 2Y√R_eff/(3(1−ν²))` [N m^(-3/2)] of Eq. (4).
+    pub rho_h: f64,
+    /// `α = ρ_H/m_eff` [m^(-1/2) s^-2].
+    pub alpha: f64,
+    /// Dissipative constant `A` [s] of Eq. (4).
+    pub damping_time: f64,
+    /// Contact-end rule.
+    pub contact_end: ContactEnd,
+    /// Layer constants, if the scene has a layer.
+    pub layer: Option<LayerConstants>,
+    /// Adhesion constants, if the scene has adhesion.
+    pub adhesion: Option<AdhesionConstants>,
+    /// Friction, if the scene has it.
+    pub friction: Option<Friction>,
+}
+
+fn finite_positive(quantity: &'static str, fields: &'static str, v: f64) -> Result<f64> {
+    if v.is_finite() && v > 0.0 {
+        Ok(v)
+    } else {
+        Err(Error::DerivedOutOfRange { quantity, fields })
+    }
+}
+
+impl Contact {
+    /// Derives the contact constants. Fails if a derived quantity over- or underflows.
+    pub fn new(scene: &Scene) -> Result<Contact> {
+        let g = &scene.grains;
+        let (r1, r2) = (g.radius_1, g.radius_2);
+        let volume = |r: f64| 4.0 / 3.0 * core::f64::consts::PI * r * r * r;
+        let mass_1 = finite_positive("m_1", "grains.radius_1", g.density * volume(r1))?;
+        let mass_2 = finite_positive("m_2", "grains.radius_2", g.density * volume(r2))?;
+        let r_eff = finite_positive(
+            "R_eff",
+            "grains.radius_1, grains.radius_2",
+            r1 * r2 / (r1 + r2),
+        )?;
+        let m_eff = finite_positive(
+            "m_eff",
+            "grains.radius_1, grains.radius_2, grains.density",
+            mass_1 * mass_2 / (mass_1 + mass_2),
+        )?;
+        let nu = scene.bulk.poisson_ratio;
+        let y = scene.bulk.youngs_modulus;
+        // Eq. (4): ρ_H = 2Y√R_eff / (3(1−ν²)).
+        let rho_h = finite_positive(
+            "rho_H",
+            "bulk.youngs_modulus, bulk.poisson_ratio",
+            2.0 * y * sqrt(r_eff) / (3.0 * (1.0 - nu * nu)),
+        )?;
+        let alpha = finite_positive("alpha", "bulk.youngs_modulus, grains", rho_h / m_eff)?;
+        let damping_time = scene.damping_time();
+        if !(damping_time.is_finite() && damping_time >= 0.0) {
+            return Err(Error::DerivedOutOfRange {
+                quantity: "A",
+                fields: "bulk.damping",
+            });
+        }
+        let layer = match &scene.layer {
+            None => None,
+            Some(l) => {
+                let drag = sqrt(r_eff) * l.viscosity / m_eff;
+                // Eq. (10).
+                let critical_velocity = drag * l.thickness * sqrt(l.thickness);
+                if !(drag.is_finite() && critical_velocity.is_finite()) {
+                    return Err(Error::DerivedOutOfRange {
+                        quantity: "g_s (layer)",
+                        fields: "layer.viscosity, layer.thickness",
+                    });
+                }
+                Some(LayerConstants {
+                    thickness: l.thickness,
+                    drag,
+                    critical_velocity,
+                    reading: l.reading,
+                })
+            }
+        };
+        let adhesion = match &scene.adhesion {
+            None => None,
+            Some(a) => {
+                let e_printed = y / (1.0 - nu * nu);
+                let modulus = match a.modulus {
+                    AdhesionModulus::AsPrinted => e_printed,
+                    AdhesionModulus::Consistent => 0.5 * e_printed,
+                };
+                let gamma = a.surface_energy;
+                // (γ⁵R⁴/E²)^(1/3), evaluated factor by factor so that no power overflows.
+                let k13 =
+                    powf(gamma, 5.0 / 3.0) * powf(r_eff, 4.0 / 3.0) * powf(modulus, -2.0 / 3.0);
+                // Eq. (12) and Eq. (15); note 14.18 = 2 × 7.09, i.e. ½ m_eff g_s² = W_s.
+                let separation_energy = 7.09 * k13;
+                let critical_velocity = sqrt(14.18 / m_eff) * sqrt(k13);
+                if !(separation_energy.is_finite() && critical_velocity.is_finite()) {
+                    return Err(Error::DerivedOutOfRange {
+                        quantity: "g_s (adhesion)",
+                        fields: "adhesion.surface_energy",
+                    });
+                }
+                Some(AdhesionConstants {
+                    surface_energy: gamma,
+                    modulus,
+                    separation_energy,
+                    critical_velocity,
+                })
+            }
+        };
+        Ok(Contact {
+            mass_1,
+            mass_2,
+            r_eff,
+            m_eff,
+            rho_h,
+            alpha,
+            damping_time,
+            contact_end: scene.contact_end,
+            layer,
+            adhesion,
+            friction: scene.friction,
+        })
+    }
+
+    /// The dimensionless damping `δ = A α^(2/5) g^(1/5)` at impact speed `g` [m/s] (DESIGN.md decision 3).
+    pub fn delta(&self, g: f64) -> f64 {
+        self.damping_time * powf(self.alpha, 0.4) * powf(g, 0.2)
+    }
+
+    /// The length scale `ξ* = (g²/α)^(2/5)` [m] at impact speed `g`.
+    pub fn length_scale(&self, g: f64) -> f64 {
+        powf(g, 0.8) * powf(self.alpha, -0.4)
+    }
+
+    /// The time scale `τ = ξ*/g` [s] at impact speed `g`.
+    pub fn time_scale(&self, g: f64) -> f64 {
+        powf(g, -0.2) * powf(self.alpha, -0.4)
+    }
+}

@@ -1,0 +1,51 @@
+//! # rime-core
+//!
+//! Contact models for slow collisions of icy grains, after Hertzsch (2002), *A model for surface
+//! effects in slow collisions of icy grains*, Planet. Space Sci. 50, 1387–1397 ("Eq. N" below is that
+//! paper's equation N). Decisions where the paper is ambiguous or wrong are documented in
+//! `docs/physics.md` of the repository.
+//!
+//! * [`Scene`] — grains, bulk material and optional effects (layer, adhesion, friction).
+//! * [`Contact`] — constants derived once from a scene; [`Contact::normal`] gives ε_N (Eq. 4–17).
+//! * [`ode`] — our Dormand–Prince 5(4) stepper with dense output and event location.
+//!
+//! ```
+//! use rime_core::{Accuracy, Contact, Preset, Status};
+//!
+//! let scene = Preset::IceFrost.scene();
+//! let contact = Contact::new(&scene)?;
+//! // Eq. (10): g_s = √R_eff η* D^(3/2) / m_eff ≈ 6.6 µm/s for this preset.
+//! let slow = contact.normal(1e-6, Accuracy::Precise)?;
+//! assert_eq!(slow.status, Status::StuckInLayer);
+//! let fast = contact.normal(1e-2, Accuracy::Precise)?;
+//! assert!(fast.eps > 0.0 && fast.eps < 1.0);
+//! # Ok::<(), rime_core::Error>(())
+//! ```
+//!
+//! The crate is `#![no_std]`; feature `std` (default) adds `std::error::Error`, `alloc` adds the
+//! `Vec` helpers, `serde` the JSON form of scenes.
+
+#![no_std]
+#![cfg_attr(docsrs, feature(doc_cfg))]
+
+#[cfg(feature = "alloc")]
+extern crate alloc;
+#[cfg(feature = "std")]
+extern crate std;
+
+pub mod accuracy;
+pub mod contact;
+pub mod error;
+mod math;
+pub mod normal;
+pub mod ode;
+pub mod scene;
+
+pub use accuracy::Accuracy;
+pub use contact::Contact;
+pub use error::{Error, Result};
+pub use normal::{Normal, Status};
+pub use scene::{
+    Adhesion, AdhesionModulus, Bulk, ContactEnd, Damping, DampingFormula, Friction, Grains, Layer,
+    LayerReading, Preset, Scene, SlidingLaw, Viscosities,
+};

@@ -1,0 +1,236 @@
+//! Soft surface layers: Eq. (6)–(10), in the two readings of DESIGN.md decision 4.
+
+use crate::error::Result;
+use crate::math::{cbrt, ln, powf, sqrt};
+use crate::ode::{Direction, Dopri5, OdeSystem, StepOutcome, Tolerances};
+use crate::scene::ContactEnd;
+
+/// Time to crush the layer in stage 1 (Eq. 8 top) from impact speed 1 through thickness `d`, in the
+/// same units: `∫₀^d dx / (1 − λ x^(3/2))` with `r = λ d^(3/2) < 1` (Eq. 9 gives the integrand).
+///
+/// With `x = d w²` this is `2d ∫₀¹ w dw / (1 − r w³)`, evaluated by its series for small `r` and in
+/// closed form (partial fractions) otherwise.
+pub fn crush_time(d: f64, r: f64) -> f64 {
+    if d == 0.0 {
+        return 0.0;
+    }
+    if r >= 1.0 {
+        return f64::INFINITY;
+    }
+    let integral = if r <= 0.5 {
+        // Σ r^k / (3k + 2): 60 terms bring 0.5^60 ≈ 1e-18.
+        let mut sum = 0.0;
+        let mut rk = 1.0;
+        for k in 0..60 {
+            sum += rk / (3.0 * k as f64 + 2.0);
+            rk *= r;
+        }
+        sum
+    } else {
+        // ∫₀¹ w/(1 − a³w³) dw = (1/a²) [F(a) − F(0)],
+        // F(p) = (1/3)[−ln(1−p) + ½ ln(p²+p+1) − √3 atan((2p+1)/√3)].
+        let a = cbrt(r);
+        let f = |p: f64| {
+            let s3 = sqrt(3.0);
+            (-ln(1.0 - p) + 0.5 * ln(p * p + p + 1.0) - s3 * libm::atan((2.0 * p + 1.0) / s3)) / 3.0
+        };
+        (f(a) - f(0.0)) / (a * a)
+    };
+    2.0 * d * integral
+}
+
+/// Result of a literal-reading layer collision, in units of the impact speed (ξ*, τ of that speed).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LiteralOutcome {
+    /// ε_N (0 when stuck).
+    pub eps: f64,
+    /// True when the layer stopped the grains (on the way in or out).
+    pub stuck: bool,
+    /// Contact duration (dimensionless, infinite when stuck).
+    pub s_c: f64,
+    /// Maximum compression (dimensionless).
+    pub x_max: f64,
+    /// Right-hand-side evaluations used.
+    pub rhs_evaluations: usize,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Phase {
+    /// `x ≤ d`: only the layer acts (Eq. 8 top).
+    Layer,
+    /// `x > d`: only the bulk acts, with ξ itself (Eq. 8 bottom, as printed).
+    Bulk,
+    /// Force-zero rule: the bulk force has vanished while separating; the grains coast to `x = d`.
+    Coast,
+}
+
+/// Eq. (8) read literally, in `σ = √s` with the scales of the impact speed.
+struct Literal {
+    delta: f64,
+    lambda: f64,
+    d: f64,
+    phase: Phase,
+}
+
+const MAX: usize = 0;
+const BOUNDARY: usize = 1;
+const FORCE_ZERO: usize = 2;
+const EXIT: usize = 3;
+
+impl OdeSystem<2, 4> for Literal {
+    fn rhs(&self, sigma: f64, y: &[f64; 2], dydt: &mut [f64; 2]) {
+        let x = y[0].max(0.0);
+        let two_sigma = 2.0 * sigma;
+        dydt[0] = two_sigma * y[1];
+        dydt[1] = match self.phase {
+            // Eq. (8), top: ξ'' + (3/2)(√R/(K m)) √ξ ξ' = 0.
+            Phase::Layer => -two_sigma * 1.5 * self.lambda * sqrt(x) * y[1],
+            // Eq. (8), bottom, with ξ itself.
+            Phase::Bulk => -two_sigma * sqrt(x) * (x + 1.5 * self.delta * y[1]),
+            Phase::Coast => 0.0,
+        };
+    }
+
+    fn events(&self, _sigma: f64, y: &[f64; 2], out: &mut [f64; 4]) {
+        out[MAX] = y[1];
+        out[BOUNDARY] = y[0] - self.d;
+        out[FORCE_ZERO] = if self.phase == Phase::Bulk {
+            y[0] + 1.5 * self.delta * y[1]
+        } else {
+            1.0
+        };
+        out[EXIT] = y[0];
+    }
+
+    fn direction(&self, which: usize) -> Direction {
+        match which {
+            BOUNDARY => Direction::Either,
+            _ => Direction::Falling,
+        }
+    }
+}
+
+/// The literal reading of Eq. (8): dimensionless damping `delta`, layer drag `lambda = c ξ*^(3/2)/g`
+/// and thickness `d = D/ξ*` (both in the scales of the impact speed).
+pub fn literal(
+    delta: f64,
+    lambda: f64,
+    d: f64,
+    end: ContactEnd,
+    rtol: f64,
+) -> Result<LiteralOutcome> {
+    let g_s = lambda * d * sqrt(d); // Eq. (10) in units of the impact speed
+    if g_s >= 1.0 {
+        // Eq. (9): the layer stops the grains on the way in at x = λ^(-2/3).
+        return Ok(LiteralOutcome {
+            eps: 0.0,
+            stuck: true,
+            s_c: f64::INFINITY,
+            x_max: powf(lambda, -2.0 / 3.0),
+            rhs_evaluations: 0,
+        });
+    }
+    let mut sys = Literal {
+        delta,
+        lambda,
+        d,
+        phase: if d > 0.0 { Phase::Layer } else { Phase::Bulk },
+    };
+    let sigma_scale = if delta > 1.0 {
+        powf(delta, -1.0 / 3.0)
+    } else {
+        1.0
+    };
+    let tol = Tolerances {
+        rtol,
+        atol: [rtol * 1e-3 * sigma_scale * sigma_scale, rtol * 1e-6],
+        max_steps: 200_000,
+    };
+    let sigma_end = 1e3 * (1.0 + sqrt(delta)) + 1e3 * sqrt(d);
+    let mut stepper = Dopri5::new(
+        &sys,
+        0.0,
+        [0.0, 1.0],
+        sigma_end,
+        0.05 * sigma_scale.min(sqrt(d.max(1e-300))).max(1e-8),
+        tol,
+        "layer contact (literal reading)",
+    );
+    let mut x_max = 0.0;
+    loop {
+        match stepper.step(&sys)? {
+            StepOutcome::Step => {}
+            StepOutcome::Done => {
+                return Err(crate::Error::StepBudgetExceeded {
+                    what: "layer contact (literal reading): no separation before the time limit",
+                    steps: 0,
+                });
+            }
+            StepOutcome::Event { t, y, which } => match which {
+                MAX => x_max = y[0],
+                BOUNDARY if y[1] > 0.0 && sys.phase == Phase::Layer => {
+                    sys.phase = Phase::Bulk;
+                    stepper.restart(&sys, t, [d, y[1]]);
+                }
+                BOUNDARY if y[1] < 0.0 && sys.phase != Phase::Layer => {
+                    // Leaving the bulk through the layer: Eq. (9) integrated once more gives the exit
+                    // speed v_d + λ d^(3/2); if that is not negative, the layer holds the grains.
+                    if y[1] + g_s >= 0.0 {
+                        return Ok(LiteralOutcome {
+                            eps: 0.0,
+                            stuck: true,
+                            s_c: f64::INFINITY,
+                            x_max,
+                            rhs_evaluations: stepper.rhs_evaluations(),
+                        });
+                    }
+                    sys.phase = Phase::Layer;
+                    stepper.restart(&sys, t, [d, y[1]]);
+                }
+                FORCE_ZERO if end == ContactEnd::ForceZero && sys.phase == Phase::Bulk => {
+                    sys.phase = Phase::Coast;
+                    stepper.restart(&sys, t, y);
+                }
+                EXIT if sys.phase != Phase::Bulk || d == 0.0 => {
+                    return Ok(LiteralOutcome {
+                        eps: (-y[1]).max(0.0),
+                        stuck: false,
+                        s_c: t * t,
+                        x_max,
+                        rhs_evaluations: stepper.rhs_evaluations(),
+                    });
+                }
+                _ => {}
+            },
+        }
+    }
+}
+
+/// Stage-1 crush time in closed form against a direct quadrature is checked in the tests.
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn crush_time_quadrature(d: f64, r: f64) -> f64 {
+        // Composite Simpson on x = d w², integrand 2 d w / (1 − r w³).
+        let n = 200_000;
+        let h = 1.0 / n as f64;
+        let f = |w: f64| 2.0 * d * w / (1.0 - r * w * w * w);
+        let mut s = f(0.0) + f(1.0);
+        for i in 1..n {
+            let w = i as f64 * h;
+            s += if i % 2 == 1 { 4.0 } else { 2.0 } * f(w);
+        }
+        s * h / 3.0
+    }
+
+    #[test]
+    fn crush_time_matches_quadrature_on_both_branches() {
+        for &r in &[0.0, 0.1, 0.5, 0.500001, 0.7, 0.9] {
+            let a = crush_time(2.0, r);
+            let b = crush_time_quadrature(2.0, r);
+            assert!((a - b).abs() < 1e-10 * b, "r = {r}: {a} vs {b}");
+        }
+        assert_eq!(crush_time(1.0, 0.0), 1.0);
+    }
+}

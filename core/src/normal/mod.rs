@@ -1,0 +1,191 @@
+//! Normal restitution: viscoelastic (Eq. 4–5), soft layer (Eq. 8–10), adhesion (Eq. 11–17), and
+//! their composition (layer, then adhesion on its rebound, as the paper's §4 prescribes).
+
+pub mod adhesion;
+pub mod layer;
+pub mod viscoelastic;
+
+use crate::accuracy::Accuracy;
+use crate::contact::Contact;
+use crate::error::{Error, Result};
+use crate::math::powf;
+use crate::scene::LayerReading;
+pub use viscoelastic::OVERDAMPED_THRESHOLD;
+
+/// How a normal collision ends.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+pub enum Status {
+    /// The grains separate.
+    Rebound,
+    /// The soft layer dissipated all the kinetic energy (Eq. 10).
+    StuckInLayer,
+    /// The rebound could not pay the JKR separation energy (Eq. 15).
+    StuckByAdhesion,
+    /// ε_N < 1e-9: Eq. (4) never sticks in finite time, but the rebound is negligible.
+    Overdamped,
+}
+
+impl Status {
+    /// The snake_case name used in JSON and CSV.
+    pub fn name(self) -> &'static str {
+        match self {
+            Status::Rebound => "rebound",
+            Status::StuckInLayer => "stuck_in_layer",
+            Status::StuckByAdhesion => "stuck_by_adhesion",
+            Status::Overdamped => "overdamped",
+        }
+    }
+}
+
+/// The outcome of a normal collision at impact speed `g_n`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Normal {
+    /// Normal restitution coefficient ε_N = −g'_N/g_N ∈ [0, 1] (Eq. 1). For `Overdamped` this is the
+    /// raw (tiny) value.
+    pub eps: f64,
+    /// How the collision ended.
+    pub status: Status,
+    /// Contact duration [s]; infinite when the grains stick (they come to rest asymptotically).
+    pub t_c: f64,
+    /// Maximum compression ξ_max [m] (including the crushed layer).
+    pub xi_max: f64,
+    /// Estimated bound on the relative error of `eps` at the requested accuracy.
+    pub error_estimate: f64,
+}
+
+/// ε_N and the rest of a purely viscoelastic collision (Eq. 4–5) at impact speed `g > 0`.
+fn viscoelastic(contact: &Contact, g: f64, accuracy: Accuracy) -> Result<(f64, f64, f64)> {
+    let delta = contact.delta(g);
+    let r = viscoelastic::dimensionless(delta, contact.contact_end, accuracy.integrator_rtol())?;
+    Ok((
+        r.eps,
+        r.s_c * contact.time_scale(g),
+        r.x_max * contact.length_scale(g),
+    ))
+}
+
+fn check_speed(g: f64) -> Result<f64> {
+    if g.is_finite() && g > 0.0 && g <= 1e6 {
+        Ok(g)
+    } else {
+        Err(Error::OutOfRange {
+            field: "g_n",
+            value: g,
+            expected: "impact speed must lie in (0, 1e6] m/s",
+        })
+    }
+}
+
+impl Contact {
+    /// Normal restitution at impact speed `g` [m/s] with every effect the scene enables.
+    pub fn normal(&self, g: f64, accuracy: Accuracy) -> Result<Normal> {
+        let g = check_speed(g)?;
+        let error_estimate = accuracy.error_bound();
+        // Stage 1: the layer, if any; gives ε_{N,v} of Eq. (17).
+        let (eps_v, t_c, xi_max, stuck_in_layer) = match &self.layer {
+            None => {
+                let (e, t, x) = viscoelastic(self, g, accuracy)?;
+                (e, t, x, false)
+            }
+            Some(layer)
+                if layer.critical_velocity == 0.0 && layer.reading == LayerReading::Offset =>
+            {
+                let (e, t, x) = viscoelastic(self, g, accuracy)?;
+                (e, t, x, false)
+            }
+            Some(layer) => match layer.reading {
+                LayerReading::Offset => {
+                    let g_s = layer.critical_velocity;
+                    if g <= g_s {
+                        // Eq. (9): stopped at ξ = (g/c)^(2/3) ≤ D.
+                        (0.0, f64::INFINITY, powf(g / layer.drag, 2.0 / 3.0), true)
+                    } else {
+                        // Eq. (9): the bulk is reached at speed g − g_s; the bulk collision is then
+                        // Eq. (4) for the overlap ξ − D.
+                        let g_bulk = g - g_s;
+                        let (e, t, x) = viscoelastic(self, g_bulk, accuracy)?;
+                        let t_layer = layer::crush_time(layer.thickness / g, g_s / g);
+                        (e * g_bulk / g, t + t_layer, x + layer.thickness, false)
+                    }
+                }
+                LayerReading::Literal => {
+                    let xi_star = self.length_scale(g);
+                    let d = layer.thickness / xi_star;
+                    let lambda = layer.drag * xi_star * crate::math::sqrt(xi_star) / g;
+                    let out = layer::literal(
+                        self.delta(g),
+                        lambda,
+                        d,
+                        self.contact_end,
+                        accuracy.integrator_rtol(),
+                    )?;
+                    (
+                        out.eps,
+                        out.s_c * self.time_scale(g),
+                        out.x_max * xi_star,
+                        out.stuck,
+                    )
+                }
+            },
+        };
+        if stuck_in_layer {
+            return Ok(Normal {
+                eps: 0.0,
+                status: Status::StuckInLayer,
+                t_c: f64::INFINITY,
+                xi_max,
+                error_estimate,
+            });
+        }
+        // Stage 2: adhesion on the rebound (Eq. 17).
+        let eps = match &self.adhesion {
+            None => eps_v,
+            Some(adh) => match adhesion::apply(eps_v, g, adh.critical_velocity) {
+                Some(e) => e,
+                None => {
+                    return Ok(Normal {
+                        eps: 0.0,
+                        status: Status::StuckByAdhesion,
+                        t_c: f64::INFINITY,
+                        xi_max,
+                        error_estimate,
+                    });
+                }
+            },
+        };
+        let status = if eps < OVERDAMPED_THRESHOLD {
+            Status::Overdamped
+        } else {
+            Status::Rebound
+        };
+        Ok(Normal {
+            eps,
+            status,
+            t_c,
+            xi_max,
+            error_estimate,
+        })
+    }
+
+    /// ε_N at `g`, with the limit value at `g = 0` (used by maps that include the axis).
+    pub fn eps_n(&self, g: f64, accuracy: Accuracy) -> Result<f64> {
+        if g == 0.0 {
+            return Ok(self.eps_n_at_rest());
+        }
+        Ok(self.normal(g, accuracy)?.eps)
+    }
+
+    /// The limit of ε_N as the impact speed tends to zero.
+    pub fn eps_n_at_rest(&self) -> f64 {
+        let layer_stops = self.layer.is_some_and(|l| l.critical_velocity > 0.0);
+        let adhesion_stops = self.adhesion.is_some_and(|a| a.critical_velocity > 0.0);
+        if layer_stops || adhesion_stops {
+            0.0
+        } else {
+            // δ → 0: elastic limit.
+            1.0
+        }
+    }
+}

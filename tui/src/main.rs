@@ -1,0 +1,5 @@
+//! `rime`: the terminal explorer and command-line tools.
+
+fn main() {
+    println!("rime");
+}
