@@ -39,7 +39,9 @@ pub mod error;
 mod math;
 pub mod normal;
 pub mod ode;
+pub mod params;
 pub mod scene;
+pub mod units;
 
 pub use accuracy::Accuracy;
 pub use contact::Contact;

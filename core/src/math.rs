@@ -11,11 +11,6 @@ pub(crate) fn powf(x: f64, y: f64) -> f64 {
 }
 
 #[inline]
-pub(crate) fn exp(x: f64) -> f64 {
-    libm::exp(x)
-}
-
-#[inline]
 pub(crate) fn ln(x: f64) -> f64 {
     libm::log(x)
 }
@@ -23,9 +18,4 @@ pub(crate) fn ln(x: f64) -> f64 {
 #[inline]
 pub(crate) fn cbrt(x: f64) -> f64 {
     libm::cbrt(x)
-}
-
-#[inline]
-pub(crate) fn atan2(y: f64, x: f64) -> f64 {
-    libm::atan2(y, x)
 }

@@ -1,0 +1,164 @@
+//! Curves and stick maps, written into caller-provided slices (no allocation needed) or, with
+//! feature `alloc`, returned as `Vec`s.
+//!
+//! A stick map over an `n × n` grid needs ε_N only at the `n` grid speeds (ε_N(g_N) on one axis and,
+//! on the rolling branch, ε_N(g_T) on the other, which is the same grid): one evaluation per grid
+//! speed, never one per cell.
+
+use crate::accuracy::Accuracy;
+use crate::contact::Contact;
+use crate::error::{Error, Result};
+use crate::normal::Normal;
+use crate::tangential::{StickClass, classify};
+
+/// Fills `out` with speeds spaced evenly in log from `from` to `to` inclusive.
+pub fn log_space(from: f64, to: f64, out: &mut [f64]) {
+    let n = out.len();
+    if n == 1 {
+        out[0] = from;
+        return;
+    }
+    let (a, b) = (libm::log(from), libm::log(to));
+    for (i, g) in out.iter_mut().enumerate() {
+        *g = libm::exp(a + (b - a) * i as f64 / (n - 1) as f64);
+    }
+    // Hit the ends exactly.
+    out[0] = from;
+    out[n - 1] = to;
+}
+
+/// Fills `out` with speeds spaced evenly from 0 to `max` inclusive.
+pub fn linear_space(max: f64, out: &mut [f64]) {
+    let n = out.len();
+    for (i, g) in out.iter_mut().enumerate() {
+        *g = if n == 1 {
+            max
+        } else {
+            max * i as f64 / (n - 1) as f64
+        };
+    }
+}
+
+/// ε_N and the rest at every speed of `g` (each > 0).
+pub fn curve_into(contact: &Contact, g: &[f64], accuracy: Accuracy, out: &mut [Normal]) -> Result<()> {
+    if out.len() != g.len() {
+        return Err(Error::InvalidValue {
+            field: "out",
+            expected: "a slice as long as the speeds",
+        });
+    }
+    for (o, &gi) in out.iter_mut().zip(g) {
+        *o = contact.normal(gi, accuracy)?;
+    }
+    Ok(())
+}
+
+/// ε_N at every speed of `g` (0 allowed: the limit value).
+pub fn eps_n_into(contact: &Contact, g: &[f64], accuracy: Accuracy, out: &mut [f64]) -> Result<()> {
+    if out.len() != g.len() {
+        return Err(Error::InvalidValue {
+            field: "out",
+            expected: "a slice as long as the speeds",
+        });
+    }
+    for (o, &gi) in out.iter_mut().zip(g) {
+        *o = contact.eps_n(gi, accuracy)?;
+    }
+    Ok(())
+}
+
+/// Classifies every cell of the square grid `g × g` from ε_N at the grid speeds; row-major:
+/// `class[i * n + j]` is at g_N = `g[i]`, g_T = `g[j]`.
+pub fn stick_map_into(
+    contact: &Contact,
+    g: &[f64],
+    eps_n: &[f64],
+    class: &mut [StickClass],
+    eps_t: &mut [f64],
+) -> Result<()> {
+    let n = g.len();
+    let friction = contact.friction.ok_or(Error::InvalidValue {
+        field: "friction",
+        expected: "friction to be on for tangential restitution",
+    })?;
+    if eps_n.len() != n || class.len() != n * n || eps_t.len() != n * n {
+        return Err(Error::InvalidValue {
+            field: "out",
+            expected: "eps_n of length n and class, eps_t of length n²",
+        });
+    }
+    for i in 0..n {
+        for j in 0..n {
+            let t = classify(g[i], g[j], eps_n[i], eps_n[j], &friction);
+            class[i * n + j] = t.class;
+            eps_t[i * n + j] = t.eps_t;
+        }
+    }
+    Ok(())
+}
+
+/// A stick map with its grid (feature `alloc`).
+#[cfg(feature = "alloc")]
+#[derive(Debug, Clone, PartialEq)]
+pub struct StickMap {
+    /// Grid speeds, 0 to max inclusive [m/s].
+    pub g: alloc::vec::Vec<f64>,
+    /// ε_N at the grid speeds.
+    pub eps_n: alloc::vec::Vec<f64>,
+    /// Row-major classes: `class[i * n + j]` at g_N = `g[i]`, g_T = `g[j]`.
+    pub class: alloc::vec::Vec<StickClass>,
+    /// Row-major ε_T.
+    pub eps_t: alloc::vec::Vec<f64>,
+}
+
+#[cfg(feature = "alloc")]
+impl StickMap {
+    /// Computes an `n × n` map from 0 to `max` (one ε_N evaluation per grid speed).
+    pub fn new(contact: &Contact, max: f64, n: usize, accuracy: Accuracy) -> Result<StickMap> {
+        use alloc::vec;
+        let mut g = vec![0.0; n];
+        linear_space(max, &mut g);
+        let mut eps_n = vec![0.0; n];
+        eps_n_into(contact, &g, accuracy, &mut eps_n)?;
+        let mut class = vec![StickClass::Undefined; n * n];
+        let mut eps_t = vec![0.0; n * n];
+        stick_map_into(contact, &g, &eps_n, &mut class, &mut eps_t)?;
+        Ok(StickMap {
+            g,
+            eps_n,
+            class,
+            eps_t,
+        })
+    }
+
+    /// Grid size `n`.
+    pub fn n(&self) -> usize {
+        self.g.len()
+    }
+}
+
+/// `n` log-spaced ε_N results from `from` to `to` (feature `alloc`).
+#[cfg(feature = "alloc")]
+pub fn curve(
+    contact: &Contact,
+    from: f64,
+    to: f64,
+    n: usize,
+    accuracy: Accuracy,
+) -> Result<(alloc::vec::Vec<f64>, alloc::vec::Vec<Normal>)> {
+    use alloc::vec;
+    let mut g = vec![0.0; n];
+    log_space(from, to, &mut g);
+    let mut out = vec![
+        Normal {
+            eps: 0.0,
+            status: crate::Status::Rebound,
+            t_c: 0.0,
+            xi_max: 0.0,
+            error_estimate: 0.0,
+        };
+        n
+    ];
+    curve_into(contact, &g, accuracy, &mut out)?;
+    Ok((g, out))
+}

@@ -1,0 +1,285 @@
+//! The non-interactive subcommands (DESIGN.md "Subcommands"): machine-readable output for scripts.
+
+use crate::scene_io::{CliError, CliResult, apply_set, err, load_scene, preset, scene_json};
+use rime_core::{Accuracy, Contact, Scene};
+use std::io::IsTerminal;
+use std::path::PathBuf;
+
+/// Output format of a subcommand.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// JSON (default when stdout is not a terminal).
+    Json,
+    /// CSV with one header line.
+    Csv,
+    /// An aligned text table (default on a terminal).
+    Table,
+}
+
+/// Options shared by every subcommand.
+#[derive(Debug, Clone)]
+pub struct Common {
+    /// The scene after `--scene`/`--preset` and every `--set`.
+    pub scene: Scene,
+    /// Accuracy level.
+    pub accuracy: Accuracy,
+    /// Output format.
+    pub format: Format,
+}
+
+/// A parsed command line.
+#[derive(Debug, Clone)]
+pub enum Command {
+    /// The interactive explorer (no subcommand).
+    Explore(Common),
+    /// `rime eps --g LIST`.
+    Eps(Common, Vec<f64>),
+    /// `rime curve --from G --to G --points N`.
+    Curve(Common, f64, f64, usize),
+    /// `rime tangential --gn LIST --gt LIST` (every combination, g_n outer).
+    Tangential(Common, Vec<f64>, Vec<f64>),
+    /// `rime map --max G --n N`.
+    Map(Common, f64, usize),
+    /// `rime tidal [--planet-mass M] [--distance D] [--radius R] [--density RHO] [--surface-energy G]`.
+    Tidal(Common, rime_core::tidal::TidalInput),
+    /// `rime scene [--preset NAME]`.
+    Scene(Common),
+    /// `rime help` or `--help`.
+    Help,
+    /// `rime --version`.
+    Version,
+}
+
+/// Usage text.
+pub const USAGE: &str = "\
+rime — slow collisions of icy grains (Hertzsch 2002)
+
+USAGE:
+  rime [OPTIONS]                                 start the terminal explorer
+  rime eps --g LIST [OPTIONS]                    ε_N at impact speeds (m/s, comma-separated)
+  rime curve --from G --to G --points N          ε_N on N log-spaced speeds, both ends included
+  rime tangential --gn LIST --gt LIST            ε_T for every (g_N, g_T) combination
+  rime map --max G --n N                         stick-map classes on an N×N grid from 0 to G
+  rime tidal [--planet-mass KG] [--distance M] [--radius M] [--density KG/M3] [--surface-energy J/M2]
+  rime scene [--preset NAME]                     print the scene JSON
+
+OPTIONS:
+  --scene FILE.json        scene file (default: the `ice` preset)
+  --preset NAME            start from a preset: ice, ice-frost, ice-sticky, ice-paper-viscosities
+  --set PATH=VALUE         override a parameter, repeatable (e.g. --set layer.viscosity=2000,
+                           --set layer.thickness=\"2 um\", --set adhesion=off)
+  --accuracy LEVEL         fast | balanced | precise | a relative tolerance like 1e-8
+  --format FORMAT          json | csv | table (table on a terminal, json otherwise)
+  -h, --help               this text
+  -V, --version            version
+
+Errors are one line naming the field, with exit code 2.";
+
+fn number(flag: &str, text: &str) -> CliResult<f64> {
+    match text.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        Ok(v) => err(format!("{flag}: {v} is not a finite number")),
+        Err(_) => err(format!("{flag}: '{text}' is not a number")),
+    }
+}
+
+fn speed(flag: &str, text: &str, allow_zero: bool) -> CliResult<f64> {
+    let v = number(flag, text)?;
+    let ok = if allow_zero { v >= 0.0 } else { v > 0.0 };
+    if !ok || v > 1e6 {
+        let range = if allow_zero { "[0, 1e6]" } else { "(0, 1e6]" };
+        return err(format!("{flag}: speed {v} must lie in {range} m/s"));
+    }
+    Ok(v)
+}
+
+fn speed_list(flag: &str, text: &str, allow_zero: bool) -> CliResult<Vec<f64>> {
+    let items: Vec<&str> = text.split(',').map(str::trim).collect();
+    if items.iter().all(|s| s.is_empty()) {
+        return err(format!("{flag}: empty list"));
+    }
+    if items.len() > 1_000_000 {
+        return err(format!("{flag}: at most 1000000 values"));
+    }
+    items.iter().map(|s| speed(flag, s, allow_zero)).collect()
+}
+
+fn count(flag: &str, text: &str, min: usize, max: usize) -> CliResult<usize> {
+    match text.trim().parse::<usize>() {
+        Ok(n) if (min..=max).contains(&n) => Ok(n),
+        _ => err(format!("{flag}: '{text}' must be a whole number in [{min}, {max}]")),
+    }
+}
+
+/// Parses the command line (without the program name).
+pub fn parse(args: &[String]) -> CliResult<Command> {
+    let mut sub: Option<&str> = None;
+    let mut rest = args;
+    if let Some(first) = args.first() {
+        if !first.starts_with('-') {
+            sub = Some(first.as_str());
+            rest = &args[1..];
+        }
+    }
+    let mut scene_file: Option<PathBuf> = None;
+    let mut preset_name: Option<String> = None;
+    let mut sets: Vec<String> = Vec::new();
+    let mut accuracy = Accuracy::Balanced;
+    let mut format: Option<Format> = None;
+    let mut flags: Vec<(String, String)> = Vec::new();
+    let mut i = 0;
+    while i < rest.len() {
+        let raw = rest[i].as_str();
+        match raw {
+            "-h" | "--help" => return Ok(Command::Help),
+            "-V" | "--version" => return Ok(Command::Version),
+            _ => {}
+        }
+        if !raw.starts_with("--") {
+            return err(format!("{raw}: unexpected argument (see rime --help)"));
+        }
+        let (flag, inline) = match raw.split_once('=') {
+            Some((f, v)) => (f, Some(v.to_string())),
+            None => (raw, None),
+        };
+        let value = match inline {
+            Some(v) => v,
+            None => {
+                i += 1;
+                match rest.get(i) {
+                    Some(v) => v.clone(),
+                    None => return err(format!("{flag}: missing value")),
+                }
+            }
+        };
+        match flag {
+            "--scene" => scene_file = Some(PathBuf::from(value)),
+            "--preset" => preset_name = Some(value),
+            "--set" => sets.push(value),
+            "--accuracy" => {
+                accuracy = Accuracy::parse(&value)
+                    .map_err(|e| CliError(format!("--accuracy {value}: {e}")))?
+            }
+            "--format" => {
+                format = Some(match value.as_str() {
+                    "json" => Format::Json,
+                    "csv" => Format::Csv,
+                    "table" => Format::Table,
+                    other => return err(format!("--format {other}: expected json, csv or table")),
+                })
+            }
+            _ => flags.push((flag.to_string(), value)),
+        }
+        i += 1;
+    }
+    let mut scene = match (&scene_file, &preset_name) {
+        (Some(_), Some(_)) => return err("--preset: cannot be combined with --scene"),
+        (Some(f), None) => load_scene(f)?,
+        (None, Some(p)) => preset(p)?,
+        (None, None) => Scene::default(),
+    };
+    for s in &sets {
+        apply_set(&mut scene, s)?;
+    }
+    let format = format.unwrap_or(if std::io::stdout().is_terminal() {
+        Format::Table
+    } else {
+        Format::Json
+    });
+    let common = Common {
+        scene,
+        accuracy,
+        format,
+    };
+    let allowed: &[&str] = match sub {
+        None | Some("explore") | Some("scene") => &[],
+        Some("eps") => &["--g"],
+        Some("curve") => &["--from", "--to", "--points"],
+        Some("tangential") => &["--gn", "--gt"],
+        Some("map") => &["--max", "--n"],
+        Some("tidal") => &[
+            "--planet-mass",
+            "--distance",
+            "--radius",
+            "--density",
+            "--surface-energy",
+        ],
+        Some("help") => return Ok(Command::Help),
+        Some(other) => return err(format!("{other}: unknown subcommand (see rime --help)")),
+    };
+    for (f, _) in &flags {
+        if !allowed.contains(&f.as_str()) {
+            let name = sub.unwrap_or("rime");
+            return err(format!("{f}: not an option of `{name}` (see rime --help)"));
+        }
+    }
+    let get = |name: &str| -> Option<&str> {
+        flags
+            .iter()
+            .rev()
+            .find(|(f, _)| f == name)
+            .map(|(_, v)| v.as_str())
+    };
+    let require = |name: &str| -> CliResult<&str> {
+        get(name).ok_or_else(|| CliError(format!("{name}: required")))
+    };
+    Ok(match sub {
+        None | Some("explore") => Command::Explore(common),
+        Some("scene") => Command::Scene(common),
+        Some("eps") => {
+            let g = speed_list("--g", require("--g")?, false)?;
+            Command::Eps(common, g)
+        }
+        Some("curve") => {
+            let from = speed("--from", require("--from")?, false)?;
+            let to = speed("--to", require("--to")?, false)?;
+            if to < from {
+                return err(format!("--to: {to} is below --from {from}"));
+            }
+            let n = count("--points", get("--points").unwrap_or("400"), 1, 100_000)?;
+            Command::Curve(common, from, to, n)
+        }
+        Some("tangential") => {
+            let gn = speed_list("--gn", require("--gn")?, true)?;
+            let gt = speed_list("--gt", require("--gt")?, true)?;
+            if gn.len().saturating_mul(gt.len()) > 1_000_000 {
+                return err("--gt: at most 1000000 combinations of --gn and --gt");
+            }
+            Command::Tangential(common, gn, gt)
+        }
+        Some("map") => {
+            let max = speed("--max", require("--max")?, false)?;
+            let n = count("--n", get("--n").unwrap_or("200"), 2, 2000)?;
+            Command::Map(common, max, n)
+        }
+        Some("tidal") => {
+            let mut input = rime_core::tidal::TidalInput::default();
+            for (name, slot) in [
+                ("--planet-mass", &mut input.planet_mass),
+                ("--distance", &mut input.distance),
+                ("--radius", &mut input.radius),
+                ("--density", &mut input.density),
+                ("--surface-energy", &mut input.surface_energy),
+            ] {
+                if let Some(v) = get(name) {
+                    *slot = number(name, v)?;
+                }
+            }
+            Command::Tidal(common, input)
+        }
+        Some(_) => Command::Help,
+    })
+}
+
+/// Builds the contact constants for a command.
+pub fn contact(common: &Common) -> CliResult<Contact> {
+    Ok(Contact::new(&common.scene)?)
+}
+
+/// Renders the scene JSON for `rime scene`.
+pub fn scene_text(common: &Common) -> CliResult<String> {
+    scene_json(&common.scene).map(|mut s| {
+        s.push('\n');
+        s
+    })
+}

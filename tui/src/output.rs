@@ -1,0 +1,158 @@
+//! JSON, CSV and table output of the subcommands (field names are a contract: DESIGN.md).
+
+use crate::cli::Format;
+use serde::Serialize;
+
+/// One normal-restitution record (`eps` and `curve`).
+#[derive(Debug, Clone, Serialize)]
+pub struct EpsRecord {
+    /// Impact speed [m/s].
+    pub g_n: f64,
+    /// ε_N.
+    pub eps_n: f64,
+    /// `rebound`, `stuck_in_layer`, `stuck_by_adhesion` or `overdamped`.
+    pub status: &'static str,
+    /// Contact duration [s]; `null` when the grains stick (they come to rest asymptotically).
+    pub t_c: Option<f64>,
+    /// Maximum compression [m].
+    pub xi_max: f64,
+    /// Bound on the relative error of `eps_n` at the chosen accuracy.
+    pub error_estimate: f64,
+}
+
+impl EpsRecord {
+    /// Builds a record from a core result.
+    pub fn new(g_n: f64, n: &rime_core::Normal) -> Self {
+        EpsRecord {
+            g_n,
+            eps_n: n.eps,
+            status: n.status.name(),
+            t_c: n.t_c.is_finite().then_some(n.t_c),
+            xi_max: n.xi_max,
+            error_estimate: n.error_estimate,
+        }
+    }
+}
+
+/// One tangential record.
+#[derive(Debug, Clone, Serialize)]
+pub struct TangentialRecord {
+    /// Normal impact speed [m/s].
+    pub g_n: f64,
+    /// Tangential speed [m/s].
+    pub g_t: f64,
+    /// ε_T.
+    pub eps_t: f64,
+    /// ε_N(g_N).
+    pub eps_n: f64,
+    /// Stick-map class (DESIGN.md §7).
+    pub class: &'static str,
+}
+
+/// A stick map.
+#[derive(Debug, Clone, Serialize)]
+pub struct MapRecord {
+    /// Grid speeds [m/s], 0 to max inclusive.
+    pub g: Vec<f64>,
+    /// `class[i][j]` at g_N = g[i], g_T = g[j].
+    pub class: Vec<Vec<&'static str>>,
+    /// `eps_t[i][j]` at g_N = g[i], g_T = g[j].
+    pub eps_t: Vec<Vec<f64>>,
+    /// ε_N(g[i]).
+    pub eps_n: Vec<f64>,
+}
+
+/// Formats a number for CSV and tables: shortest round-trip form, `null`/empty never NaN.
+pub fn num(v: f64) -> String {
+    if v.is_finite() { format!("{v:e}") } else { String::new() }
+}
+
+fn opt(v: Option<f64>) -> String {
+    v.map(num).unwrap_or_default()
+}
+
+/// Prints records in the chosen format.
+pub trait Rows {
+    /// Column names.
+    fn header() -> &'static [&'static str];
+    /// Cells of one row.
+    fn cells(&self) -> Vec<String>;
+}
+
+impl Rows for EpsRecord {
+    fn header() -> &'static [&'static str] {
+        &["g_n", "eps_n", "status", "t_c", "xi_max", "error_estimate"]
+    }
+    fn cells(&self) -> Vec<String> {
+        vec![
+            num(self.g_n),
+            num(self.eps_n),
+            self.status.to_string(),
+            opt(self.t_c),
+            num(self.xi_max),
+            num(self.error_estimate),
+        ]
+    }
+}
+
+impl Rows for TangentialRecord {
+    fn header() -> &'static [&'static str] {
+        &["g_n", "g_t", "eps_t", "eps_n", "class"]
+    }
+    fn cells(&self) -> Vec<String> {
+        vec![
+            num(self.g_n),
+            num(self.g_t),
+            num(self.eps_t),
+            num(self.eps_n),
+            self.class.to_string(),
+        ]
+    }
+}
+
+/// Renders a list of records.
+pub fn render<T: Rows + Serialize>(records: &[T], format: Format) -> Result<String, String> {
+    match format {
+        Format::Json => serde_json::to_string_pretty(records)
+            .map(|s| s + "\n")
+            .map_err(|e| e.to_string()),
+        Format::Csv => {
+            let mut out = T::header().join(",");
+            out.push('\n');
+            for r in records {
+                out.push_str(&r.cells().join(","));
+                out.push('\n');
+            }
+            Ok(out)
+        }
+        Format::Table => {
+            let rows: Vec<Vec<String>> = records.iter().map(|r| r.cells()).collect();
+            Ok(table(T::header(), &rows))
+        }
+    }
+}
+
+/// An aligned text table.
+pub fn table(header: &[&str], rows: &[Vec<String>]) -> String {
+    let mut widths: Vec<usize> = header.iter().map(|h| h.chars().count()).collect();
+    for r in rows {
+        for (w, c) in widths.iter_mut().zip(r) {
+            *w = (*w).max(c.chars().count());
+        }
+    }
+    let line = |cells: Vec<String>| -> String {
+        let mut s = String::new();
+        for (i, (c, w)) in cells.iter().zip(&widths).enumerate() {
+            if i > 0 {
+                s.push_str("  ");
+            }
+            s.push_str(&format!("{c:>w$}"));
+        }
+        s.trim_end().to_string() + "\n"
+    };
+    let mut out = line(header.iter().map(|h| h.to_string()).collect());
+    for r in rows {
+        out.push_str(&line(r.clone()));
+    }
+    out
+}
