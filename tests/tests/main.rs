@@ -1,1 +1,4 @@
+//! The one integration-test binary of rime.
+
+mod physics;
 mod reference;
