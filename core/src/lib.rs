@@ -34,18 +34,25 @@ extern crate alloc;
 extern crate std;
 
 pub mod accuracy;
+pub mod analytic;
 pub mod contact;
 pub mod error;
+pub mod kinematics;
 mod math;
 pub mod normal;
 pub mod ode;
 pub mod scene;
+pub mod tangential;
+pub mod tidal;
 
 pub use accuracy::Accuracy;
 pub use contact::Contact;
 pub use error::{Error, Result};
+pub use kinematics::GrainState;
 pub use normal::{Normal, Status};
 pub use scene::{
     Adhesion, AdhesionModulus, Bulk, ContactEnd, Damping, DampingFormula, Friction, Grains, Layer,
     LayerReading, Preset, Scene, SlidingLaw, Viscosities,
 };
+pub use tangential::{StickClass, Tangential};
+pub use tidal::{Tidal, TidalInput};
