@@ -10,6 +10,8 @@ pub(crate) fn powf(x: f64, y: f64) -> f64 {
     libm::pow(x, y)
 }
 
+// Used by the fitting code (Eq. 27); unused in some builds of this crate.
+#[allow(dead_code)]
 #[inline]
 pub(crate) fn exp(x: f64) -> f64 {
     libm::exp(x)

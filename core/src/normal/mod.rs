@@ -42,14 +42,14 @@ impl Status {
 /// The outcome of a normal collision at impact speed `g_n`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Normal {
-    /// Normal restitution coefficient ε_N = −g'_N/g_N ∈ [0, 1] (Eq. 1). For `Overdamped` this is the
+    /// Normal restitution coefficient ε_N = −g'_N/g_N ∈ \[0, 1\] (Eq. 1). For `Overdamped` this is the
     /// raw (tiny) value.
     pub eps: f64,
     /// How the collision ended.
     pub status: Status,
-    /// Contact duration [s]; infinite when the grains stick (they come to rest asymptotically).
+    /// Contact duration \[s\]; infinite when the grains stick (they come to rest asymptotically).
     pub t_c: f64,
-    /// Maximum compression ξ_max [m] (including the crushed layer).
+    /// Maximum compression ξ_max \[m\] (including the crushed layer).
     pub xi_max: f64,
     /// Estimated bound on the relative error of `eps` at the requested accuracy.
     pub error_estimate: f64,
@@ -79,7 +79,7 @@ fn check_speed(g: f64) -> Result<f64> {
 }
 
 impl Contact {
-    /// Normal restitution at impact speed `g` [m/s] with every effect the scene enables.
+    /// Normal restitution at impact speed `g` \[m/s\] with every effect the scene enables.
     pub fn normal(&self, g: f64, accuracy: Accuracy) -> Result<Normal> {
         let g = check_speed(g)?;
         let error_estimate = accuracy.error_bound();
