@@ -7,11 +7,11 @@ use crate::scene::{AdhesionModulus, ContactEnd, Friction, LayerReading, Scene};
 /// Constants of the soft layer model, Eq. (8)–(10).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LayerConstants {
-    /// Total thickness `D` [m].
+    /// Total thickness `D` \[m\].
     pub thickness: f64,
     /// Drag constant `√R_eff/(K m_eff) = √R_eff η*/m_eff` [m^(-1/2) s^-1] of Eq. (9).
     pub drag: f64,
-    /// Critical velocity `g_s = √R_eff/(K m_eff) D^(3/2)` [m/s], Eq. (10).
+    /// Critical velocity `g_s = √R_eff/(K m_eff) D^(3/2)` \[m/s\], Eq. (10).
     pub critical_velocity: f64,
     /// Which reading of Eq. (8).
     pub reading: LayerReading,
@@ -20,32 +20,32 @@ pub struct LayerConstants {
 /// Constants of the adhesion model, Eq. (12)–(17).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AdhesionConstants {
-    /// Surface energy `γ` [J/m²].
+    /// Surface energy `γ` \[J/m²\].
     pub surface_energy: f64,
-    /// Modulus `E` [Pa] entering Eq. (12) and (15).
+    /// Modulus `E` \[Pa\] entering Eq. (12) and (15).
     pub modulus: f64,
-    /// JKR separation energy `W_s` [J], Eq. (12).
+    /// JKR separation energy `W_s` \[J\], Eq. (12).
     pub separation_energy: f64,
-    /// Critical rebound velocity `g_s` [m/s], Eq. (15).
+    /// Critical rebound velocity `g_s` \[m/s\], Eq. (15).
     pub critical_velocity: f64,
 }
 
 /// Everything a collision needs, derived once from a [`Scene`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Contact {
-    /// Mass of grain 1 [kg].
+    /// Mass of grain 1 \[kg\].
     pub mass_1: f64,
-    /// Mass of grain 2 [kg].
+    /// Mass of grain 2 \[kg\].
     pub mass_2: f64,
-    /// Effective radius `R_eff = R₁R₂/(R₁+R₂)` [m].
+    /// Effective radius `R_eff = R₁R₂/(R₁+R₂)` \[m\].
     pub r_eff: f64,
-    /// Effective mass `m_eff = m₁m₂/(m₁+m₂)` [kg].
+    /// Effective mass `m_eff = m₁m₂/(m₁+m₂)` \[kg\].
     pub m_eff: f64,
     /// Hertz constant `ρ_H = 2Y√R_eff/(3(1−ν²))` [N m^(-3/2)] of Eq. (4).
     pub rho_h: f64,
     /// `α = ρ_H/m_eff` [m^(-1/2) s^-2].
     pub alpha: f64,
-    /// Dissipative constant `A` [s] of Eq. (4).
+    /// Dissipative constant `A` \[s\] of Eq. (4).
     pub damping_time: f64,
     /// Contact-end rule.
     pub contact_end: ContactEnd,
@@ -163,17 +163,17 @@ impl Contact {
         })
     }
 
-    /// The dimensionless damping `δ = A α^(2/5) g^(1/5)` at impact speed `g` [m/s] (DESIGN.md decision 3).
+    /// The dimensionless damping `δ = A α^(2/5) g^(1/5)` at impact speed `g` \[m/s\] (DESIGN.md decision 3).
     pub fn delta(&self, g: f64) -> f64 {
         self.damping_time * powf(self.alpha, 0.4) * powf(g, 0.2)
     }
 
-    /// The length scale `ξ* = (g²/α)^(2/5)` [m] at impact speed `g`.
+    /// The length scale `ξ* = (g²/α)^(2/5)` \[m\] at impact speed `g`.
     pub fn length_scale(&self, g: f64) -> f64 {
         powf(g, 0.8) * powf(self.alpha, -0.4)
     }
 
-    /// The time scale `τ = ξ*/g` [s] at impact speed `g`.
+    /// The time scale `τ = ξ*/g` \[s\] at impact speed `g`.
     pub fn time_scale(&self, g: f64) -> f64 {
         powf(g, -0.2) * powf(self.alpha, -0.4)
     }

@@ -89,6 +89,32 @@ impl std::error::Error for Error {}
 /// Shorthand for `Result<T, rime_core::Error>`.
 pub type Result<T> = core::result::Result<T, Error>;
 
+/// Checks that `value` is finite and strictly positive.
+pub(crate) fn positive(field: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::OutOfRange {
+            field,
+            value,
+            expected: "must be a finite number > 0",
+        })
+    }
+}
+
+/// Checks that `value` is finite and non-negative.
+pub(crate) fn non_negative(field: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::OutOfRange {
+            field,
+            value,
+            expected: "must be a finite number >= 0",
+        })
+    }
+}
+
 /// Checks that `value` lies in `[lo, hi]`.
 pub(crate) fn within(
     field: &'static str,

@@ -26,6 +26,8 @@
 //! `Vec` helpers, `serde` the JSON form of scenes.
 
 #![no_std]
+// `!(x > 0.0)` deliberately treats NaN as invalid; index loops mirror the formulas they implement.
+#![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
 #[cfg(feature = "alloc")]
@@ -34,20 +36,29 @@ extern crate alloc;
 extern crate std;
 
 pub mod accuracy;
+pub mod analytic;
 pub mod contact;
 pub mod error;
+pub mod kinematics;
+pub mod master;
 mod math;
 pub mod normal;
 pub mod ode;
 pub mod params;
 pub mod scene;
+pub mod sweep;
+pub mod tangential;
+pub mod tidal;
 pub mod units;
 
 pub use accuracy::Accuracy;
 pub use contact::Contact;
 pub use error::{Error, Result};
+pub use kinematics::GrainState;
 pub use normal::{Normal, Status};
 pub use scene::{
     Adhesion, AdhesionModulus, Bulk, ContactEnd, Damping, DampingFormula, Friction, Grains, Layer,
     LayerReading, Preset, Scene, SlidingLaw, Viscosities,
 };
+pub use tangential::{StickClass, Tangential};
+pub use tidal::{Tidal, TidalInput};

@@ -8,7 +8,7 @@
 //! `master_table_matches_a_fresh_generation` fails when the committed table is stale). Evaluation needs
 //! no allocation and no integration: one logarithm, three Clenshaw sums and three exponentials.
 //!
-//! Below `U_MIN` the curve is linear in δ (ε = 1 − k δ + O(δ²), with k from the first segment) and at
+//! Below `U_MIN` the curve is linear in δ (ε = 1 − 1.5 C1 δ + O(δ²), Schwager & Pöschel 1998) and at
 //! δ = 0 exactly elastic. Above the force-zero table's end ε < 1e-11 (overdamped); above the
 //! zero-overlap table's end the creeping contact is overdamped (see
 //! [`crate::normal::viscoelastic::CREEP_DELTA_LIMIT`]).
@@ -18,15 +18,15 @@ use crate::normal::viscoelastic::Dimensionless;
 use crate::scene::ContactEnd;
 
 /// Lower end of the tables in u = log₁₀ δ.
-pub const U_MIN: f64 = -12.0;
+pub const U_MIN: f64 = -9.0;
 /// Upper end of the force-zero table in u = log₁₀ δ.
 pub const U_MAX_FORCE_ZERO: f64 = 7.0;
 /// Upper end of the zero-overlap table in u = log₁₀ δ (ε ≈ 2e-8 there).
 pub const U_MAX_ZERO_OVERLAP: f64 = 1.5;
 /// Width of one segment in u.
-pub const SEGMENT: f64 = 0.25;
+pub const SEGMENT: f64 = 0.125;
 /// Chebyshev coefficients per segment.
-pub const DEGREE: usize = 14;
+pub const DEGREE: usize = 16;
 
 /// Number of segments of a table spanning `[U_MIN, u_max]`.
 pub const fn segments(u_max: f64) -> usize {
@@ -97,15 +97,22 @@ pub fn lookup(delta: f64, end: ContactEnd) -> Dimensionless {
     }
     let u = libm::log10(delta);
     if u < U_MIN {
-        // ln ε, ln(s_c/s_c0), ln(x_max/x_max0) are all ∝ δ as δ → 0.
-        let scale = delta / powf(10.0, U_MIN);
-        let ln = |q: usize, base: f64| base * libm::exp((table_ln(table, U_MIN, q) - libm::log(base)) * scale);
-        return point(ln(0, 1.0), ln(1, hertz_s), ln(2, hertz_x));
+        // Schwager–Pöschel: ε = 1 − 1.5 C1 δ + O(δ²), O(δ²) < 2e-18 here; s_c and x_max are
+        // elastic to within O(δ) < 1e-9 relative... and are only used for t_c and ξ_max.
+        return point(
+            1.0 - crate::analytic::SMALL_DELTA_SLOPE * delta,
+            hertz_s,
+            hertz_x,
+        );
     }
     if u >= table.u_max {
         let beyond = u - table.u_max;
         let eps = tail_eps(table, end, delta, beyond);
-        let s_c = if eps == 0.0 { f64::INFINITY } else { libm::exp(table_ln(table, table.u_max, 1)) };
+        let s_c = if eps == 0.0 {
+            f64::INFINITY
+        } else {
+            libm::exp(table_ln(table, table.u_max, 1))
+        };
         // x_max ∝ δ^(-2/3) in the overdamped regime.
         let x_max = libm::exp(table_ln(table, table.u_max, 2)) * powf(10.0, -2.0 / 3.0 * beyond);
         return point(eps, s_c, x_max);
@@ -224,4 +231,80 @@ fn fit_segment(end: ContactEnd, u0: f64) -> crate::Result<[[f64; DEGREE]; 3]> {
         }
     }
     Ok(coeffs)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::normal::viscoelastic::dimensionless;
+
+    fn rel(a: f64, b: f64) -> f64 {
+        ((a - b) / b).abs()
+    }
+
+    #[test]
+    fn table_matches_the_integrator_between_its_nodes() {
+        // Off-node points (irrational steps in u) against a tighter integration than the one that
+        // built the table's nodes would need.
+        let mut worst = [0.0f64; 3];
+        for end in [ContactEnd::ForceZero, ContactEnd::ZeroOverlap] {
+            let mut u = U_MIN + 0.0123;
+            while u < table(end).u_max {
+                let delta = powf(10.0, u);
+                let fast = lookup(delta, end);
+                let precise = dimensionless(delta, end, 1e-13).unwrap();
+                if precise.eps > 1e-6 {
+                    worst[0] = worst[0].max(rel(fast.eps, precise.eps));
+                    worst[1] = worst[1].max(rel(fast.s_c, precise.s_c));
+                    worst[2] = worst[2].max(rel(fast.x_max, precise.x_max));
+                    assert_eq!(eps(delta, end), fast.eps);
+                }
+                u += 0.1 * core::f64::consts::SQRT_2;
+            }
+        }
+        assert!(worst[0] < 1e-10, "ε: {worst:?}");
+        assert!(worst[1] < 1e-8 && worst[2] < 1e-8, "{worst:?}");
+    }
+
+    #[test]
+    fn below_the_table_the_curve_is_linear_in_delta() {
+        // 1 − ε ≈ 1.5 C1 δ (Schwager–Pöschel) far below the table.
+        for end in [ContactEnd::ForceZero, ContactEnd::ZeroOverlap] {
+            // Continuity at the table's lower end: the table (built by integration) and the
+            // first-order series meet to within the integrator's absolute error.
+            let at = powf(10.0, U_MIN);
+            let above = lookup(at * (1.0 + 1e-12), end).eps;
+            let below = lookup(at * (1.0 - 1e-12), end).eps;
+            assert!((above - below).abs() < 1e-13, "{above} vs {below}");
+            assert_eq!(eps(0.0, end), 1.0);
+            let l = lookup(1e-13, end);
+            assert!(rel(l.s_c, crate::analytic::HERTZ_CONTACT_TIME) < 1e-11);
+        }
+    }
+
+    #[test]
+    fn far_above_the_table_the_coefficient_is_overdamped() {
+        let d = 1e8;
+        let fz = lookup(d, ContactEnd::ForceZero);
+        // ε → (2/3) δ^(-5/3) for strong damping (measured; consistent with the power-law tail).
+        assert!(
+            rel(fz.eps, 2.0 / 3.0 * powf(d, -5.0 / 3.0)) < 1e-3,
+            "{}",
+            fz.eps
+        );
+        assert!(fz.eps < crate::normal::OVERDAMPED_THRESHOLD);
+        assert_eq!(lookup(1e3, ContactEnd::ZeroOverlap).eps, 0.0);
+    }
+
+    #[cfg(feature = "std")]
+    #[test]
+    fn master_table_matches_a_fresh_generation() {
+        let fresh = generate_source().unwrap();
+        let committed = include_str!("master_table.rs");
+        assert!(
+            fresh == committed,
+            "core/src/master_table.rs is stale: regenerate it with \
+             `cargo run --release -p rime-core --example generate_master_table > core/src/master_table.rs`"
+        );
+    }
 }

@@ -6,8 +6,8 @@
 //! [`StepOutcome::Done`]. The system is passed to every call, so a caller may switch the phase of a
 //! piecewise system between steps (restarting with [`Dopri5::restart`]).
 //!
-//! References: [1] Dormand & Prince (1980), J. Comput. Appl. Math. 6, 19–26;
-//! [2] Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.5–6 (the `dopri5` dense output and step control).
+//! References: \[1\] Dormand & Prince (1980), J. Comput. Appl. Math. 6, 19–26;
+//! \[2\] Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.5–6 (the `dopri5` dense output and step control).
 
 use crate::error::{Error, Result};
 use crate::math::{powf, sqrt};
@@ -362,6 +362,7 @@ impl<const N: usize, const M: usize> Dopri5<N, M> {
     }
 
     /// Finds sign changes of the event functions inside the last step and queues them in time order.
+    #[allow(clippy::needless_range_loop)] // `which` also indexes `events_old` and names the event.
     fn locate_events<S: OdeSystem<N, M>>(&mut self, sys: &S) {
         let mut g_new = [0.0; M];
         sys.events(self.t, &self.y, &mut g_new);

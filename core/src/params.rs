@@ -3,8 +3,8 @@
 
 use crate::error::{Error, Result};
 use crate::scene::{
-    Adhesion, AdhesionModulus, ContactEnd, Damping, DampingFormula, Friction, Layer, LayerReading,
-    Scene, SlidingLaw, Viscosities,
+    AdhesionModulus, ContactEnd, Damping, DampingFormula, LayerReading, Scene, SlidingLaw,
+    Viscosities,
 };
 use crate::units::parse_quantity;
 
@@ -52,7 +52,14 @@ pub enum Value {
     Inactive,
 }
 
-const fn num(path: &'static str, label: &'static str, unit: &'static str, min: f64, max: f64, log: bool) -> Parameter {
+const fn num(
+    path: &'static str,
+    label: &'static str,
+    unit: &'static str,
+    min: f64,
+    max: f64,
+    log: bool,
+) -> Parameter {
     Parameter {
         path,
         label,
@@ -63,14 +70,56 @@ const fn num(path: &'static str, label: &'static str, unit: &'static str, min: f
 
 /// Every settable parameter, in display order.
 pub const PARAMETERS: &[Parameter] = &[
-    num("grains.radius_1", "R₁ radius of grain 1", "m", 1e-9, 1e4, true),
-    num("grains.radius_2", "R₂ radius of grain 2", "m", 1e-9, 1e4, true),
+    num(
+        "grains.radius_1",
+        "R₁ radius of grain 1",
+        "m",
+        1e-9,
+        1e4,
+        true,
+    ),
+    num(
+        "grains.radius_2",
+        "R₂ radius of grain 2",
+        "m",
+        1e-9,
+        1e4,
+        true,
+    ),
     num("grains.density", "ρ density", "kg/m³", 1e-3, 1e6, true),
-    num("bulk.youngs_modulus", "Y Young's modulus", "Pa", 1e-3, 1e15, true),
-    num("bulk.poisson_ratio", "ν Poisson ratio", "", -0.999, 0.5, false),
+    num(
+        "bulk.youngs_modulus",
+        "Y Young's modulus",
+        "Pa",
+        1e-3,
+        1e15,
+        true,
+    ),
+    num(
+        "bulk.poisson_ratio",
+        "ν Poisson ratio",
+        "",
+        -0.999,
+        0.5,
+        false,
+    ),
     num("bulk.damping.time", "A damping time", "s", 0.0, 1e6, true),
-    num("bulk.damping.viscosities.shear", "η₁ shear viscosity", "Pa s", 0.0, 1e30, true),
-    num("bulk.damping.viscosities.bulk", "η₂ bulk viscosity", "Pa s", 0.0, 1e30, true),
+    num(
+        "bulk.damping.viscosities.shear",
+        "η₁ shear viscosity",
+        "Pa s",
+        0.0,
+        1e30,
+        true,
+    ),
+    num(
+        "bulk.damping.viscosities.bulk",
+        "η₂ bulk viscosity",
+        "Pa s",
+        0.0,
+        1e30,
+        true,
+    ),
     Parameter {
         path: "bulk.damping.viscosities.formula",
         label: "A formula",
@@ -90,7 +139,14 @@ pub const PARAMETERS: &[Parameter] = &[
         kind: Kind::Toggle,
     },
     num("layer.thickness", "D layer thickness", "m", 0.0, 1.0, true),
-    num("layer.viscosity", "η* layer viscosity", "Pa s", 0.0, 1e15, true),
+    num(
+        "layer.viscosity",
+        "η* layer viscosity",
+        "Pa s",
+        0.0,
+        1e15,
+        true,
+    ),
     Parameter {
         path: "layer.reading",
         label: "Eq. 8 reading",
@@ -103,7 +159,14 @@ pub const PARAMETERS: &[Parameter] = &[
         unit: "",
         kind: Kind::Toggle,
     },
-    num("adhesion.surface_energy", "γ surface energy", "J/m²", 0.0, 1e6, true),
+    num(
+        "adhesion.surface_energy",
+        "γ surface energy",
+        "J/m²",
+        0.0,
+        1e6,
+        true,
+    ),
     Parameter {
         path: "adhesion.modulus",
         label: "adhesion modulus",
@@ -116,7 +179,14 @@ pub const PARAMETERS: &[Parameter] = &[
         unit: "",
         kind: Kind::Toggle,
     },
-    num("friction.coefficient", "μ friction coefficient", "", 0.0, 100.0, false),
+    num(
+        "friction.coefficient",
+        "μ friction coefficient",
+        "",
+        0.0,
+        100.0,
+        false,
+    ),
     num("friction.kappa", "κ reduced inertia", "", 1e-6, 1.0, false),
     Parameter {
         path: "friction.sliding_law",
@@ -131,7 +201,11 @@ pub fn parameter(path: &str) -> Option<&'static Parameter> {
     PARAMETERS.iter().find(|p| p.path == path)
 }
 
-fn choice(field: &'static str, text: &str, options: &'static [&'static str]) -> Result<&'static str> {
+fn choice(
+    field: &'static str,
+    text: &str,
+    options: &'static [&'static str],
+) -> Result<&'static str> {
     let t = text.trim().trim_matches('"');
     options
         .iter()
@@ -201,7 +275,9 @@ impl Scene {
                 })
             }),
             "adhesion" => Value::Enabled(self.adhesion.is_some()),
-            "adhesion.surface_energy" => self.adhesion.map_or(Value::Inactive, |a| n(a.surface_energy)),
+            "adhesion.surface_energy" => self
+                .adhesion
+                .map_or(Value::Inactive, |a| n(a.surface_energy)),
             "adhesion.modulus" => self.adhesion.map_or(Value::Inactive, |a| {
                 Value::Choice(match a.modulus {
                     AdhesionModulus::AsPrinted => "as_printed",
@@ -270,7 +346,7 @@ impl Scene {
                 next.friction = toggle(field, text)?.then(|| self.friction.unwrap_or_default())
             }
             "layer.thickness" | "layer.viscosity" | "layer.reading" => {
-                let mut l = next.layer.unwrap_or(Layer::default());
+                let mut l = next.layer.unwrap_or_default();
                 match field {
                     "layer.thickness" => l.thickness = number()?,
                     "layer.viscosity" => l.viscosity = number()?,
@@ -284,7 +360,7 @@ impl Scene {
                 next.layer = Some(l);
             }
             "adhesion.surface_energy" | "adhesion.modulus" => {
-                let mut a = next.adhesion.unwrap_or(Adhesion::default());
+                let mut a = next.adhesion.unwrap_or_default();
                 match field {
                     "adhesion.surface_energy" => a.surface_energy = number()?,
                     _ => {
@@ -297,7 +373,7 @@ impl Scene {
                 next.adhesion = Some(a);
             }
             "friction.coefficient" | "friction.kappa" | "friction.sliding_law" => {
-                let mut f = next.friction.unwrap_or(Friction::default());
+                let mut f = next.friction.unwrap_or_default();
                 match field {
                     "friction.coefficient" => f.coefficient = number()?,
                     "friction.kappa" => f.kappa = number()?,
@@ -386,7 +462,7 @@ mod tests {
         for p in PARAMETERS {
             if let Kind::Number { min, max, .. } = p.kind {
                 let mut s = crate::Preset::IceFrost.scene();
-                s.adhesion = Some(Adhesion::default());
+                s.adhesion = Some(crate::Adhesion::default());
                 let target = if p.path.starts_with("bulk.damping.viscosities") {
                     2.5e11
                 } else if min > 0.0 {
@@ -394,7 +470,11 @@ mod tests {
                 } else {
                     max * 0.25
                 };
-                let target = if p.path == "bulk.poisson_ratio" { 0.25 } else { target };
+                let target = if p.path == "bulk.poisson_ratio" {
+                    0.25
+                } else {
+                    target
+                };
                 s.set_number(p.path, target).unwrap();
                 assert_eq!(s.get(p.path).unwrap(), Value::Number(target), "{}", p.path);
             }

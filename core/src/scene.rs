@@ -11,11 +11,11 @@ use crate::error::{Error, Result, within};
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct Grains {
-    /// Radius of grain 1 [m]. Default 0.02 m (so that R_eff = 1 cm as in the paper).
+    /// Radius of grain 1 \[m\]. Default 0.02 m (so that R_eff = 1 cm as in the paper).
     pub radius_1: f64,
-    /// Radius of grain 2 [m]. Default 0.02 m.
+    /// Radius of grain 2 \[m\]. Default 0.02 m.
     pub radius_2: f64,
-    /// Density of both grains [kg/m³]. Default 900 kg/m³ (water ice).
+    /// Density of both grains \[kg/m³\]. Default 900 kg/m³ (water ice).
     pub density: f64,
 }
 
@@ -34,7 +34,7 @@ impl Default for Grains {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Damping {
-    /// `A` given directly [s]. The default preset uses `A = 1e-4 s` (DESIGN.md decision 1).
+    /// `A` given directly \[s\]. The default preset uses `A = 1e-4 s` (DESIGN.md decision 1).
     Time(f64),
     /// `A` derived from the shear and bulk viscosities (Eq. 4, Brilliantov et al. 1996).
     Viscosities(Viscosities),
@@ -51,9 +51,9 @@ impl Default for Damping {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct Viscosities {
-    /// Shear viscosity η₁ [Pa s]. The paper uses 1e6 Pa s.
+    /// Shear viscosity η₁ \[Pa s\]. The paper uses 1e6 Pa s.
     pub shear: f64,
-    /// Bulk viscosity η₂ [Pa s]. The paper uses 1e12 Pa s.
+    /// Bulk viscosity η₂ \[Pa s\]. The paper uses 1e12 Pa s.
     pub bulk: f64,
     /// Which formula turns (η₁, η₂) into `A`.
     #[cfg_attr(feature = "serde", serde(default))]
@@ -87,9 +87,9 @@ pub enum DampingFormula {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct Bulk {
-    /// Young's modulus `Y` [Pa]. Default 1e10 Pa (ice).
+    /// Young's modulus `Y` \[Pa\]. Default 1e10 Pa (ice).
     pub youngs_modulus: f64,
-    /// Poisson ratio `ν` [1], in (−1, 0.5]. Default 0.3.
+    /// Poisson ratio `ν` \[1\], in (−1, 0.5]. Default 0.3.
     pub poisson_ratio: f64,
     /// The dissipative constant `A` or the viscosities it derives from.
     pub damping: Damping,
@@ -136,9 +136,9 @@ pub enum LayerReading {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct Layer {
-    /// Total thickness `D = D₁ + D₂` [m]. Preset `ice-frost`: 1e-6 m.
+    /// Total thickness `D = D₁ + D₂` \[m\]. Preset `ice-frost`: 1e-6 m.
     pub thickness: f64,
-    /// Effective layer viscosity `η* = 1/K` [Pa s]. Preset `ice-frost`: 1000 Pa s.
+    /// Effective layer viscosity `η* = 1/K` \[Pa s\]. Preset `ice-frost`: 1000 Pa s.
     pub viscosity: f64,
     /// Which reading of Eq. (8).
     #[cfg_attr(feature = "serde", serde(default))]
@@ -172,7 +172,7 @@ pub enum AdhesionModulus {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct Adhesion {
-    /// Dupré energy of adhesion `γ` [J/m²]. Preset `ice-sticky`: 0.1 J/m².
+    /// Dupré energy of adhesion `γ` \[J/m²\]. Preset `ice-sticky`: 0.1 J/m².
     pub surface_energy: f64,
     /// Which modulus enters the JKR energy.
     #[cfg_attr(feature = "serde", serde(default))]
@@ -205,9 +205,9 @@ pub enum SlidingLaw {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct Friction {
-    /// Friction coefficient `μ` [1]. Default 0.3 (the paper's value).
+    /// Friction coefficient `μ` \[1\]. Default 0.3 (the paper's value).
     pub coefficient: f64,
-    /// Reduced moment of inertia `κ` [1] of Eq. (22), `q/(1+q)`; 2/7 for solid spheres.
+    /// Reduced moment of inertia `κ` \[1\] of Eq. (22), `q/(1+q)`; 2/7 for solid spheres.
     pub kappa: f64,
     /// Which sliding law.
     #[cfg_attr(feature = "serde", serde(default))]
@@ -453,7 +453,7 @@ impl Scene {
         crate::contact::Contact::new(self).map(|_| ())
     }
 
-    /// The damping time `A` [s] of Eq. (4), from whichever form the scene gives.
+    /// The damping time `A` \[s\] of Eq. (4), from whichever form the scene gives.
     pub fn damping_time(&self) -> f64 {
         match self.bulk.damping {
             Damping::Time(a) => a,

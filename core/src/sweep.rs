@@ -40,7 +40,12 @@ pub fn linear_space(max: f64, out: &mut [f64]) {
 }
 
 /// ε_N and the rest at every speed of `g` (each > 0).
-pub fn curve_into(contact: &Contact, g: &[f64], accuracy: Accuracy, out: &mut [Normal]) -> Result<()> {
+pub fn curve_into(
+    contact: &Contact,
+    g: &[f64],
+    accuracy: Accuracy,
+    out: &mut [Normal],
+) -> Result<()> {
     if out.len() != g.len() {
         return Err(Error::InvalidValue {
             field: "out",

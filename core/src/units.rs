@@ -108,7 +108,10 @@ pub fn parse_quantity(field: &'static str, text: &str, unit: &str) -> Result<f64
         };
         // Prefix on the unit's first symbol (e.g. "um" for "m", "kPa s" for "Pa s"), or on a leading
         // "kg" replaced by "g" (e.g. "g/m3" for "kg/m3").
-        if given.len() == p.len() + si.len() && given.starts_with(p.as_bytes()) && &given[p.len()..] == si {
+        if given.len() == p.len() + si.len()
+            && given.starts_with(p.as_bytes())
+            && &given[p.len()..] == si
+        {
             return Ok(value * factor);
         }
     }
@@ -142,17 +145,35 @@ mod tests {
         assert!(close(parse_quantity("x", "2 cm", "m").unwrap(), 0.02));
         assert!(close(parse_quantity("x", "1e-6", "m").unwrap(), 1e-6));
         assert!(close(parse_quantity("x", "3 cm/s", "m/s").unwrap(), 0.03));
-        assert!(close(parse_quantity("x", "1 kPa s", "Pa s").unwrap(), 1000.0));
-        assert!(close(parse_quantity("x", "1 kPa·s", "Pa s").unwrap(), 1000.0));
+        assert!(close(
+            parse_quantity("x", "1 kPa s", "Pa s").unwrap(),
+            1000.0
+        ));
+        assert!(close(
+            parse_quantity("x", "1 kPa·s", "Pa s").unwrap(),
+            1000.0
+        ));
         assert!(close(parse_quantity("x", "10 GPa", "Pa").unwrap(), 1e10));
-        assert!(close(parse_quantity("x", "100 mJ/m^2", "J/m²").unwrap(), 0.1));
-        assert!(close(parse_quantity("x", "0.9 g/cm³", "kg/m³").unwrap(), 900.0));
+        assert!(close(
+            parse_quantity("x", "100 mJ/m^2", "J/m²").unwrap(),
+            0.1
+        ));
+        assert!(close(
+            parse_quantity("x", "0.9 g/cm³", "kg/m³").unwrap(),
+            900.0
+        ));
         assert!(close(parse_quantity("x", "-2.5e-3", "").unwrap(), -2.5e-3));
     }
 
     #[test]
     fn wrong_units_and_garbage_name_the_field() {
-        for (text, unit) in [("1 Pa", "m"), ("1 m", ""), ("abc", "m"), ("1 um/s", "m"), ("", "m")] {
+        for (text, unit) in [
+            ("1 Pa", "m"),
+            ("1 m", ""),
+            ("abc", "m"),
+            ("1 um/s", "m"),
+            ("", "m"),
+        ] {
             let e = parse_quantity("layer.thickness", text, unit).unwrap_err();
             let msg = alloc_free_message(&e);
             assert!(msg.contains("layer.thickness"), "{text}: {msg}");

@@ -4,12 +4,18 @@ use std::path::PathBuf;
 
 /// Relative difference |a − b| / |b| (absolute when b = 0).
 pub fn rel(a: f64, b: f64) -> f64 {
-    if b == 0.0 { a.abs() } else { ((a - b) / b).abs() }
+    if b == 0.0 {
+        a.abs()
+    } else {
+        ((a - b) / b).abs()
+    }
 }
 
 /// Path of a file under `tests/data/`.
 pub fn data(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data").join(name)
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("data")
+        .join(name)
 }
 
 /// Reads a CSV file with a header into rows of (column name → text) pairs.
@@ -17,7 +23,9 @@ pub fn read_csv(name: &str) -> Vec<std::collections::HashMap<String, String>> {
     let path = data(name);
     let text = std::fs::read_to_string(&path)
         .unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
-    let mut lines = text.lines().filter(|l| !l.trim().is_empty() && !l.starts_with('#'));
+    let mut lines = text
+        .lines()
+        .filter(|l| !l.trim().is_empty() && !l.starts_with('#'));
     let header: Vec<String> = lines
         .next()
         .unwrap_or_default()
@@ -40,7 +48,11 @@ pub fn read_csv(name: &str) -> Vec<std::collections::HashMap<String, String>> {
 pub fn rime_binary() -> PathBuf {
     let exe = std::env::current_exe().unwrap_or_default();
     // target/<profile>/deps/integration-… → target/<profile>/rime
-    let profile_dir = exe.parent().and_then(|p| p.parent()).map(PathBuf::from).unwrap_or_default();
+    let profile_dir = exe
+        .parent()
+        .and_then(|p| p.parent())
+        .map(PathBuf::from)
+        .unwrap_or_default();
     let candidate = profile_dir.join("rime");
     if candidate.exists() {
         return candidate;
@@ -48,9 +60,16 @@ pub fn rime_binary() -> PathBuf {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
     let status = std::process::Command::new(env!("CARGO"))
         .args(["build", "-q", "-p", "rime-tui"])
-        .arg(if profile_dir.ends_with("release") { "--release" } else { "--quiet" })
+        .arg(if profile_dir.ends_with("release") {
+            "--release"
+        } else {
+            "--quiet"
+        })
         .current_dir(&root)
         .status();
-    assert!(matches!(status, Ok(s) if s.success()), "building rime failed");
+    assert!(
+        matches!(status, Ok(s) if s.success()),
+        "building rime failed"
+    );
     candidate
 }

@@ -1,4 +1,3 @@
 //! The one integration-test binary of rime.
 
 mod physics;
-mod reference;

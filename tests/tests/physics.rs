@@ -1,7 +1,9 @@
 //! Closed forms, limits, conservation laws and invariances of the normal models.
 
 use rime_core::normal::viscoelastic::dimensionless;
-use rime_core::{Accuracy, Contact, ContactEnd, Damping, Layer, LayerReading, Preset, Scene, Status};
+use rime_core::{
+    Accuracy, Contact, ContactEnd, Damping, Layer, LayerReading, Preset, Scene, Status,
+};
 use rime_tests::rel;
 
 fn scene_with(a: f64) -> Scene {
@@ -30,9 +32,20 @@ fn eps_depends_on_delta_alone() {
         sa.contact_end = end;
         let mut sb = other;
         sb.contact_end = end;
-        let ea = Contact::new(&sa).unwrap().normal(g_a, Accuracy::Precise).unwrap();
-        let eb = Contact::new(&sb).unwrap().normal(g_b, Accuracy::Precise).unwrap();
-        assert!(rel(ea.eps, eb.eps) < 1e-11, "{end:?}: {} vs {}", ea.eps, eb.eps);
+        let ea = Contact::new(&sa)
+            .unwrap()
+            .normal(g_a, Accuracy::Precise)
+            .unwrap();
+        let eb = Contact::new(&sb)
+            .unwrap()
+            .normal(g_b, Accuracy::Precise)
+            .unwrap();
+        assert!(
+            rel(ea.eps, eb.eps) < 1e-11,
+            "{end:?}: {} vs {}",
+            ea.eps,
+            eb.eps
+        );
         // Durations scale with τ = ξ*/g, compressions with ξ*.
         let ta = ea.t_c / Contact::new(&sa).unwrap().time_scale(g_a);
         let tb = eb.t_c / Contact::new(&sb).unwrap().time_scale(g_b);
@@ -47,7 +60,11 @@ fn no_damping_conserves_energy_at_every_speed() {
     while g <= 1e2 {
         for acc in [Accuracy::Precise, Accuracy::Balanced] {
             let n = c.normal(g, acc).unwrap();
-            assert!((n.eps - 1.0).abs() <= acc.error_bound(), "g = {g}: {}", n.eps);
+            assert!(
+                (n.eps - 1.0).abs() <= acc.error_bound(),
+                "g = {g}: {}",
+                n.eps
+            );
             assert_eq!(n.status, Status::Rebound);
             // Hertz: t_c = 3.21806545971904 τ, ξ_max = (5/4)^(2/5) ξ*.
             assert!(rel(n.t_c, 3.21806545971904 * c.time_scale(g)) < 1e-9);
@@ -66,7 +83,12 @@ fn precise_agrees_with_a_tighter_tolerance() {
             let p = dimensionless(delta, end, 1e-12).unwrap();
             let t = dimensionless(delta, end, 1e-14).unwrap();
             if t.eps > 1e-6 {
-                assert!(rel(p.eps, t.eps) < 1e-10, "{end:?} δ = {delta}: {} vs {}", p.eps, t.eps);
+                assert!(
+                    rel(p.eps, t.eps) < 1e-10,
+                    "{end:?} δ = {delta}: {} vs {}",
+                    p.eps,
+                    t.eps
+                );
             }
             delta *= 3.0;
         }
@@ -79,14 +101,16 @@ fn offset_layer_threshold_is_exactly_eq_10() {
     let c = Contact::new(&scene).unwrap();
     let layer = c.layer.unwrap();
     // Independent evaluation of Eq. (10): √R_eff η* D^(3/2) / m_eff.
-    let r_eff = 0.02 * 0.02 / 0.04;
+    let r_eff: f64 = 0.02 * 0.02 / 0.04;
     let m = 900.0 * 4.0 / 3.0 * std::f64::consts::PI * 0.02f64.powi(3);
     let g_s = r_eff.sqrt() * 1000.0 * 1e-6f64.powf(1.5) / (m / 2.0);
     assert!(rel(layer.critical_velocity, g_s) < 1e-14);
     let below = c.normal(g_s * (1.0 - 1e-12), Accuracy::Precise).unwrap();
     assert_eq!(below.status, Status::StuckInLayer);
     assert_eq!(below.eps, 0.0);
-    let at = c.normal(layer.critical_velocity, Accuracy::Precise).unwrap();
+    let at = c
+        .normal(layer.critical_velocity, Accuracy::Precise)
+        .unwrap();
     assert_eq!(at.status, Status::StuckInLayer);
     // Just above: ε_N → 0 continuously, like (g − g_s)/g.
     let above = c.normal(g_s * (1.0 + 1e-9), Accuracy::Precise).unwrap();
@@ -113,12 +137,26 @@ fn offset_layer_equals_clean_model_at_the_bulk_entry_speed() {
 fn zero_thickness_or_viscosity_layers_are_the_clean_model() {
     let clean = Contact::new(&Scene::default()).unwrap();
     for layer in [
-        Layer { thickness: 0.0, viscosity: 1000.0, reading: LayerReading::Offset },
-        Layer { thickness: 1e-6, viscosity: 0.0, reading: LayerReading::Offset },
-        Layer { thickness: 0.0, viscosity: 1000.0, reading: LayerReading::Literal },
+        Layer {
+            thickness: 0.0,
+            viscosity: 1000.0,
+            reading: LayerReading::Offset,
+        },
+        Layer {
+            thickness: 1e-6,
+            viscosity: 0.0,
+            reading: LayerReading::Offset,
+        },
+        Layer {
+            thickness: 0.0,
+            viscosity: 1000.0,
+            reading: LayerReading::Literal,
+        },
     ] {
-        let mut s = Scene::default();
-        s.layer = Some(layer);
+        let s = Scene {
+            layer: Some(layer),
+            ..Scene::default()
+        };
         let c = Contact::new(&s).unwrap();
         for g in [1e-9, 1e-3, 1.0] {
             let a = c.normal(g, Accuracy::Precise).unwrap().eps;
@@ -131,7 +169,11 @@ fn zero_thickness_or_viscosity_layers_are_the_clean_model() {
 #[test]
 fn paper_viscosities_are_promptly_overdamped() {
     let c = Contact::new(&Preset::IcePaperViscosities.scene()).unwrap();
-    assert!(rel(c.damping_time, 404.4439051855896) < 1e-12, "{}", c.damping_time);
+    assert!(
+        rel(c.damping_time, 404.4439051855896) < 1e-12,
+        "{}",
+        c.damping_time
+    );
     for g in [1e-12, 1e-6, 1e-2, 1.0, 1e2] {
         for acc in [Accuracy::Precise, Accuracy::Balanced] {
             let n = c.normal(g, acc).unwrap();
@@ -155,7 +197,10 @@ fn every_preset_and_option_is_finite_from_1e_12_to_1e2() {
                 let mut g = 1e-12;
                 while g <= 1e2 {
                     let n = c.normal(g, Accuracy::Balanced).unwrap();
-                    assert!(n.eps.is_finite() && (0.0..=1.0 + 1e-9).contains(&n.eps), "{preset:?} g={g}");
+                    assert!(
+                        n.eps.is_finite() && (0.0..=1.0 + 1e-9).contains(&n.eps),
+                        "{preset:?} g={g}"
+                    );
                     assert!(n.xi_max.is_finite() && n.xi_max >= 0.0);
                     assert!(!n.t_c.is_nan());
                     g *= 10f64.sqrt();

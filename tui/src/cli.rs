@@ -42,8 +42,8 @@ pub enum Command {
     Map(Common, f64, usize),
     /// `rime tidal [--planet-mass M] [--distance D] [--radius R] [--density RHO] [--surface-energy G]`.
     Tidal(Common, rime_core::tidal::TidalInput),
-    /// `rime scene [--preset NAME]`.
-    Scene(Common),
+    /// `rime scene [--preset NAME] [--out FILE]`.
+    Scene(Common, Option<PathBuf>),
     /// `rime help` or `--help`.
     Help,
     /// `rime --version`.
@@ -61,7 +61,7 @@ USAGE:
   rime tangential --gn LIST --gt LIST            ε_T for every (g_N, g_T) combination
   rime map --max G --n N                         stick-map classes on an N×N grid from 0 to G
   rime tidal [--planet-mass KG] [--distance M] [--radius M] [--density KG/M3] [--surface-energy J/M2]
-  rime scene [--preset NAME]                     print the scene JSON
+  rime scene [--preset NAME] [--out FILE]        print (or atomically write) the scene JSON
 
 OPTIONS:
   --scene FILE.json        scene file (default: the `ice` preset)
@@ -107,7 +107,9 @@ fn speed_list(flag: &str, text: &str, allow_zero: bool) -> CliResult<Vec<f64>> {
 fn count(flag: &str, text: &str, min: usize, max: usize) -> CliResult<usize> {
     match text.trim().parse::<usize>() {
         Ok(n) if (min..=max).contains(&n) => Ok(n),
-        _ => err(format!("{flag}: '{text}' must be a whole number in [{min}, {max}]")),
+        _ => err(format!(
+            "{flag}: '{text}' must be a whole number in [{min}, {max}]"
+        )),
     }
 }
 
@@ -115,11 +117,9 @@ fn count(flag: &str, text: &str, min: usize, max: usize) -> CliResult<usize> {
 pub fn parse(args: &[String]) -> CliResult<Command> {
     let mut sub: Option<&str> = None;
     let mut rest = args;
-    if let Some(first) = args.first() {
-        if !first.starts_with('-') {
-            sub = Some(first.as_str());
-            rest = &args[1..];
-        }
+    if let Some(first) = args.first().filter(|a| !a.starts_with('-')) {
+        sub = Some(first.as_str());
+        rest = &args[1..];
     }
     let mut scene_file: Option<PathBuf> = None;
     let mut preset_name: Option<String> = None;
@@ -192,7 +192,8 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
         format,
     };
     let allowed: &[&str] = match sub {
-        None | Some("explore") | Some("scene") => &[],
+        None | Some("explore") => &[],
+        Some("scene") => &["--out"],
         Some("eps") => &["--g"],
         Some("curve") => &["--from", "--to", "--points"],
         Some("tangential") => &["--gn", "--gt"],
@@ -225,7 +226,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
     };
     Ok(match sub {
         None | Some("explore") => Command::Explore(common),
-        Some("scene") => Command::Scene(common),
+        Some("scene") => Command::Scene(common, get("--out").map(PathBuf::from)),
         Some("eps") => {
             let g = speed_list("--g", require("--g")?, false)?;
             Command::Eps(common, g)

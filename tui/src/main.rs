@@ -59,7 +59,9 @@ fn run_map(common: &Common, max: f64, n: usize) -> CliResult<String> {
     }
     let map = sweep::StickMap::new(&contact, max, n, common.accuracy)?;
     let rows = |f: &dyn Fn(usize) -> f64| -> Vec<Vec<f64>> {
-        (0..n).map(|i| (0..n).map(|j| f(i * n + j)).collect()).collect()
+        (0..n)
+            .map(|i| (0..n).map(|j| f(i * n + j)).collect())
+            .collect()
     };
     let record = MapRecord {
         g: map.g.clone(),
@@ -70,7 +72,9 @@ fn run_map(common: &Common, max: f64, n: usize) -> CliResult<String> {
         eps_n: map.eps_n.clone(),
     };
     Ok(match common.format {
-        cli::Format::Json => serde_json::to_string(&record).map_err(|e| CliError(e.to_string()))? + "\n",
+        cli::Format::Json => {
+            serde_json::to_string(&record).map_err(|e| CliError(e.to_string()))? + "\n"
+        }
         cli::Format::Csv => {
             let mut s = String::from("g_n,g_t,eps_t,class\n");
             for i in 0..n {
@@ -126,14 +130,20 @@ fn run_tidal(common: &Common, input: &rime_core::tidal::TidalInput) -> CliResult
         cli::Format::Json => {
             let mut map = serde_json::Map::new();
             for (k, v, _) in &values {
-                map.insert(k.to_string(), v.map_or(serde_json::Value::Null, serde_json::Value::from));
+                map.insert(
+                    k.to_string(),
+                    v.map_or(serde_json::Value::Null, serde_json::Value::from),
+                );
             }
             serde_json::to_string_pretty(&map).map_err(|e| CliError(e.to_string()))? + "\n"
         }
         cli::Format::Csv => {
             let mut s = String::from("name,value,unit\n");
             for (k, v, u) in &values {
-                s.push_str(&format!("{k},{},{u}\n", v.map(output::num).unwrap_or_default()));
+                s.push_str(&format!(
+                    "{k},{},{u}\n",
+                    v.map(output::num).unwrap_or_default()
+                ));
             }
             s
         }
@@ -156,7 +166,11 @@ fn run_tidal(common: &Common, input: &rime_core::tidal::TidalInput) -> CliResult
 fn run_curve(common: &Common, from: f64, to: f64, n: usize) -> CliResult<String> {
     let contact = cli::contact(common)?;
     let (g, normals) = sweep::curve(&contact, from, to, n, common.accuracy)?;
-    let records: Vec<EpsRecord> = g.iter().zip(&normals).map(|(&g, n)| EpsRecord::new(g, n)).collect();
+    let records: Vec<EpsRecord> = g
+        .iter()
+        .zip(&normals)
+        .map(|(&g, n)| EpsRecord::new(g, n))
+        .collect();
     render(&records, common.format).map_err(CliError)
 }
 
@@ -164,7 +178,11 @@ fn run(command: Command) -> CliResult<Option<String>> {
     Ok(Some(match command {
         Command::Help => format!("{}\n", cli::USAGE),
         Command::Version => format!("rime {}\n", env!("CARGO_PKG_VERSION")),
-        Command::Scene(c) => cli::scene_text(&c)?,
+        Command::Scene(c, None) => cli::scene_text(&c)?,
+        Command::Scene(c, Some(path)) => {
+            scene_io::write_atomic(&path, cli::scene_text(&c)?.as_bytes())?;
+            return Ok(None);
+        }
         Command::Eps(c, g) => run_eps(&c, &g)?,
         Command::Curve(c, from, to, n) => run_curve(&c, from, to, n)?,
         Command::Tangential(c, gn, gt) => run_tangential(&c, &gn, &gt)?,

@@ -64,7 +64,11 @@ pub struct MapRecord {
 
 /// Formats a number for CSV and tables: shortest round-trip form, `null`/empty never NaN.
 pub fn num(v: f64) -> String {
-    if v.is_finite() { format!("{v:e}") } else { String::new() }
+    if v.is_finite() {
+        format!("{v:e}")
+    } else {
+        String::new()
+    }
 }
 
 fn opt(v: Option<f64>) -> String {

@@ -80,7 +80,10 @@ pub fn apply_set(scene: &mut Scene, assignment: &str) -> CliResult<()> {
     match scene.set(path, value) {
         Ok(()) => Ok(()),
         Err(rime_core::Error::UnknownParameter) => {
-            let known: Vec<&str> = rime_core::params::PARAMETERS.iter().map(|p| p.path).collect();
+            let known: Vec<&str> = rime_core::params::PARAMETERS
+                .iter()
+                .map(|p| p.path)
+                .collect();
             err(format!(
                 "--set {path}: unknown parameter (known: {})",
                 known.join(", ")

@@ -42,14 +42,14 @@ impl Status {
 /// The outcome of a normal collision at impact speed `g_n`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Normal {
-    /// Normal restitution coefficient ε_N = −g'_N/g_N ∈ [0, 1] (Eq. 1). For `Overdamped` this is the
+    /// Normal restitution coefficient ε_N = −g'_N/g_N ∈ \[0, 1\] (Eq. 1). For `Overdamped` this is the
     /// raw (tiny) value.
     pub eps: f64,
     /// How the collision ended.
     pub status: Status,
-    /// Contact duration [s]; infinite when the grains stick (they come to rest asymptotically).
+    /// Contact duration \[s\]; infinite when the grains stick (they come to rest asymptotically).
     pub t_c: f64,
-    /// Maximum compression ξ_max [m] (including the crushed layer).
+    /// Maximum compression ξ_max \[m\] (including the crushed layer).
     pub xi_max: f64,
     /// Estimated bound on the relative error of `eps` at the requested accuracy.
     pub error_estimate: f64,
@@ -58,7 +58,11 @@ pub struct Normal {
 /// ε_N and the rest of a purely viscoelastic collision (Eq. 4–5) at impact speed `g > 0`.
 fn viscoelastic(contact: &Contact, g: f64, accuracy: Accuracy) -> Result<(f64, f64, f64)> {
     let delta = contact.delta(g);
-    let r = viscoelastic::dimensionless(delta, contact.contact_end, accuracy.integrator_rtol())?;
+    let r = match accuracy {
+        // The master curve: no integration (DESIGN.md "Accuracy levels and the fast path").
+        Accuracy::Fast => crate::master::lookup(delta, contact.contact_end),
+        _ => viscoelastic::dimensionless(delta, contact.contact_end, accuracy.integrator_rtol())?,
+    };
     Ok((
         r.eps,
         r.s_c * contact.time_scale(g),
@@ -79,7 +83,7 @@ fn check_speed(g: f64) -> Result<f64> {
 }
 
 impl Contact {
-    /// Normal restitution at impact speed `g` [m/s] with every effect the scene enables.
+    /// Normal restitution at impact speed `g` \[m/s\] with every effect the scene enables.
     pub fn normal(&self, g: f64, accuracy: Accuracy) -> Result<Normal> {
         let g = check_speed(g)?;
         let error_estimate = accuracy.error_bound();

@@ -43,9 +43,50 @@ pub struct Dimensionless {
     pub rhs_evaluations: usize,
 }
 
-/// Eq. (4) in `σ = √s`: state `(x, v = dx/ds)`, `dx/dσ = 2σ v`, `dv/dσ = −2σ √x (x + 1.5 δ v)`.
+/// Eq. (4) in `σ = √s`, with state `(x, w)`.
+///
+/// * Velocity form (δ ≤ 1): `w = v = dx/ds`; `dx/dσ = 2σ v`, `dv/dσ = −2σ √x (x + 1.5 δ v)`.
+/// * Force form (δ > 1): `w = h = x + 1.5 δ v`, the total force divided by √x. Then
+///   `v = (h − x)/(1.5 δ)`, `dh/ds = v − 1.5 δ √x h`. For strong damping the rebound speed is a
+///   tiny difference `x + 1.5 δ v ≈ 0`; carrying `h` itself keeps its digits, and at the force-zero
+///   event ε_N = x/(1.5 δ) exactly, without cancellation.
 struct Viscoelastic {
-    delta: f64,
+    /// 1.5 δ.
+    k: f64,
+    force_form: bool,
+}
+
+impl Viscoelastic {
+    fn new(delta: f64) -> Self {
+        Viscoelastic {
+            k: 1.5 * delta,
+            force_form: delta > 1.0,
+        }
+    }
+
+    /// dx/ds from the state.
+    #[inline]
+    fn velocity(&self, y: &[f64; 2]) -> f64 {
+        if self.force_form {
+            (y[1] - y[0]) / self.k
+        } else {
+            y[1]
+        }
+    }
+
+    /// x + 1.5 δ v from the state.
+    #[inline]
+    fn force(&self, y: &[f64; 2]) -> f64 {
+        if self.force_form {
+            y[1]
+        } else {
+            y[0] + self.k * y[1]
+        }
+    }
+
+    fn initial(&self) -> [f64; 2] {
+        [0.0, if self.force_form { self.k } else { 1.0 }]
+    }
 }
 
 // Event indices.
@@ -59,17 +100,23 @@ impl OdeSystem<2, 4> for Viscoelastic {
     fn rhs(&self, sigma: f64, y: &[f64; 2], dydt: &mut [f64; 2]) {
         let x = y[0].max(0.0);
         let two_sigma = 2.0 * sigma;
-        dydt[0] = two_sigma * y[1];
-        // Eq. (4), dimensionless.
-        dydt[1] = -two_sigma * sqrt(x) * (x + 1.5 * self.delta * y[1]);
+        let v = self.velocity(y);
+        dydt[0] = two_sigma * v;
+        // Eq. (4), dimensionless: v' = −√x (x + 1.5 δ v).
+        dydt[1] = if self.force_form {
+            two_sigma * (v - self.k * sqrt(x) * y[1])
+        } else {
+            -two_sigma * sqrt(x) * (x + self.k * y[1])
+        };
     }
 
     #[inline]
     fn events(&self, _sigma: f64, y: &[f64; 2], out: &mut [f64; 4]) {
-        out[MAX] = y[1];
-        out[FORCE_ZERO] = y[0] + 1.5 * self.delta * y[1];
+        let v = self.velocity(y);
+        out[MAX] = if self.force_form { y[1] - y[0] } else { v };
+        out[FORCE_ZERO] = self.force(y);
         out[OVERLAP_ZERO] = y[0];
-        out[CREEP] = y[1] + CREEP_FLOOR;
+        out[CREEP] = v + CREEP_FLOOR;
     }
 
     fn direction(&self, which: usize) -> Direction {
@@ -101,7 +148,11 @@ pub fn dimensionless_with_budget(
             expected: "must be a finite number >= 0",
         });
     }
-    let sys = Viscoelastic { delta };
+    let sys = Viscoelastic::new(delta);
+    // Far in the overdamped regime loose tolerances let the step-size controller wander over the
+    // long, nearly force-free tail; a tighter tolerance costs little there (measured: δ = 1e9 at
+    // rtol 1e-8 exhausts any budget, at 1e-12 it takes 19k evaluations).
+    let rtol = if delta > 1e6 { rtol.min(1e-11) } else { rtol };
     // Natural σ scale: 1 when elastic forces dominate, δ^(-1/3) when damping does.
     let sigma_scale = if delta > 1.0 {
         powf(delta, -1.0 / 3.0)
@@ -109,9 +160,15 @@ pub fn dimensionless_with_budget(
         1.0
     };
     let x_scale = sigma_scale * sigma_scale;
+    let w_atol = if sys.force_form {
+        // h runs from 1.5 δ down through 0 near x ~ x_scale.
+        rtol * 1e-3 * x_scale
+    } else {
+        rtol * 1e-6
+    };
     let tol = Tolerances {
         rtol,
-        atol: [rtol * 1e-3 * x_scale, rtol * 1e-6],
+        atol: [rtol * 1e-3 * x_scale, w_atol],
         max_steps,
     };
     // A zero-overlap contact can creep for a dimensionless time of order δ.
@@ -119,7 +176,7 @@ pub fn dimensionless_with_budget(
     let mut stepper = Dopri5::new(
         &sys,
         0.0,
-        [0.0, 1.0],
+        sys.initial(),
         sigma_end,
         0.05 * sigma_scale,
         tol,
@@ -127,62 +184,51 @@ pub fn dimensionless_with_budget(
     );
     let mut x_max = 0.0;
     let mut creeping = false;
+    let done = |eps: f64, s_c: f64, x_max: f64, evals: usize| Dimensionless {
+        eps,
+        s_c,
+        x_max,
+        rhs_evaluations: evals,
+    };
     loop {
         let outcome = match stepper.step(&sys) {
             Err(Error::StepBudgetExceeded { .. }) if creeping => {
-                return Ok(Dimensionless {
-                    eps: 0.0,
-                    s_c: f64::INFINITY,
-                    x_max,
-                    rhs_evaluations: stepper.rhs_evaluations(),
-                });
+                return Ok(done(0.0, f64::INFINITY, x_max, stepper.rhs_evaluations()));
             }
             other => other?,
         };
         match outcome {
             StepOutcome::Step => {}
-            StepOutcome::Event { t, y, which } => match (which, end) {
-                (MAX, _) => x_max = y[0],
-                (FORCE_ZERO, ContactEnd::ZeroOverlap)
-                    if -y[1] < CREEP_FLOOR || delta > creep_delta_limit =>
-                {
-                    // ε_N ≤ |x'| here < OVERDAMPED_THRESHOLD: no need to follow the slow creep.
-                    return Ok(Dimensionless {
-                        eps: 0.0,
-                        s_c: f64::INFINITY,
-                        x_max,
-                        rhs_evaluations: stepper.rhs_evaluations(),
-                    });
+            StepOutcome::Event { t, y, which } => {
+                let v = sys.velocity(&y);
+                match (which, end) {
+                    (MAX, _) => x_max = y[0],
+                    (FORCE_ZERO, ContactEnd::ZeroOverlap)
+                        if -v < CREEP_FLOOR || delta > creep_delta_limit =>
+                    {
+                        // ε_N ≤ |x'| here < OVERDAMPED_THRESHOLD (or, beyond the creep limit,
+                        // ≈ 0.68 δ⁻⁵): no need to follow the slow creep.
+                        return Ok(done(0.0, f64::INFINITY, x_max, stepper.rhs_evaluations()));
+                    }
+                    (FORCE_ZERO, ContactEnd::ZeroOverlap) => creeping = true,
+                    (FORCE_ZERO, ContactEnd::ForceZero) => {
+                        // At h = 0, v = −x/(1.5 δ) exactly.
+                        let eps = if sys.force_form { y[0] / sys.k } else { -v };
+                        return Ok(done(eps.max(0.0), t * t, x_max, stepper.rhs_evaluations()));
+                    }
+                    (OVERLAP_ZERO, ContactEnd::ZeroOverlap) => {
+                        return Ok(done((-v).max(0.0), t * t, x_max, stepper.rhs_evaluations()));
+                    }
+                    (CREEP, ContactEnd::ZeroOverlap) if x_max > 0.0 => {
+                        // The tensile viscous force holds the grains: ε_N < CREEP_FLOOR.
+                        return Ok(done(0.0, f64::INFINITY, x_max, stepper.rhs_evaluations()));
+                    }
+                    _ => {}
                 }
-                (FORCE_ZERO, ContactEnd::ZeroOverlap) => creeping = true,
-                (FORCE_ZERO, ContactEnd::ForceZero) | (OVERLAP_ZERO, ContactEnd::ZeroOverlap) => {
-                    return Ok(Dimensionless {
-                        eps: (-y[1]).max(0.0),
-                        s_c: t * t,
-                        x_max,
-                        rhs_evaluations: stepper.rhs_evaluations(),
-                    });
-                }
-                (CREEP, ContactEnd::ZeroOverlap) if x_max > 0.0 => {
-                    // The tensile viscous force holds the grains: the overlap decays but never
-                    // reaches zero in finite time (DESIGN.md decision 2). ε_N < CREEP_FLOOR.
-                    return Ok(Dimensionless {
-                        eps: 0.0,
-                        s_c: f64::INFINITY,
-                        x_max,
-                        rhs_evaluations: stepper.rhs_evaluations(),
-                    });
-                }
-                _ => {}
-            },
+            }
             StepOutcome::Done if end == ContactEnd::ZeroOverlap && x_max > 0.0 => {
-                // Creeping towards zero overlap without ever reaching it (see CREEP above).
-                return Ok(Dimensionless {
-                    eps: 0.0,
-                    s_c: f64::INFINITY,
-                    x_max,
-                    rhs_evaluations: stepper.rhs_evaluations(),
-                });
+                // Creeping towards zero overlap without reaching it within the time limit.
+                return Ok(done(0.0, f64::INFINITY, x_max, stepper.rhs_evaluations()));
             }
             StepOutcome::Done => {
                 return Err(Error::StepBudgetExceeded {
@@ -219,8 +265,14 @@ mod tests {
         // δ = 100 the coefficient is below 1e-9 (overdamped) and need not be integrated.
         let mut products = std::vec::Vec::new();
         for delta in [10.0, 15.0, 22.0] {
-            let r = dimensionless_with_budget(delta, ContactEnd::ZeroOverlap, 1e-10, 2_000_000, f64::INFINITY)
-                .unwrap();
+            let r = dimensionless_with_budget(
+                delta,
+                ContactEnd::ZeroOverlap,
+                1e-10,
+                2_000_000,
+                f64::INFINITY,
+            )
+            .unwrap();
             assert!(r.s_c.is_finite(), "δ = {delta} should separate");
             products.push(r.eps * libm::pow(delta, 5.0));
         }
