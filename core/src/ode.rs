@@ -172,6 +172,22 @@ impl<const N: usize, const M: usize> Dopri5<N, M> {
         sys.rhs(t, &y, &mut self.f);
         sys.events(t, &y, &mut self.events_old);
         self.rhs_evaluations += 1;
+        // A restart usually follows a switch of the right-hand side (a phase change): the old step
+        // size may be far too large for the new dynamics, and a step that swallows a whole
+        // excursion would step over the events inside it. Start again from the usual estimate
+        // h = 0.01 ‖y‖/‖f‖ ([2] §II.4), never larger than the current step.
+        let (mut d0, mut d1) = (0.0, 0.0);
+        for i in 0..N {
+            let sc = self.tol.atol[i] + self.tol.rtol * y[i].abs();
+            d0 += (y[i] / sc) * (y[i] / sc);
+            d1 += (self.f[i] / sc) * (self.f[i] / sc);
+        }
+        if d0 > 1e-10 && d1 > 1e-10 {
+            let estimate = 0.01 * sqrt(d0 / d1);
+            if estimate.is_finite() && estimate > 0.0 {
+                self.h = self.h.min(estimate);
+            }
+        }
         self.pending_len = 0;
         self.pending_pos = 0;
         self.done = false;

@@ -1,3 +1,4 @@
 //! The one integration-test binary of rime.
 
+mod cli;
 mod physics;

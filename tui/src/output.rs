@@ -6,15 +6,15 @@ use serde::Serialize;
 /// One normal-restitution record (`eps` and `curve`).
 #[derive(Debug, Clone, Serialize)]
 pub struct EpsRecord {
-    /// Impact speed [m/s].
+    /// Impact speed \[m/s\].
     pub g_n: f64,
     /// ε_N.
     pub eps_n: f64,
     /// `rebound`, `stuck_in_layer`, `stuck_by_adhesion` or `overdamped`.
     pub status: &'static str,
-    /// Contact duration [s]; `null` when the grains stick (they come to rest asymptotically).
+    /// Contact duration \[s\]; `null` when the grains stick (they come to rest asymptotically).
     pub t_c: Option<f64>,
-    /// Maximum compression [m].
+    /// Maximum compression \[m\].
     pub xi_max: f64,
     /// Bound on the relative error of `eps_n` at the chosen accuracy.
     pub error_estimate: f64,
@@ -37,9 +37,9 @@ impl EpsRecord {
 /// One tangential record.
 #[derive(Debug, Clone, Serialize)]
 pub struct TangentialRecord {
-    /// Normal impact speed [m/s].
+    /// Normal impact speed \[m/s\].
     pub g_n: f64,
-    /// Tangential speed [m/s].
+    /// Tangential speed \[m/s\].
     pub g_t: f64,
     /// ε_T.
     pub eps_t: f64,
@@ -52,13 +52,13 @@ pub struct TangentialRecord {
 /// A stick map.
 #[derive(Debug, Clone, Serialize)]
 pub struct MapRecord {
-    /// Grid speeds [m/s], 0 to max inclusive.
+    /// Grid speeds \[m/s\], 0 to max inclusive.
     pub g: Vec<f64>,
-    /// `class[i][j]` at g_N = g[i], g_T = g[j].
+    /// `class[i][j]` at g_N = `g[i]`, g_T = `g[j]`.
     pub class: Vec<Vec<&'static str>>,
-    /// `eps_t[i][j]` at g_N = g[i], g_T = g[j].
+    /// `eps_t[i][j]` at g_N = `g[i]`, g_T = `g[j]`.
     pub eps_t: Vec<Vec<f64>>,
-    /// ε_N(g[i]).
+    /// ε_N at `g[i]`.
     pub eps_n: Vec<f64>,
 }
 

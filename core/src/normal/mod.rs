@@ -93,8 +93,12 @@ impl Contact {
                 let (e, t, x) = viscoelastic(self, g, accuracy)?;
                 (e, t, x, false)
             }
+            // A layer without drag (offset reading) or without thickness (either reading) is the
+            // clean surface exactly.
             Some(layer)
-                if layer.critical_velocity == 0.0 && layer.reading == LayerReading::Offset =>
+                if layer.thickness == 0.0
+                    || (layer.critical_velocity == 0.0
+                        && layer.reading == LayerReading::Offset) =>
             {
                 let (e, t, x) = viscoelastic(self, g, accuracy)?;
                 (e, t, x, false)

@@ -1,0 +1,228 @@
+//! The `rime` binary's subcommands: the JSON/CSV contract of DESIGN.md and bad input.
+
+use rime_tests::{rel, rime_binary};
+use std::process::Command;
+
+fn rime(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(rime_binary()).args(args).output().unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).to_string(),
+        String::from_utf8_lossy(&out.stderr).to_string(),
+    )
+}
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let mut all = args.to_vec();
+    all.extend(["--format", "json"]);
+    let (code, out, err) = rime(&all);
+    assert_eq!(code, 0, "{args:?}: {err}");
+    serde_json::from_str(&out).unwrap()
+}
+
+#[test]
+fn eps_json_has_the_contract_fields_in_order_given() {
+    let v = json(&["eps", "--g", "0.01,0.001", "--accuracy", "precise"]);
+    let rows = v.as_array().unwrap();
+    assert_eq!(rows.len(), 2);
+    assert_eq!(rows[0]["g_n"], 0.01);
+    assert_eq!(rows[1]["g_n"], 0.001);
+    for r in rows {
+        for key in ["g_n", "eps_n", "status", "t_c", "xi_max"] {
+            assert!(r.get(key).is_some(), "missing {key}");
+        }
+        assert_eq!(r["status"], "rebound");
+    }
+    // Same as the library at the same accuracy.
+    let c = rime_core::Contact::new(&rime_core::Scene::default()).unwrap();
+    let e = c.normal(0.01, rime_core::Accuracy::Precise).unwrap().eps;
+    assert_eq!(rows[0]["eps_n"].as_f64().unwrap(), e);
+}
+
+#[test]
+fn statuses_are_snake_case_and_stuck_durations_are_null() {
+    let v = json(&["eps", "--preset", "ice-frost", "--g", "1e-7"]);
+    assert_eq!(v[0]["status"], "stuck_in_layer");
+    assert!(v[0]["t_c"].is_null());
+    let v = json(&["eps", "--preset", "ice-sticky", "--g", "1e-5"]);
+    assert_eq!(v[0]["status"], "stuck_by_adhesion");
+    let v = json(&["eps", "--preset", "ice-paper-viscosities", "--g", "0.01"]);
+    assert_eq!(v[0]["status"], "overdamped");
+}
+
+#[test]
+fn curve_is_log_spaced_with_both_ends_and_csv_matches_json() {
+    let v = json(&["curve", "--from", "1e-6", "--to", "1", "--points", "7"]);
+    let g: Vec<f64> = v
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r["g_n"].as_f64().unwrap())
+        .collect();
+    assert_eq!(g.len(), 7);
+    assert_eq!(g[0], 1e-6);
+    assert_eq!(g[6], 1.0);
+    for (i, gi) in g.iter().enumerate() {
+        assert!(rel(*gi, 10f64.powi(i as i32 - 6)) < 1e-12);
+    }
+    let (code, csv, _) = rime(&[
+        "curve", "--from", "1e-6", "--to", "1", "--points", "7", "--format", "csv",
+    ]);
+    assert_eq!(code, 0);
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "g_n,eps_n,status,t_c,xi_max,error_estimate"
+    );
+    for (line, row) in lines.zip(v.as_array().unwrap()) {
+        let eps: f64 = line.split(',').nth(1).unwrap().parse().unwrap();
+        assert_eq!(eps, row["eps_n"].as_f64().unwrap());
+    }
+}
+
+#[test]
+fn map_grid_and_classes() {
+    let v = json(&["map", "--preset", "ice-frost", "--max", "1e-4", "--n", "5"]);
+    let g: Vec<f64> = v["g"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    assert_eq!(g.len(), 5);
+    for (i, gi) in g.iter().enumerate() {
+        assert!((gi - 2.5e-5 * i as f64).abs() < 1e-18, "{g:?}");
+    }
+    assert_eq!(g[4], 1e-4);
+    let class = v["class"].as_array().unwrap();
+    assert_eq!(class.len(), 5);
+    assert_eq!(class[0][0], "undefined");
+    let names: Vec<&str> = rime_core::StickClass::ALL
+        .iter()
+        .map(|c| c.name())
+        .collect();
+    for row in class {
+        for c in row.as_array().unwrap() {
+            assert!(names.contains(&c.as_str().unwrap()));
+        }
+    }
+}
+
+#[test]
+fn tangential_matches_the_library() {
+    let v = json(&["tangential", "--gn", "0.01", "--gt", "0.001,0.05"]);
+    let rows = v.as_array().unwrap();
+    assert_eq!(rows.len(), 2);
+    assert_eq!(rows[0]["class"], "rolling");
+    assert_eq!(rows[1]["class"], "sliding");
+    for key in ["g_n", "g_t", "eps_t", "eps_n", "class"] {
+        assert!(rows[0].get(key).is_some());
+    }
+}
+
+#[test]
+fn tidal_reports_the_appendix_values() {
+    let v = json(&["tidal"]);
+    assert!(rel(v["delta_f"].as_f64().unwrap(), 3.84e-11) < 2e-3);
+    assert!(rel(v["d_roche"].as_f64().unwrap(), 1.341e8) < 1e-3);
+}
+
+#[test]
+fn scene_round_trips_through_a_file() {
+    let dir = std::env::temp_dir().join(format!("rime-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("scene.json");
+    let f = file.to_str().unwrap();
+    let (code, _, err) = rime(&[
+        "scene",
+        "--preset",
+        "ice-frost",
+        "--set",
+        "layer.viscosity=2 kPa s",
+        "--out",
+        f,
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v = json(&["scene", "--scene", f]);
+    assert_eq!(v["layer"]["viscosity"], 2000.0);
+    assert_eq!(v["layer"]["reading"], "offset");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn bad_input_is_one_line_naming_the_field_with_exit_code_2() {
+    let dir = std::env::temp_dir().join(format!("rime-cli-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let typo = dir.join("typo.json");
+    std::fs::write(&typo, r#"{"grains":{"radius_1":0.02,"radius_2":0.02,"density":900,"colour":1},"bulk":{"youngs_modulus":1e10,"poisson_ratio":0.3,"damping":{"time":1e-4}}}"#).unwrap();
+    let negative = dir.join("negative.json");
+    std::fs::write(&negative, r#"{"grains":{"radius_1":0.02,"radius_2":0.02,"density":-900},"bulk":{"youngs_modulus":1e10,"poisson_ratio":0.3,"damping":{"time":1e-4}}}"#).unwrap();
+    let wrong_type = dir.join("wrong.json");
+    std::fs::write(&wrong_type, r#"{"grains":{"radius_1":"big","radius_2":0.02,"density":900},"bulk":{"youngs_modulus":1e10,"poisson_ratio":0.3,"damping":{"time":1e-4}}}"#).unwrap();
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["eps", "--g", "-1"], "--g"),
+        (vec!["eps", "--g", "abc"], "--g"),
+        (
+            vec!["eps", "--g", "0.01", "--set", "layer.viscosity=-5"],
+            "layer.viscosity",
+        ),
+        (
+            vec!["eps", "--g", "0.01", "--set", "layer.thickness=1 Pa"],
+            "layer.thickness",
+        ),
+        (vec!["eps", "--g", "0.01", "--set", "no.such=1"], "no.such"),
+        (
+            vec!["eps", "--g", "0.01", "--accuracy", "sloppy"],
+            "accuracy",
+        ),
+        (vec!["eps", "--g", "0.01", "--format", "xml"], "--format"),
+        (
+            vec!["eps", "--g", "0.01", "--scene", typo.to_str().unwrap()],
+            "colour",
+        ),
+        (
+            vec!["eps", "--g", "0.01", "--scene", negative.to_str().unwrap()],
+            "grains.density",
+        ),
+        (
+            vec![
+                "eps",
+                "--g",
+                "0.01",
+                "--scene",
+                wrong_type.to_str().unwrap(),
+            ],
+            "grains.radius_1",
+        ),
+        (
+            vec!["eps", "--g", "0.01", "--scene", "/nonexistent/scene.json"],
+            "--scene",
+        ),
+        (vec!["map", "--max", "0.01", "--n", "1"], "--n"),
+        (vec!["curve", "--from", "1", "--to", "0.1"], "--to"),
+        (vec!["eps"], "--g"),
+        (vec!["frobnicate"], "frobnicate"),
+        (vec!["eps", "--g", "0.01", "--bogus", "1"], "--bogus"),
+        (
+            vec![
+                "eps",
+                "--g",
+                "0.01",
+                "--set",
+                "bulk.poisson_ratio=0",
+                "--set",
+                "bulk.damping.viscosities.shear=1e6",
+            ],
+            "poisson_ratio",
+        ),
+    ];
+    for (args, field) in cases {
+        let (code, out, err) = rime(&args);
+        assert_eq!(code, 2, "{args:?}: {out} {err}");
+        assert!(out.is_empty(), "{args:?}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(field), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
