@@ -2,16 +2,25 @@
 //!
 //! ε_N, s_c = t_c/τ and x_max = ξ_max/ξ* depend on δ alone (DESIGN.md decision 3), so one table
 //! serves every material, speed and damping time. For each contact-end rule, ln ε, ln s_c and ln x_max
-//! are stored as piecewise Chebyshev series in u = log₁₀ δ on segments of [`U_MIN`, `U_MAX`]. The
-//! coefficients live in the generated file `master_table.rs` (regenerate with
-//! `cargo run --release -p rime-core --example generate_master_table`; the test
-//! `master_table_matches_a_fresh_generation` fails when the committed table is stale). Evaluation needs
-//! no allocation and no integration: one logarithm, three Clenshaw sums and three exponentials.
+//! are stored as piecewise Chebyshev series in u = log₁₀ δ on equal segments of [`U_MIN`, u_max],
+//! built from the Dormand–Prince integrator at rtol 1e-14 and stored in the generated file
+//! `master_table.rs` (regenerate with `cargo run --release -p rime-core --example
+//! generate_master_table > core/src/master_table.rs`; the test `master_table_matches_a_fresh_generation`
+//! fails when the committed table is stale). Two resolutions:
+//!
+//! * [`Resolution::Fine`] (16 coefficients per ⅛ decade, used by [`crate::Accuracy::Precise`]):
+//!   relative error ≤ 1e-10 wherever ε > 1e-6, checked against the integrator and against the
+//!   independent mpmath reference of `tests/reference/`;
+//! * [`Resolution::Coarse`] (10 coefficients per ¼ decade, used by [`crate::Accuracy::Fast`]):
+//!   relative error ≤ 1e-6, a quarter of the memory.
+//!
+//! Evaluation needs no allocation and no integration: one logarithm, a Clenshaw sum and an
+//! exponential per quantity.
 //!
 //! Below `U_MIN` the curve is linear in δ (ε = 1 − 1.5 C1 δ + O(δ²), Schwager & Pöschel 1998) and at
-//! δ = 0 exactly elastic. Above the force-zero table's end ε < 1e-11 (overdamped); above the
-//! zero-overlap table's end the creeping contact is overdamped (see
-//! [`crate::normal::viscoelastic::CREEP_DELTA_LIMIT`]).
+//! δ = 0 exactly elastic. Above the table's end ε follows the measured power laws
+//! ε ≈ (2/3) δ^(-5/3) (force zero; below 1e-11 there) and ≈ 0.68 δ⁻⁵ (zero overlap, cut to 0 like the
+//! integrator's abandoned creep, see [`crate::normal::viscoelastic::CREEP_DELTA_LIMIT`]).
 
 use crate::math::powf;
 use crate::normal::viscoelastic::Dimensionless;
@@ -19,26 +28,43 @@ use crate::scene::ContactEnd;
 
 /// Lower end of the tables in u = log₁₀ δ.
 pub const U_MIN: f64 = -9.0;
-/// Upper end of the force-zero table in u = log₁₀ δ.
+/// Upper end of the force-zero tables in u = log₁₀ δ.
 pub const U_MAX_FORCE_ZERO: f64 = 7.0;
-/// Upper end of the zero-overlap table in u = log₁₀ δ (ε ≈ 2e-8 there).
+/// Upper end of the zero-overlap tables in u = log₁₀ δ (ε ≈ 2e-8 there).
 pub const U_MAX_ZERO_OVERLAP: f64 = 1.5;
-/// Width of one segment in u.
-pub const SEGMENT: f64 = 0.125;
-/// Chebyshev coefficients per segment.
-pub const DEGREE: usize = 16;
+/// Segment width of the fine tables in u.
+pub const FINE_SEGMENT: f64 = 0.125;
+/// Chebyshev coefficients per segment of the fine tables.
+pub const FINE_DEGREE: usize = 16;
+/// Segment width of the coarse tables in u.
+pub const COARSE_SEGMENT: f64 = 0.25;
+/// Chebyshev coefficients per segment of the coarse tables.
+pub const COARSE_DEGREE: usize = 10;
 
-/// Number of segments of a table spanning `[U_MIN, u_max]`.
-pub const fn segments(u_max: f64) -> usize {
-    ((u_max - U_MIN) / SEGMENT) as usize
+/// Which table.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Resolution {
+    /// 10 coefficients per ¼ decade: relative error ≤ 1e-6.
+    Coarse,
+    /// 16 coefficients per ⅛ decade: relative error ≤ 1e-10.
+    Fine,
+}
+
+/// Number of segments of width `segment` spanning `[U_MIN, u_max]`.
+pub const fn segments(u_max: f64, segment: f64) -> usize {
+    ((u_max - U_MIN) / segment) as usize
 }
 
 /// One table: for each segment, Chebyshev coefficients of (ln ε, ln s_c, ln x_max).
-pub struct Table {
+pub struct Table<const D: usize> {
     /// Upper end in u.
     pub u_max: f64,
+    /// Segment width in u.
+    pub segment: f64,
+    /// The contact-end rule it tabulates.
+    pub end: ContactEnd,
     /// `coefficients[segment][quantity][k]`.
-    pub coefficients: &'static [[[f64; DEGREE]; 3]],
+    pub coefficients: &'static [[[f64; D]; 3]],
 }
 
 #[allow(clippy::all, missing_docs)]
@@ -46,28 +72,59 @@ mod generated {
     include!("master_table.rs");
 }
 
-/// The force-zero table.
-pub static FORCE_ZERO: Table = Table {
+/// Fine force-zero table.
+pub static FORCE_ZERO_FINE: Table<FINE_DEGREE> = Table {
     u_max: U_MAX_FORCE_ZERO,
-    coefficients: &generated::FORCE_ZERO,
+    segment: FINE_SEGMENT,
+    end: ContactEnd::ForceZero,
+    coefficients: &generated::FORCE_ZERO_FINE,
 };
-
-/// The zero-overlap table.
-pub static ZERO_OVERLAP: Table = Table {
+/// Fine zero-overlap table.
+pub static ZERO_OVERLAP_FINE: Table<FINE_DEGREE> = Table {
     u_max: U_MAX_ZERO_OVERLAP,
-    coefficients: &generated::ZERO_OVERLAP,
+    segment: FINE_SEGMENT,
+    end: ContactEnd::ZeroOverlap,
+    coefficients: &generated::ZERO_OVERLAP_FINE,
+};
+/// Coarse force-zero table.
+pub static FORCE_ZERO_COARSE: Table<COARSE_DEGREE> = Table {
+    u_max: U_MAX_FORCE_ZERO,
+    segment: COARSE_SEGMENT,
+    end: ContactEnd::ForceZero,
+    coefficients: &generated::FORCE_ZERO_COARSE,
+};
+/// Coarse zero-overlap table.
+pub static ZERO_OVERLAP_COARSE: Table<COARSE_DEGREE> = Table {
+    u_max: U_MAX_ZERO_OVERLAP,
+    segment: COARSE_SEGMENT,
+    end: ContactEnd::ZeroOverlap,
+    coefficients: &generated::ZERO_OVERLAP_COARSE,
 };
 
-/// The table of a contact-end rule.
-pub fn table(end: ContactEnd) -> &'static Table {
-    match end {
-        ContactEnd::ForceZero => &FORCE_ZERO,
-        ContactEnd::ZeroOverlap => &ZERO_OVERLAP,
+/// Evaluates the master curve at `delta ≥ 0` (no integration).
+#[inline]
+pub fn lookup(delta: f64, end: ContactEnd, resolution: Resolution) -> Dimensionless {
+    match (end, resolution) {
+        (ContactEnd::ForceZero, Resolution::Fine) => FORCE_ZERO_FINE.lookup(delta),
+        (ContactEnd::ZeroOverlap, Resolution::Fine) => ZERO_OVERLAP_FINE.lookup(delta),
+        (ContactEnd::ForceZero, Resolution::Coarse) => FORCE_ZERO_COARSE.lookup(delta),
+        (ContactEnd::ZeroOverlap, Resolution::Coarse) => ZERO_OVERLAP_COARSE.lookup(delta),
+    }
+}
+
+/// ε only (the hot path of curves and maps).
+#[inline]
+pub fn eps(delta: f64, end: ContactEnd, resolution: Resolution) -> f64 {
+    match (end, resolution) {
+        (ContactEnd::ForceZero, Resolution::Fine) => FORCE_ZERO_FINE.eps(delta),
+        (ContactEnd::ZeroOverlap, Resolution::Fine) => ZERO_OVERLAP_FINE.eps(delta),
+        (ContactEnd::ForceZero, Resolution::Coarse) => FORCE_ZERO_COARSE.eps(delta),
+        (ContactEnd::ZeroOverlap, Resolution::Coarse) => ZERO_OVERLAP_COARSE.eps(delta),
     }
 }
 
 #[inline]
-fn clenshaw(c: &[f64; DEGREE], t: f64) -> f64 {
+fn clenshaw<const D: usize>(c: &[f64; D], t: f64) -> f64 {
     let (mut b1, mut b2) = (0.0, 0.0);
     let t2 = 2.0 * t;
     for &ck in c[1..].iter().rev() {
@@ -78,101 +135,101 @@ fn clenshaw(c: &[f64; DEGREE], t: f64) -> f64 {
     c[0] + t * b1 - b2
 }
 
-/// Evaluates the master curve at `delta ≥ 0` from the table (no integration).
-#[inline]
-pub fn lookup(delta: f64, end: ContactEnd) -> Dimensionless {
-    let table = table(end);
-    let (hertz_s, hertz_x) = (
-        crate::analytic::HERTZ_CONTACT_TIME,
-        crate::analytic::HERTZ_MAX_COMPRESSION,
-    );
-    let point = |eps: f64, s_c: f64, x_max: f64| Dimensionless {
-        eps,
-        s_c,
-        x_max,
-        rhs_evaluations: 0,
-    };
-    if !(delta > 0.0) {
-        return point(1.0, hertz_s, hertz_x);
-    }
-    let u = libm::log10(delta);
-    if u < U_MIN {
-        // Schwager–Pöschel: ε = 1 − 1.5 C1 δ + O(δ²), O(δ²) < 2e-18 here; s_c and x_max are
-        // elastic to within O(δ) < 1e-9 relative... and are only used for t_c and ξ_max.
-        return point(
-            1.0 - crate::analytic::SMALL_DELTA_SLOPE * delta,
-            hertz_s,
-            hertz_x,
+impl<const D: usize> Table<D> {
+    /// Evaluates ε, s_c and x_max at `delta ≥ 0`.
+    #[inline]
+    pub fn lookup(&self, delta: f64) -> Dimensionless {
+        let (hertz_s, hertz_x) = (
+            crate::analytic::HERTZ_CONTACT_TIME,
+            crate::analytic::HERTZ_MAX_COMPRESSION,
         );
-    }
-    if u >= table.u_max {
-        let beyond = u - table.u_max;
-        let eps = tail_eps(table, end, delta, beyond);
-        let s_c = if eps == 0.0 {
-            f64::INFINITY
-        } else {
-            libm::exp(table_ln(table, table.u_max, 1))
+        let point = |eps: f64, s_c: f64, x_max: f64| Dimensionless {
+            eps,
+            s_c,
+            x_max,
+            rhs_evaluations: 0,
         };
-        // x_max ∝ δ^(-2/3) in the overdamped regime.
-        let x_max = libm::exp(table_ln(table, table.u_max, 2)) * powf(10.0, -2.0 / 3.0 * beyond);
-        return point(eps, s_c, x_max);
+        if !(delta > 0.0) {
+            return point(1.0, hertz_s, hertz_x);
+        }
+        let u = libm::log10(delta);
+        if u < U_MIN {
+            // Schwager–Pöschel: ε = 1 − 1.5 C1 δ + O(δ²), with O(δ²) < 2e-18 here; s_c and x_max
+            // are elastic to O(δ) < 1e-9 relative.
+            return point(
+                1.0 - crate::analytic::SMALL_DELTA_SLOPE * delta,
+                hertz_s,
+                hertz_x,
+            );
+        }
+        if u >= self.u_max {
+            let beyond = u - self.u_max;
+            let eps = self.tail_eps(delta, beyond);
+            let s_c = if eps == 0.0 {
+                f64::INFINITY
+            } else {
+                libm::exp(self.ln_at(self.u_max, 1))
+            };
+            // x_max ∝ δ^(-2/3) in the overdamped regime.
+            let x_max = libm::exp(self.ln_at(self.u_max, 2)) * powf(10.0, -2.0 / 3.0 * beyond);
+            return point(eps, s_c, x_max);
+        }
+        let (seg, t) = self.locate(u);
+        let c = &self.coefficients[seg];
+        point(
+            libm::exp(clenshaw(&c[0], t)),
+            libm::exp(clenshaw(&c[1], t)),
+            libm::exp(clenshaw(&c[2], t)),
+        )
     }
-    let (seg, t) = locate(u);
-    let c = &table.coefficients[seg];
-    point(
-        libm::exp(clenshaw(&c[0], t)),
-        libm::exp(clenshaw(&c[1], t)),
-        libm::exp(clenshaw(&c[2], t)),
-    )
-}
 
-/// ε beyond the table's upper end: the measured power laws ε ∝ δ^(-5/3) (force zero) and
-/// ε ∝ δ^(-5) (zero overlap), cut to 0 where the precise path reports an abandoned creep.
-fn tail_eps(table: &Table, end: ContactEnd, delta: f64, beyond: f64) -> f64 {
-    let slope = match end {
-        ContactEnd::ForceZero => -5.0 / 3.0,
-        ContactEnd::ZeroOverlap => -5.0,
-    };
-    let eps = libm::exp(table_ln(table, table.u_max, 0)) * powf(10.0, slope * beyond);
-    let creep_cut = end == ContactEnd::ZeroOverlap
-        && (eps < crate::normal::OVERDAMPED_THRESHOLD
-            || delta > crate::normal::viscoelastic::CREEP_DELTA_LIMIT);
-    if creep_cut { 0.0 } else { eps }
-}
-
-/// ε only (the hot path of curves and maps).
-#[inline]
-pub fn eps(delta: f64, end: ContactEnd) -> f64 {
-    let table = table(end);
-    if !(delta > 0.0) {
-        return 1.0;
+    /// ε only.
+    #[inline]
+    pub fn eps(&self, delta: f64) -> f64 {
+        if !(delta > 0.0) {
+            return 1.0;
+        }
+        let u = libm::log10(delta);
+        if u < U_MIN || u >= self.u_max {
+            return self.lookup(delta).eps;
+        }
+        let (seg, t) = self.locate(u);
+        libm::exp(clenshaw(&self.coefficients[seg][0], t))
     }
-    let u = libm::log10(delta);
-    if u < U_MIN || u >= table.u_max {
-        return lookup(delta, end).eps;
+
+    /// ε beyond the upper end: the measured power laws, cut to 0 where the integrator reports an
+    /// abandoned creep.
+    fn tail_eps(&self, delta: f64, beyond: f64) -> f64 {
+        let slope = match self.end {
+            ContactEnd::ForceZero => -5.0 / 3.0,
+            ContactEnd::ZeroOverlap => -5.0,
+        };
+        let eps = libm::exp(self.ln_at(self.u_max, 0)) * powf(10.0, slope * beyond);
+        let creep_cut = self.end == ContactEnd::ZeroOverlap
+            && (eps < crate::normal::OVERDAMPED_THRESHOLD
+                || delta > crate::normal::viscoelastic::CREEP_DELTA_LIMIT);
+        if creep_cut { 0.0 } else { eps }
     }
-    let (seg, t) = locate(u);
-    libm::exp(clenshaw(&table.coefficients[seg][0], t))
+
+    #[inline]
+    fn locate(&self, u: f64) -> (usize, f64) {
+        let x = (u - U_MIN) / self.segment;
+        let seg = (x as usize).min(self.coefficients.len() - 1);
+        let t = 2.0 * (x - seg as f64) - 1.0;
+        (seg, t)
+    }
+
+    /// ln of quantity `q` (0: ε, 1: s_c, 2: x_max) at `u` inside or at the ends of the table.
+    fn ln_at(&self, u: f64, q: usize) -> f64 {
+        let n = self.coefficients.len();
+        let x = ((u - U_MIN) / self.segment).clamp(0.0, n as f64);
+        let seg = (x as usize).min(n - 1);
+        let t = 2.0 * (x - seg as f64) - 1.0;
+        clenshaw(&self.coefficients[seg][q], t)
+    }
 }
 
-#[inline]
-fn locate(u: f64) -> (usize, f64) {
-    let x = (u - U_MIN) / SEGMENT;
-    let seg = x as usize;
-    let t = 2.0 * (x - seg as f64) - 1.0;
-    (seg, t)
-}
-
-/// ln of quantity `q` (0: ε, 1: s_c, 2: x_max) at `u` inside or at the ends of the table.
-fn table_ln(table: &Table, u: f64, q: usize) -> f64 {
-    let n = table.coefficients.len();
-    let x = ((u - U_MIN) / SEGMENT).clamp(0.0, n as f64);
-    let seg = (x as usize).min(n - 1);
-    let t = 2.0 * (x - seg as f64) - 1.0;
-    clenshaw(&table.coefficients[seg][q], t)
-}
-
-/// Generates the table source (the body of `master_table.rs`) with the precise integrator.
+/// Generates the table source (the whole of `master_table.rs`) with the precise integrator.
 #[cfg(feature = "std")]
 pub fn generate_source() -> crate::Result<std::string::String> {
     use core::fmt::Write;
@@ -183,14 +240,16 @@ pub fn generate_source() -> crate::Result<std::string::String> {
         "// Generated by `cargo run --release -p rime-core --example generate_master_table`. Do not edit.\n\
          // Chebyshev coefficients of (ln ε, ln s_c, ln x_max) on segments of u = log10 δ."
     );
-    for (name, end, u_max) in [
-        ("FORCE_ZERO", ContactEnd::ForceZero, U_MAX_FORCE_ZERO),
-        ("ZERO_OVERLAP", ContactEnd::ZeroOverlap, U_MAX_ZERO_OVERLAP),
+    for (name, end, u_max, segment, degree) in [
+        ("FORCE_ZERO_FINE", ContactEnd::ForceZero, U_MAX_FORCE_ZERO, FINE_SEGMENT, FINE_DEGREE),
+        ("ZERO_OVERLAP_FINE", ContactEnd::ZeroOverlap, U_MAX_ZERO_OVERLAP, FINE_SEGMENT, FINE_DEGREE),
+        ("FORCE_ZERO_COARSE", ContactEnd::ForceZero, U_MAX_FORCE_ZERO, COARSE_SEGMENT, COARSE_DEGREE),
+        ("ZERO_OVERLAP_COARSE", ContactEnd::ZeroOverlap, U_MAX_ZERO_OVERLAP, COARSE_SEGMENT, COARSE_DEGREE),
     ] {
-        let n = segments(u_max);
-        let _ = writeln!(out, "pub static {name}: [[[f64; {DEGREE}]; 3]; {n}] = [");
+        let n = segments(u_max, segment);
+        let _ = writeln!(out, "pub static {name}: [[[f64; {degree}]; 3]; {n}] = [");
         for seg in 0..n {
-            let coeffs = fit_segment(end, U_MIN + seg as f64 * SEGMENT)?;
+            let coeffs = fit_segment(end, U_MIN + seg as f64 * segment, segment, degree)?;
             let _ = writeln!(out, "    [");
             for q in coeffs {
                 let _ = write!(out, "        [");
@@ -206,21 +265,27 @@ pub fn generate_source() -> crate::Result<std::string::String> {
     Ok(out)
 }
 
-/// Chebyshev interpolation of one segment at DEGREE Chebyshev nodes (first kind).
+/// Chebyshev interpolation of one segment at `degree` Chebyshev nodes (first kind).
 #[cfg(feature = "std")]
-fn fit_segment(end: ContactEnd, u0: f64) -> crate::Result<[[f64; DEGREE]; 3]> {
+fn fit_segment(
+    end: ContactEnd,
+    u0: f64,
+    segment: f64,
+    degree: usize,
+) -> crate::Result<std::vec::Vec<std::vec::Vec<f64>>> {
     use core::f64::consts::PI;
-    let n = DEGREE;
-    let mut values = [[0.0; DEGREE]; 3];
+    use std::vec;
+    let n = degree;
+    let mut values = vec![vec![0.0; n]; 3];
     for j in 0..n {
         let t = libm::cos(PI * (j as f64 + 0.5) / n as f64);
-        let u = u0 + 0.5 * (t + 1.0) * SEGMENT;
+        let u = u0 + 0.5 * (t + 1.0) * segment;
         let r = crate::normal::viscoelastic::dimensionless(powf(10.0, u), end, 1e-14)?;
         values[0][j] = libm::log(r.eps);
         values[1][j] = libm::log(r.s_c);
         values[2][j] = libm::log(r.x_max);
     }
-    let mut coeffs = [[0.0; DEGREE]; 3];
+    let mut coeffs = vec![vec![0.0; n]; 3];
     for q in 0..3 {
         for k in 0..n {
             let mut s = 0.0;
@@ -247,23 +312,34 @@ mod tests {
         // Off-node points (irrational steps in u) against a tighter integration than the one that
         // built the table's nodes would need.
         let mut worst = [0.0f64; 3];
+        let mut worst_coarse = 0.0f64;
         for end in [ContactEnd::ForceZero, ContactEnd::ZeroOverlap] {
             let mut u = U_MIN + 0.0123;
-            while u < table(end).u_max {
+            let u_max = match end {
+                ContactEnd::ForceZero => U_MAX_FORCE_ZERO,
+                ContactEnd::ZeroOverlap => U_MAX_ZERO_OVERLAP,
+            };
+            while u < u_max {
                 let delta = powf(10.0, u);
-                let fast = lookup(delta, end);
+                let fast = lookup(delta, end, Resolution::Fine);
+                let coarse = lookup(delta, end, Resolution::Coarse);
                 let precise = dimensionless(delta, end, 1e-13).unwrap();
                 if precise.eps > 1e-6 {
                     worst[0] = worst[0].max(rel(fast.eps, precise.eps));
+                    worst_coarse = worst_coarse.max(rel(coarse.eps, precise.eps));
+                    worst_coarse = worst_coarse.max(rel(coarse.s_c, precise.s_c));
+                    worst_coarse = worst_coarse.max(rel(coarse.x_max, precise.x_max));
+                    assert_eq!(eps(delta, end, Resolution::Coarse), coarse.eps);
                     worst[1] = worst[1].max(rel(fast.s_c, precise.s_c));
                     worst[2] = worst[2].max(rel(fast.x_max, precise.x_max));
-                    assert_eq!(eps(delta, end), fast.eps);
+                    assert_eq!(eps(delta, end, Resolution::Fine), fast.eps);
                 }
                 u += 0.1 * core::f64::consts::SQRT_2;
             }
         }
         assert!(worst[0] < 1e-10, "ε: {worst:?}");
         assert!(worst[1] < 1e-8 && worst[2] < 1e-8, "{worst:?}");
+        assert!(worst_coarse < 1e-6, "coarse: {worst_coarse}");
     }
 
     #[test]
@@ -273,11 +349,11 @@ mod tests {
             // Continuity at the table's lower end: the table (built by integration) and the
             // first-order series meet to within the integrator's absolute error.
             let at = powf(10.0, U_MIN);
-            let above = lookup(at * (1.0 + 1e-12), end).eps;
-            let below = lookup(at * (1.0 - 1e-12), end).eps;
+            let above = lookup(at * (1.0 + 1e-12), end, Resolution::Fine).eps;
+            let below = lookup(at * (1.0 - 1e-12), end, Resolution::Fine).eps;
             assert!((above - below).abs() < 1e-12, "{above} vs {below}");
-            assert_eq!(eps(0.0, end), 1.0);
-            let l = lookup(1e-13, end);
+            assert_eq!(eps(0.0, end, Resolution::Coarse), 1.0);
+            let l = lookup(1e-13, end, Resolution::Fine);
             assert!(rel(l.s_c, crate::analytic::HERTZ_CONTACT_TIME) < 1e-11);
         }
     }
@@ -285,7 +361,7 @@ mod tests {
     #[test]
     fn far_above_the_table_the_coefficient_is_overdamped() {
         let d = 1e8;
-        let fz = lookup(d, ContactEnd::ForceZero);
+        let fz = lookup(d, ContactEnd::ForceZero, Resolution::Fine);
         // ε → (2/3) δ^(-5/3) for strong damping (measured; consistent with the power-law tail).
         assert!(
             rel(fz.eps, 2.0 / 3.0 * powf(d, -5.0 / 3.0)) < 1e-3,
@@ -293,7 +369,7 @@ mod tests {
             fz.eps
         );
         assert!(fz.eps < crate::normal::OVERDAMPED_THRESHOLD);
-        assert_eq!(lookup(1e3, ContactEnd::ZeroOverlap).eps, 0.0);
+        assert_eq!(lookup(1e3, ContactEnd::ZeroOverlap, Resolution::Coarse).eps, 0.0);
     }
 
     #[cfg(feature = "std")]

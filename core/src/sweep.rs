@@ -58,18 +58,31 @@ pub fn curve_into(
     Ok(())
 }
 
-/// ε_N at every speed of `g` (0 allowed: the limit value).
-pub fn eps_n_into(contact: &Contact, g: &[f64], accuracy: Accuracy, out: &mut [f64]) -> Result<()> {
+/// ε_N at every speed of `g` (0 allowed: the limit value). Returns the integrator's right-hand-side
+/// evaluations spent (0 on table paths).
+pub fn eps_n_into(
+    contact: &Contact,
+    g: &[f64],
+    accuracy: Accuracy,
+    out: &mut [f64],
+) -> Result<usize> {
     if out.len() != g.len() {
         return Err(Error::InvalidValue {
             field: "out",
             expected: "a slice as long as the speeds",
         });
     }
+    let mut evaluations = 0;
     for (o, &gi) in out.iter_mut().zip(g) {
-        *o = contact.eps_n(gi, accuracy)?;
+        if gi == 0.0 {
+            *o = contact.eps_n_at_rest();
+        } else {
+            let n = contact.normal(gi, accuracy)?;
+            *o = n.eps;
+            evaluations += n.rhs_evaluations;
+        }
     }
-    Ok(())
+    Ok(evaluations)
 }
 
 /// Classifies every cell of the square grid `g × g` from ε_N at the grid speeds; row-major:
@@ -114,6 +127,8 @@ pub struct StickMap {
     pub class: alloc::vec::Vec<StickClass>,
     /// Row-major ε_T.
     pub eps_t: alloc::vec::Vec<f64>,
+    /// Integrator right-hand-side evaluations spent (ε_N once per grid speed, never per cell).
+    pub rhs_evaluations: usize,
 }
 
 #[cfg(feature = "alloc")]
@@ -124,7 +139,7 @@ impl StickMap {
         let mut g = vec![0.0; n];
         linear_space(max, &mut g);
         let mut eps_n = vec![0.0; n];
-        eps_n_into(contact, &g, accuracy, &mut eps_n)?;
+        let rhs_evaluations = eps_n_into(contact, &g, accuracy, &mut eps_n)?;
         let mut class = vec![StickClass::Undefined; n * n];
         let mut eps_t = vec![0.0; n * n];
         stick_map_into(contact, &g, &eps_n, &mut class, &mut eps_t)?;
@@ -133,6 +148,7 @@ impl StickMap {
             eps_n,
             class,
             eps_t,
+            rhs_evaluations,
         })
     }
 
@@ -161,6 +177,7 @@ pub fn curve(
             t_c: 0.0,
             xi_max: 0.0,
             error_estimate: 0.0,
+            rhs_evaluations: 0,
         };
         n
     ];

@@ -1,4 +1,5 @@
 //! The one integration-test binary of rime.
 
 mod cli;
+mod cost;
 mod physics;

@@ -8,6 +8,7 @@ pub mod viscoelastic;
 use crate::accuracy::Accuracy;
 use crate::contact::Contact;
 use crate::error::{Error, Result};
+use crate::master::Resolution;
 use crate::math::powf;
 use crate::scene::LayerReading;
 pub use viscoelastic::OVERDAMPED_THRESHOLD;
@@ -53,20 +54,27 @@ pub struct Normal {
     pub xi_max: f64,
     /// Estimated bound on the relative error of `eps` at the requested accuracy.
     pub error_estimate: f64,
+    /// Right-hand-side evaluations of the integrator spent on this result (0 for table lookups and
+    /// closed forms): what a scene costs.
+    pub rhs_evaluations: usize,
 }
 
 /// ε_N and the rest of a purely viscoelastic collision (Eq. 4–5) at impact speed `g > 0`.
-fn viscoelastic(contact: &Contact, g: f64, accuracy: Accuracy) -> Result<(f64, f64, f64)> {
+fn viscoelastic(contact: &Contact, g: f64, accuracy: Accuracy) -> Result<(f64, f64, f64, usize)> {
     let delta = contact.delta(g);
     let r = match accuracy {
         // The master curve: no integration (DESIGN.md "Accuracy levels and the fast path").
-        Accuracy::Fast => crate::master::lookup(delta, contact.contact_end),
+        Accuracy::Fast => crate::master::lookup(delta, contact.contact_end, Resolution::Coarse),
+        // Precise: the fine table, built by the same integrator at rtol 1e-14 and verified to
+        // 1e-10 against an independent computation; live integration via Accuracy::Tolerance.
+        Accuracy::Precise => crate::master::lookup(delta, contact.contact_end, Resolution::Fine),
         _ => viscoelastic::dimensionless(delta, contact.contact_end, accuracy.integrator_rtol())?,
     };
     Ok((
         r.eps,
         r.s_c * contact.time_scale(g),
         r.x_max * contact.length_scale(g),
+        r.rhs_evaluations,
     ))
 }
 
@@ -88,10 +96,10 @@ impl Contact {
         let g = check_speed(g)?;
         let error_estimate = accuracy.error_bound();
         // Stage 1: the layer, if any; gives ε_{N,v} of Eq. (17).
-        let (eps_v, t_c, xi_max, stuck_in_layer) = match &self.layer {
+        let (eps_v, t_c, xi_max, stuck_in_layer, rhs_evaluations) = match &self.layer {
             None => {
-                let (e, t, x) = viscoelastic(self, g, accuracy)?;
-                (e, t, x, false)
+                let (e, t, x, n) = viscoelastic(self, g, accuracy)?;
+                (e, t, x, false, n)
             }
             // A layer without drag (offset reading) or without thickness (either reading) is the
             // clean surface exactly.
@@ -100,22 +108,22 @@ impl Contact {
                     || (layer.critical_velocity == 0.0
                         && layer.reading == LayerReading::Offset) =>
             {
-                let (e, t, x) = viscoelastic(self, g, accuracy)?;
-                (e, t, x, false)
+                let (e, t, x, n) = viscoelastic(self, g, accuracy)?;
+                (e, t, x, false, n)
             }
             Some(layer) => match layer.reading {
                 LayerReading::Offset => {
                     let g_s = layer.critical_velocity;
                     if g <= g_s {
                         // Eq. (9): stopped at ξ = (g/c)^(2/3) ≤ D.
-                        (0.0, f64::INFINITY, powf(g / layer.drag, 2.0 / 3.0), true)
+                        (0.0, f64::INFINITY, powf(g / layer.drag, 2.0 / 3.0), true, 0)
                     } else {
                         // Eq. (9): the bulk is reached at speed g − g_s; the bulk collision is then
                         // Eq. (4) for the overlap ξ − D.
                         let g_bulk = g - g_s;
-                        let (e, t, x) = viscoelastic(self, g_bulk, accuracy)?;
+                        let (e, t, x, n) = viscoelastic(self, g_bulk, accuracy)?;
                         let t_layer = layer::crush_time(layer.thickness / g, g_s / g);
-                        (e * g_bulk / g, t + t_layer, x + layer.thickness, false)
+                        (e * g_bulk / g, t + t_layer, x + layer.thickness, false, n)
                     }
                 }
                 LayerReading::Literal => {
@@ -134,6 +142,7 @@ impl Contact {
                         out.s_c * self.time_scale(g),
                         out.x_max * xi_star,
                         out.stuck,
+                        out.rhs_evaluations,
                     )
                 }
             },
@@ -145,6 +154,7 @@ impl Contact {
                 t_c: f64::INFINITY,
                 xi_max,
                 error_estimate,
+                rhs_evaluations,
             });
         }
         // Stage 2: adhesion on the rebound (Eq. 17).
@@ -159,6 +169,7 @@ impl Contact {
                         t_c: f64::INFINITY,
                         xi_max,
                         error_estimate,
+                        rhs_evaluations,
                     });
                 }
             },
@@ -174,6 +185,7 @@ impl Contact {
             t_c,
             xi_max,
             error_estimate,
+            rhs_evaluations,
         })
     }
 
