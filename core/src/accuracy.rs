@@ -79,7 +79,7 @@ impl Accuracy {
             // Fast falls back to the integrator only where no table applies.
             Accuracy::Fast => 1e-8,
             Accuracy::Balanced => 1e-8,
-            Accuracy::Precise => 1e-12,
+            Accuracy::Precise => 1e-13,
             // Global error is a small multiple of the local tolerance; keep a safety factor of 100.
             Accuracy::Tolerance(t) => (t * 1e-2).max(1e-14),
         }

@@ -55,6 +55,8 @@ pub struct Contact {
     pub adhesion: Option<AdhesionConstants>,
     /// Friction, if the scene has it.
     pub friction: Option<Friction>,
+    /// log₁₀(A α^(2/5)), so that log₁₀ δ = this + 0.2 log₁₀ g (−∞ when A = 0).
+    pub log10_delta_coefficient: f64,
 }
 
 fn finite_positive(quantity: &'static str, fields: &'static str, v: f64) -> Result<f64> {
@@ -160,6 +162,8 @@ impl Contact {
             layer,
             adhesion,
             friction: scene.friction,
+            log10_delta_coefficient: crate::math::log10(damping_time)
+                + 0.4 * crate::math::log10(alpha),
         })
     }
 

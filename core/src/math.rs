@@ -1,27 +1,48 @@
-//! Elementary functions that work with and without `std` (via `libm`).
+//! Elementary functions: the platform's (via `std`) when available, `libm` otherwise.
 
-#[inline]
-pub(crate) fn sqrt(x: f64) -> f64 {
-    libm::sqrt(x)
+macro_rules! unary {
+    ($name:ident, $std:ident, $libm:ident) => {
+        #[inline]
+        pub(crate) fn $name(x: f64) -> f64 {
+            #[cfg(feature = "std")]
+            {
+                x.$std()
+            }
+            #[cfg(not(feature = "std"))]
+            {
+                libm::$libm(x)
+            }
+        }
+    };
 }
+
+unary!(sqrt, sqrt, sqrt);
+unary!(ln, ln, log);
+unary!(log10, log10, log10);
+unary!(exp, exp, exp);
+unary!(cbrt, cbrt, cbrt);
+unary!(atan, atan, atan);
 
 #[inline]
 pub(crate) fn powf(x: f64, y: f64) -> f64 {
-    libm::pow(x, y)
-}
-
-// Used by the fitting code (Eq. 27); unused in some builds of this crate.
-#[inline]
-pub(crate) fn ln(x: f64) -> f64 {
-    libm::log(x)
-}
-
-#[inline]
-pub(crate) fn cbrt(x: f64) -> f64 {
-    libm::cbrt(x)
+    #[cfg(feature = "std")]
+    {
+        x.powf(y)
+    }
+    #[cfg(not(feature = "std"))]
+    {
+        libm::pow(x, y)
+    }
 }
 
 #[inline]
 pub(crate) fn atan2(y: f64, x: f64) -> f64 {
-    libm::atan2(y, x)
+    #[cfg(feature = "std")]
+    {
+        y.atan2(x)
+    }
+    #[cfg(not(feature = "std"))]
+    {
+        libm::atan2(y, x)
+    }
 }

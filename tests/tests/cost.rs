@@ -5,7 +5,11 @@ use rime_core::sweep::StickMap;
 use rime_core::{Accuracy, Adhesion, Contact, Friction, Layer, LayerReading, Scene};
 
 fn evals(scene: &Scene, g: f64, acc: Accuracy) -> usize {
-    Contact::new(scene).unwrap().normal(g, acc).unwrap().rhs_evaluations
+    Contact::new(scene)
+        .unwrap()
+        .normal(g, acc)
+        .unwrap()
+        .rhs_evaluations
 }
 
 #[test]
@@ -14,7 +18,11 @@ fn table_levels_integrate_nothing_for_tabulated_models() {
     for acc in [Accuracy::Fast, Accuracy::Precise] {
         assert_eq!(evals(&s, 0.01, acc), 0);
         s.layer = Some(Layer::default());
-        assert_eq!(evals(&s, 0.01, acc), 0, "offset layer is assembled from the table");
+        assert_eq!(
+            evals(&s, 0.01, acc),
+            0,
+            "offset layer is assembled from the table"
+        );
         s.adhesion = Some(Adhesion::default());
         assert_eq!(evals(&s, 0.01, acc), 0, "adhesion is algebraic on top");
         s.layer = Some(Layer {
@@ -47,7 +55,11 @@ fn effects_that_are_off_or_algebraic_cost_no_extra_integration() {
         layer: Some(Layer::default()),
         ..clean
     };
-    let g_s = Contact::new(&frost).unwrap().layer.unwrap().critical_velocity;
+    let g_s = Contact::new(&frost)
+        .unwrap()
+        .layer
+        .unwrap()
+        .critical_velocity;
     assert_eq!(
         evals(&frost, 0.01, Accuracy::Balanced),
         evals(&clean, 0.01 - g_s, Accuracy::Balanced)
@@ -65,7 +77,12 @@ fn a_stick_map_evaluates_the_normal_law_once_per_grid_speed() {
     // Grid speeds 1..n-1 are integrated once each (g = 0 is the elastic limit, free).
     let per_speed: usize = map.g[1..]
         .iter()
-        .map(|&g| contact.normal(g, Accuracy::Balanced).unwrap().rhs_evaluations)
+        .map(|&g| {
+            contact
+                .normal(g, Accuracy::Balanced)
+                .unwrap()
+                .rhs_evaluations
+        })
         .sum();
     assert_eq!(map.rhs_evaluations, per_speed);
     assert_eq!(map.class.len(), n * n);

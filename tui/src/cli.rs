@@ -44,6 +44,8 @@ pub enum Command {
     Tidal(Common, rime_core::tidal::TidalInput),
     /// `rime scene [--preset NAME] [--out FILE]`.
     Scene(Common, Option<PathBuf>),
+    /// `rime bench [--out DIR] [--quick]`.
+    Bench(PathBuf, bool),
     /// `rime help` or `--help`.
     Help,
     /// `rime --version`.
@@ -62,6 +64,8 @@ USAGE:
   rime map --max G --n N                         stick-map classes on an N×N grid from 0 to G
   rime tidal [--planet-mass KG] [--distance M] [--radius M] [--density KG/M3] [--surface-energy J/M2]
   rime scene [--preset NAME] [--out FILE]        print (or atomically write) the scene JSON
+  rime bench [--out DIR] [--quick true]          speed/accuracy of every model and level (writes
+                                                 DIR/bench.json and DIR/work-precision.svg)
 
 OPTIONS:
   --scene FILE.json        scene file (default: the `ice` preset)
@@ -194,6 +198,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
     let allowed: &[&str] = match sub {
         None | Some("explore") => &[],
         Some("scene") => &["--out"],
+        Some("bench") => &["--out", "--quick"],
         Some("eps") => &["--g"],
         Some("curve") => &["--from", "--to", "--points"],
         Some("tangential") => &["--gn", "--gt"],
@@ -227,6 +232,15 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
     Ok(match sub {
         None | Some("explore") => Command::Explore(common),
         Some("scene") => Command::Scene(common, get("--out").map(PathBuf::from)),
+        Some("bench") => {
+            let quick = match get("--quick") {
+                None | Some("false") => false,
+                Some("true") => true,
+                Some(other) => return err(format!("--quick {other}: expected true or false")),
+            };
+            let out = PathBuf::from(get("--out").unwrap_or("target/bench"));
+            Command::Bench(out, quick)
+        }
         Some("eps") => {
             let g = speed_list("--g", require("--g")?, false)?;
             Command::Eps(common, g)

@@ -1,5 +1,6 @@
 //! `rime`: the terminal explorer and the scriptable subcommands.
 
+mod bench;
 mod cli;
 mod explore;
 mod output;
@@ -188,6 +189,13 @@ fn run(command: Command) -> CliResult<Option<String>> {
         Command::Tangential(c, gn, gt) => run_tangential(&c, &gn, &gt)?,
         Command::Map(c, max, n) => run_map(&c, max, n)?,
         Command::Tidal(c, input) => run_tidal(&c, &input)?,
+        Command::Bench(out, quick) => {
+            let (_, text) = bench::run(&out, quick)?;
+            format!(
+                "{text}\nwrote {0}/bench.json and {0}/work-precision.svg\n",
+                out.display()
+            )
+        }
         Command::Explore(c) => {
             explore::run(c.scene, c.accuracy).map_err(|e| CliError(format!("explorer: {e}")))?;
             return Ok(None);

@@ -32,7 +32,9 @@ pub fn crush_time(d: f64, r: f64) -> f64 {
         let a = cbrt(r);
         let f = |p: f64| {
             let s3 = sqrt(3.0);
-            (-ln(1.0 - p) + 0.5 * ln(p * p + p + 1.0) - s3 * libm::atan((2.0 * p + 1.0) / s3)) / 3.0
+            (-ln(1.0 - p) + 0.5 * ln(p * p + p + 1.0)
+                - s3 * crate::math::atan((2.0 * p + 1.0) / s3))
+                / 3.0
         };
         (f(a) - f(0.0)) / (a * a)
     };

@@ -190,11 +190,38 @@ impl Contact {
     }
 
     /// ε_N at `g`, with the limit value at `g = 0` (used by maps that include the axis).
+    ///
+    /// On the table levels (Fast, Precise) and tabulated models (clean, offset layer, adhesion on
+    /// either) this is the hot path of curves and maps: one logarithm, one Clenshaw sum and one
+    /// exponential, nothing else of [`Contact::normal`]'s record.
     pub fn eps_n(&self, g: f64, accuracy: Accuracy) -> Result<f64> {
         if g == 0.0 {
             return Ok(self.eps_n_at_rest());
         }
-        Ok(self.normal(g, accuracy)?.eps)
+        let resolution = match accuracy {
+            Accuracy::Fast => Resolution::Coarse,
+            Accuracy::Precise => Resolution::Fine,
+            _ => return Ok(self.normal(g, accuracy)?.eps),
+        };
+        let g = check_speed(g)?;
+        let g_bulk = match &self.layer {
+            Some(l) if l.reading == LayerReading::Literal && l.thickness > 0.0 => {
+                return Ok(self.normal(g, accuracy)?.eps);
+            }
+            // Eq. (9)–(10): stuck in the layer, or the bulk is reached at g − g_s.
+            Some(l) if g <= l.critical_velocity => return Ok(0.0),
+            Some(l) => g - l.critical_velocity,
+            None => g,
+        };
+        let u = self.log10_delta_coefficient + 0.2 * crate::math::log10(g_bulk);
+        let mut eps = crate::master::eps_log10(u, self.contact_end, resolution);
+        if g_bulk != g {
+            eps *= g_bulk / g;
+        }
+        Ok(match &self.adhesion {
+            None => eps,
+            Some(adh) => adhesion::apply(eps, g, adh.critical_velocity).unwrap_or(0.0),
+        })
     }
 
     /// The limit of ε_N as the impact speed tends to zero.
