@@ -39,6 +39,7 @@ pub mod accuracy;
 pub mod analytic;
 pub mod contact;
 pub mod error;
+pub mod fit;
 pub mod kinematics;
 pub mod master;
 mod math;
