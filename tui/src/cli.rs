@@ -44,6 +44,10 @@ pub enum Command {
     Tidal(Common, rime_core::tidal::TidalInput),
     /// `rime scene [--preset NAME] [--out FILE]`.
     Scene(Common, Option<PathBuf>),
+    /// `rime export --from G --to G --points N --out DIR`.
+    Export(Common, f64, f64, usize, PathBuf),
+    /// `rime fit --data FILE.csv --param PATH`.
+    Fit(Common, PathBuf, String),
     /// `rime bench [--out DIR] [--quick]`.
     Bench(PathBuf, bool),
     /// `rime help` or `--help`.
@@ -64,6 +68,11 @@ USAGE:
   rime map --max G --n N                         stick-map classes on an N×N grid from 0 to G
   rime tidal [--planet-mass KG] [--distance M] [--radius M] [--density KG/M3] [--surface-energy J/M2]
   rime scene [--preset NAME] [--out FILE]        print (or atomically write) the scene JSON
+  rime export --out DIR [--from G --to G --points N]
+                                                 ε_N table (CSV, JSON), fitted Eq. 27 and power
+                                                 laws, ready-to-paste C and Rust functions
+  rime fit --data FILE.csv [--param PATH]        fit a parameter (default bulk.damping.time) to
+                                                 measured (g [m/s], ε) points
   rime bench [--out DIR] [--quick true]          speed/accuracy of every model and level (writes
                                                  DIR/bench.json and DIR/work-precision.svg)
 
@@ -199,6 +208,8 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
         None | Some("explore") => &[],
         Some("scene") => &["--out"],
         Some("bench") => &["--out", "--quick"],
+        Some("export") => &["--from", "--to", "--points", "--out"],
+        Some("fit") => &["--data", "--param"],
         Some("eps") => &["--g"],
         Some("curve") => &["--from", "--to", "--points"],
         Some("tangential") => &["--gn", "--gt"],
@@ -232,6 +243,21 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
     Ok(match sub {
         None | Some("explore") => Command::Explore(common),
         Some("scene") => Command::Scene(common, get("--out").map(PathBuf::from)),
+        Some("export") => {
+            let from = speed("--from", get("--from").unwrap_or("1e-6"), false)?;
+            let to = speed("--to", get("--to").unwrap_or("1"), false)?;
+            if to <= from {
+                return err(format!("--to: {to} must exceed --from {from}"));
+            }
+            let n = count("--points", get("--points").unwrap_or("200"), 8, 100_000)?;
+            let out = PathBuf::from(require("--out")?);
+            Command::Export(common, from, to, n, out)
+        }
+        Some("fit") => {
+            let data = PathBuf::from(require("--data")?);
+            let param = get("--param").unwrap_or("bulk.damping.time").to_string();
+            Command::Fit(common, data, param)
+        }
         Some("bench") => {
             let quick = match get("--quick") {
                 None | Some("false") => false,

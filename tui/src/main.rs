@@ -3,6 +3,7 @@
 mod bench;
 mod cli;
 mod explore;
+mod export;
 mod output;
 mod scene_io;
 
@@ -189,6 +190,44 @@ fn run(command: Command) -> CliResult<Option<String>> {
         Command::Tangential(c, gn, gt) => run_tangential(&c, &gn, &gt)?,
         Command::Map(c, max, n) => run_map(&c, max, n)?,
         Command::Tidal(c, input) => run_tidal(&c, &input)?,
+        Command::Export(c, from, to, n, out) => {
+            let e = export::compute(&c.scene, from, to, n, c.accuracy)?;
+            let scene = scene_io::scene_json(&c.scene)?;
+            let files = export::write_all(&out, &e, &scene)?;
+            let mut s = format!("wrote {} into {}\n", files.join(", "), out.display());
+            if let Some(f) = e.eq27 {
+                s.push_str(&format!(
+                    "Eq. 27: eps = {:.6} g^{:.6} (1 - exp(-{:.6e} g^{:.6})), rms error {:.2e}, max {:.2e}, on {}..{} m/s\n",
+                    f.a, f.b, f.c, f.d, f.rms_error, f.max_error, output::num(f.g_min), output::num(f.g_max)
+                ));
+            }
+            if let Some(p) = e.power {
+                s.push_str(&format!(
+                    "power law: eps = {:.6} (g / 1 cm/s)^{:.6}, rms error {:.2e}\n",
+                    p.a, p.b, p.rms_error
+                ));
+            }
+            s
+        }
+        Command::Fit(c, data, param) => {
+            let (g, e) = export::read_points(&data)?;
+            let (value, rms, fitted) = export::fit_parameter(&c.scene, &param, &g, &e, c.accuracy)?;
+            let unit = rime_core::params::parameter(&param).map_or("", |p| p.unit);
+            match c.format {
+                cli::Format::Json => format!(
+                    "{:#}\n",
+                    serde_json::json!({"param": param, "value": value, "unit": unit,
+                        "rms_error": rms, "points": g.len(),
+                        "scene": serde_json::to_value(fitted).unwrap_or_default()})
+                ),
+                _ => format!(
+                    "{param} = {} {unit}  (rms error of ε_N {:.3e} over {} points)\n",
+                    output::num(value),
+                    rms,
+                    g.len()
+                ),
+            }
+        }
         Command::Bench(out, quick) => {
             let (_, text) = bench::run(&out, quick)?;
             format!(
