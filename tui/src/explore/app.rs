@@ -237,10 +237,10 @@ impl App {
             Some(i) => (i + 1) % n,
             None => 0,
         };
-        if let Some(o) = options.get(next) {
-            if self.set_text(path, o) {
-                self.info(format!("{path} = {o}"));
-            }
+        if let Some(o) = options.get(next)
+            && self.set_text(path, o)
+        {
+            self.info(format!("{path} = {o}"));
         }
     }
 
@@ -312,10 +312,10 @@ impl App {
             KeyCode::Enter => {
                 let text = std::mem::take(text);
                 self.input = None;
-                if let Some(p) = PARAMETERS.get(self.selected) {
-                    if self.set_text(p.path, &text) {
-                        self.info(format!("{} = {}", p.path, text.trim()));
-                    }
+                if let Some(p) = PARAMETERS.get(self.selected)
+                    && self.set_text(p.path, &text)
+                {
+                    self.info(format!("{} = {}", p.path, text.trim()));
                 }
             }
             KeyCode::Backspace => {

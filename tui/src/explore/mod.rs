@@ -30,10 +30,10 @@ fn worker(requests: Receiver<Request>, events: Sender<Event>, latest: Arc<Atomic
         }
         let generation = req.generation;
         let cancelled = || latest.load(Ordering::Relaxed) != generation;
-        if let Some(data) = compute(&req, &cancelled) {
-            if events.send(Event::Computed(Box::new(data))).is_err() {
-                return;
-            }
+        if let Some(data) = compute(&req, &cancelled)
+            && events.send(Event::Computed(Box::new(data))).is_err()
+        {
+            return;
         }
     }
 }

@@ -356,16 +356,16 @@ fn chart(app: &App, frame: &mut Frame, area: Rect) {
         inner.width,
         inner.height - legend_h,
     );
-    if let Some(e) = &data.error {
-        if data.contact.is_none() {
-            frame.render_widget(
-                Paragraph::new(format!("cannot evaluate this scene: {e}"))
-                    .style(Style::new().fg(Color::Red))
-                    .wrap(Wrap { trim: true }),
-                plot,
-            );
-            return;
-        }
+    if let Some(e) = &data.error
+        && data.contact.is_none()
+    {
+        frame.render_widget(
+            Paragraph::new(format!("cannot evaluate this scene: {e}"))
+                .style(Style::new().fg(Color::Red))
+                .wrap(Wrap { trim: true }),
+            plot,
+        );
+        return;
     }
     // Axis ranges (log10).
     let (Some(g0), Some(g1)) = (data.g.first(), data.g.last()) else {
@@ -783,10 +783,10 @@ fn status_line(app: &App) -> Line<'static> {
     }
     let warn = Style::new().fg(Color::LightRed);
     if let Some(d) = &app.data {
-        if let Some(Some(n)) = d.current.get(app.cursor) {
-            if n.status == Status::Overdamped {
-                spans.push(Span::styled("│ ⚠ overdamped at cursor (ε_N < 1e-9) ", warn));
-            }
+        if let Some(Some(n)) = d.current.get(app.cursor)
+            && n.status == Status::Overdamped
+        {
+            spans.push(Span::styled("│ ⚠ overdamped at cursor (ε_N < 1e-9) ", warn));
         }
         if let (Some(e), Some(_)) = (&d.error, &d.contact) {
             spans.push(Span::styled(format!("│ ⚠ {e} "), warn));
