@@ -178,7 +178,13 @@ impl App {
                 true
             }
             Err(e) => {
-                self.error(format!("{path}: {e} (scene unchanged)"));
+                let e = e.to_string();
+                // Core errors usually name the field already.
+                if e.contains(path) {
+                    self.error(format!("{e} (scene unchanged)"));
+                } else {
+                    self.error(format!("{path}: {e} (scene unchanged)"));
+                }
                 false
             }
         }
@@ -324,6 +330,7 @@ impl App {
             KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => {
                 self.quit = true;
             }
+            KeyCode::Char('u') if key.modifiers.contains(KeyModifiers::CONTROL) => text.clear(),
             KeyCode::Char(c) => text.push(c),
             _ => {}
         }

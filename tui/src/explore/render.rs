@@ -105,14 +105,14 @@ pub fn render(app: &App, frame: &mut Frame) {
     let message = message_line(app);
     match l.message {
         Some(r) => {
-            frame.render_widget(Paragraph::new(status_line(app)), l.status);
+            frame.render_widget(Paragraph::new(status_line(app, l.status.width)), l.status);
             frame.render_widget(Paragraph::new(message), r);
         }
         None => {
             let mut line = if app.input.is_some() {
                 Line::default()
             } else {
-                status_line(app)
+                status_line(app, l.status.width)
             };
             if !line.spans.is_empty() {
                 line.spans.push(Span::raw(" │ "));
@@ -300,10 +300,16 @@ fn chart(app: &App, frame: &mut Frame, area: Rect) {
     }
     // Legend line.
     let mut legend: Vec<Span> = Vec::new();
-    legend.push(Span::styled(
-        "━\u{a0}this\u{a0}scene ",
-        Style::new().fg(CURRENT),
-    ));
+    let this = if sweep.available(&data.scene) {
+        nb(format!(
+            "━ this scene ({} {})",
+            sweep.symbol,
+            qty3(sweep.current(&data.scene), sweep.unit)
+        ))
+    } else {
+        nb("━ this scene".to_string())
+    };
+    legend.push(Span::styled(this + " ", Style::new().fg(CURRENT)));
     if data.clean.is_some() {
         legend.push(Span::styled(
             "━\u{a0}clean\u{a0}surface ",
@@ -588,13 +594,13 @@ fn map(app: &App, buf: &mut Buffer, area: Rect) {
         return;
     }
     let legend_w: u16 = 20;
-    let axis_w: u16 = 8;
+    let max_label = qty3(data.map_max, "m/s");
+    let axis_w: u16 = (max_label.chars().count() as u16 + 1).max(6);
     let show_legend = inner.width >= axis_w + legend_w + 12;
     let plot_w = inner.width - axis_w - if show_legend { legend_w + 1 } else { 0 };
     let plot_h = inner.height - 1;
     let px = inner.x + axis_w;
     let py = inner.y;
-    let max_label = qty(data.map_max, "m/s");
     // Y axis labels.
     let put = |buf: &mut Buffer, x: u16, y: u16, s: &str, w: u16| {
         buf.set_stringn(x, y, s, w as usize, Style::new().fg(Color::Gray));
@@ -734,7 +740,11 @@ fn derived_line(app: &App, width: u16) -> Line<'static> {
     }
     items.push(("tan ψ₀", tan));
     // δ at the cursor is also in the chart's readout; keep it here when there is room.
-    if width >= 90 {
+    let used: usize = items
+        .iter()
+        .map(|(n, v)| n.chars().count() + v.chars().count() + 3)
+        .sum();
+    if used + 6 + delta.chars().count() <= width as usize {
         items.push(("δ(g)", delta));
     }
     let mut spans = Vec::new();
@@ -769,7 +779,7 @@ pub fn paper_options(app: &App) -> Vec<&'static str> {
     out
 }
 
-fn status_line(app: &App) -> Line<'static> {
+fn status_line(app: &App, width: u16) -> Line<'static> {
     let mut spans = vec![Span::styled(
         format!(" {} ", app.accuracy.name()),
         Style::new().fg(Color::Black).bg(Color::Cyan),
@@ -786,7 +796,7 @@ fn status_line(app: &App) -> Line<'static> {
         if let Some(Some(n)) = d.current.get(app.cursor)
             && n.status == Status::Overdamped
         {
-            spans.push(Span::styled("│ ⚠ overdamped at cursor (ε_N < 1e-9) ", warn));
+            spans.push(Span::styled("│ ⚠ overdamped at cursor ", warn));
         }
         if let (Some(e), Some(_)) = (&d.error, &d.contact) {
             spans.push(Span::styled(format!("│ ⚠ {e} "), warn));
@@ -794,10 +804,14 @@ fn status_line(app: &App) -> Line<'static> {
     }
     let opts = paper_options(app);
     if !opts.is_empty() {
-        spans.push(Span::styled(
-            format!("│ ⚠ paper-inconsistent option in use: {}", opts.join(", ")),
-            Style::new().fg(Color::Yellow),
-        ));
+        let used: usize = spans.iter().map(|s| s.content.chars().count()).sum();
+        let long = format!("│ ⚠ paper-inconsistent option in use: {}", opts.join(", "));
+        let text = if used + long.chars().count() <= width as usize {
+            long
+        } else {
+            format!("│ ⚠ paper-inconsistent: {}", opts.join(", "))
+        };
+        spans.push(Span::styled(text, Style::new().fg(Color::Yellow)));
     }
     Line::from(spans)
 }
