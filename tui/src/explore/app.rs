@@ -1,0 +1,523 @@
+//! The explorer's state and its `update` function (the Elm-like core; no terminal I/O here apart
+//! from the files that `x` and `w` write).
+
+use super::compute::{CURVE_POINTS, FrameData, MAP_POINTS, Request, SWEEPS, Sweep};
+use super::export;
+use crate::scene_io;
+use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseEvent, MouseEventKind};
+use rime_core::params::{Kind, PARAMETERS, Value};
+use rime_core::{Accuracy, Preset, Scene};
+use std::path::PathBuf;
+use std::time::Duration;
+
+/// Everything that can happen to the explorer.
+#[derive(Debug)]
+pub enum Event {
+    /// A key press.
+    Key(KeyEvent),
+    /// A mouse event.
+    Mouse(MouseEvent),
+    /// The terminal was resized to (columns, rows).
+    Resize(u16, u16),
+    /// The worker finished a frame.
+    Computed(Box<FrameData>),
+}
+
+/// Which part of the screen the arrow keys act on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Focus {
+    /// The parameter panel (arrows select and change parameters).
+    Panel,
+    /// The ε_N chart (←/→ move the cursor).
+    Chart,
+    /// The stick map (arrows move the map cursor).
+    Map,
+}
+
+/// How a status message is shown.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Tone {
+    /// Neutral information.
+    Info,
+    /// An error (e.g. a rejected value).
+    Error,
+}
+
+/// The explorer's whole state.
+#[derive(Debug, Clone)]
+pub struct App {
+    /// The scene being explored.
+    pub scene: Scene,
+    /// Accuracy level.
+    pub accuracy: Accuracy,
+    /// Index into [`Preset::ALL`] of the last preset chosen with `p` (None: scene from elsewhere).
+    pub preset: Option<usize>,
+    /// Selected row of [`PARAMETERS`].
+    pub selected: usize,
+    /// What the arrow keys act on.
+    pub focus: Focus,
+    /// Index into [`SWEEPS`].
+    pub sweep: usize,
+    /// Text being typed after `e` (None when not editing).
+    pub input: Option<String>,
+    /// Whether the help overlay is shown.
+    pub help: bool,
+    /// Last status message.
+    pub message: Option<(String, Tone)>,
+    /// The latest computed frame.
+    pub data: Option<FrameData>,
+    /// Generation of the latest request.
+    pub generation: u64,
+    /// A request waiting to be sent to the worker.
+    pub pending: Option<Request>,
+    /// Chart cursor: index into the curve speeds.
+    pub cursor: usize,
+    /// Map cursor: (row i for g_N, column j for g_T) into the map grid.
+    pub map_cursor: (usize, usize),
+    /// User-chosen stick-map range \[m/s\] (None: automatic).
+    pub map_max: Option<f64>,
+    /// Set when the user asked to quit.
+    pub quit: bool,
+    /// Terminal size (columns, rows).
+    pub size: (u16, u16),
+    /// Folder that exports and saved scenes go into.
+    pub out_dir: PathBuf,
+    /// Compute time to show instead of the measured one (tests use this for stable snapshots).
+    pub fixed_elapsed: Option<Duration>,
+}
+
+impl App {
+    /// A new explorer on `scene`; the first computation is queued in [`App::pending`].
+    pub fn new(scene: Scene, accuracy: Accuracy) -> App {
+        let preset = Preset::ALL.iter().position(|p| p.scene() == scene);
+        let mut app = App {
+            scene,
+            accuracy,
+            preset,
+            selected: 0,
+            focus: Focus::Panel,
+            sweep: Sweep::default_for(&scene),
+            input: None,
+            help: false,
+            message: Some(("? shows every key · q quits".into(), Tone::Info)),
+            data: None,
+            generation: 0,
+            pending: None,
+            // 1 cm/s on the default 1e-7…10 m/s grid.
+            cursor: (CURVE_POINTS - 1) * 5 / 8,
+            map_cursor: (MAP_POINTS / 2, MAP_POINTS / 4),
+            map_max: None,
+            quit: false,
+            size: (100, 30),
+            out_dir: PathBuf::from("."),
+            fixed_elapsed: None,
+        };
+        app.request();
+        app
+    }
+
+    /// Queues a computation of the current state (superseding any earlier request).
+    pub fn request(&mut self) {
+        self.generation += 1;
+        self.pending = Some(Request {
+            generation: self.generation,
+            scene: self.scene,
+            accuracy: self.accuracy,
+            sweep: self.sweep,
+            map_max: self.map_max,
+        });
+    }
+
+    /// Takes the queued request, if any.
+    pub fn take_request(&mut self) -> Option<Request> {
+        self.pending.take()
+    }
+
+    /// Whether the shown data are older than the latest request.
+    pub fn computing(&self) -> bool {
+        self.data
+            .as_ref()
+            .is_none_or(|d| d.generation != self.generation)
+    }
+
+    fn info(&mut self, text: impl Into<String>) {
+        self.message = Some((text.into(), Tone::Info));
+    }
+
+    fn error(&mut self, text: impl Into<String>) {
+        self.message = Some((text.into(), Tone::Error));
+    }
+
+    /// The swept parameter.
+    pub fn sweep_def(&self) -> Sweep {
+        SWEEPS.get(self.sweep).copied().unwrap_or(SWEEPS[3])
+    }
+
+    /// Keeps the sweep valid after the scene changed (falls back to the scene's default).
+    fn fix_sweep(&mut self) {
+        if !self.sweep_def().available(&self.scene) {
+            self.sweep = Sweep::default_for(&self.scene);
+        }
+    }
+
+    /// Replaces the scene and queues a recomputation.
+    fn scene_changed(&mut self, next: Scene) {
+        if next != self.scene {
+            self.scene = next;
+            self.preset = None;
+            self.fix_sweep();
+            self.request();
+        }
+    }
+
+    fn set_text(&mut self, path: &str, text: &str) -> bool {
+        let mut next = self.scene;
+        match next.set(path, text) {
+            Ok(()) => {
+                self.scene_changed(next);
+                true
+            }
+            Err(e) => {
+                let e = e.to_string();
+                // Core errors usually name the field already.
+                if e.contains(path) {
+                    self.error(format!("{e} (scene unchanged)"));
+                } else {
+                    self.error(format!("{path}: {e} (scene unchanged)"));
+                }
+                false
+            }
+        }
+    }
+
+    /// Changes the selected parameter one step up (`dir = 1`) or down (`-1`), fine or coarse.
+    fn step(&mut self, dir: f64, fine: bool) {
+        let Some(p) = PARAMETERS.get(self.selected) else {
+            return;
+        };
+        match (p.kind, self.scene.get(p.path)) {
+            (Kind::Number { min, max, log }, Ok(Value::Number(v))) => {
+                let next = if log {
+                    let f: f64 = if fine { 1.02 } else { 1.25 };
+                    if v > 0.0 {
+                        v * f.powf(dir)
+                    } else if dir > 0.0 && min <= 0.0 {
+                        self.error(format!(
+                            "{}: is 0; press e to type a value (log steps cannot leave 0)",
+                            p.path
+                        ));
+                        return;
+                    } else {
+                        v
+                    }
+                } else {
+                    // 5 % of the range (1 % fine), at most 0.05 (0.01): steps a physicist can use
+                    // for μ, κ and ν.
+                    let span = (max - min).min(1.0);
+                    v + dir * span * if fine { 0.01 } else { 0.05 }
+                };
+                let next = next.clamp(min, max);
+                let mut s = self.scene;
+                match s.set_number(p.path, next) {
+                    Ok(()) => self.scene_changed(s),
+                    Err(e) => self.error(format!("{}: {e} (scene unchanged)", p.path)),
+                }
+            }
+            (Kind::Number { .. }, _) => self.info(format!(
+                "{} is inactive; press e to type a value (switches it on)",
+                p.path
+            )),
+            (Kind::Choice(options), _) => self.cycle_choice(p.path, options, dir),
+            (Kind::Toggle, _) => self.activate(),
+        }
+    }
+
+    fn cycle_choice(&mut self, path: &str, options: &[&str], dir: f64) {
+        let current = match self.scene.get(path) {
+            Ok(Value::Choice(c)) => options.iter().position(|o| *o == c),
+            _ => None,
+        };
+        let n = options.len();
+        let next = match current {
+            Some(i) if dir < 0.0 => (i + n - 1) % n,
+            Some(i) => (i + 1) % n,
+            None => 0,
+        };
+        if let Some(o) = options.get(next)
+            && self.set_text(path, o)
+        {
+            self.info(format!("{path} = {o}"));
+        }
+    }
+
+    /// Enter/space on the selected row: cycles a choice, switches a toggle, edits a number.
+    fn activate(&mut self) {
+        let Some(p) = PARAMETERS.get(self.selected) else {
+            return;
+        };
+        match p.kind {
+            Kind::Toggle => {
+                let on = matches!(self.scene.get(p.path), Ok(Value::Enabled(true)));
+                let text = if on { "off" } else { "on" };
+                if self.set_text(p.path, text) {
+                    self.info(format!("{} {text}", p.path));
+                }
+            }
+            Kind::Choice(options) => self.cycle_choice(p.path, options, 1.0),
+            Kind::Number { .. } => self.start_input(),
+        }
+    }
+
+    fn start_input(&mut self) {
+        let current = match PARAMETERS
+            .get(self.selected)
+            .map(|p| (p, self.scene.get(p.path)))
+        {
+            Some((_, Ok(Value::Number(v)))) => format!("{v}"),
+            Some((_, Ok(Value::Choice(c)))) => c.to_string(),
+            Some((_, Ok(Value::Enabled(b)))) => (if b { "on" } else { "off" }).to_string(),
+            _ => String::new(),
+        };
+        self.input = Some(current);
+    }
+
+    fn cycle_preset(&mut self) {
+        let i = self.preset.map_or(0, |i| (i + 1) % Preset::ALL.len());
+        let p = Preset::ALL[i % Preset::ALL.len()];
+        self.scene = p.scene();
+        self.preset = Some(i);
+        self.sweep = Sweep::default_for(&self.scene);
+        self.map_max = None;
+        self.info(format!("preset {}: {}", p.name(), p.description()));
+        self.request();
+    }
+
+    fn move_cursor(&mut self, delta: i64) {
+        let max = CURVE_POINTS as i64 - 1;
+        self.cursor = (self.cursor as i64 + delta).clamp(0, max) as usize;
+    }
+
+    fn move_map(&mut self, di: i64, dj: i64) {
+        let max = MAP_POINTS as i64 - 1;
+        let (i, j) = self.map_cursor;
+        self.map_cursor = (
+            (i as i64 + di).clamp(0, max) as usize,
+            (j as i64 + dj).clamp(0, max) as usize,
+        );
+    }
+
+    fn handle_input_key(&mut self, key: KeyEvent) {
+        let Some(text) = self.input.as_mut() else {
+            return;
+        };
+        match key.code {
+            KeyCode::Esc => {
+                self.input = None;
+                self.info("edit cancelled");
+            }
+            KeyCode::Enter => {
+                let text = std::mem::take(text);
+                self.input = None;
+                if let Some(p) = PARAMETERS.get(self.selected)
+                    && self.set_text(p.path, &text)
+                {
+                    self.info(format!("{} = {}", p.path, text.trim()));
+                }
+            }
+            KeyCode::Backspace => {
+                text.pop();
+            }
+            KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => {
+                self.quit = true;
+            }
+            KeyCode::Char('u') if key.modifiers.contains(KeyModifiers::CONTROL) => text.clear(),
+            KeyCode::Char(c) => text.push(c),
+            _ => {}
+        }
+    }
+
+    fn export(&mut self) {
+        let Some(data) = self.data.as_ref().filter(|d| d.scene == self.scene) else {
+            self.info("still computing — press x again in a moment");
+            return;
+        };
+        match export::export(&self.out_dir, data) {
+            Ok(dir) => self.info(format!(
+                "exported scene.json, eps_curves.csv, stick_map.csv to {}/ (SVG/PNG figures: not yet)",
+                dir.display()
+            )),
+            Err(e) => self.error(format!("export failed: {e}")),
+        }
+    }
+
+    fn save(&mut self) {
+        let path = self.out_dir.join("rime-scene.json");
+        let result = scene_io::scene_json(&self.scene)
+            .and_then(|json| scene_io::write_atomic(&path, (json + "\n").as_bytes()));
+        match result {
+            Ok(()) => self.info(format!("saved scene to {}", path.display())),
+            Err(e) => self.error(format!("save failed: {e}")),
+        }
+    }
+
+    fn handle_key(&mut self, key: KeyEvent) {
+        if key.kind == KeyEventKind::Release {
+            return;
+        }
+        if self.input.is_some() {
+            self.handle_input_key(key);
+            return;
+        }
+        let shift = key.modifiers.contains(KeyModifiers::SHIFT);
+        if key.modifiers.contains(KeyModifiers::CONTROL) {
+            if key.code == KeyCode::Char('c') {
+                self.quit = true;
+            }
+            return;
+        }
+        if self.help {
+            // Any key closes the help; q still quits.
+            self.help = false;
+            if matches!(key.code, KeyCode::Char('q')) {
+                self.quit = true;
+            }
+            return;
+        }
+        let n = PARAMETERS.len();
+        let map_step = (MAP_POINTS / 20).max(1) as i64;
+        let map_step = if shift { 1 } else { map_step };
+        match (key.code, self.focus) {
+            (KeyCode::Char('q') | KeyCode::Esc, _) => self.quit = true,
+            (KeyCode::Char('?'), _) => self.help = true,
+            (KeyCode::Tab, _) => {
+                self.focus = match self.focus {
+                    Focus::Panel => Focus::Chart,
+                    Focus::Chart => Focus::Map,
+                    Focus::Map => Focus::Panel,
+                };
+                self.info(match self.focus {
+                    Focus::Panel => "focus: parameters (↑↓ select, ←→ change)",
+                    Focus::Chart => "focus: chart (←→ move the g_N cursor)",
+                    Focus::Map => "focus: stick map (arrows move the map cursor)",
+                });
+            }
+            (KeyCode::BackTab, _) => {
+                self.focus = match self.focus {
+                    Focus::Panel => Focus::Map,
+                    Focus::Chart => Focus::Panel,
+                    Focus::Map => Focus::Chart,
+                };
+            }
+            (KeyCode::Up | KeyCode::Char('k'), Focus::Panel) => {
+                self.selected = (self.selected + n - 1) % n;
+            }
+            (KeyCode::Down | KeyCode::Char('j'), Focus::Panel) => {
+                self.selected = (self.selected + 1) % n;
+            }
+            (KeyCode::Right | KeyCode::Char('l'), Focus::Panel) => self.step(1.0, shift),
+            (KeyCode::Left | KeyCode::Char('h'), Focus::Panel) => self.step(-1.0, shift),
+            (KeyCode::Char('L'), Focus::Panel) => self.step(1.0, true),
+            (KeyCode::Char('H'), Focus::Panel) => self.step(-1.0, true),
+            (KeyCode::Right | KeyCode::Char('l'), Focus::Chart) => {
+                self.move_cursor(if shift { 1 } else { 5 })
+            }
+            (KeyCode::Left | KeyCode::Char('h'), Focus::Chart) => {
+                self.move_cursor(if shift { -1 } else { -5 })
+            }
+            (KeyCode::Char('L'), Focus::Chart) => self.move_cursor(1),
+            (KeyCode::Char('H'), Focus::Chart) => self.move_cursor(-1),
+            (KeyCode::Up | KeyCode::Char('k'), Focus::Map) => self.move_map(map_step, 0),
+            (KeyCode::Down | KeyCode::Char('j'), Focus::Map) => self.move_map(-map_step, 0),
+            (KeyCode::Right | KeyCode::Char('l'), Focus::Map) => self.move_map(0, map_step),
+            (KeyCode::Left | KeyCode::Char('h'), Focus::Map) => self.move_map(0, -map_step),
+            (KeyCode::Up | KeyCode::Down | KeyCode::Char('k' | 'j'), Focus::Chart) => {
+                self.focus = Focus::Panel;
+                self.handle_key(key);
+            }
+            (KeyCode::Enter | KeyCode::Char(' '), _) => {
+                self.focus = Focus::Panel;
+                self.activate();
+            }
+            (KeyCode::Char('e'), _) => {
+                self.focus = Focus::Panel;
+                self.start_input();
+            }
+            (KeyCode::Char('p'), _) => self.cycle_preset(),
+            (KeyCode::Char('a'), _) => {
+                self.accuracy = self.accuracy.next();
+                self.info(format!("accuracy: {}", self.accuracy.name()));
+                self.request();
+            }
+            (KeyCode::Char('s'), _) => {
+                let k = SWEEPS.len();
+                for d in 1..=k {
+                    let i = (self.sweep + d) % k;
+                    if SWEEPS[i].available(&self.scene) {
+                        self.sweep = i;
+                        break;
+                    }
+                }
+                let s = self.sweep_def();
+                self.info(format!("family of curves: {} ({})", s.symbol, s.path));
+                self.request();
+            }
+            (KeyCode::Char(']'), _) => self.move_cursor(1),
+            (KeyCode::Char('['), _) => self.move_cursor(-1),
+            (KeyCode::Char('}'), _) => self.move_cursor(10),
+            (KeyCode::Char('{'), _) => self.move_cursor(-10),
+            (KeyCode::Char('+' | '='), _) | (KeyCode::Char('-'), _) => {
+                let shown = self.data.as_ref().map_or(1.0, |d| d.map_max);
+                let zoom_out = key.code != KeyCode::Char('-');
+                let next = if zoom_out { shown * 2.0 } else { shown / 2.0 };
+                self.map_max = Some(next.clamp(1e-9, 1e6));
+                self.info(format!(
+                    "stick map range 0 … {}",
+                    super::format::qty(next, "m/s")
+                ));
+                self.request();
+            }
+            (KeyCode::Char('0'), _) => {
+                self.map_max = None;
+                self.info("stick map range: automatic");
+                self.request();
+            }
+            (KeyCode::Char('x'), _) => self.export(),
+            (KeyCode::Char('w'), _) => self.save(),
+            _ => {}
+        }
+    }
+
+    fn handle_mouse(&mut self, m: MouseEvent) {
+        let layout = super::render::layout(self.size.0, self.size.1);
+        let Some(layout) = layout else { return };
+        let inside = |r: ratatui::layout::Rect| {
+            m.column >= r.x && m.column < r.x + r.width && m.row >= r.y && m.row < r.y + r.height
+        };
+        match m.kind {
+            MouseEventKind::ScrollUp if inside(layout.chart) => self.move_cursor(2),
+            MouseEventKind::ScrollDown if inside(layout.chart) => self.move_cursor(-2),
+            MouseEventKind::ScrollUp if inside(layout.panel) => {
+                self.selected = self.selected.saturating_sub(1);
+            }
+            MouseEventKind::ScrollDown if inside(layout.panel) => {
+                self.selected = (self.selected + 1).min(PARAMETERS.len() - 1);
+            }
+            _ => {}
+        }
+    }
+}
+
+/// Applies one event to the state.
+pub fn update(app: &mut App, event: Event) {
+    match event {
+        Event::Key(k) => app.handle_key(k),
+        Event::Mouse(m) => app.handle_mouse(m),
+        Event::Resize(w, h) => app.size = (w, h),
+        Event::Computed(data) => {
+            // Drop stale results: a newer request is on its way.
+            if data.generation == app.generation {
+                app.data = Some(*data);
+            }
+        }
+    }
+}

@@ -1,0 +1,348 @@
+//! Tests of the explorer: `update` logic, `TestBackend` buffer assertions and insta snapshots.
+
+use super::app::{App, Event, Focus, Tone, update};
+use super::compute::{SWEEPS, compute};
+use super::render::render;
+use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
+use rime_core::params::{PARAMETERS, Value};
+use rime_core::{Accuracy, Preset, Scene};
+use std::time::Duration;
+
+fn key(c: KeyCode) -> Event {
+    Event::Key(KeyEvent::new(c, KeyModifiers::NONE))
+}
+
+fn ch(c: char) -> Event {
+    key(KeyCode::Char(c))
+}
+
+/// Runs the pending request synchronously, as the worker would.
+fn settle(app: &mut App) {
+    if let Some(req) = app.take_request() {
+        let data = compute(&req, &|| false).expect("not cancelled");
+        update(app, Event::Computed(Box::new(data)));
+    }
+}
+
+fn app_on(scene: Scene) -> App {
+    let mut app = App::new(scene, Accuracy::Fast);
+    app.fixed_elapsed = Some(Duration::from_millis(3));
+    settle(&mut app);
+    app
+}
+
+fn screen(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
+    let mut t = Terminal::new(TestBackend::new(w, h)).expect("terminal");
+    t.draw(|f| render(app, f)).expect("draw");
+    t
+}
+
+fn text(t: &Terminal<TestBackend>) -> String {
+    let buf = t.backend().buffer();
+    let mut s = String::new();
+    for y in 0..buf.area.height {
+        for x in 0..buf.area.width {
+            // Non-breaking spaces (kept together by the legend's wrapping) read as spaces.
+            s.push_str(&buf[(x, y)].symbol().replace('\u{a0}', " "));
+        }
+        s.push('\n');
+    }
+    s
+}
+
+fn select(app: &mut App, path: &str) {
+    app.selected = PARAMETERS
+        .iter()
+        .position(|p| p.path == path)
+        .expect("known path");
+    app.focus = Focus::Panel;
+}
+
+fn number(app: &App, path: &str) -> f64 {
+    match app.scene.get(path) {
+        Ok(Value::Number(v)) => v,
+        other => panic!("{path}: {other:?}"),
+    }
+}
+
+#[test]
+fn main_screen_snapshot() {
+    let app = app_on(Scene::default());
+    let t = screen(&app, 100, 30);
+    insta::assert_snapshot!("main_100x30", text(&t));
+}
+
+#[test]
+fn main_screen_frost_snapshot() {
+    let app = app_on(Preset::IceFrost.scene());
+    let t = screen(&app, 100, 30);
+    insta::assert_snapshot!("frost_100x30", text(&t));
+}
+
+#[test]
+fn help_overlay_snapshot() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('?'));
+    assert!(app.help);
+    let t = screen(&app, 100, 30);
+    let s = text(&t);
+    assert!(s.contains("rime — keys"));
+    insta::assert_snapshot!("help_100x30", s);
+    update(&mut app, ch('j'));
+    assert!(!app.help, "any key closes the help");
+    assert!(!app.quit);
+}
+
+#[test]
+fn too_small_snapshot() {
+    let app = app_on(Scene::default());
+    let t = screen(&app, 50, 15);
+    let s = text(&t);
+    assert!(s.contains("terminal too small (need 60×20)"));
+    insta::assert_snapshot!("too_small_50x15", s);
+}
+
+#[test]
+fn main_screen_shows_every_parameter_and_class() {
+    let app = app_on(Preset::IceFrost.scene());
+    let s = text(&screen(&app, 120, 40));
+    for p in PARAMETERS {
+        let head: String = p.label.chars().take(8).collect();
+        assert!(s.contains(&head), "missing parameter {}", p.path);
+    }
+    for c in rime_core::StickClass::ALL {
+        assert!(
+            s.contains(&c.name().replace('_', " ")),
+            "missing class {c:?}"
+        );
+    }
+    assert!(s.contains("10 m/s"));
+    assert!(s.contains("g_s layer 6.6"), "critical velocity marker");
+    assert!(!s.contains("NaN") && !s.contains("inf"));
+}
+
+#[test]
+fn every_size_from_minimum_renders_without_panic() {
+    let app = app_on(Preset::IceSticky.scene());
+    for (w, h) in [(60, 20), (80, 24), (61, 23), (200, 60), (59, 40), (1, 1)] {
+        let s = text(&screen(&app, w, h));
+        assert!(!s.contains("NaN"), "{w}×{h}");
+    }
+}
+
+#[test]
+fn changing_a_parameter_changes_the_scene() {
+    let mut app = app_on(Preset::IceFrost.scene());
+    select(&mut app, "layer.viscosity");
+    let g0 = app.generation;
+    update(&mut app, ch('l'));
+    assert!((number(&app, "layer.viscosity") - 1250.0).abs() < 1e-9);
+    assert!(app.generation > g0, "a recomputation is requested");
+    update(&mut app, key(KeyCode::Left));
+    assert!((number(&app, "layer.viscosity") - 1000.0).abs() < 1e-9);
+    update(&mut app, ch('L'));
+    assert!((number(&app, "layer.viscosity") - 1020.0).abs() < 1e-9);
+    // Linear parameter: ±0.05.
+    select(&mut app, "friction.coefficient");
+    update(&mut app, ch('l'));
+    assert!((number(&app, "friction.coefficient") - 0.35).abs() < 1e-12);
+    // Toggle: layer off and on.
+    select(&mut app, "layer");
+    update(&mut app, key(KeyCode::Enter));
+    assert!(app.scene.layer.is_none());
+    update(&mut app, ch(' '));
+    assert!(app.scene.layer.is_some());
+    // Choice cycles.
+    select(&mut app, "contact_end");
+    update(&mut app, key(KeyCode::Enter));
+    assert_eq!(
+        app.scene.get("contact_end"),
+        Ok(Value::Choice("zero_overlap"))
+    );
+}
+
+#[test]
+fn typed_value_with_units_is_applied() {
+    let mut app = app_on(Preset::IceFrost.scene());
+    select(&mut app, "layer.thickness");
+    update(&mut app, ch('e'));
+    assert!(app.input.is_some());
+    app.input = Some(String::new());
+    for c in "2 um".chars() {
+        update(&mut app, ch(c));
+    }
+    update(&mut app, key(KeyCode::Enter));
+    assert!(app.input.is_none());
+    assert!((number(&app, "layer.thickness") - 2e-6).abs() < 1e-18);
+}
+
+#[test]
+fn typed_bad_value_keeps_scene_and_names_the_field() {
+    let mut app = app_on(Preset::IceFrost.scene());
+    let before = app.scene;
+    select(&mut app, "grains.density");
+    update(&mut app, ch('e'));
+    app.input = Some("-5".into());
+    update(&mut app, key(KeyCode::Enter));
+    assert_eq!(app.scene, before);
+    let (msg, tone) = app.message.clone().expect("a message");
+    assert_eq!(tone, Tone::Error);
+    assert!(msg.contains("grains.density"), "{msg}");
+    let s = text(&screen(&app, 100, 30));
+    assert!(s.contains("grains.density"), "error shown on screen");
+    // Wrong unit.
+    select(&mut app, "layer.thickness");
+    update(&mut app, ch('e'));
+    app.input = Some("1 Pa".into());
+    update(&mut app, key(KeyCode::Enter));
+    assert_eq!(app.scene, before);
+    assert!(
+        app.message
+            .as_ref()
+            .is_some_and(|m| m.0.contains("layer.thickness"))
+    );
+}
+
+#[test]
+fn escape_cancels_input_without_quitting() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('e'));
+    update(&mut app, key(KeyCode::Esc));
+    assert!(app.input.is_none());
+    assert!(!app.quit);
+    update(&mut app, key(KeyCode::Esc));
+    assert!(app.quit);
+}
+
+#[test]
+fn preset_cycling() {
+    let mut app = app_on(Scene::default());
+    assert_eq!(app.preset, Some(0));
+    update(&mut app, ch('p'));
+    assert_eq!(app.scene, Preset::IceFrost.scene());
+    assert_eq!(SWEEPS[app.sweep].path, "layer.viscosity");
+    update(&mut app, ch('p'));
+    assert_eq!(app.scene, Preset::IceSticky.scene());
+    assert_eq!(SWEEPS[app.sweep].path, "adhesion.surface_energy");
+    update(&mut app, ch('p'));
+    assert_eq!(app.scene, Preset::IcePaperViscosities.scene());
+    assert_eq!(SWEEPS[app.sweep].path, "bulk.damping.time");
+    update(&mut app, ch('p'));
+    assert_eq!(app.scene, Preset::Ice.scene());
+}
+
+#[test]
+fn accuracy_cycling() {
+    let mut app = app_on(Scene::default());
+    assert_eq!(app.accuracy, Accuracy::Fast);
+    let g = app.generation;
+    update(&mut app, ch('a'));
+    assert_eq!(app.accuracy, Accuracy::Balanced);
+    assert!(app.generation > g);
+    update(&mut app, ch('a'));
+    assert_eq!(app.accuracy, Accuracy::Precise);
+    update(&mut app, ch('a'));
+    assert_eq!(app.accuracy, Accuracy::Fast);
+}
+
+#[test]
+fn sweep_cycling_skips_unavailable_parameters() {
+    let mut app = app_on(Scene::default());
+    assert_eq!(SWEEPS[app.sweep].path, "bulk.damping.time");
+    for _ in 0..10 {
+        update(&mut app, ch('s'));
+        assert!(SWEEPS[app.sweep].available(&app.scene));
+    }
+}
+
+#[test]
+fn stale_results_are_dropped() {
+    let mut app = App::new(Scene::default(), Accuracy::Fast);
+    let old = app.take_request().expect("initial request");
+    update(&mut app, ch('a'));
+    let data = compute(&old, &|| false).expect("computed");
+    update(&mut app, Event::Computed(Box::new(data)));
+    assert!(app.data.is_none(), "stale frame ignored");
+    settle(&mut app);
+    assert!(app.data.is_some());
+    assert!(!app.computing());
+}
+
+#[test]
+fn cancelled_computation_returns_nothing() {
+    let app = App::new(Preset::IceFrost.scene(), Accuracy::Fast);
+    let req = app.pending.expect("request");
+    assert!(compute(&req, &|| true).is_none());
+}
+
+#[test]
+fn cursor_moves_and_readout_has_no_nan() {
+    let mut app = app_on(Preset::IceFrost.scene());
+    let c = app.cursor;
+    update(&mut app, ch(']'));
+    assert_eq!(app.cursor, c + 1);
+    update(&mut app, ch('{'));
+    assert_eq!(app.cursor, c - 9);
+    for _ in 0..100 {
+        update(&mut app, ch('{'));
+    }
+    assert_eq!(app.cursor, 0);
+    let s = text(&screen(&app, 100, 30));
+    assert!(s.contains("stuck in layer"), "stuck at the slowest speed");
+    assert!(s.contains("t_c — (stuck)"));
+    update(&mut app, key(KeyCode::Tab));
+    update(&mut app, key(KeyCode::Tab));
+    assert_eq!(app.focus, Focus::Map);
+    let m = app.map_cursor;
+    update(&mut app, key(KeyCode::Up));
+    assert!(app.map_cursor.0 > m.0);
+}
+
+#[test]
+fn export_writes_csvs_and_scene() {
+    let dir = std::env::temp_dir().join(format!("rime-tui-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp");
+    let mut app = app_on(Preset::IceFrost.scene());
+    app.out_dir = dir.clone();
+    update(&mut app, ch('x'));
+    let (msg, tone) = app.message.clone().expect("message");
+    assert_eq!(tone, Tone::Info, "{msg}");
+    assert!(msg.contains("rime-export-"));
+    let export = std::fs::read_dir(&dir)
+        .expect("read")
+        .filter_map(|e| e.ok())
+        .find(|e| e.file_name().to_string_lossy().starts_with("rime-export-"))
+        .expect("export folder")
+        .path();
+    let curves = std::fs::read_to_string(export.join("eps_curves.csv")).expect("curves");
+    let header = curves.lines().next().expect("header");
+    assert!(header.starts_with("g_n,eps_n,status,eps_n_clean,eps_n[layer.viscosity=5e2]"));
+    assert_eq!(curves.lines().count(), 1 + super::compute::CURVE_POINTS);
+    let map = std::fs::read_to_string(export.join("stick_map.csv")).expect("map");
+    assert!(map.starts_with("g_n,g_t,eps_t,class\n"));
+    let scene = std::fs::read_to_string(export.join("scene.json")).expect("scene");
+    assert_eq!(
+        crate::scene_io::parse_scene(&scene).expect("valid scene"),
+        app.scene
+    );
+    update(&mut app, ch('w'));
+    assert!(dir.join("rime-scene.json").exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn paper_inconsistent_options_are_flagged() {
+    let mut app = app_on(Preset::IceFrost.scene());
+    app.scene.set("layer.reading", "literal").expect("set");
+    app.scene
+        .set("friction.sliding_law", "walton")
+        .expect("set");
+    let opts = super::render::paper_options(&app);
+    assert_eq!(opts, vec!["layer.reading=literal"]);
+    app.scene
+        .set("adhesion.modulus", "consistent")
+        .expect("set");
+    assert_eq!(super::render::paper_options(&app).len(), 1);
+}

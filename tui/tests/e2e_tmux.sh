@@ -1,0 +1,109 @@
+#!/usr/bin/env bash
+# End-to-end test of the terminal explorer: drives the real `rime` binary in a detached tmux session.
+#
+#   tui/tests/e2e_tmux.sh [path/to/rime]
+#
+# Starts rime at 100×30, waits for the chart, selects the ice-frost preset (`p`), changes the layer
+# viscosity (select the row, `l`), checks that the readout changed, exports (`x`) and checks the
+# export folder and its CSVs, quits (`q`) and checks exit code 0. Exits non-zero with a message on
+# any failure. Every wait is a polling loop with a timeout (≤ 20 s).
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+BIN="${1:-$ROOT/target/release/rime}"
+if [[ ! -x "$BIN" ]]; then
+    (cd "$ROOT" && cargo build --release -p rime-tui >&2)
+fi
+BIN="$(cd "$(dirname "$BIN")" && pwd)/$(basename "$BIN")"
+command -v tmux >/dev/null || { echo "e2e_tmux: tmux is not installed" >&2; exit 1; }
+
+WORK="$(mktemp -d "${TMPDIR:-/tmp}/rime-e2e.XXXXXX")"
+SESSION="rime-e2e-$$"
+cleanup() {
+    tmux kill-session -t "$SESSION" 2>/dev/null || true
+    rm -rf "$WORK"
+}
+trap cleanup EXIT
+
+fail() {
+    echo "e2e_tmux: FAIL: $*" >&2
+    echo "---- last screen ----" >&2
+    tmux capture-pane -p -t "$SESSION" >&2 2>/dev/null || true
+    exit 1
+}
+
+screen() { tmux capture-pane -p -t "$SESSION"; }
+
+# wait_for TEXT [TIMEOUT]: polls the screen until it contains TEXT.
+wait_for() {
+    local text="$1" timeout="${2:-20}" start=$SECONDS
+    while (( SECONDS - start < timeout )); do
+        if screen | grep -qF -- "$text"; then return 0; fi
+        sleep 0.2
+    done
+    fail "timed out after ${timeout}s waiting for '$text'"
+}
+
+# readout: the chart cursor readout line (▸ g … ε_N …).
+readout() { screen | grep -F "ε_N" | grep -F "│ ▸" | head -1 | sed 's/^.*│ ▸//'; }
+
+tmux new-session -d -s "$SESSION" -x 100 -y 30 -c "$WORK" \
+    "'$BIN' --accuracy fast; echo EXIT:\$? > '$WORK/exit'; sleep 60"
+
+wait_for "ε_N(g_N)"
+wait_for "t_c"
+wait_for "sliding law"
+before_preset="$(readout)"
+[[ -n "$before_preset" ]] || fail "no chart readout on the first screen"
+
+# Preset ice-frost (layer on), then select the layer-viscosity row and increase it.
+tmux send-keys -t "$SESSION" p
+wait_for "ice-frost"
+wait_for "g_s(layer)"
+# Move the cursor to where the layer matters (≈ 20 µm/s, just above g_s), from the default 1 cm/s;
+# each { is 1/3 decade.
+for _ in 1 2 3 4 5 6 7 8; do tmux send-keys -t "$SESSION" '{'; done
+sleep 0.3
+# The panel starts on row 0; layer.viscosity is row 12 (0-based) of the parameter list.
+for _ in $(seq 12); do tmux send-keys -t "$SESSION" j; done
+wait_for "▸η* layer viscosity"
+before="$(readout)"
+[[ "$before" == *"ε_N"* ]] || fail "no readout before the change"
+tmux send-keys -t "$SESSION" l
+wait_for "1.25 kPa s"
+# Wait for the recomputed frame: the readout must change.
+start=$SECONDS
+after="$(readout)"
+while [[ "$after" == "$before" ]] && (( SECONDS - start < 20 )); do
+    sleep 0.2
+    after="$(readout)"
+done
+[[ "$after" != "$before" ]] || fail "readout did not change after raising η* ('$before')"
+echo "e2e_tmux: readout before: $before"
+echo "e2e_tmux: readout after:  $after"
+
+# Export.
+tmux send-keys -t "$SESSION" x
+wait_for "exported"
+start=$SECONDS
+dir=""
+while [[ -z "$dir" ]] && (( SECONDS - start < 20 )); do
+    dir="$(find "$WORK" -maxdepth 1 -type d -name 'rime-export-*' | head -1)"
+    [[ -n "$dir" ]] || sleep 0.2
+done
+[[ -n "$dir" ]] || fail "no rime-export-* folder in $WORK"
+for f in scene.json eps_curves.csv stick_map.csv; do
+    [[ -s "$dir/$f" ]] || fail "export is missing $f"
+done
+head -1 "$dir/eps_curves.csv" | grep -q '^g_n,eps_n,status' || fail "eps_curves.csv header"
+head -1 "$dir/stick_map.csv" | grep -q '^g_n,g_t,eps_t,class$' || fail "stick_map.csv header"
+grep -q '"viscosity": 1250' "$dir/scene.json" || fail "scene.json does not hold the changed viscosity"
+
+# Quit with q: exit code 0.
+tmux send-keys -t "$SESSION" q
+start=$SECONDS
+while [[ ! -s "$WORK/exit" ]] && (( SECONDS - start < 20 )); do sleep 0.2; done
+[[ -s "$WORK/exit" ]] || fail "rime did not exit after q"
+code="$(cat "$WORK/exit")"
+[[ "$code" == "EXIT:0" ]] || fail "rime exited with '$code', expected EXIT:0"
+echo "e2e_tmux: ok (changed a parameter, exported to $(basename "$dir"), quit with 0)"
