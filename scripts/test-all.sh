@@ -37,7 +37,7 @@ step no_std cargo build -p rime-core --no-default-features --target thumbv7em-no
 step no_std_alloc cargo build -p rime-core --no-default-features --features alloc --target thumbv7em-none-eabihf
 step build cargo build --release --workspace
 count_cargo_tests cargo-test cargo test --workspace --release --no-fail-fast
-for extra in scripts/test-*.d/*.sh; do
+for extra in scripts/test-all.d/*.sh; do
   [ -e "$extra" ] || continue
   step "$(basename "$extra" .sh)" "$extra"
 done

@@ -21,7 +21,13 @@ pub struct Export {
 }
 
 /// Computes the table and fits.
-pub fn compute(scene: &Scene, from: f64, to: f64, n: usize, accuracy: Accuracy) -> CliResult<Export> {
+pub fn compute(
+    scene: &Scene,
+    from: f64,
+    to: f64,
+    n: usize,
+    accuracy: Accuracy,
+) -> CliResult<Export> {
     let contact = Contact::new(scene)?;
     let (g, normals) = sweep::curve(&contact, from, to, n, accuracy)?;
     let eps: Vec<f64> = normals.iter().map(|n| n.eps).collect();
@@ -86,7 +92,12 @@ pub fn c_source(e: &Export, scene_json: &str) -> String {
             "\n/* Power law eps = a (g / 1 cm/s)^b fitted on {}…{} m/s: rms error {:.2e}. */\n\
              double rime_eps_n_power(double g) {{\n\
              \x20   return {:?} * pow(g / {:?}, {:?});\n}}\n",
-            num(p.g_min), num(p.g_max), p.rms_error, p.a, p.g0, p.b
+            num(p.g_min),
+            num(p.g_max),
+            p.rms_error,
+            p.a,
+            p.g0,
+            p.b
         ));
     }
     s
@@ -133,7 +144,12 @@ pub fn rust_source(e: &Export, scene_json: &str) -> String {
             "\n/// Power law ε = a (g / 1 cm/s)^b fitted on {}…{} m/s: rms error {:.2e}.\n\
              pub fn rime_eps_n_power(g: f64) -> f64 {{\n\
              \x20   {:?} * (g / {:?}).powf({:?})\n}}\n",
-            num(p.g_min), num(p.g_max), p.rms_error, p.a, p.g0, p.b
+            num(p.g_min),
+            num(p.g_max),
+            p.rms_error,
+            p.a,
+            p.g0,
+            p.b
         ));
     }
     s
@@ -180,17 +196,26 @@ pub fn read_points(path: &Path) -> CliResult<(Vec<f64>, Vec<f64>)> {
     if meta.len() > 16 << 20 {
         return err(format!("--data {shown}: file larger than 16 MiB"));
     }
-    let text = std::fs::read_to_string(path).map_err(|e| CliError(format!("--data {shown}: {e}")))?;
+    let text =
+        std::fs::read_to_string(path).map_err(|e| CliError(format!("--data {shown}: {e}")))?;
     let (mut g, mut e) = (Vec::new(), Vec::new());
     for (i, line) in text.lines().enumerate() {
         let line = line.trim();
         if line.is_empty() || line.starts_with('#') {
             continue;
         }
-        let cells: Vec<&str> = line.split([',', ';', '\t', ' ']).filter(|c| !c.is_empty()).collect();
-        let parsed = (cells.first().map(|c| c.parse::<f64>()), cells.get(1).map(|c| c.parse::<f64>()));
+        let cells: Vec<&str> = line
+            .split([',', ';', '\t', ' '])
+            .filter(|c| !c.is_empty())
+            .collect();
+        let parsed = (
+            cells.first().map(|c| c.parse::<f64>()),
+            cells.get(1).map(|c| c.parse::<f64>()),
+        );
         match parsed {
-            (Some(Ok(a)), Some(Ok(b))) if a.is_finite() && b.is_finite() && a > 0.0 && (0.0..=1.0).contains(&b) => {
+            (Some(Ok(a)), Some(Ok(b)))
+                if a.is_finite() && b.is_finite() && a > 0.0 && (0.0..=1.0).contains(&b) =>
+            {
                 g.push(a);
                 e.push(b);
             }
@@ -223,7 +248,11 @@ pub fn fit_parameter(
     let rime_core::params::Kind::Number { min, max, .. } = p.kind else {
         return err(format!("--param {path}: not a numeric parameter"));
     };
-    let lo = if min > 0.0 { min } else { 1e-12f64.max(max * 1e-30) };
+    let lo = if min > 0.0 {
+        min
+    } else {
+        1e-12f64.max(max * 1e-30)
+    };
     let cost = |x: f64| -> Option<(f64, Scene)> {
         let mut s = *scene;
         s.set_number(p.path, x).ok()?;
@@ -247,7 +276,9 @@ pub fn fit_parameter(
         }
     }
     if !best.0.is_finite() {
-        return err(format!("--param {path}: no valid value found in [{lo}, {max}]"));
+        return err(format!(
+            "--param {path}: no valid value found in [{lo}, {max}]"
+        ));
     }
     let h = (b - a) / steps as f64;
     let (mut l, mut r) = (best.1 - h, best.1 + h);
@@ -262,6 +293,7 @@ pub fn fit_parameter(
         }
     }
     let u = 0.5 * (l + r);
-    let (sse, fitted) = cost(u.exp()).ok_or_else(|| CliError(format!("--param {path}: fit failed")))?;
+    let (sse, fitted) =
+        cost(u.exp()).ok_or_else(|| CliError(format!("--param {path}: fit failed")))?;
     Ok((u.exp(), (sse / g.len() as f64).sqrt(), fitted))
 }

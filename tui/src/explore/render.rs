@@ -10,7 +10,7 @@ use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Block, Borders, Chart, Clear, Dataset, GraphType, Paragraph, Wrap};
 use rime_core::params::{Kind, PARAMETERS, Value};
-use rime_core::scene::{ContactEnd, Damping, DampingFormula, LayerReading, SlidingLaw};
+use rime_core::scene::{ContactEnd, Damping, DampingFormula, LayerReading};
 use rime_core::{Status, StickClass};
 
 /// Replaces spaces by non-breaking ones (a value and its unit stay on one line).
@@ -767,11 +767,6 @@ pub fn paper_options(app: &App) -> Vec<&'static str> {
     }
     if s.contact_end == ContactEnd::ZeroOverlap {
         out.push("contact_end=zero_overlap");
-    }
-    if s.friction
-        .is_some_and(|f| f.sliding_law == SlidingLaw::Paper)
-    {
-        out.push("sliding_law=paper");
     }
     if matches!(s.bulk.damping, Damping::Viscosities(v) if v.formula == DampingFormula::AsPrinted) {
         out.push("A formula as_printed");
