@@ -269,10 +269,10 @@ pub fn fit_parameter(
     let steps = 80;
     for i in 0..=steps {
         let u = a + (b - a) * i as f64 / steps as f64;
-        if let Some((c, _)) = cost(u.exp()) {
-            if c < best.0 {
-                best = (c, u);
-            }
+        if let Some((c, _)) = cost(u.exp())
+            && c < best.0
+        {
+            best = (c, u);
         }
     }
     if !best.0.is_finite() {
