@@ -113,6 +113,12 @@ impl Explorer {
         crate::version().to_string()
     }
 
+    /// The damping time `A` \[s\] of the scene (given or derived from viscosities).
+    #[wasm_bindgen(js_name = dampingTime)]
+    pub fn damping_time(&self) -> Result<f64, JsError> {
+        self.inner.damping_time().map_err(js)
+    }
+
     /// Loads a named preset (`ice`, `ice-frost`, `ice-sticky`, `ice-paper-viscosities`).
     #[wasm_bindgen(js_name = loadPreset)]
     pub fn load_preset(&mut self, name: &str) -> Result<(), JsError> {

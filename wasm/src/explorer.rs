@@ -237,6 +237,11 @@ impl Explorer {
         .to_string())
     }
 
+    /// The damping time `A` \[s\] the scene gives (directly or from viscosities).
+    pub fn damping_time(&self) -> Result<f64, String> {
+        Ok(Contact::new(&self.scene).map_err(core_err)?.damping_time)
+    }
+
     /// Loads a named preset.
     pub fn load_preset(&mut self, name: &str) -> Result<(), String> {
         let p = Preset::from_name(name).ok_or_else(|| {
@@ -402,13 +407,16 @@ impl Explorer {
 
     /// The appendix (Eq. A.1–A.7) as JSON: `{input, result, paper}`. `input_json` is a
     /// `TidalInput`; empty means the paper's planet and distance with the scene's grain 1 radius,
-    /// density and surface energy (0 without adhesion).
+    /// density and surface energy (the paper's 0.1 J/m² without adhesion).
     pub fn tidal(&self, input_json: &str) -> Result<String, String> {
         let input: TidalInput = if input_json.trim().is_empty() {
             TidalInput {
                 radius: self.scene.grains.radius_1,
                 density: self.scene.grains.density,
-                surface_energy: self.scene.adhesion.map_or(0.0, |a| a.surface_energy),
+                surface_energy: self
+                    .scene
+                    .adhesion
+                    .map_or(TidalInput::default().surface_energy, |a| a.surface_energy),
                 ..TidalInput::default()
             }
         } else {
@@ -546,6 +554,7 @@ mod tests {
         assert_eq!(e.get("layer").unwrap(), "true");
         assert_eq!(e.get("bulk.damping.viscosities.shear").unwrap(), "null");
         assert_eq!(e.get("contact_end").unwrap(), "\"force_zero\"");
+        assert_eq!(Explorer::new().damping_time().unwrap(), 1e-4);
         assert!(e.load_preset("nope").unwrap_err().starts_with("preset:"));
     }
 

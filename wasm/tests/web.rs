@@ -44,7 +44,14 @@ fn curve_family_and_map() {
     assert_eq!(status[0], 1, "stuck in layer at 1 µm/s");
     assert!(eps[63] > 0.0 && eps[63] < 1.0);
     let fam = e
-        .family("layer.viscosity", vec![500.0, 1000.0], 1e-6, 1.0, 64.0, "fast")
+        .family(
+            "layer.viscosity",
+            vec![500.0, 1000.0],
+            1e-6,
+            1.0,
+            64.0,
+            "fast",
+        )
         .unwrap();
     assert_eq!(&fam[64..], &eps[..]);
     let classes = e.stick_map(1e-3, 16.0, "fast").unwrap();
