@@ -325,7 +325,7 @@ function chartSpec(res, hover) {
   const markers = [];
   for (const c of res.crit) {
     if (markers.some((m) => Math.abs(m.x / c.value - 1) < 0.01)) continue;
-    markers.push({ x: c.value, label: `${c.label}: ${fmtSpeed(c.value)}` });
+    markers.push({ x: c.value, label: `${c.label}: ${fmtSpeed(c.value)}`, short: `${c.key === 'stick' ? 'stick' : 'g_s'} ${fmtSpeed(c.value)}` });
   }
   return {
     xMin: app.view.from, xMax: app.view.to, yMin: yMin2, yMax: 10 ** Math.ceil(Math.log10(maxY) - 1e-12) || 1,

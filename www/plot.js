@@ -252,8 +252,15 @@ export function drawChart(p, spec) {
       if (!(m.x > spec.xMin && m.x < spec.xMax)) return;
       const x = X(m.x);
       p.line([[x, box.t], [x, box.b]], { color: '#555', width: 1, dash: [2, 3] });
-      const right = x < (box.l + box.r) / 2;
-      p.text(x + (right ? 4 : -4), box.b - 8 - i * 15, m.label, { size: 10.5, color: '#333', align: right ? 'left' : 'right', bg: 'rgba(255,255,255,0.85)' });
+      // Label beside the marker, on whichever side it fits (approximate text width).
+      let label = m.label;
+      const fits = (t) => t.length * 5.9 + 6;
+      let right = x + fits(label) <= box.r || x - fits(label) < box.l;
+      if (x + fits(label) > box.r && x - fits(label) < box.l) {
+        label = m.short || label;
+        right = x + fits(label) <= box.r;
+      }
+      p.text(x + (right ? 4 : -4), box.b - 8 - i * 15, label, { size: 10.5, color: '#333', align: right ? 'left' : 'right', bg: 'rgba(255,255,255,0.85)' });
     });
     // Series: broken where ε_N is 0 or outside the axes (stuck, overdamped).
     for (const s of spec.series) {
