@@ -340,12 +340,22 @@ function canvasSize(canvas, aspect, maxH) {
 }
 
 function draw() {
+  if (!app.res) return;
+  drawChartCanvas();
+  drawMapCanvas();
+  drawLegend(app.res);
+}
+
+function drawChartCanvas() {
   const res = app.res;
-  if (!res) return;
   const chart = $('chart');
   const narrow = chart.parentElement.clientWidth < 560;
   const [cw, ch] = canvasSize(chart, narrow ? 0.95 : 0.62, 520);
   app.chartGeom = drawChart(new CanvasPainter(chart, cw, ch), chartSpec(res, app.hover.chart));
+}
+
+function drawMapCanvas() {
+  const res = app.res;
   const mapCanvas = $('map');
   const [mw] = canvasSize(mapCanvas, 1, 600);
   const mh = Math.min(mw, 560) - 10;
@@ -359,7 +369,6 @@ function draw() {
     p.text(mw / 2, 60, 'friction is off: no tangential restitution, no stick map', { size: 13, align: 'center', color: '#666' });
     app.mapGeom = null;
   }
-  drawLegend(res);
 }
 
 function drawLegend(res) {
@@ -413,7 +422,7 @@ function chartHover(ev) {
   } catch (e) {
     $('chart-readout').textContent = String(e.message || e);
   }
-  draw();
+  drawChartCanvas();
 }
 
 function mapHover(ev) {
@@ -430,12 +439,19 @@ function mapHover(ev) {
   app.hover.map = { i, j };
   const c = app.classes[m.codes[k]];
   $('map-readout').textContent = `g_N = ${fmtSpeed(m.g[i], 4)} · g_T = ${fmtSpeed(m.g[j], 4)} · ε_N = ${fmtNum(m.epsN[i], 5)} · ε_T = ${fmtNum(m.epsT[k], 5)} · ${c ? c.name : '?'}`;
-  draw();
+  drawMapCanvas();
 }
 
 // ---------- URL state ----------
 
+let hashTimer = null;
 function writeHash() {
+  // Coalesced: browsers throttle history.replaceState when it is called at slider rates.
+  if (hashTimer !== null) return;
+  hashTimer = setTimeout(() => { hashTimer = null; writeHashNow(); }, 150);
+}
+
+function writeHashNow() {
   const v = { ...app.view };
   const hash = `#s=${encodeURIComponent(app.ex.toJson())}&v=${encodeURIComponent(JSON.stringify(v))}`;
   if (location.hash !== hash) history.replaceState(null, '', hash);
@@ -595,11 +611,11 @@ function wireView() {
   const chart = $('chart');
   chart.addEventListener('pointermove', chartHover);
   chart.addEventListener('pointerdown', chartHover);
-  chart.addEventListener('pointerleave', () => { app.hover.chart = null; draw(); });
+  chart.addEventListener('pointerleave', () => { app.hover.chart = null; if (app.res) drawChartCanvas(); });
   const map = $('map');
   map.addEventListener('pointermove', mapHover);
   map.addEventListener('pointerdown', mapHover);
-  map.addEventListener('pointerleave', () => { app.hover.map = null; draw(); });
+  map.addEventListener('pointerleave', () => { app.hover.map = null; if (app.res) drawMapCanvas(); });
   let resizeQueued = false;
   window.addEventListener('resize', () => {
     if (resizeQueued) return;

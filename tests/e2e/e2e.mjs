@@ -166,6 +166,8 @@ try {
 
   await check('URL hash round-trips the scene and view', async () => {
     const s = await page.evaluate(() => window.rimeState);
+    // The hash is written shortly after the last input (coalesced).
+    await page.waitForFunction((scene) => decodeURIComponent(location.hash).includes(scene), s.sceneJson, { timeout: 5000 });
     const href = page.url();
     assert(href.includes('#s='), `no state in the URL: ${href}`);
     const p2 = watch(await context.newPage(), 'reload');
@@ -253,6 +255,7 @@ try {
     await page.mouse.move(box.x + box.width * 0.6, box.y + box.height * 0.5);
     await page.waitForTimeout(100);
     await page.screenshot({ path: path.join(outDir, 'www-screenshot.png'), fullPage: true });
+    await page.waitForTimeout(300);
     const p4 = watch(await context.newPage(), 'narrow');
     await p4.setViewportSize({ width: 375, height: 800 });
     await p4.goto(page.url(), { waitUntil: 'load' });
