@@ -193,6 +193,7 @@ function syncControls() {
     } else if (row.sel) {
       row.root.classList.toggle('inactive', v === null);
       if (v !== null) row.sel.value = v;
+      else row.sel.selectedIndex = -1;
     } else {
       row.root.classList.toggle('inactive', v === null);
       if (v === null) {
@@ -486,6 +487,10 @@ function loadHash() {
     app.view = view;
     return null;
   } catch (e) {
+    // Fall back to the defaults (also when a pasted link is broken after start).
+    app.ex.free();
+    app.ex = new Explorer();
+    app.view = { ...DEFAULT_VIEW };
     return String(e.message || e);
   }
 }
