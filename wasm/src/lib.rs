@@ -1,4 +1,16 @@
-//! Thin wasm-bindgen layer over `rime-core` (filled in by the web-explorer issue).
+//! # rime-wasm
+//!
+//! A thin wasm-bindgen layer over `rime-core` for the web explorer (`www/`). It has no physics of
+//! its own: [`explorer`] holds the host-testable logic (argument checks, JSON conversion, flat
+//! arrays) as plain Rust, and the `bindings` module (compiled only for `wasm32`) exports it to
+//! JavaScript as the class `Explorer`. Errors become JS exceptions whose message names the field
+//! (`layer.viscosity: must lie in [0, 1e15] Pa s (got -1)`); every argument is validated so that no
+//! input can panic the module.
+
+pub mod explorer;
+
+#[cfg(target_arch = "wasm32")]
+pub mod bindings;
 
 /// Version of the crate, exposed so the page can show it.
 pub fn version() -> &'static str {

@@ -1,0 +1,283 @@
+// End-to-end test of the web explorer in headless Chromium (playwright-core, system chromium).
+// Usage: node tests/e2e/e2e.mjs http://127.0.0.1:PORT/
+// Prints PASS/FAIL per check, the browser-measured recompute times, and exits non-zero on failure.
+import { chromium } from 'playwright-core';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const url = process.argv[2];
+if (!url) {
+  console.error('usage: node e2e.mjs URL');
+  process.exit(2);
+}
+const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+const rime = process.env.RIME_BIN || path.join(root, 'target', 'release', 'rime');
+const outDir = path.join(root, 'target');
+fs.mkdirSync(outDir, { recursive: true });
+const FLAGS = [
+  '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+  '--disable-background-networking', '--disable-component-update', '--disable-sync',
+  '--disable-dev-shm-usage',
+];
+
+let failures = 0;
+const results = [];
+function report(name, ok, detail = '') {
+  results.push([name, ok]);
+  if (!ok) failures++;
+  console.log(`${ok ? 'PASS' : 'FAIL'} ${name}${detail ? ` — ${detail}` : ''}`);
+}
+async function check(name, fn) {
+  try {
+    const detail = await fn();
+    report(name, true, detail || '');
+  } catch (e) {
+    report(name, false, String(e && e.stack ? e.stack.split('\n').slice(0, 3).join(' | ') : e));
+  }
+}
+function assert(cond, msg) {
+  if (!cond) throw new Error(msg);
+}
+const median = (a) => {
+  const s = [...a].sort((x, y) => x - y);
+  const m = s.length >> 1;
+  return s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2;
+};
+
+const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'rime-e2e-'));
+const context = await chromium.launchPersistentContext(userDataDir, {
+  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+  headless: true,
+  args: FLAGS,
+  viewport: { width: 1280, height: 1000 },
+});
+const problems = []; // console errors and uncaught exceptions, per page
+function watch(page, tag) {
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(`${tag}: console error: ${m.text()}`); });
+  page.on('pageerror', (e) => problems.push(`${tag}: page error: ${e.message}`));
+  page.on('requestfailed', (r) => problems.push(`${tag}: request failed: ${r.url()}`));
+  return page;
+}
+async function ready(page) {
+  await page.waitForFunction(() => window.rimeState && window.rimeState.ready === true, null, { timeout: 30000 });
+}
+async function updates(page) {
+  return page.evaluate(() => window.rimeState.updates);
+}
+async function waitUpdate(page, before) {
+  await page.waitForFunction((b) => window.rimeState.updates > b, before, { timeout: 10000 });
+}
+/** Number of non-white pixels of a canvas (is anything drawn?). */
+async function inked(page, id) {
+  return page.evaluate((cid) => {
+    const c = document.getElementById(cid);
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 0 && (d[i] < 240 || d[i + 1] < 240 || d[i + 2] < 240)) n++;
+    return n;
+  }, id);
+}
+function relErr(a, b) {
+  if (a === b) return 0;
+  return Math.abs(a - b) / Math.max(Math.abs(a), Math.abs(b));
+}
+
+let page;
+try {
+  page = watch(await context.newPage(), 'main');
+
+  await check('page loads without console errors and draws both canvases', async () => {
+    await page.goto(url, { waitUntil: 'load' });
+    await ready(page);
+    await page.waitForTimeout(300);
+    const s = await page.evaluate(() => window.rimeState);
+    assert(s.errors.length === 0, `app errors: ${s.errors.join('; ')}`);
+    assert(s.eps.length > 10 && s.eps.every((v) => Number.isFinite(v)), 'curve values missing');
+    const a = await inked(page, 'chart');
+    const b = await inked(page, 'map');
+    assert(a > 2000 && b > 2000, `canvases look empty (chart ${a}, map ${b} inked pixels)`);
+    const n = await page.locator('#controls input[type=range]').count();
+    assert(n >= 12, `only ${n} sliders`);
+    assert(problems.length === 0, problems.join('; '));
+    return `${n} sliders, chart ${a} / map ${b} inked pixels`;
+  });
+
+  let sceneFile;
+  await check('ice-frost preset, then layer.viscosity via typed input and slider changes the plotted ε_N', async () => {
+    let u = await updates(page);
+    await page.selectOption('#preset', 'ice-frost');
+    await waitUpdate(page, u);
+    const s0 = await page.evaluate(() => window.rimeState);
+    assert(JSON.parse(s0.sceneJson).layer && JSON.parse(s0.sceneJson).layer.viscosity === 1000, 'preset not loaded');
+    u = s0.updates;
+    const typed = page.locator('[id="p-layer.viscosity"]');
+    await typed.fill('2.5 kPa s');
+    await typed.press('Enter');
+    await waitUpdate(page, u);
+    const s1 = await page.evaluate(() => window.rimeState);
+    assert(JSON.parse(s1.sceneJson).layer.viscosity === 2500, `typed value not applied: ${s1.sceneJson}`);
+    const changed1 = s1.eps.filter((v, i) => v !== s0.eps[i]).length;
+    assert(changed1 > 5, `only ${changed1} plotted values changed after typing`);
+    // A bad value: error shown next to the field, scene kept.
+    u = s1.updates;
+    await typed.fill('-4 Pa s');
+    await typed.press('Enter');
+    const err = await page.locator('.param[data-path="layer.viscosity"] .err').textContent();
+    assert(/layer\.viscosity/.test(err), `no field error shown: "${err}"`);
+    const s1b = await page.evaluate(() => window.rimeState.sceneJson);
+    assert(s1b === s1.sceneJson, 'scene changed after an invalid value');
+    assert((await typed.inputValue()) === '-4 Pa s', 'typed text was not kept');
+    // The slider (input event).
+    const slider = page.locator('input[type=range][data-path="layer.viscosity"]');
+    await slider.evaluate((e) => { e.value = String(Number(e.value) + 120); e.dispatchEvent(new Event('input', { bubbles: true })); });
+    await waitUpdate(page, u);
+    const s2 = await page.evaluate(() => window.rimeState);
+    const visc = JSON.parse(s2.sceneJson).layer.viscosity;
+    assert(visc !== 2500, 'slider did not change layer.viscosity');
+    const changed2 = s2.eps.filter((v, i) => v !== s1.eps[i]).length;
+    assert(changed2 > 5, `only ${changed2} plotted values changed after the slider`);
+    sceneFile = path.join(outDir, 'www-e2e-scene.json');
+    fs.writeFileSync(sceneFile, s2.sceneJson);
+    return `η* 1000 → 2500 (typed) → ${visc} Pa s (slider); ${changed1} and ${changed2} of ${s2.eps.length} points changed`;
+  });
+
+  await check('page ε_N agrees with `rime eps --accuracy fast` to 1e-12 relative', async () => {
+    assert(fs.existsSync(rime), `${rime} not built`);
+    const s = await page.evaluate(() => window.rimeState);
+    const idx = [0, 17, 40, 60, 80, 100, 120, 150, 180, 200, 239].filter((i) => i < s.g.length);
+    const gs = idx.map((i) => s.g[i]);
+    const out = execFileSync(rime, ['eps', '--g', gs.map(String).join(','), '--scene', sceneFile, '--accuracy', 'fast', '--format', 'json'], { encoding: 'utf8' });
+    const cli = JSON.parse(out);
+    assert(cli.length === idx.length, 'CLI returned a different number of records');
+    let worst = 0;
+    idx.forEach((i, k) => {
+      assert(cli[k].g_n === s.g[i], `speed mismatch ${cli[k].g_n} vs ${s.g[i]}`);
+      assert(cli[k].status === s.status[i], `status at g=${s.g[i]}: page ${s.status[i]}, CLI ${cli[k].status}`);
+      const e = relErr(cli[k].eps_n, s.eps[i]);
+      worst = Math.max(worst, e);
+      assert(e <= 1e-12, `ε_N at g=${s.g[i]}: page ${s.eps[i]}, CLI ${cli[k].eps_n} (rel ${e})`);
+    });
+    const statuses = [...new Set(idx.map((i) => s.status[i]))].join(', ');
+    return `${idx.length} probe speeds (${statuses}), worst relative difference ${worst}`;
+  });
+
+  await check('URL hash round-trips the scene and view', async () => {
+    const s = await page.evaluate(() => window.rimeState);
+    // The hash is written shortly after the last input (coalesced).
+    await page.waitForFunction((scene) => decodeURIComponent(location.hash).includes(scene), s.sceneJson, { timeout: 5000 });
+    const href = page.url();
+    assert(href.includes('#s='), `no state in the URL: ${href}`);
+    const p2 = watch(await context.newPage(), 'reload');
+    await p2.goto(href, { waitUntil: 'load' });
+    await ready(p2);
+    const t = await p2.evaluate(() => window.rimeState);
+    await p2.close();
+    assert(t.sceneJson === s.sceneJson, `scene differs:\n${t.sceneJson}\n${s.sceneJson}`);
+    assert(JSON.stringify(t.view) === JSON.stringify(s.view), 'view differs');
+    assert(JSON.stringify(t.eps) === JSON.stringify(s.eps), 'curve differs');
+    const notice = await page.locator('#notice').isVisible();
+    assert(!notice, 'notice shown for a valid link');
+    return `${href.length} characters`;
+  });
+
+  await check('malformed hash shows the notice and still renders', async () => {
+    const p3 = watch(await context.newPage(), 'malformed');
+    await p3.goto(new URL('#garbage%%%', url).href, { waitUntil: 'load' });
+    await ready(p3);
+    const visible = await p3.locator('#notice').isVisible();
+    const text = await p3.locator('#notice').textContent();
+    const s = await p3.evaluate(() => window.rimeState);
+    const ink = await inked(p3, 'chart');
+    // A valid-looking but broken scene too.
+    await p3.close();
+    const p3b = watch(await context.newPage(), 'bad-scene');
+    await p3b.goto(new URL('#s=%7B%22grains%22%3A1%7D', url).href, { waitUntil: 'load' });
+    await ready(p3b);
+    const text2 = await p3b.locator('#notice').textContent();
+    await p3b.close();
+    assert(visible && /could not be read/.test(text), `notice missing: "${text}"`);
+    assert(/grains/.test(text2), `notice for a bad scene does not name the field: "${text2}"`);
+    assert(s.eps.length > 10 && ink > 2000, 'page did not render');
+    assert(JSON.parse(s.sceneJson).layer === null, 'not the default scene');
+    return `"${text2}"`;
+  });
+
+  await check('downloads: chart SVG, map SVG, CSVs are well formed', async () => {
+    const d = await page.evaluate(() => {
+      const parse = (t) => new DOMParser().parseFromString(t, 'image/svg+xml');
+      const chart = window.rimeExports.chartSvg();
+      const map = window.rimeExports.mapSvg();
+      const c = parse(chart), m = parse(map);
+      return {
+        chartOk: !c.querySelector('parsererror') && c.querySelectorAll('path').length > 5,
+        mapOk: !m.querySelector('parsererror') && m.querySelectorAll('rect').length > 20,
+        curves: window.rimeExports.curvesCsv().trim().split('\n'),
+        mapLines: window.rimeExports.mapCsv().trim().split('\n').length,
+        n: window.rimeState.eps.length,
+      };
+    });
+    assert(d.chartOk, 'chart SVG invalid');
+    assert(d.mapOk, 'map SVG invalid');
+    assert(d.curves[0].startsWith('g_n,eps_n,status') && d.curves.length === d.n + 1, 'curves CSV malformed');
+    assert(d.mapLines === 120 * 120 + 1, 'map CSV malformed');
+    const dl = page.waitForEvent('download');
+    await page.click('#dl-scene');
+    const file = await dl;
+    const saved = path.join(outDir, 'www-e2e-download.json');
+    await file.saveAs(saved);
+    JSON.parse(fs.readFileSync(saved, 'utf8'));
+    return `${d.curves.length - 1} curve rows, ${d.mapLines - 1} map rows`;
+  });
+
+  let med = NaN, medTotal = NaN;
+  await check('recompute + redraw within one animation frame at fast (median of 40 inputs)', async () => {
+    await page.evaluate(() => { window.rimeState.computeMs.length = 0; });
+    const slider = page.locator('input[type=range][data-path="layer.viscosity"]');
+    for (let k = 0; k < 40; k++) {
+      const u = await updates(page);
+      await slider.evaluate((e, kk) => { e.value = String(300 + ((kk * 37) % 500)); e.dispatchEvent(new Event('input', { bubbles: true })); }, k);
+      await waitUpdate(page, u);
+    }
+    const s = await page.evaluate(() => window.rimeState);
+    const c = s.computeMs.slice(-40), t = s.totalMs.slice(-40);
+    med = median(c);
+    medTotal = median(t);
+    assert(medTotal < 16.7, `median recompute+redraw ${medTotal.toFixed(2)} ms exceeds a 60 Hz frame`);
+    return `median recompute ${med.toFixed(2)} ms, with redraw ${medTotal.toFixed(2)} ms (max ${Math.max(...t).toFixed(1)} ms)`;
+  });
+
+  await check('screenshots saved (1280 px and 375 px wide); no horizontal overflow at 375 px', async () => {
+    await page.evaluate(() => window.scrollTo(0, 0));
+    const box = await page.locator('#chart').boundingBox();
+    await page.mouse.move(box.x + box.width * 0.6, box.y + box.height * 0.5);
+    await page.waitForTimeout(100);
+    await page.screenshot({ path: path.join(outDir, 'www-screenshot.png'), fullPage: true });
+    await page.waitForTimeout(300);
+    const p4 = watch(await context.newPage(), 'narrow');
+    await p4.setViewportSize({ width: 375, height: 800 });
+    await p4.goto(page.url(), { waitUntil: 'load' });
+    await ready(p4);
+    await p4.waitForTimeout(200);
+    const overflow = await p4.evaluate(() => document.documentElement.scrollWidth);
+    const ink = await inked(p4, 'chart');
+    await p4.screenshot({ path: path.join(outDir, 'www-screenshot-375.png'), fullPage: true });
+    await p4.close();
+    assert(overflow <= 376, `page is ${overflow} px wide at a 375 px viewport`);
+    assert(ink > 1000, 'chart empty at 375 px');
+    return 'target/www-screenshot.png, target/www-screenshot-375.png';
+  });
+
+  await check('no console errors or page errors in any page', async () => {
+    assert(problems.length === 0, problems.join('; '));
+  });
+  console.log(`browser-measured recompute (fast): median ${med.toFixed(3)} ms; with redraw: median ${medTotal.toFixed(3)} ms`);
+} finally {
+  await context.close();
+  fs.rmSync(userDataDir, { recursive: true, force: true });
+}
+const passed = results.filter((r) => r[1]).length;
+console.log(`e2e: ${passed} passed, ${failures} failed`);
+process.exit(failures ? 1 : 0);

@@ -1,0 +1,656 @@
+// The rime web explorer: controls, recompute (coalesced per animation frame), drawing, URL state.
+import init, { Explorer } from './pkg/rime_wasm.js';
+import {
+  CLASS_COLORS, SERIES_COLORS, CanvasPainter, SvgPainter, drawChart, drawMap, fmtNum, fmtSpeed, prefixFor,
+} from './plot.js';
+
+const $ = (id) => document.getElementById(id);
+
+// Slider ranges (UI only; the typed input accepts the registry's full range).
+const SLIDER = {
+  'grains.radius_1': [1e-6, 1],
+  'grains.radius_2': [1e-6, 1],
+  'grains.density': [100, 1e4],
+  'bulk.youngs_modulus': [1e6, 1e12],
+  'bulk.poisson_ratio': [-0.99, 0.5],
+  'bulk.damping.time': [1e-8, 1e3],
+  'bulk.damping.viscosities.shear': [1, 1e15],
+  'bulk.damping.viscosities.bulk': [1, 1e15],
+  'layer.thickness': [1e-9, 1e-3],
+  'layer.viscosity': [1, 1e7],
+  'adhesion.surface_energy': [1e-4, 10],
+  'friction.coefficient': [0, 2],
+  'friction.kappa': [0.01, 1],
+};
+const SLIDER_STEPS = 1000;
+const GROUPS = [
+  ['grains', 'Grains'],
+  ['bulk', 'Bulk material (Eq. 4)'],
+  ['contact_end', 'Contact'],
+  ['layer', 'Soft layer (Eq. 8–10)'],
+  ['adhesion', 'Adhesion (Eq. 11–17)'],
+  ['friction', 'Friction (Eq. 18–26)'],
+];
+const FAMILIES = {
+  layer: { path: 'layer.viscosity', values: [500, 1000, 2000, 5000], sym: 'η*', unit: 'Pa s' },
+  adhesion: { path: 'adhesion.surface_energy', values: [0.05, 0.1, 0.2, 0.5], sym: 'γ', unit: 'J/m²' },
+  damping: { path: 'bulk.damping.time', values: null, sym: 'A', unit: 's' },
+};
+const DEFAULT_VIEW = { accuracy: 'fast', from: 1e-7, to: 10, mapMax: null };
+const CURVE_POINTS = 240;
+const MAP_N = 120;
+
+const app = {
+  ex: null,
+  view: { ...DEFAULT_VIEW },
+  params: [],
+  rows: new Map(),
+  classes: [],
+  statusNames: [],
+  res: null,
+  hover: { chart: null, map: null },
+  chartGeom: null,
+  mapGeom: null,
+  timings: [],
+  totals: [],
+  pending: false,
+};
+
+// Exposed for tests and curious users.
+window.rimeState = { ready: false, errors: [] };
+
+function median(a) {
+  if (!a.length) return NaN;
+  const s = [...a].sort((x, y) => x - y);
+  const m = s.length >> 1;
+  return s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2;
+}
+
+function parseSpeed(text) {
+  const v = Number(String(text).trim().replace(/\s*m\/s$/, ''));
+  if (!Number.isFinite(v) || v <= 0 || v > 1e6) throw new Error('must be a speed in (0, 1e6] m/s');
+  return v;
+}
+
+// ---------- controls ----------
+
+function toSlider(path, p, v) {
+  const [lo, hi] = SLIDER[path] ?? [p.min, p.max];
+  let f = p.log ? (Math.log10(v) - Math.log10(lo)) / (Math.log10(hi) - Math.log10(lo)) : (v - lo) / (hi - lo);
+  if (!Number.isFinite(f)) f = 0;
+  return Math.round(Math.min(1, Math.max(0, f)) * SLIDER_STEPS);
+}
+
+function fromSlider(path, p, pos) {
+  const [lo, hi] = SLIDER[path] ?? [p.min, p.max];
+  const f = pos / SLIDER_STEPS;
+  const v = p.log ? 10 ** (Math.log10(lo) + f * (Math.log10(hi) - Math.log10(lo))) : lo + f * (hi - lo);
+  return Number(v.toPrecision(p.log ? 3 : 4));
+}
+
+function el(tag, attrs = {}, ...children) {
+  const e = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) {
+    if (k === 'class') e.className = v;
+    else if (k.startsWith('on')) e.addEventListener(k.slice(2), v);
+    else e.setAttribute(k, v);
+  }
+  for (const c of children) e.append(c);
+  return e;
+}
+
+function setErr(path, msg) {
+  const row = app.rows.get(path);
+  if (!row) return;
+  row.err.textContent = msg || '';
+  row.root.classList.toggle('invalid', !!msg);
+}
+
+function apply(path, fn) {
+  try {
+    fn();
+    setErr(path, '');
+    schedule();
+    return true;
+  } catch (e) {
+    setErr(path, String(e.message || e));
+    return false;
+  }
+}
+
+function buildControls() {
+  const box = $('controls');
+  box.append(el('h2', {}, 'Parameters'));
+  box.append(el('p', { class: 'hint' }, 'Type a value with units (e.g. "2 kPa s", "5 µm") and press Enter, or drag the slider.'));
+  for (const [prefix, title] of GROUPS) {
+    const h = el('h3', {}, title);
+    box.append(h);
+    if (prefix === 'bulk') {
+      // Damping form: A given directly or from viscosities.
+      const sel = el('select', { id: 'damping-form', 'aria-label': 'damping given as' },
+        el('option', { value: 'time' }, 'A given directly'),
+        el('option', { value: 'viscosities' }, 'A from viscosities η₁, η₂'));
+      sel.addEventListener('change', () => {
+        if (sel.value === 'time') apply('bulk.damping.time', () => app.ex.set('bulk.damping.time', '1e-4'));
+        else apply('bulk.damping.viscosities.formula', () => app.ex.set('bulk.damping.viscosities.formula', 'brilliantov'));
+      });
+      const root = el('div', { class: 'param choice' }, el('label', { class: 'name', for: 'damping-form' }, 'damping A'), sel);
+      box.append(root);
+    }
+    for (const p of app.params.filter((q) => q.path === prefix || q.path.startsWith(prefix + '.'))) {
+      if (p.kind === 'toggle') {
+        const cb = el('input', { type: 'checkbox', id: `p-${p.path}`, 'aria-label': `${p.label} on` });
+        cb.addEventListener('change', () => apply(p.path, () => app.ex.set(p.path, cb.checked ? 'on' : 'off')));
+        const lab = el('label', { class: 'toggle' }, cb, ' on');
+        h.append(lab);
+        const err = el('span', { class: 'err' });
+        h.after(err);
+        app.rows.set(p.path, { p, root: h, cb, err });
+      } else if (p.kind === 'choice') {
+        const sel = el('select', { id: `p-${p.path}` }, ...p.options.map((o) => el('option', { value: o }, o)));
+        sel.addEventListener('change', () => apply(p.path, () => app.ex.set(p.path, sel.value)));
+        const err = el('span', { class: 'err' });
+        const root = el('div', { class: 'param choice', 'data-path': p.path },
+          el('label', { class: 'name', for: `p-${p.path}` }, p.label), sel, err);
+        box.append(root);
+        app.rows.set(p.path, { p, root, sel, err });
+      } else {
+        const id = `p-${p.path}`;
+        const slider = el('input', { type: 'range', min: 0, max: SLIDER_STEPS, step: 1, 'aria-label': `${p.label} slider`, 'data-path': p.path });
+        const typed = el('input', { type: 'text', id, inputmode: 'decimal', spellcheck: 'false', 'data-path': p.path, autocomplete: 'off' });
+        const err = el('span', { class: 'err' });
+        slider.addEventListener('input', () => {
+          const v = fromSlider(p.path, p, Number(slider.value));
+          if (apply(p.path, () => app.ex.setNumber(p.path, v))) typed.value = fmtNum(v, 4);
+        });
+        const commit = () => {
+          const text = typed.value.trim();
+          if (text === '') return;
+          if (apply(p.path, () => app.ex.set(p.path, text))) typed.dataset.dirty = '';
+        };
+        typed.addEventListener('change', commit);
+        typed.addEventListener('keydown', (e) => { if (e.key === 'Enter') commit(); });
+        typed.addEventListener('input', () => { typed.dataset.dirty = '1'; });
+        const unitText = p.unit || (p.log ? '' : '–');
+        const root = el('div', { class: 'param', 'data-path': p.path },
+          el('label', { class: 'name', for: id }, p.label + (p.log ? '' : '')),
+          slider,
+          el('span', { class: 'typed' }, typed, el('span', { class: 'unit' }, unitText)),
+          err);
+        box.append(root);
+        app.rows.set(p.path, { p, root, slider, typed, err });
+      }
+    }
+  }
+}
+
+function syncControls() {
+  const ex = app.ex;
+  for (const [path, row] of app.rows) {
+    const v = JSON.parse(ex.get(path));
+    if (row.cb) {
+      row.cb.checked = v === true;
+    } else if (row.sel) {
+      row.root.classList.toggle('inactive', v === null);
+      if (v !== null) row.sel.value = v;
+      else row.sel.selectedIndex = -1;
+    } else {
+      row.root.classList.toggle('inactive', v === null);
+      if (v === null) {
+        if (document.activeElement !== row.typed && !row.root.classList.contains('invalid')) row.typed.value = '';
+        row.typed.placeholder = 'off';
+      } else {
+        row.slider.value = toSlider(path, row.p, v);
+        if (document.activeElement !== row.typed && !row.root.classList.contains('invalid')) row.typed.value = fmtNum(v, 6);
+      }
+    }
+  }
+  const time = JSON.parse(ex.get('bulk.damping.time'));
+  $('damping-form').value = time === null ? 'viscosities' : 'time';
+  $('accuracy').value = app.view.accuracy;
+  $('view-from').value = fmtNum(app.view.from, 6);
+  $('view-to').value = fmtNum(app.view.to, 6);
+  $('view-mapmax').value = app.view.mapMax === null ? '' : fmtNum(app.view.mapMax, 6);
+}
+
+// ---------- compute ----------
+
+function schedule() {
+  if (app.pending) return;
+  app.pending = true;
+  requestAnimationFrame(() => {
+    app.pending = false;
+    update();
+  });
+}
+
+function familySpec(ex) {
+  if (JSON.parse(ex.get('layer'))) return FAMILIES.layer;
+  if (JSON.parse(ex.get('adhesion'))) return FAMILIES.adhesion;
+  const a = ex.dampingTime();
+  if (!(a > 0)) return null;
+  return { ...FAMILIES.damping, values: [a / 10, a / 3, a * 3, a * 10].map((v) => Number(v.toPrecision(3))) };
+}
+
+function compute() {
+  const ex = app.ex;
+  const { accuracy, from, to } = app.view;
+  const eps = ex.curve(from, to, CURVE_POINTS, accuracy);
+  const g = ex.curveSpeeds();
+  const status = ex.statuses();
+  const clean = ex.cleanCurve(from, to, CURVE_POINTS, accuracy);
+  const fam = familySpec(ex);
+  let family = null;
+  if (fam) {
+    const flat = ex.family(fam.path, fam.values, from, to, CURVE_POINTS, accuracy);
+    family = { ...fam, curves: fam.values.map((_, k) => flat.subarray(k * CURVE_POINTS, (k + 1) * CURVE_POINTS)) };
+  }
+  const crit = JSON.parse(ex.criticalVelocities(accuracy));
+  const warnings = JSON.parse(ex.warnings(from, to));
+  let map = null;
+  const friction = JSON.parse(ex.get('friction'));
+  let mapMax = app.view.mapMax;
+  if (mapMax === null) {
+    const vs = crit.map((c) => c.value).filter((v) => v > 0);
+    mapMax = vs.length ? Number((6 * Math.max(...vs)).toPrecision(2)) : 0.1;
+  }
+  if (friction) {
+    const codes = ex.stickMap(mapMax, MAP_N, accuracy);
+    map = { n: MAP_N, max: mapMax, codes, epsT: ex.mapEpsT(), epsN: ex.mapEpsN(), g: ex.mapSpeeds() };
+  }
+  const tidal = JSON.parse(ex.tidal(''));
+  return { g, eps, status, clean, family, crit, warnings, map, mapMax, tidal, accuracy };
+}
+
+function update() {
+  const t0 = performance.now();
+  let res;
+  try {
+    res = compute();
+  } catch (e) {
+    window.rimeState.errors.push(String(e.message || e));
+    $('timing').textContent = `error: ${e.message || e}`;
+    return;
+  }
+  const t1 = performance.now();
+  app.res = res;
+  draw();
+  showWarnings(res);
+  showTidal(res.tidal);
+  syncControls();
+  writeHash();
+  const t2 = performance.now();
+  app.timings.push(t1 - t0);
+  app.totals.push(t2 - t0);
+  if (app.timings.length > 200) { app.timings.shift(); app.totals.shift(); }
+  $('timing').textContent = `recompute ${(t1 - t0).toFixed(2)} ms (median ${median(app.timings).toFixed(2)} ms) · with redraw ${(t2 - t0).toFixed(1)} ms · ${res.accuracy}`;
+  const s = window.rimeState;
+  Object.assign(s, {
+    ready: true,
+    sceneJson: app.ex.toJson(),
+    view: { ...app.view },
+    g: Array.from(res.g),
+    eps: Array.from(res.eps),
+    status: Array.from(res.status, (c) => app.statusNames[c]),
+    family: res.family && { path: res.family.path, values: res.family.values, curves: res.family.curves.map((c) => Array.from(c)) },
+    critical: res.crit,
+    warnings: res.warnings,
+    mapClasses: res.map ? Array.from(res.map.codes) : null,
+    computeMs: [...app.timings],
+    totalMs: [...app.totals],
+    updates: (s.updates || 0) + 1,
+  });
+  document.body.dataset.updates = String(s.updates);
+}
+
+// ---------- drawing ----------
+
+function chartSpec(res, hover) {
+  const series = [];
+  if (res.family) {
+    res.family.values.forEach((v, k) => series.push({
+      x: res.g, y: res.family.curves[k], color: SERIES_COLORS[k % SERIES_COLORS.length], width: 1.3,
+      label: `${res.family.sym} = ${fmtNum(v, 3)} ${res.family.unit}`,
+    }));
+  }
+  const hasEffect = JSON.parse(app.ex.get('layer')) || JSON.parse(app.ex.get('adhesion'));
+  if (hasEffect) series.push({ x: res.g, y: res.clean, color: '#555', width: 1.4, dash: [6, 4], label: 'clean surface' });
+  series.push({ x: res.g, y: res.eps, color: '#111', width: 2.4, label: 'this scene' });
+  let minPos = 1;
+  for (const arr of [res.eps, res.clean]) for (const v of arr) if (v > 0 && v < minPos) minPos = v;
+  const yMin = Math.max(1e-12, 10 ** Math.floor(Math.log10(minPos) - 1e-9));
+  const yMin2 = Math.min(yMin, 1e-2);
+  let maxY = 1;
+  for (const v of res.eps) if (v > maxY) maxY = v;
+  // Critical velocities; the bisected stick threshold only where it differs from Eq. 10/15.
+  const markers = [];
+  for (const c of res.crit) {
+    if (markers.some((m) => Math.abs(m.x / c.value - 1) < 0.01)) continue;
+    markers.push({ x: c.value, label: `${c.label}: ${fmtSpeed(c.value)}`, short: `${c.key === 'stick' ? 'stick' : 'g_s'} ${fmtSpeed(c.value)}` });
+  }
+  return {
+    xMin: app.view.from, xMax: app.view.to, yMin: yMin2, yMax: 10 ** Math.ceil(Math.log10(maxY) - 1e-12) || 1,
+    xLabel: 'impact speed g_N [m/s]', yLabel: 'ε_N', series, markers, hover,
+  };
+}
+
+function canvasSize(canvas, aspect, maxH) {
+  const w = Math.max(200, Math.floor(canvas.parentElement.clientWidth - 2));
+  const h = Math.min(maxH, Math.max(220, Math.round(w * aspect)));
+  return [w, h];
+}
+
+function draw() {
+  if (!app.res) return;
+  drawChartCanvas();
+  drawMapCanvas();
+  drawLegend(app.res);
+}
+
+function drawChartCanvas() {
+  const res = app.res;
+  const chart = $('chart');
+  const narrow = chart.parentElement.clientWidth < 560;
+  const [cw, ch] = canvasSize(chart, narrow ? 0.95 : 0.62, 520);
+  app.chartGeom = drawChart(new CanvasPainter(chart, cw, ch), chartSpec(res, app.hover.chart));
+}
+
+function drawMapCanvas() {
+  const res = app.res;
+  const mapCanvas = $('map');
+  const [mw] = canvasSize(mapCanvas, 1, 600);
+  const mh = Math.min(mw, 560) - 10;
+  if (res.map) {
+    app.mapGeom = drawMap(new CanvasPainter(mapCanvas, mw, mh), {
+      n: res.map.n, codes: res.map.codes, max: res.map.max, colors: CLASS_COLORS, hover: app.hover.map,
+    });
+  } else {
+    const p = new CanvasPainter(mapCanvas, mw, 120);
+    p.rect(0, 0, mw, 120, { fill: '#fafafa' });
+    p.text(mw / 2, 60, 'friction is off: no tangential restitution, no stick map', { size: 13, align: 'center', color: '#666' });
+    app.mapGeom = null;
+  }
+}
+
+function drawLegend(res) {
+  const counts = new Array(app.classes.length).fill(0);
+  if (res.map) for (const c of res.map.codes) counts[c]++;
+  const total = res.map ? res.map.codes.length : 0;
+  const ul = $('legend');
+  ul.replaceChildren(...app.classes.map((c, k) => el('li', { title: c.description },
+    el('span', { class: 'sw', style: `background:${CLASS_COLORS[k]}` }),
+    el('span', {}, c.description, ' ', el('span', { class: 'count' }, total ? `(${((100 * counts[k]) / total).toFixed(1)} %)` : '')))));
+  res.classCounts = counts;
+}
+
+function showWarnings(res) {
+  const items = res.warnings.map((w) => el('li', {}, w));
+  const gap = app.classes.findIndex((c) => c.name === 'sliding_gap');
+  if (res.map && gap >= 0 && res.classCounts && res.classCounts[gap] > 0) {
+    items.push(el('li', { class: 'info' }, 'sliding law "paper": Eq. 23 has a negative radicand just above ψ₀ (class sliding_gap, clamped to ε_T = 0), which the paper does not mention; "walton" has no gap.'));
+  }
+  $('warnings').replaceChildren(...items);
+}
+
+function showTidal(t) {
+  const r = t.result, q = t.paper;
+  const row = (name, v, unit, paper) => el('tr', {}, el('td', {}, name), el('td', {}, `${fmtNum(v, 4)} ${unit}`), el('td', {}, paper === undefined ? '' : `${fmtNum(paper, 3)}`));
+  $('tidal').replaceChildren(
+    el('tr', {}, el('th', {}, 'quantity'), el('th', {}, 'computed'), el('th', {}, 'paper')),
+    row('ΔF tidal force difference (A.1)', r.delta_f, 'N', q.delta_f),
+    row('F_s = πγR_eff (A.2)', r.surface_force, 'N', q.surface_force),
+    row('F_g mutual gravity (A.3)', r.gravity, 'N'),
+    row('d_Roche (A.7)', r.d_roche, 'm', q.d_roche),
+    row('d_min (A.6)', r.d_min, 'm', q.d_min),
+    row('r_max (A.5)', r.r_max ?? NaN, 'm', q.r_max),
+  );
+}
+
+// ---------- hover ----------
+
+function chartHover(ev) {
+  if (!app.chartGeom || !app.res) return;
+  const rect = $('chart').getBoundingClientRect();
+  const x = ev.clientX - rect.left;
+  const { box, inv } = app.chartGeom;
+  if (x < box.l || x > box.r) return;
+  const g = inv(x);
+  try {
+    const n = JSON.parse(app.ex.normal(g, 'fast'));
+    app.hover.chart = { x: g, y: n.eps_n };
+    $('chart-readout').textContent = `g_N = ${fmtSpeed(g, 4)} · ε_N = ${fmtNum(n.eps_n, 6)} · ${n.status}` +
+      (n.t_c === null ? '' : ` · t_c = ${fmtNum(n.t_c, 3)} s`) + ` · ξ_max = ${fmtNum(n.xi_max, 3)} m`;
+  } catch (e) {
+    $('chart-readout').textContent = String(e.message || e);
+  }
+  drawChartCanvas();
+}
+
+function mapHover(ev) {
+  const m = app.res && app.res.map;
+  if (!m || !app.mapGeom) return;
+  const rect = $('map').getBoundingClientRect();
+  const { box, size } = app.mapGeom;
+  const fx = (ev.clientX - rect.left - box.l) / size;
+  const fy = (box.b - (ev.clientY - rect.top)) / size;
+  if (fx < 0 || fx >= 1 || fy < 0 || fy >= 1) return;
+  const i = Math.min(m.n - 1, Math.floor(fx * m.n));
+  const j = Math.min(m.n - 1, Math.floor(fy * m.n));
+  const k = i * m.n + j;
+  app.hover.map = { i, j };
+  const c = app.classes[m.codes[k]];
+  $('map-readout').textContent = `g_N = ${fmtSpeed(m.g[i], 4)} · g_T = ${fmtSpeed(m.g[j], 4)} · ε_N = ${fmtNum(m.epsN[i], 5)} · ε_T = ${fmtNum(m.epsT[k], 5)} · ${c ? c.name : '?'}`;
+  drawMapCanvas();
+}
+
+// ---------- URL state ----------
+
+let hashTimer = null;
+function writeHash() {
+  // Coalesced: browsers throttle history.replaceState when it is called at slider rates.
+  if (hashTimer !== null) return;
+  hashTimer = setTimeout(() => { hashTimer = null; writeHashNow(); }, 150);
+}
+
+function writeHashNow() {
+  const v = { ...app.view };
+  const hash = `#s=${encodeURIComponent(app.ex.toJson())}&v=${encodeURIComponent(JSON.stringify(v))}`;
+  if (location.hash !== hash) history.replaceState(null, '', hash);
+}
+
+function readView(obj) {
+  const v = { ...DEFAULT_VIEW };
+  if (obj === null || typeof obj !== 'object') throw new Error('view: not an object');
+  if (obj.accuracy !== undefined) {
+    if (!['fast', 'balanced', 'precise'].includes(obj.accuracy)) throw new Error('view.accuracy: fast, balanced or precise');
+    v.accuracy = obj.accuracy;
+  }
+  if (obj.from !== undefined) v.from = parseSpeed(obj.from);
+  if (obj.to !== undefined) v.to = parseSpeed(obj.to);
+  if (!(v.from < v.to)) throw new Error('view: from must be below to');
+  if (obj.mapMax !== undefined && obj.mapMax !== null) v.mapMax = parseSpeed(obj.mapMax);
+  return v;
+}
+
+/** Applies the state in the hash; returns an error message or null. Leaves defaults on error. */
+function loadHash() {
+  const h = location.hash.slice(1);
+  if (!h) return null;
+  try {
+    const q = new URLSearchParams(h);
+    const s = q.get('s');
+    if (s === null) throw new Error('no scene in the link');
+    const view = q.get('v') ? readView(JSON.parse(q.get('v'))) : { ...DEFAULT_VIEW };
+    const ex = Explorer.fromJson(s);
+    app.ex.free();
+    app.ex = ex;
+    app.view = view;
+    return null;
+  } catch (e) {
+    // Fall back to the defaults (also when a pasted link is broken after start).
+    app.ex.free();
+    app.ex = new Explorer();
+    app.view = { ...DEFAULT_VIEW };
+    return String(e.message || e);
+  }
+}
+
+function showNotice(msg) {
+  const n = $('notice');
+  if (!msg) { n.hidden = true; n.textContent = ''; return; }
+  n.hidden = false;
+  n.textContent = `The link's state could not be read (${msg}); showing the default scene instead.`;
+  window.rimeState.notice = n.textContent;
+}
+
+// ---------- downloads ----------
+
+function download(name, type, text) {
+  const url = URL.createObjectURL(new Blob([text], { type }));
+  const a = el('a', { href: url, download: name });
+  document.body.append(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 1000);
+}
+
+function curvesCsv(res) {
+  const cols = ['g_n', 'eps_n', 'status', 'eps_n_clean'];
+  if (res.family) res.family.values.forEach((v) => cols.push(`eps_n[${res.family.path}=${v}]`));
+  const lines = [cols.join(',')];
+  for (let i = 0; i < res.g.length; i++) {
+    const row = [res.g[i], res.eps[i], app.statusNames[res.status[i]], res.clean[i]];
+    if (res.family) res.family.curves.forEach((c) => row.push(c[i]));
+    lines.push(row.join(','));
+  }
+  return lines.join('\n') + '\n';
+}
+
+function mapCsv(m) {
+  const lines = ['g_n,g_t,eps_n,eps_t,class'];
+  for (let i = 0; i < m.n; i++) {
+    for (let j = 0; j < m.n; j++) {
+      const k = i * m.n + j;
+      lines.push(`${m.g[i]},${m.g[j]},${m.epsN[i]},${m.epsT[k]},${app.classes[m.codes[k]].name}`);
+    }
+  }
+  return lines.join('\n') + '\n';
+}
+
+function mapSvg(m) {
+  const legendH = 18 * app.classes.length + 10;
+  const p = new SvgPainter(560, 560 + legendH);
+  const geom = drawMap(p, { n: m.n, codes: m.codes, max: m.max, colors: CLASS_COLORS, hover: null });
+  app.classes.forEach((c, k) => {
+    const y = geom.box.b + 50 + k * 18;
+    p.rect(58, y - 11, 12, 12, { fill: CLASS_COLORS[k], stroke: '#0004' });
+    p.text(76, y, c.description, { size: 11 });
+  });
+  p.height = geom.box.b + 50 + legendH;
+  return p.svg();
+}
+
+function wireDownloads() {
+  $('dl-curves').addEventListener('click', () => app.res && download('rime-curves.csv', 'text/csv', curvesCsv(app.res)));
+  $('dl-map').addEventListener('click', () => app.res && app.res.map && download('rime-map.csv', 'text/csv', mapCsv(app.res.map)));
+  $('dl-chart-svg').addEventListener('click', () => {
+    if (!app.res) return;
+    const p = new SvgPainter(720, 460);
+    drawChart(p, chartSpec(app.res, null));
+    download('rime-chart.svg', 'image/svg+xml', p.svg());
+  });
+  $('dl-map-svg').addEventListener('click', () => app.res && app.res.map && download('rime-map.svg', 'image/svg+xml', mapSvg(app.res.map)));
+  $('dl-scene').addEventListener('click', () => download('rime-scene.json', 'application/json', JSON.stringify(JSON.parse(app.ex.toJson()), null, 2) + '\n'));
+  $('copy-link').addEventListener('click', async () => {
+    try {
+      await navigator.clipboard.writeText(location.href);
+      $('copy-status').textContent = 'link copied';
+    } catch {
+      $('copy-status').textContent = 'copy the address bar: it holds the full state';
+    }
+  });
+}
+
+// Exposed for the end-to-end test: the SVG and CSV texts the buttons download.
+window.rimeExports = {
+  chartSvg: () => { const p = new SvgPainter(720, 460); drawChart(p, chartSpec(app.res, null)); return p.svg(); },
+  mapSvg: () => app.res.map && mapSvg(app.res.map),
+  curvesCsv: () => curvesCsv(app.res),
+  mapCsv: () => app.res.map && mapCsv(app.res.map),
+  probe: (g) => JSON.parse(app.ex.normal(g, app.view.accuracy)),
+};
+
+// ---------- start ----------
+
+function wireView() {
+  $('accuracy').addEventListener('change', () => { app.view.accuracy = $('accuracy').value; schedule(); });
+  const range = () => {
+    try {
+      const from = parseSpeed($('view-from').value);
+      const to = parseSpeed($('view-to').value);
+      if (!(from < to)) throw new Error('"from" must be below "to"');
+      app.view.from = from; app.view.to = to;
+      $('view-err').textContent = '';
+      schedule();
+    } catch (e) { $('view-err').textContent = e.message; }
+  };
+  $('view-from').addEventListener('change', range);
+  $('view-to').addEventListener('change', range);
+  $('view-mapmax').addEventListener('change', () => {
+    const t = $('view-mapmax').value.trim();
+    try {
+      app.view.mapMax = t === '' || t === 'auto' ? null : parseSpeed(t);
+      $('mapmax-err').textContent = '';
+      schedule();
+    } catch (e) { $('mapmax-err').textContent = e.message; }
+  });
+  $('preset').addEventListener('change', () => {
+    const name = $('preset').value;
+    if (!name) return;
+    try {
+      app.ex.loadPreset(name);
+      for (const path of app.rows.keys()) setErr(path, '');
+      schedule();
+    } catch (e) { showNotice(e.message); }
+  });
+  const chart = $('chart');
+  chart.addEventListener('pointermove', chartHover);
+  chart.addEventListener('pointerdown', chartHover);
+  chart.addEventListener('pointerleave', () => { app.hover.chart = null; if (app.res) drawChartCanvas(); });
+  const map = $('map');
+  map.addEventListener('pointermove', mapHover);
+  map.addEventListener('pointerdown', mapHover);
+  map.addEventListener('pointerleave', () => { app.hover.map = null; if (app.res) drawMapCanvas(); });
+  let resizeQueued = false;
+  window.addEventListener('resize', () => {
+    if (resizeQueued) return;
+    resizeQueued = true;
+    requestAnimationFrame(() => { resizeQueued = false; draw(); });
+  });
+  window.addEventListener('hashchange', () => {
+    showNotice(loadHash());
+    schedule();
+  });
+}
+
+async function main() {
+  await init();
+  app.ex = new Explorer();
+  app.params = JSON.parse(Explorer.parameters());
+  app.classes = JSON.parse(Explorer.classes());
+  app.statusNames = JSON.parse(Explorer.statusNames());
+  $('version').textContent = Explorer.version();
+  const presets = JSON.parse(Explorer.presets());
+  $('preset').replaceChildren(el('option', { value: '' }, '— choose —'),
+    ...presets.map((p) => el('option', { value: p.name, title: p.description }, p.name)));
+  buildControls();
+  wireView();
+  wireDownloads();
+  showNotice(loadHash());
+  update();
+}
+
+main().catch((e) => {
+  window.rimeState.errors.push(String(e && e.message ? e.message : e));
+  $('timing').textContent = `failed to start: ${e && e.message ? e.message : e}`;
+});
