@@ -48,6 +48,11 @@ pub enum Error {
         /// Time at which it happened (dimensionless).
         t: f64,
     },
+    /// Drawing a figure failed (feature `plot`).
+    Plot {
+        /// What went wrong.
+        reason: &'static str,
+    },
     /// A fit did not converge or its input was unusable.
     Fit {
         /// What went wrong.
@@ -79,6 +84,7 @@ impl fmt::Display for Error {
                 write!(f, "{what}: integrator step size underflow at s = {t}")
             }
             Error::Fit { reason } => write!(f, "fit: {reason}"),
+            Error::Plot { reason } => write!(f, "figure: {reason}"),
         }
     }
 }

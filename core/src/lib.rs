@@ -39,6 +39,8 @@ pub mod accuracy;
 pub mod analytic;
 pub mod contact;
 pub mod error;
+#[cfg(feature = "alloc")]
+pub mod figure;
 pub mod fit;
 pub mod kinematics;
 pub mod master;

@@ -219,3 +219,49 @@ fn every_preset_and_option_is_finite_from_1e_12_to_1e2() {
         }
     }
 }
+
+#[test]
+fn paper_figures_show_what_their_captions_say() {
+    use rime_core::figure::paper;
+    let fig2 = paper::fig2(Accuracy::Fast).unwrap();
+    assert_eq!(fig2.len(), 2);
+    // Calibrated A: every layer curve is 0 at and below its marker (Eq. 10) and positive above.
+    for (series, marker) in fig2[0].series.iter().zip(&fig2[0].markers) {
+        for &(g, e) in &series.points {
+            if g <= marker.x {
+                assert_eq!(e, 0.0, "{} at {g}", series.name);
+            } else if g > marker.x * 1.01 {
+                assert!(e > 0.0, "{} at {g}", series.name);
+            }
+        }
+    }
+    // The paper's viscosities: overdamped everywhere above 1e-6 m/s.
+    for s in &fig2[1].series[..5] {
+        for &(g, e) in &s.points {
+            if g >= 1e-6 {
+                assert!(e < 1e-9, "{} at {g}: {e}", s.name);
+            }
+        }
+    }
+    let fig4 = paper::fig4(Accuracy::Fast, 40).unwrap();
+    let hard = &fig4[0];
+    let classes = &hard.map.as_ref().unwrap().classes;
+    assert!(!classes.contains(&rime_core::StickClass::Aggregation));
+    // The zoomed layer map contains the aggregation region the paper describes.
+    let zoom = fig4.iter().find(|f| f.name == "fig4-layer-zoom").unwrap();
+    assert!(
+        zoom.map
+            .as_ref()
+            .unwrap()
+            .classes
+            .contains(&rime_core::StickClass::Aggregation)
+    );
+    for f in fig2.iter().chain(&fig4) {
+        let svg = rime_core::figure::render_svg(f, 800, 500).unwrap();
+        assert!(
+            svg.starts_with("<svg") && svg.contains("</svg>"),
+            "{}",
+            f.name
+        );
+    }
+}

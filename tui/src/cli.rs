@@ -48,6 +48,8 @@ pub enum Command {
     Export(Common, f64, f64, usize, PathBuf),
     /// `rime fit --data FILE.csv --param PATH`.
     Fit(Common, PathBuf, String),
+    /// `rime figures --out DIR`.
+    Figures(Common, PathBuf),
     /// `rime bench [--out DIR] [--quick]`.
     Bench(PathBuf, bool),
     /// `rime help` or `--help`.
@@ -73,6 +75,7 @@ USAGE:
                                                  laws, ready-to-paste C and Rust functions
   rime fit --data FILE.csv [--param PATH]        fit a parameter (default bulk.damping.time) to
                                                  measured (g [m/s], ε) points
+  rime figures [--out DIR]                       the paper's Figs. 2–4 from the model, SVG + PNG
   rime bench [--out DIR] [--quick true]          speed/accuracy of every model and level (writes
                                                  DIR/bench.json and DIR/work-precision.svg)
 
@@ -210,6 +213,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
         Some("bench") => &["--out", "--quick"],
         Some("export") => &["--from", "--to", "--points", "--out"],
         Some("fit") => &["--data", "--param"],
+        Some("figures") => &["--out"],
         Some("eps") => &["--g"],
         Some("curve") => &["--from", "--to", "--points"],
         Some("tangential") => &["--gn", "--gt"],
@@ -252,6 +256,9 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             let n = count("--points", get("--points").unwrap_or("200"), 8, 100_000)?;
             let out = PathBuf::from(require("--out")?);
             Command::Export(common, from, to, n, out)
+        }
+        Some("figures") => {
+            Command::Figures(common, PathBuf::from(get("--out").unwrap_or("figures")))
         }
         Some("fit") => {
             let data = PathBuf::from(require("--data")?);

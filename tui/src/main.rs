@@ -228,6 +228,28 @@ fn run(command: Command) -> CliResult<Option<String>> {
                 ),
             }
         }
+        Command::Figures(c, out) => {
+            std::fs::create_dir_all(&out)
+                .map_err(|e| CliError(format!("--out {}: {e}", out.display())))?;
+            let figures = rime_core::figure::paper::all(c.accuracy, 160)?;
+            let mut s = String::new();
+            for f in &figures {
+                let svg = rime_core::figure::render_svg(f, 1000, 680)?;
+                scene_io::write_atomic(&out.join(format!("{}.svg", f.name)), svg.as_bytes())?;
+                let png = out.join(format!("{}.png", f.name));
+                let tmp = out.join(format!(".{}.tmp.png", f.name));
+                rime_core::figure::render_png(f, &tmp, 1000, 680)?;
+                std::fs::rename(&tmp, &png)
+                    .map_err(|e| CliError(format!("{}: cannot write: {e}", png.display())))?;
+                s.push_str(&format!("{}: {}\n  {}\n", f.name, f.title, f.caption));
+            }
+            s.push_str(&format!(
+                "wrote {} figures (SVG + PNG) into {}\n",
+                figures.len(),
+                out.display()
+            ));
+            s
+        }
         Command::Bench(out, quick) => {
             let (_, text) = bench::run(&out, quick)?;
             format!(

@@ -1,0 +1,459 @@
+//! What a figure shows — series, axes, log scales, labels, units, markers, bands, class maps — with
+//! no drawing. One description serves every surface: feature `plot` renders it with plotters to SVG
+//! and PNG ([`render_svg`], [`render_png`]); the terminal and the web page draw the same data.
+//!
+//! [`paper`] builds the paper's Figs. 2–4 from the model, and [`experiments`] holds the
+//! experimental context (Bridges et al. 1984; Heißelmann et al. 2010; Hill et al. 2015).
+
+use crate::accuracy::Accuracy;
+use crate::contact::Contact;
+use crate::error::Result;
+use crate::scene::Scene;
+use crate::sweep;
+use crate::tangential::StickClass;
+use alloc::format;
+use alloc::string::{String, ToString};
+use alloc::vec;
+use alloc::vec::Vec;
+
+/// An axis.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Axis {
+    /// Label with unit, e.g. `g_N [m/s]`.
+    pub label: String,
+    /// Logarithmic scale.
+    pub log: bool,
+    /// Lower limit.
+    pub min: f64,
+    /// Upper limit.
+    pub max: f64,
+}
+
+/// A line.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// Legend entry.
+    pub name: String,
+    /// Points (x, y); a `NaN` y breaks the line (e.g. outside a log axis).
+    pub points: Vec<(f64, f64)>,
+    /// Index into [`PALETTE`].
+    pub color: usize,
+    /// Dashed (reference curves).
+    pub dashed: bool,
+}
+
+/// A vertical line with a label (critical velocities).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Marker {
+    /// Position on the x axis.
+    pub x: f64,
+    /// Label, e.g. `g_s = 6.6 µm/s`.
+    pub label: String,
+    /// Index into [`PALETTE`].
+    pub color: usize,
+}
+
+/// A shaded rectangle (an experimental range).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Band {
+    /// x range.
+    pub x: (f64, f64),
+    /// y range.
+    pub y: (f64, f64),
+    /// Legend entry with source.
+    pub label: String,
+    /// Index into [`PALETTE`].
+    pub color: usize,
+}
+
+/// Stick-map classes on a square grid of speeds (row-major, `classes[i * n + j]` at
+/// x = g_T = `g[j]`, y = g_N = `g[i]`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ClassMap {
+    /// Grid speeds.
+    pub g: Vec<f64>,
+    /// Classes.
+    pub classes: Vec<StickClass>,
+}
+
+/// A complete figure.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Figure {
+    /// File stem, e.g. `fig2-layer-viscosity`.
+    pub name: String,
+    /// Title.
+    pub title: String,
+    /// Caption: parameters and what the figure can and cannot show.
+    pub caption: String,
+    /// Horizontal axis.
+    pub x: Axis,
+    /// Vertical axis.
+    pub y: Axis,
+    /// Lines.
+    pub series: Vec<Series>,
+    /// Vertical markers.
+    pub markers: Vec<Marker>,
+    /// Shaded ranges.
+    pub bands: Vec<Band>,
+    /// A class map drawn under everything else.
+    pub map: Option<ClassMap>,
+}
+
+/// Line colours (RGB), colour-blind-safe (Okabe–Ito) first.
+pub const PALETTE: [(u8, u8, u8); 8] = [
+    (0, 114, 178),
+    (213, 94, 0),
+    (0, 158, 115),
+    (204, 121, 167),
+    (230, 159, 0),
+    (86, 180, 233),
+    (0, 0, 0),
+    (120, 120, 120),
+];
+
+/// Colour of a stick-map class (RGB).
+pub fn class_color(c: StickClass) -> (u8, u8, u8) {
+    match c {
+        StickClass::Rolling => (86, 180, 233),
+        StickClass::Sliding => (240, 228, 66),
+        StickClass::RollingStop => (0, 114, 178),
+        StickClass::SlidingGap => (230, 159, 0),
+        StickClass::Aggregation => (0, 0, 0),
+        StickClass::NormalStickOnly => (204, 121, 167),
+        StickClass::Undefined => (255, 255, 255),
+    }
+}
+
+/// Formats a speed with an SI prefix (`6.63 µm/s`).
+pub fn speed_label(g: f64) -> String {
+    let (v, unit) = if g >= 1.0 {
+        (g, "m/s")
+    } else if g >= 1e-3 {
+        (g * 1e3, "mm/s")
+    } else if g >= 1e-6 {
+        (g * 1e6, "µm/s")
+    } else {
+        (g * 1e9, "nm/s")
+    };
+    format!("{} {unit}", three_digits(v))
+}
+
+fn three_digits(v: f64) -> String {
+    if v >= 100.0 {
+        format!("{v:.0}")
+    } else if v >= 10.0 {
+        format!("{v:.1}")
+    } else {
+        format!("{v:.2}")
+    }
+}
+
+/// ε_N on `n` log-spaced speeds as a series (ε = 0 kept: the axes of these figures are linear in ε).
+pub fn eps_series(
+    scene: &Scene,
+    from: f64,
+    to: f64,
+    n: usize,
+    accuracy: Accuracy,
+    name: String,
+    color: usize,
+    dashed: bool,
+) -> Result<Series> {
+    let contact = Contact::new(scene)?;
+    let mut g = vec![0.0; n];
+    sweep::log_space(from, to, &mut g);
+    let mut points = Vec::with_capacity(n);
+    for gi in g {
+        points.push((gi, contact.eps_n(gi, accuracy)?));
+    }
+    Ok(Series {
+        name,
+        points,
+        color,
+        dashed,
+    })
+}
+
+/// The experimental context of the ε_N charts.
+pub mod experiments {
+    use super::*;
+
+    /// Bridges, Hatzes & Lin (1984), Nature 309, 333: ε = 0.32 (v / 1 cm/s)^−0.234 (frosty ice at
+    /// ~185 K), drawn over `from..to`.
+    pub fn bridges(from: f64, to: f64, color: usize) -> Series {
+        let mut g = vec![0.0; 60];
+        sweep::log_space(from, to, &mut g);
+        Series {
+            name: "Bridges et al. 1984: 0.32 (v/1 cm/s)^-0.234".to_string(),
+            points: g
+                .into_iter()
+                .map(|v| (v, crate::fit::BRIDGES_1984.eval(v).min(1.0)))
+                .collect(),
+            color,
+            dashed: true,
+        }
+    }
+
+    /// Microgravity ice experiments: Heißelmann et al. (2010), Icarus 206, 424 (1.5 cm spheres,
+    /// 6–22 cm/s, ε 0.06–0.84) and Hill et al. (2015), A&A 575, A6 (5–11 mm, 0.27–0.51 m/s,
+    /// ε 0.08–0.65).
+    pub fn bands(first_color: usize) -> Vec<Band> {
+        vec![
+            Band {
+                x: (0.06, 0.22),
+                y: (0.06, 0.84),
+                label: "Heißelmann et al. 2010 (1.5 cm ice, µg)".to_string(),
+                color: first_color,
+            },
+            Band {
+                x: (0.27, 0.51),
+                y: (0.08, 0.65),
+                label: "Hill et al. 2015 (5–11 mm ice, µg)".to_string(),
+                color: first_color + 1,
+            },
+        ]
+    }
+}
+
+/// The paper's figures, rebuilt from the model.
+pub mod paper {
+    use super::*;
+    use crate::scene::{Adhesion, Damping, Layer, Preset, Viscosities};
+
+    const FROM: f64 = 1e-7;
+    const TO: f64 = 1.0;
+    const N: usize = 300;
+
+    fn eps_axes() -> (Axis, Axis) {
+        (
+            Axis {
+                label: "normal impact speed g_N [m/s]".to_string(),
+                log: true,
+                min: FROM,
+                max: TO,
+            },
+            Axis {
+                label: "normal restitution ε_N".to_string(),
+                log: false,
+                min: 0.0,
+                max: 1.0,
+            },
+        )
+    }
+
+    fn with_damping(mut s: Scene, damping: Damping) -> Scene {
+        s.bulk.damping = damping;
+        s
+    }
+
+    /// Fig. 2: ε_N for layer viscosities η* = 500, 1000, 2000, 5000 Pa s at D = 1 µm, plus clean
+    /// surfaces, for the calibrated A (default) and for the paper's literal viscosities.
+    pub fn fig2(accuracy: Accuracy) -> Result<Vec<Figure>> {
+        let mut out = Vec::new();
+        let base = Preset::Ice.scene();
+        for (suffix, damping, note) in [
+            (
+                "",
+                base.bulk.damping,
+                "A = 1e-4 s (calibrated to Bridges et al. 1984; DESIGN decision 1).",
+            ),
+            (
+                "-paper-viscosities",
+                Damping::Viscosities(Viscosities::default()),
+                "The paper's η1 = 1e6, η2 = 1e12 Pa s give A = 404 s: every collision is overdamped (ε_N < 1e-9), unlike the paper's Fig. 2.",
+            ),
+        ] {
+            let clean = with_damping(base, damping);
+            let (x, y) = eps_axes();
+            let mut series = Vec::new();
+            let mut markers = Vec::new();
+            for (k, eta) in [500.0, 1000.0, 2000.0, 5000.0].into_iter().enumerate() {
+                let s = Scene {
+                    layer: Some(Layer {
+                        viscosity: eta,
+                        ..Layer::default()
+                    }),
+                    ..clean
+                };
+                series.push(eps_series(
+                    &s,
+                    FROM,
+                    TO,
+                    N,
+                    accuracy,
+                    format!("η* = {eta} Pa s"),
+                    k,
+                    false,
+                )?);
+                let g_s = Contact::new(&s)?.layer.map_or(0.0, |l| l.critical_velocity);
+                markers.push(Marker {
+                    x: g_s,
+                    label: format!("g_s = {}", speed_label(g_s)),
+                    color: k,
+                });
+            }
+            series.push(eps_series(
+                &clean,
+                FROM,
+                TO,
+                N,
+                accuracy,
+                "clean surfaces".to_string(),
+                6,
+                true,
+            )?);
+            series.push(experiments::bridges(1e-4, TO, 7));
+            out.push(Figure {
+                name: format!("fig2-layer{suffix}"),
+                title: "Fig. 2: soft surface layer, D = 1 µm".to_string(),
+                caption: format!(
+                    "ε_N vs g_N for layer viscosities η* = 500…5000 Pa s (offset reading, force-zero end) and clean surfaces. {note} Markers: critical speeds g_s of Eq. (10)."
+                ),
+                x,
+                y,
+                series,
+                markers,
+                bands: experiments::bands(4),
+                map: None,
+            });
+        }
+        Ok(out)
+    }
+
+    /// Fig. 3: ε_N for surface energies γ = 0.05, 0.1, 0.2, 0.5 J/m², plus clean surfaces.
+    pub fn fig3(accuracy: Accuracy) -> Result<Vec<Figure>> {
+        let clean = Preset::Ice.scene();
+        let (x, y) = eps_axes();
+        let mut series = Vec::new();
+        let mut markers = Vec::new();
+        for (k, gamma) in [0.05, 0.1, 0.2, 0.5].into_iter().enumerate() {
+            let s = Scene {
+                adhesion: Some(Adhesion {
+                    surface_energy: gamma,
+                    ..Adhesion::default()
+                }),
+                ..clean
+            };
+            series.push(eps_series(
+                &s,
+                FROM,
+                TO,
+                N,
+                accuracy,
+                format!("γ = {gamma} J/m²"),
+                k,
+                false,
+            )?);
+            let g_s = Contact::new(&s)?
+                .adhesion
+                .map_or(0.0, |a| a.critical_velocity);
+            markers.push(Marker {
+                x: g_s,
+                label: format!("g_s = {}", speed_label(g_s)),
+                color: k,
+            });
+        }
+        series.push(eps_series(
+            &clean,
+            FROM,
+            TO,
+            N,
+            accuracy,
+            "clean surfaces".to_string(),
+            6,
+            true,
+        )?);
+        series.push(experiments::bridges(1e-4, TO, 7));
+        Ok(vec![Figure {
+            name: "fig3-adhesion".to_string(),
+            title: "Fig. 3: adhesion".to_string(),
+            caption: "ε_N vs g_N for surface energies γ = 0.05…0.5 J/m² (E as printed) and clean surfaces, A = 1e-4 s. Markers: critical rebound speeds g_s of Eq. (15); the grains stick when the rebound speed without adhesion is below g_s.".to_string(),
+            x,
+            y,
+            series,
+            markers,
+            bands: experiments::bands(4),
+            map: None,
+        }])
+    }
+
+    /// Fig. 4: stick-map classes over (g_N, g_T) for hard, layered (η* = 1000 Pa s) and adhesive
+    /// (γ = 0.1 J/m²) grains with μ = 0.3: at the paper's range 0–5 cm/s and zoomed to where the
+    /// sticking regions of the stated parameters actually are.
+    pub fn fig4(accuracy: Accuracy, n: usize) -> Result<Vec<Figure>> {
+        let mut out = Vec::new();
+        for (name, title, scene) in [
+            ("hard", "hard spheres", Preset::Ice.scene()),
+            (
+                "layer",
+                "layer D = 1 µm, η* = 1000 Pa s",
+                Preset::IceFrost.scene(),
+            ),
+            (
+                "adhesion",
+                "adhesion γ = 0.1 J/m²",
+                Preset::IceSticky.scene(),
+            ),
+        ] {
+            let contact = Contact::new(&scene)?;
+            let g_s = contact
+                .layer
+                .map(|l| l.critical_velocity)
+                .or(contact.adhesion.map(|a| a.critical_velocity))
+                .unwrap_or(0.0);
+            let mut ranges = vec![(0.05, "paper's range 0–5 cm/s")];
+            if g_s > 0.0 {
+                ranges.push((20.0 * g_s, "zoomed to 20 g_s"));
+            }
+            for (max, range_note) in ranges {
+                let map = sweep::StickMap::new(&contact, max, n, accuracy)?;
+                let axis = |label: &str| Axis {
+                    label: label.to_string(),
+                    log: false,
+                    min: 0.0,
+                    max,
+                };
+                let zoom = if max < 0.05 { "-zoom" } else { "" };
+                out.push(Figure {
+                    name: format!("fig4-{name}{zoom}"),
+                    title: format!("Fig. 4: {title} ({range_note})"),
+                    caption: format!(
+                        "Stick-map classes of ε_T(g_N, g_T), μ = 0.3, κ = 2/7, paper sliding law. {}",
+                        if g_s > 0.0 {
+                            format!(
+                                "The critical speed of these parameters is g_s = {}: at the paper's 0–5 cm/s range the sticking region is too small to see, so a zoomed map is shown too.",
+                                speed_label(g_s)
+                            )
+                        } else {
+                            "Hard spheres never stick; the orange wedge is the negative radicand of Eq. (23) just above ψ0.".to_string()
+                        }
+                    ),
+                    x: axis("tangential speed g_T [m/s]"),
+                    y: axis("normal speed g_N [m/s]"),
+                    series: Vec::new(),
+                    markers: Vec::new(),
+                    bands: Vec::new(),
+                    map: Some(ClassMap {
+                        g: map.g,
+                        classes: map.class,
+                    }),
+                });
+            }
+        }
+        Ok(out)
+    }
+
+    /// Every paper figure.
+    pub fn all(accuracy: Accuracy, map_n: usize) -> Result<Vec<Figure>> {
+        let mut v = fig2(accuracy)?;
+        v.extend(fig3(accuracy)?);
+        v.extend(fig4(accuracy, map_n)?);
+        Ok(v)
+    }
+}
+
+#[cfg(feature = "plot")]
+#[path = "figure/render.rs"]
+mod render;
+#[cfg(feature = "plot")]
+pub use render::{render_png, render_svg};
