@@ -148,17 +148,14 @@ fn three_digits(v: f64) -> String {
     }
 }
 
-/// ε_N on `n` log-spaced speeds as a series (ε = 0 kept: the axes of these figures are linear in ε).
-pub fn eps_series(
+/// ε_N on `n` log-spaced speeds (ε = 0 kept: the axes of these figures are linear in ε).
+pub fn eps_points(
     scene: &Scene,
     from: f64,
     to: f64,
     n: usize,
     accuracy: Accuracy,
-    name: String,
-    color: usize,
-    dashed: bool,
-) -> Result<Series> {
+) -> Result<Vec<(f64, f64)>> {
     let contact = Contact::new(scene)?;
     let mut g = vec![0.0; n];
     sweep::log_space(from, to, &mut g);
@@ -166,12 +163,7 @@ pub fn eps_series(
     for gi in g {
         points.push((gi, contact.eps_n(gi, accuracy)?));
     }
-    Ok(Series {
-        name,
-        points,
-        color,
-        dashed,
-    })
+    Ok(points)
 }
 
 /// The experimental context of the ε_N charts.
@@ -239,6 +231,22 @@ pub mod paper {
                 max: 1.0,
             },
         )
+    }
+
+    /// A solid (or dashed) ε_N curve of `scene` over the paper's range.
+    fn curve(
+        scene: &Scene,
+        accuracy: Accuracy,
+        name: String,
+        color: usize,
+        dashed: bool,
+    ) -> Result<Series> {
+        Ok(Series {
+            name,
+            points: eps_points(scene, FROM, TO, N, accuracy)?,
+            color,
+            dashed,
+        })
     }
 
     fn with_damping(mut s: Scene, damping: Damping) -> Scene {
