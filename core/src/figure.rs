@@ -283,16 +283,7 @@ pub mod paper {
                     }),
                     ..clean
                 };
-                series.push(eps_series(
-                    &s,
-                    FROM,
-                    TO,
-                    N,
-                    accuracy,
-                    format!("η* = {eta} Pa s"),
-                    k,
-                    false,
-                )?);
+                series.push(curve(&s, accuracy, format!("η* = {eta} Pa s"), k, false)?);
                 let g_s = Contact::new(&s)?.layer.map_or(0.0, |l| l.critical_velocity);
                 markers.push(Marker {
                     x: g_s,
@@ -300,11 +291,8 @@ pub mod paper {
                     color: k,
                 });
             }
-            series.push(eps_series(
+            series.push(curve(
                 &clean,
-                FROM,
-                TO,
-                N,
                 accuracy,
                 "clean surfaces".to_string(),
                 6,
@@ -342,16 +330,7 @@ pub mod paper {
                 }),
                 ..clean
             };
-            series.push(eps_series(
-                &s,
-                FROM,
-                TO,
-                N,
-                accuracy,
-                format!("γ = {gamma} J/m²"),
-                k,
-                false,
-            )?);
+            series.push(curve(&s, accuracy, format!("γ = {gamma} J/m²"), k, false)?);
             let g_s = Contact::new(&s)?
                 .adhesion
                 .map_or(0.0, |a| a.critical_velocity);
@@ -361,11 +340,8 @@ pub mod paper {
                 color: k,
             });
         }
-        series.push(eps_series(
+        series.push(curve(
             &clean,
-            FROM,
-            TO,
-            N,
             accuracy,
             "clean surfaces".to_string(),
             6,
