@@ -251,7 +251,13 @@ fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Resul
         let too_long = lines
             .last()
             .is_some_and(|l| l.chars().count() + w.chars().count() + 1 > width_chars);
-        if too_long && lines.len() < 3 {
+        if too_long {
+            if lines.len() == 3 {
+                if let Some(l) = lines.last_mut() {
+                    l.push_str(" …");
+                }
+                break;
+            }
             lines.push(String::new());
         }
         if let Some(l) = lines.last_mut() {

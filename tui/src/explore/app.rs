@@ -343,7 +343,7 @@ impl App {
         };
         match export::export(&self.out_dir, data) {
             Ok(dir) => self.info(format!(
-                "exported scene.json, eps_curves.csv, stick_map.csv to {}/ (SVG/PNG figures: not yet)",
+                "exported scene.json, CSV tables, SVG + PNG figures to {}/",
                 dir.display()
             )),
             Err(e) => self.error(format!("export failed: {e}")),

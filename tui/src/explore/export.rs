@@ -1,9 +1,11 @@
-//! `x`: writes the current frame's tables and scene into `rime-export-<timestamp>/`.
+//! `x`: writes the current frame's tables, scene and figures (SVG + PNG through the shared
+//! `rime_core::figure` code) into `rime-export-<timestamp>/`.
 
 use super::compute::{FrameData, SWEEPS};
 use super::format;
 use crate::output::num;
 use crate::scene_io::{CliError, CliResult, scene_json, write_atomic};
+use rime_core::figure::{Axis, ClassMap, Figure, Marker, Series, speed_label};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -64,6 +66,120 @@ pub fn map_csv(data: &FrameData) -> String {
     s
 }
 
+/// The frame as figure descriptions (the shared `rime_core::figure` code): the ε_N chart and the
+/// stick map.
+pub fn figures(data: &FrameData) -> Vec<Figure> {
+    let sweep = SWEEPS.get(data.sweep);
+    let symbol = sweep.map_or("p", |s| s.symbol);
+    let pts = |eps: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> {
+        data.g
+            .iter()
+            .enumerate()
+            .map(|(k, &g)| (g, eps(k)))
+            .filter(|(_, e)| e.is_finite())
+            .collect()
+    };
+    let mut series: Vec<Series> = data
+        .family
+        .iter()
+        .enumerate()
+        .map(|(k, m)| Series {
+            name: format!("{symbol} = {}", num(m.value)),
+            points: pts(&|i| m.eps.get(i).copied().unwrap_or(f64::NAN)),
+            color: k,
+            dashed: false,
+        })
+        .collect();
+    series.push(Series {
+        name: "this scene".to_string(),
+        points: pts(&|i| {
+            data.current
+                .get(i)
+                .copied()
+                .flatten()
+                .map_or(f64::NAN, |n| n.eps)
+        }),
+        color: 6,
+        dashed: false,
+    });
+    if let Some(clean) = &data.clean {
+        series.push(Series {
+            name: "clean surfaces".to_string(),
+            points: pts(&|i| clean.get(i).copied().unwrap_or(f64::NAN)),
+            color: 7,
+            dashed: true,
+        });
+    }
+    let mut markers = Vec::new();
+    if let Some(c) = &data.contact {
+        if let Some(l) = c.layer {
+            markers.push(Marker {
+                x: l.critical_velocity,
+                label: format!("g_s (layer) = {}", speed_label(l.critical_velocity)),
+                color: 1,
+            });
+        }
+        if let Some(a) = c.adhesion {
+            markers.push(Marker {
+                x: a.critical_velocity,
+                label: format!("g_s (adhesion) = {}", speed_label(a.critical_velocity)),
+                color: 2,
+            });
+        }
+    }
+    let (g0, g1) = (
+        data.g.first().copied().unwrap_or(1e-7),
+        data.g.last().copied().unwrap_or(10.0),
+    );
+    let scene = scene_json(&data.scene)
+        .unwrap_or_default()
+        .replace('\n', " ");
+    let mut out = vec![Figure {
+        name: "eps_n".to_string(),
+        title: "ε_N(g_N), rime explorer".to_string(),
+        caption: format!("accuracy {}; scene {}", data.accuracy.name(), scene),
+        x: Axis {
+            label: "normal impact speed g_N [m/s]".to_string(),
+            log: true,
+            min: g0,
+            max: g1,
+        },
+        y: Axis {
+            label: "normal restitution ε_N".to_string(),
+            log: false,
+            min: 0.0,
+            max: 1.0,
+        },
+        series,
+        markers,
+        bands: Vec::new(),
+        map: None,
+    }];
+    if let Some(map) = &data.map {
+        let axis = |label: &str| Axis {
+            label: label.to_string(),
+            log: false,
+            min: 0.0,
+            max: data.map_max,
+        };
+        out.push(Figure {
+            name: "stick_map".to_string(),
+            title: "stick-map classes over (g_N, g_T), rime explorer".to_string(),
+            caption: format!("accuracy {}; scene {}", data.accuracy.name(), scene),
+            x: axis("tangential speed g_T [m/s]"),
+            y: axis("normal speed g_N [m/s]"),
+            series: Vec::new(),
+            markers: Vec::new(),
+            bands: Vec::new(),
+            map: Some(ClassMap {
+                g: map.g.clone(),
+                classes: map.class.clone(),
+            }),
+        });
+    }
+    out
+}
+
 /// Writes `scene.json`, `eps_curves.csv` and `stick_map.csv` into a new folder
 /// `rime-export-<UTC timestamp>` under `base`; returns the folder.
 pub fn export(base: &Path, data: &FrameData) -> CliResult<PathBuf> {
@@ -84,5 +200,14 @@ pub fn export(base: &Path, data: &FrameData) -> CliResult<PathBuf> {
     )?;
     write_atomic(&dir.join("eps_curves.csv"), curves_csv(data).as_bytes())?;
     write_atomic(&dir.join("stick_map.csv"), map_csv(data).as_bytes())?;
+    for fig in figures(data) {
+        let svg = rime_core::figure::render_svg(&fig, 1000, 650)?;
+        write_atomic(&dir.join(format!("{}.svg", fig.name)), svg.as_bytes())?;
+        // PNG via a temporary name, then renamed: never a half-written file.
+        let tmp = dir.join(format!(".{}.tmp.png", fig.name));
+        rime_core::figure::render_png(&fig, &tmp, 1000, 650)?;
+        let png = dir.join(format!("{}.png", fig.name));
+        std::fs::rename(&tmp, &png).map_err(|e| CliError(format!("{}: {e}", png.display())))?;
+    }
     Ok(dir)
 }

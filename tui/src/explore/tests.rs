@@ -322,6 +322,10 @@ fn export_writes_csvs_and_scene() {
     assert_eq!(curves.lines().count(), 1 + super::compute::CURVE_POINTS);
     let map = std::fs::read_to_string(export.join("stick_map.csv")).expect("map");
     assert!(map.starts_with("g_n,g_t,eps_t,class\n"));
+    for figure in ["eps_n.svg", "eps_n.png", "stick_map.svg", "stick_map.png"] {
+        let bytes = std::fs::read(export.join(figure)).expect("figure written");
+        assert!(bytes.len() > 1000, "{figure} is suspiciously small");
+    }
     let scene = std::fs::read_to_string(export.join("scene.json")).expect("scene");
     assert_eq!(
         crate::scene_io::parse_scene(&scene).expect("valid scene"),
