@@ -159,6 +159,7 @@ pub fn literal(
         "layer contact (literal reading)",
     );
     let mut x_max = 0.0;
+    let mut exit_eps = None;
     loop {
         match stepper.step(&sys)? {
             StepOutcome::Step => {}
@@ -171,10 +172,12 @@ pub fn literal(
             StepOutcome::Event { t, y, which } => match which {
                 MAX => x_max = y[0],
                 BOUNDARY if y[1] > 0.0 && sys.phase == Phase::Layer => {
+                    // Eq. (9): the layer is crushed with speed exactly 1 − λ d^(3/2).
                     sys.phase = Phase::Bulk;
-                    stepper.restart(&sys, t, [d, y[1]]);
+                    stepper.restart(&sys, t, [d, 1.0 - g_s]);
                 }
                 BOUNDARY if y[1] < 0.0 && sys.phase != Phase::Layer => {
+                    let y = stepper.exact_state(&sys, t);
                     // Leaving the bulk through the layer: Eq. (9) integrated once more gives the exit
                     // speed v_d + λ d^(3/2); if that is not negative, the layer holds the grains.
                     if y[1] + g_s >= 0.0 {
@@ -186,16 +189,21 @@ pub fn literal(
                             rhs_evaluations: stepper.rhs_evaluations(),
                         });
                     }
+                    // Eq. (9) once more: the layer takes exactly λ d^(3/2) off the way out; the
+                    // integration continues only for the contact time.
+                    exit_eps = Some(-(y[1] + g_s));
                     sys.phase = Phase::Layer;
                     stepper.restart(&sys, t, [d, y[1]]);
                 }
                 FORCE_ZERO if end == ContactEnd::ForceZero && sys.phase == Phase::Bulk => {
+                    let y = stepper.exact_state(&sys, t);
                     sys.phase = Phase::Coast;
                     stepper.restart(&sys, t, y);
                 }
                 EXIT if sys.phase != Phase::Bulk || d == 0.0 => {
+                    let y = stepper.exact_state(&sys, t);
                     return Ok(LiteralOutcome {
-                        eps: (-y[1]).max(0.0),
+                        eps: exit_eps.unwrap_or(-y[1]).max(0.0),
                         stuck: false,
                         s_c: t * t,
                         x_max,
