@@ -72,6 +72,8 @@ struct Literal {
     lambda: f64,
     d: f64,
     phase: Phase,
+    /// The independent variable is σ = √s (from the start) rather than local time s − s₀.
+    sigma_clock: bool,
 }
 
 const MAX: usize = 0;
@@ -81,8 +83,11 @@ const EXIT: usize = 3;
 
 impl OdeSystem<2, 4> for Literal {
     fn rhs(&self, sigma: f64, y: &[f64; 2], dydt: &mut [f64; 2]) {
-        let x = y[0].max(0.0);
-        let two_sigma = 2.0 * sigma;
+        // The state carries u = x − d: the bulk excursion beyond the layer is often tiny next to d,
+        // and x itself would round it away.
+        let x = (self.d + y[0]).max(0.0);
+        // dt/dσ = 2σ while the clock is σ = √s (the singular start); 1 once it is local time.
+        let two_sigma = if self.sigma_clock { 2.0 * sigma } else { 1.0 };
         dydt[0] = two_sigma * y[1];
         dydt[1] = match self.phase {
             // Eq. (8), top: ξ'' + (3/2)(√R/(K m)) √ξ ξ' = 0.
@@ -95,13 +100,13 @@ impl OdeSystem<2, 4> for Literal {
 
     fn events(&self, _sigma: f64, y: &[f64; 2], out: &mut [f64; 4]) {
         out[MAX] = y[1];
-        out[BOUNDARY] = y[0] - self.d;
+        out[BOUNDARY] = y[0];
         out[FORCE_ZERO] = if self.phase == Phase::Bulk {
-            y[0] + 1.5 * self.delta * y[1]
+            (self.d + y[0]) + 1.5 * self.delta * y[1]
         } else {
             1.0
         };
-        out[EXIT] = y[0];
+        out[EXIT] = self.d + y[0];
     }
 
     fn direction(&self, which: usize) -> Direction {
@@ -137,6 +142,7 @@ pub fn literal(
         lambda,
         d,
         phase: if d > 0.0 { Phase::Layer } else { Phase::Bulk },
+        sigma_clock: true,
     };
     let sigma_scale = if delta > 1.0 {
         powf(delta, -1.0 / 3.0)
@@ -152,7 +158,7 @@ pub fn literal(
     let mut stepper = Dopri5::new(
         &sys,
         0.0,
-        [0.0, 1.0],
+        [-d, 1.0],
         sigma_end,
         0.05 * sigma_scale.min(sqrt(d.max(1e-300))).max(1e-8),
         tol,
@@ -160,6 +166,7 @@ pub fn literal(
     );
     let mut x_max = 0.0;
     let mut exit_eps = None;
+    let mut s_offset = 0.0;
     loop {
         match stepper.step(&sys)? {
             StepOutcome::Step => {}
@@ -170,11 +177,15 @@ pub fn literal(
                 });
             }
             StepOutcome::Event { t, y, which } => match which {
-                MAX => x_max = y[0],
+                MAX => x_max = d + y[0],
                 BOUNDARY if y[1] > 0.0 && sys.phase == Phase::Layer => {
-                    // Eq. (9): the layer is crushed with speed exactly 1 − λ d^(3/2).
+                    // Eq. (9): the layer is crushed with speed exactly 1 − λ d^(3/2). The bulk
+                    // excursion is brief next to the crushing time: continue on a local clock
+                    // starting at 0, so that its duration is not rounded away.
+                    s_offset = t * t;
+                    sys.sigma_clock = false;
                     sys.phase = Phase::Bulk;
-                    stepper.restart(&sys, t, [d, 1.0 - g_s]);
+                    stepper.restart(&sys, 0.0, [0.0, 1.0 - g_s]);
                 }
                 BOUNDARY if y[1] < 0.0 && sys.phase != Phase::Layer => {
                     let y = stepper.exact_state(&sys, t);
@@ -193,7 +204,7 @@ pub fn literal(
                     // integration continues only for the contact time.
                     exit_eps = Some(-(y[1] + g_s));
                     sys.phase = Phase::Layer;
-                    stepper.restart(&sys, t, [d, y[1]]);
+                    stepper.restart(&sys, t, [0.0, y[1]]);
                 }
                 FORCE_ZERO if end == ContactEnd::ForceZero && sys.phase == Phase::Bulk => {
                     let y = stepper.exact_state(&sys, t);
@@ -205,7 +216,7 @@ pub fn literal(
                     return Ok(LiteralOutcome {
                         eps: exit_eps.unwrap_or(-y[1]).max(0.0),
                         stuck: false,
-                        s_c: t * t,
+                        s_c: if sys.sigma_clock { t * t } else { s_offset + t },
                         x_max,
                         rhs_evaluations: stepper.rhs_evaluations(),
                     });
