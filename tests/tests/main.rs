@@ -3,3 +3,4 @@
 mod cli;
 mod cost;
 mod physics;
+mod reference;
