@@ -11,10 +11,17 @@ use crate::scene::ContactEnd;
 /// With `x = d w²` this is `2d ∫₀¹ w dw / (1 − r w³)`, evaluated by its series for small `r` and in
 /// closed form (partial fractions) otherwise.
 pub fn crush_time(d: f64, r: f64) -> f64 {
+    crush_time_with_gap(d, r, 1.0 - r)
+}
+
+/// [`crush_time`] with `gap = 1 − r` supplied by the caller, who can often compute it without
+/// cancellation (`(g − g_s)/g`): one ulp above the threshold `1 − r` rounds to 0 and the time, which
+/// diverges only logarithmically, would come out infinite.
+pub fn crush_time_with_gap(d: f64, r: f64, gap: f64) -> f64 {
     if d == 0.0 {
         return 0.0;
     }
-    if r >= 1.0 {
+    if r >= 1.0 && !(gap > 0.0) {
         return f64::INFINITY;
     }
     let integral = if r <= 0.5 {
@@ -36,7 +43,13 @@ pub fn crush_time(d: f64, r: f64) -> f64 {
                 - s3 * crate::math::atan((2.0 * p + 1.0) / s3))
                 / 3.0
         };
-        (f(a) - f(0.0)) / (a * a)
+        // −ln(1 − a) from the gap: 1 − a³ = (1 − a)(1 + a + a²).
+        let one_minus_a = gap / (1.0 + a + a * a);
+        let s3 = sqrt(3.0);
+        let f_a = (-ln(one_minus_a) + 0.5 * ln(a * a + a + 1.0)
+            - s3 * crate::math::atan((2.0 * a + 1.0) / s3))
+            / 3.0;
+        (f_a - f(0.0)) / (a * a)
     };
     2.0 * d * integral
 }
@@ -234,5 +247,9 @@ mod tests {
             assert!((a - b).abs() < 1e-10 * b, "r = {r}: {a} vs {b}");
         }
         assert_eq!(crush_time(1.0, 0.0), 1.0);
+        // One ulp above the threshold: finite, ≈ (2d/3) ln(1/gap) for gap → 0.
+        let gap = f64::EPSILON / 2.0;
+        let t = crush_time_with_gap(1.0, 1.0, gap);
+        assert!(t.is_finite() && t > 2.0 / 3.0 * (1.0 / gap).ln() * 0.9, "{t}");
     }
 }

@@ -122,7 +122,9 @@ impl Contact {
                         // Eq. (4) for the overlap ξ − D.
                         let g_bulk = g - g_s;
                         let (e, t, x, n) = viscoelastic(self, g_bulk, accuracy)?;
-                        let t_layer = layer::crush_time(layer.thickness / g, g_s / g);
+                        // 1 − g_s/g without cancellation (g − g_s is exact near the threshold).
+                        let t_layer =
+                            layer::crush_time_with_gap(layer.thickness / g, g_s / g, g_bulk / g);
                         (e * g_bulk / g, t + t_layer, x + layer.thickness, false, n)
                     }
                 }
