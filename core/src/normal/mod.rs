@@ -68,6 +68,12 @@ fn viscoelastic(contact: &Contact, g: f64, accuracy: Accuracy) -> Result<(f64, f
         // Precise: the fine table, built by the same integrator at rtol 1e-14 and verified to
         // 1e-10 against an independent computation; live integration via Accuracy::Tolerance.
         Accuracy::Precise => crate::master::lookup(delta, contact.contact_end, Resolution::Fine),
+        // Far beyond the tables' end ε < 1e-11 (overdamped) and follows the measured power laws;
+        // the integrator's step budget does not reach there (δ ~ 1e29 for A from viscosities with
+        // ν = 1e-12), so every level uses the asymptote.
+        _ if delta > DELTA_ASYMPTOTIC => {
+            crate::master::lookup(delta, contact.contact_end, Resolution::Fine)
+        }
         _ => viscoelastic::dimensionless(delta, contact.contact_end, accuracy.integrator_rtol())?,
     };
     Ok((
@@ -77,6 +83,9 @@ fn viscoelastic(contact: &Contact, g: f64, accuracy: Accuracy) -> Result<(f64, f
         r.rhs_evaluations,
     ))
 }
+
+/// δ above which every accuracy level uses the master curve's asymptote (the table's end, 1e7).
+const DELTA_ASYMPTOTIC: f64 = 1e7;
 
 fn check_speed(g: f64) -> Result<f64> {
     if g.is_finite() && g > 0.0 && g <= 1e6 {
