@@ -735,9 +735,12 @@ fn rolling_sliding_boundary_exactly_and_one_ulp_above() {
     assert!(rel(g_t / g_n, 1.05) < 1e-15);
 }
 
+/// Writes one number into a scene.
+type Put = fn(&mut Scene, f64);
+
 #[test]
 fn validation_rejects_every_non_finite_or_out_of_range_number_naming_it() {
-    let fields: [(&str, fn(&mut Scene, f64)); 9] = [
+    let fields: [(&str, Put); 9] = [
         ("grains.radius_1", |s, v| s.grains.radius_1 = v),
         ("grains.radius_2", |s, v| s.grains.radius_2 = v),
         ("grains.density", |s, v| s.grains.density = v),

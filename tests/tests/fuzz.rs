@@ -1,6 +1,6 @@
 //! Fuzzing without cargo-fuzz (issue 7): proptest-driven hostile input for the library paths the
-//! CLI, the explorer and the web page share — scene JSON (`serde_json` + `validate` + `Contact::new`
-//! + evaluations) and `Scene::set`. Bounded case counts so that it runs in every `make test`; the
+//! CLI, the explorer and the web page share — scene JSON (`serde_json`, `validate`, `Contact::new`,
+//! evaluations) and `Scene::set`. Bounded case counts so that it runs in every `make test`; the
 //! number of executions is printed (`cargo test -- --nocapture`).
 
 use proptest::prelude::*;
