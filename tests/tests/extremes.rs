@@ -937,3 +937,29 @@ fn regression_huge_derived_damping_does_not_exhaust_the_step_budget() {
         }
     }
 }
+
+#[test]
+fn regression_balanced_zero_overlap_meets_its_1e_6_bound() {
+    // Found by prop_fast_and_balanced_within_their_bound_of_precise: at rtol 1e-8 Balanced was
+    // 1.12e-6 off Precise for this zero-overlap scene (ε ≈ 1.8e-3).
+    let s = Scene {
+        grains: rime_core::Grains {
+            radius_1: 0.0005015691127582424,
+            radius_2: 1.8072730285829245e-5,
+            density: 9570.826883284402,
+        },
+        bulk: rime_core::Bulk {
+            youngs_modulus: 173440071128.69144,
+            poisson_ratio: -0.3151545789545466,
+            damping: Damping::Time(1.4906992425668324e-7),
+        },
+        contact_end: ContactEnd::ZeroOverlap,
+        layer: None,
+        adhesion: None,
+        friction: None,
+    };
+    let c = Contact::new(&s).unwrap();
+    let p = c.normal(1.0, Accuracy::Precise).unwrap().eps;
+    let b = c.normal(1.0, Accuracy::Balanced).unwrap().eps;
+    assert!(rel(b, p) <= 1e-6, "{b} vs {p}: {:e}", rel(b, p));
+}
