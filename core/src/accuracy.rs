@@ -74,11 +74,12 @@ impl Accuracy {
     }
 
     /// Relative tolerance handed to the integrator so that the result meets [`Self::error_bound`].
-    pub(crate) fn integrator_rtol(self) -> f64 {
+    pub fn integrator_rtol(self) -> f64 {
         match self {
-            // Fast falls back to the integrator only where no table applies.
-            Accuracy::Fast => 1e-8,
-            Accuracy::Balanced => 1e-8,
+            // Fast falls back to the integrator only where no table applies. At 1e-8 zero-overlap
+            // contacts near δ ~ 1 missed the 1e-6 bound (1.1e-6, found by the property tests).
+            Accuracy::Fast => 1e-9,
+            Accuracy::Balanced => 1e-9,
             Accuracy::Precise => 1e-13,
             // Global error is a small multiple of the local tolerance; keep a safety factor of 100.
             Accuracy::Tolerance(t) => (t * 1e-2).max(1e-14),

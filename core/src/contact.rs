@@ -94,6 +94,14 @@ impl Contact {
             2.0 * y * sqrt(r_eff) / (3.0 * (1.0 - nu * nu)),
         )?;
         let alpha = finite_positive("alpha", "bulk.youngs_modulus, grains", rho_h / m_eff)?;
+        if nu == 0.0 && matches!(scene.bulk.damping, crate::scene::Damping::Viscosities(_)) {
+            // A from viscosities has ν² in the denominator (decision 1).
+            return Err(Error::OutOfRange {
+                field: "bulk.poisson_ratio",
+                value: nu,
+                expected: "must be non-zero when A is derived from viscosities (ν² divides)",
+            });
+        }
         let damping_time = scene.damping_time();
         if !(damping_time.is_finite() && damping_time >= 0.0) {
             return Err(Error::DerivedOutOfRange {

@@ -43,33 +43,32 @@ pub fn read_csv(name: &str) -> Vec<std::collections::HashMap<String, String>> {
         .collect()
 }
 
-/// The `rime` binary built by `cargo build --release -p rime-tui` (or the debug one), next to
-/// this test executable.
+/// The `rime` binary of this profile, rebuilt once per test run (a no-op when it is fresh), so that
+/// CLI tests never run a stale binary.
 pub fn rime_binary() -> PathBuf {
-    let exe = std::env::current_exe().unwrap_or_default();
-    // target/<profile>/deps/integration-… → target/<profile>/rime
-    let profile_dir = exe
-        .parent()
-        .and_then(|p| p.parent())
-        .map(PathBuf::from)
-        .unwrap_or_default();
-    let candidate = profile_dir.join("rime");
-    if candidate.exists() {
-        return candidate;
-    }
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
-    let status = std::process::Command::new(env!("CARGO"))
-        .args(["build", "-q", "-p", "rime-tui"])
-        .arg(if profile_dir.ends_with("release") {
-            "--release"
-        } else {
-            "--quiet"
+    static BUILT: std::sync::OnceLock<PathBuf> = std::sync::OnceLock::new();
+    BUILT
+        .get_or_init(|| {
+            let exe = std::env::current_exe().unwrap_or_default();
+            // target/<profile>/deps/integration-… → target/<profile>/rime
+            let profile_dir = exe
+                .parent()
+                .and_then(|p| p.parent())
+                .map(PathBuf::from)
+                .unwrap_or_default();
+            let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
+            let mut cmd = std::process::Command::new(env!("CARGO"));
+            cmd.args(["build", "-q", "-p", "rime-tui"])
+                .current_dir(&root);
+            if profile_dir.ends_with("release") {
+                cmd.arg("--release");
+            }
+            let status = cmd.status();
+            assert!(
+                matches!(status, Ok(s) if s.success()),
+                "building rime failed"
+            );
+            profile_dir.join("rime")
         })
-        .current_dir(&root)
-        .status();
-    assert!(
-        matches!(status, Ok(s) if s.success()),
-        "building rime failed"
-    );
-    candidate
+        .clone()
 }

@@ -1,6 +1,10 @@
 //! The one integration-test binary of rime.
 
+mod bad_input;
 mod cli;
 mod cost;
+mod extremes;
+mod fuzz;
 mod physics;
+mod properties;
 mod reference;

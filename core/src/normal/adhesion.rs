@@ -6,6 +6,11 @@
 /// rebound speed of Eq. (15). The threshold is on the rebound speed `g'_{N,v} = ε_{N,v} g` (Eq. 17
 /// prints `g_N`; Eq. 13–16 put it on the rebound). Returns `None` when the grains stick.
 pub fn apply(eps_v: f64, g: f64, g_s: f64) -> Option<f64> {
+    if g_s == 0.0 {
+        // γ = 0: no separation energy to pay, exactly the model without adhesion (even when the
+        // rebound itself is 0, e.g. an abandoned zero-overlap creep, which is overdamped, not stuck).
+        return Some(eps_v);
+    }
     let rebound = eps_v * g;
     if rebound <= g_s {
         return None;
@@ -29,5 +34,6 @@ mod tests {
         assert!((lhs - rhs).abs() < 1e-15 * rhs.abs().max(1e-30) + 1e-20);
         assert_eq!(apply(eps_v, g, eps_v * g), None);
         assert!(apply(1.0, 1.0, 0.0) == Some(1.0));
+        assert_eq!(apply(0.0, 1.0, 0.0), Some(0.0));
     }
 }

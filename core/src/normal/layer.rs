@@ -11,10 +11,17 @@ use crate::scene::ContactEnd;
 /// With `x = d w²` this is `2d ∫₀¹ w dw / (1 − r w³)`, evaluated by its series for small `r` and in
 /// closed form (partial fractions) otherwise.
 pub fn crush_time(d: f64, r: f64) -> f64 {
+    crush_time_with_gap(d, r, 1.0 - r)
+}
+
+/// [`crush_time`] with `gap = 1 − r` supplied by the caller, who can often compute it without
+/// cancellation (`(g − g_s)/g`): one ulp above the threshold `1 − r` rounds to 0 and the time, which
+/// diverges only logarithmically, would come out infinite.
+pub fn crush_time_with_gap(d: f64, r: f64, gap: f64) -> f64 {
     if d == 0.0 {
         return 0.0;
     }
-    if r >= 1.0 {
+    if r >= 1.0 && !(gap > 0.0) {
         return f64::INFINITY;
     }
     let integral = if r <= 0.5 {
@@ -36,7 +43,13 @@ pub fn crush_time(d: f64, r: f64) -> f64 {
                 - s3 * crate::math::atan((2.0 * p + 1.0) / s3))
                 / 3.0
         };
-        (f(a) - f(0.0)) / (a * a)
+        // −ln(1 − a) from the gap: 1 − a³ = (1 − a)(1 + a + a²).
+        let one_minus_a = gap / (1.0 + a + a * a);
+        let s3 = sqrt(3.0);
+        let f_a = (-ln(one_minus_a) + 0.5 * ln(a * a + a + 1.0)
+            - s3 * crate::math::atan((2.0 * a + 1.0) / s3))
+            / 3.0;
+        (f_a - f(0.0)) / (a * a)
     };
     2.0 * d * integral
 }
@@ -154,7 +167,9 @@ pub fn literal(
         atol: [rtol * 1e-3 * sigma_scale * sigma_scale, rtol * 1e-6],
         max_steps: 200_000,
     };
-    let sigma_end = 1e3 * (1.0 + sqrt(delta)) + 1e3 * sqrt(d);
+    // Bounds both clocks: σ up to the layer crossing, then local time (the way out through the
+    // layer takes ~ d / exit speed).
+    let sigma_end = 1e3 * (1.0 + sqrt(delta)) + 1e3 * sqrt(d) + 1e3 * d;
     let mut stepper = Dopri5::new(
         &sys,
         0.0,
@@ -214,7 +229,10 @@ pub fn literal(
                 EXIT if sys.phase != Phase::Bulk || d == 0.0 => {
                     let y = stepper.exact_state(&sys, t);
                     return Ok(LiteralOutcome {
-                        eps: exit_eps.unwrap_or(-y[1]).max(0.0),
+                        // Layer drag and bulk damping only dissipate and the bulk force depends
+                        // on ξ alone: the exact ε lies in [0, 1]; clamping removes integration
+                        // error only.
+                        eps: exit_eps.unwrap_or(-y[1]).clamp(0.0, 1.0),
                         stuck: false,
                         s_c: if sys.sigma_clock { t * t } else { s_offset + t },
                         x_max,
@@ -253,5 +271,12 @@ mod tests {
             assert!((a - b).abs() < 1e-10 * b, "r = {r}: {a} vs {b}");
         }
         assert_eq!(crush_time(1.0, 0.0), 1.0);
+        // One ulp above the threshold: finite, ≈ (2d/3) ln(1/gap) for gap → 0.
+        let gap = f64::EPSILON / 2.0;
+        let t = crush_time_with_gap(1.0, 1.0, gap);
+        assert!(
+            t.is_finite() && t > 2.0 / 3.0 * (1.0 / gap).ln() * 0.9,
+            "{t}"
+        );
     }
 }

@@ -214,10 +214,22 @@ pub fn dimensionless_with_budget(
                     (FORCE_ZERO, ContactEnd::ForceZero) => {
                         // At h = 0, v = −x/(1.5 δ) exactly.
                         let eps = if sys.force_form { y[0] / sys.k } else { -v };
-                        return Ok(done(eps.max(0.0), t * t, x_max, stepper.rhs_evaluations()));
+                        // δ ≥ 0 dissipates: the exact ε lies in [0, 1]; clamping only removes
+                        // integration error (at δ → 0 it could exceed 1 by the tolerance).
+                        return Ok(done(
+                            eps.clamp(0.0, 1.0),
+                            t * t,
+                            x_max,
+                            stepper.rhs_evaluations(),
+                        ));
                     }
                     (OVERLAP_ZERO, ContactEnd::ZeroOverlap) => {
-                        return Ok(done((-v).max(0.0), t * t, x_max, stepper.rhs_evaluations()));
+                        return Ok(done(
+                            (-v).clamp(0.0, 1.0),
+                            t * t,
+                            x_max,
+                            stepper.rhs_evaluations(),
+                        ));
                     }
                     (CREEP, ContactEnd::ZeroOverlap) if x_max > 0.0 => {
                         // The tensile viscous force holds the grains: ε_N < CREEP_FLOOR.
