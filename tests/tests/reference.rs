@@ -124,8 +124,10 @@ fn scenes_match_the_mpmath_reference_at_precise() {
     }
     let mut checked = 0;
     for row in read_csv("scenes.csv") {
-        let mut scene = Scene::default();
-        scene.contact_end = rule(&row["rule"]);
+        let mut scene = Scene {
+            contact_end: rule(&row["rule"]),
+            ..Scene::default()
+        };
         scene.bulk.damping = Damping::Time(num(&row, "A"));
         scene.grains.radius_1 = num(&row, "R");
         scene.grains.radius_2 = num(&row, "R");
