@@ -95,6 +95,49 @@ const D5: f64 = 701980252875.0 / 199316789632.0;
 const D6: f64 = -1453857185.0 / 822651844.0;
 const D7: f64 = 69997945.0 / 29380423.0;
 
+/// The six Dormand–Prince stages from `(t, y)` with `k1 = f(t, y)` and step `h`, ending at `t_end`
+/// (= t + h, or the exact end time on the last step); returns the fifth-order solution and the
+/// stages k2…k6.
+#[inline]
+fn dp5_stages<const N: usize, const M: usize, S: OdeSystem<N, M>>(
+    sys: &S,
+    t: f64,
+    y: &[f64; N],
+    k1: &[f64; N],
+    h: f64,
+    t_end: f64,
+) -> ([f64; N], [[f64; N]; 5]) {
+    let mut k = [[0.0; N]; 5];
+    let mut yt = [0.0; N];
+    for i in 0..N {
+        yt[i] = y[i] + h * A21 * k1[i];
+    }
+    sys.rhs(t + C2 * h, &yt, &mut k[0]);
+    for i in 0..N {
+        yt[i] = y[i] + h * (A31 * k1[i] + A32 * k[0][i]);
+    }
+    sys.rhs(t + C3 * h, &yt, &mut k[1]);
+    for i in 0..N {
+        yt[i] = y[i] + h * (A41 * k1[i] + A42 * k[0][i] + A43 * k[1][i]);
+    }
+    sys.rhs(t + C4 * h, &yt, &mut k[2]);
+    for i in 0..N {
+        yt[i] = y[i] + h * (A51 * k1[i] + A52 * k[0][i] + A53 * k[1][i] + A54 * k[2][i]);
+    }
+    sys.rhs(t + C5 * h, &yt, &mut k[3]);
+    for i in 0..N {
+        yt[i] = y[i]
+            + h * (A61 * k1[i] + A62 * k[0][i] + A63 * k[1][i] + A64 * k[2][i] + A65 * k[3][i]);
+    }
+    sys.rhs(t_end, &yt, &mut k[4]);
+    let mut y_new = [0.0; N];
+    for i in 0..N {
+        y_new[i] = y[i]
+            + h * (A71 * k1[i] + A73 * k[1][i] + A74 * k[2][i] + A75 * k[3][i] + A76 * k[4][i]);
+    }
+    (y_new, k)
+}
+
 /// Tolerances and limits of a [`Dopri5`] run.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Tolerances<const N: usize> {
@@ -241,38 +284,8 @@ impl<const N: usize, const M: usize> Dopri5<N, M> {
         if h == 0.0 || self.h_old == 0.0 {
             return y;
         }
-        let k1 = self.f_old;
-        let (mut k2, mut k3, mut k4, mut k5, mut k6) =
-            ([0.0; N], [0.0; N], [0.0; N], [0.0; N], [0.0; N]);
-        let mut yt = [0.0; N];
-        let t0 = self.t_old;
-        for i in 0..N {
-            yt[i] = y[i] + h * A21 * k1[i];
-        }
-        sys.rhs(t0 + C2 * h, &yt, &mut k2);
-        for i in 0..N {
-            yt[i] = y[i] + h * (A31 * k1[i] + A32 * k2[i]);
-        }
-        sys.rhs(t0 + C3 * h, &yt, &mut k3);
-        for i in 0..N {
-            yt[i] = y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i]);
-        }
-        sys.rhs(t0 + C4 * h, &yt, &mut k4);
-        for i in 0..N {
-            yt[i] = y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i]);
-        }
-        sys.rhs(t0 + C5 * h, &yt, &mut k5);
-        for i in 0..N {
-            yt[i] =
-                y[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i]);
-        }
-        sys.rhs(t, &yt, &mut k6);
+        let (out, _) = dp5_stages(sys, self.t_old, &y, &self.f_old, h, t);
         self.rhs_evaluations += 5;
-        let mut out = [0.0; N];
-        for i in 0..N {
-            out[i] =
-                y[i] + h * (A71 * k1[i] + A73 * k3[i] + A74 * k4[i] + A75 * k5[i] + A76 * k6[i]);
-        }
         out
     }
 
@@ -291,14 +304,7 @@ impl<const N: usize, const M: usize> Dopri5<N, M> {
             self.done = true;
             return Ok(StepOutcome::Done);
         }
-        let mut k2 = [0.0; N];
-        let mut k3 = [0.0; N];
-        let mut k4 = [0.0; N];
-        let mut k5 = [0.0; N];
-        let mut k6 = [0.0; N];
         let mut k7 = [0.0; N];
-        let mut yt = [0.0; N];
-        let mut y_new = [0.0; N];
         let mut rejected = false;
         loop {
             self.attempts += 1;
@@ -321,32 +327,8 @@ impl<const N: usize, const M: usize> Dopri5<N, M> {
                 });
             }
             let (t, y, k1) = (self.t, &self.y, &self.f);
-            for i in 0..N {
-                yt[i] = y[i] + h * A21 * k1[i];
-            }
-            sys.rhs(t + C2 * h, &yt, &mut k2);
-            for i in 0..N {
-                yt[i] = y[i] + h * (A31 * k1[i] + A32 * k2[i]);
-            }
-            sys.rhs(t + C3 * h, &yt, &mut k3);
-            for i in 0..N {
-                yt[i] = y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i]);
-            }
-            sys.rhs(t + C4 * h, &yt, &mut k4);
-            for i in 0..N {
-                yt[i] = y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i]);
-            }
-            sys.rhs(t + C5 * h, &yt, &mut k5);
-            for i in 0..N {
-                yt[i] = y[i]
-                    + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i]);
-            }
             let t_new = if last { self.t_end } else { t + h };
-            sys.rhs(t_new, &yt, &mut k6);
-            for i in 0..N {
-                y_new[i] = y[i]
-                    + h * (A71 * k1[i] + A73 * k3[i] + A74 * k4[i] + A75 * k5[i] + A76 * k6[i]);
-            }
+            let (y_new, [_k2, k3, k4, k5, k6]) = dp5_stages(sys, t, y, k1, h, t_new);
             sys.rhs(t_new, &y_new, &mut k7);
             self.rhs_evaluations += 6;
             let mut sum = 0.0;

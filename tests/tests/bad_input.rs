@@ -24,8 +24,10 @@ const VALID: &str = r#"{"grains":{"radius_1":0.02,"radius_2":0.02,"density":900.
 
 /// Runs `rime args…` and checks the bad-input contract; `field` must appear in the message.
 fn rejects(args: &[&str], field: &str) {
+    // Resolve (and, once per run, rebuild) the binary before starting the hang guard's clock.
+    let binary = rime_binary();
     let t = Instant::now();
-    let out = Command::new(rime_binary()).args(args).output().unwrap();
+    let out = Command::new(binary).args(args).output().unwrap();
     let dt = t.elapsed();
     let err = String::from_utf8_lossy(&out.stderr);
     let shown: Vec<String> = args.iter().map(|a| a.chars().take(80).collect()).collect();
