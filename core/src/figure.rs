@@ -249,6 +249,54 @@ pub mod paper {
         })
     }
 
+    /// A family figure: one curve and one critical-speed marker per variant, then the clean
+    /// surfaces, the Bridges law and the experimental ranges.
+    fn family_figure(
+        clean: &Scene,
+        variants: &[(Scene, String)],
+        accuracy: Accuracy,
+        name: String,
+        title: &str,
+        caption: String,
+    ) -> Result<Figure> {
+        let (x, y) = eps_axes();
+        let mut series = Vec::new();
+        let mut markers = Vec::new();
+        for (k, (scene, label)) in variants.iter().enumerate() {
+            series.push(curve(scene, accuracy, label.clone(), k, false)?);
+            let c = Contact::new(scene)?;
+            let g_s = c
+                .layer
+                .map(|l| l.critical_velocity)
+                .or(c.adhesion.map(|a| a.critical_velocity))
+                .unwrap_or(0.0);
+            markers.push(Marker {
+                x: g_s,
+                label: format!("g_s = {}", speed_label(g_s)),
+                color: k,
+            });
+        }
+        series.push(curve(
+            clean,
+            accuracy,
+            "clean surfaces".to_string(),
+            6,
+            true,
+        )?);
+        series.push(experiments::bridges(1e-4, TO, 7));
+        Ok(Figure {
+            name,
+            title: title.to_string(),
+            caption,
+            x,
+            y,
+            series,
+            markers,
+            bands: experiments::bands(4),
+            map: None,
+        })
+    }
+
     fn with_damping(mut s: Scene, damping: Damping) -> Scene {
         s.bulk.damping = damping;
         s
@@ -272,46 +320,30 @@ pub mod paper {
             ),
         ] {
             let clean = with_damping(base, damping);
-            let (x, y) = eps_axes();
-            let mut series = Vec::new();
-            let mut markers = Vec::new();
-            for (k, eta) in [500.0, 1000.0, 2000.0, 5000.0].into_iter().enumerate() {
-                let s = Scene {
-                    layer: Some(Layer {
+            let variants: Vec<(Scene, String)> = [500.0, 1000.0, 2000.0, 5000.0]
+                .into_iter()
+                .map(|eta| {
+                    let layer = Layer {
                         viscosity: eta,
                         ..Layer::default()
-                    }),
-                    ..clean
-                };
-                series.push(curve(&s, accuracy, format!("η* = {eta} Pa s"), k, false)?);
-                let g_s = Contact::new(&s)?.layer.map_or(0.0, |l| l.critical_velocity);
-                markers.push(Marker {
-                    x: g_s,
-                    label: format!("g_s = {}", speed_label(g_s)),
-                    color: k,
-                });
-            }
-            series.push(curve(
+                    };
+                    let s = Scene {
+                        layer: Some(layer),
+                        ..clean
+                    };
+                    (s, format!("η* = {eta} Pa s"))
+                })
+                .collect();
+            out.push(family_figure(
                 &clean,
+                &variants,
                 accuracy,
-                "clean surfaces".to_string(),
-                6,
-                true,
-            )?);
-            series.push(experiments::bridges(1e-4, TO, 7));
-            out.push(Figure {
-                name: format!("fig2-layer{suffix}"),
-                title: "Fig. 2: soft surface layer, D = 1 µm".to_string(),
-                caption: format!(
+                format!("fig2-layer{suffix}"),
+                "Fig. 2: soft surface layer, D = 1 µm",
+                format!(
                     "ε_N vs g_N for layer viscosities η* = 500…5000 Pa s (offset reading, force-zero end) and clean surfaces. {note} Markers: critical speeds g_s of Eq. (10)."
                 ),
-                x,
-                y,
-                series,
-                markers,
-                bands: experiments::bands(4),
-                map: None,
-            });
+            )?);
         }
         Ok(out)
     }
@@ -319,46 +351,28 @@ pub mod paper {
     /// Fig. 3: ε_N for surface energies γ = 0.05, 0.1, 0.2, 0.5 J/m², plus clean surfaces.
     pub fn fig3(accuracy: Accuracy) -> Result<Vec<Figure>> {
         let clean = Preset::Ice.scene();
-        let (x, y) = eps_axes();
-        let mut series = Vec::new();
-        let mut markers = Vec::new();
-        for (k, gamma) in [0.05, 0.1, 0.2, 0.5].into_iter().enumerate() {
-            let s = Scene {
-                adhesion: Some(Adhesion {
+        let variants: Vec<(Scene, String)> = [0.05, 0.1, 0.2, 0.5]
+            .into_iter()
+            .map(|gamma| {
+                let adhesion = Adhesion {
                     surface_energy: gamma,
                     ..Adhesion::default()
-                }),
-                ..clean
-            };
-            series.push(curve(&s, accuracy, format!("γ = {gamma} J/m²"), k, false)?);
-            let g_s = Contact::new(&s)?
-                .adhesion
-                .map_or(0.0, |a| a.critical_velocity);
-            markers.push(Marker {
-                x: g_s,
-                label: format!("g_s = {}", speed_label(g_s)),
-                color: k,
-            });
-        }
-        series.push(curve(
+                };
+                let s = Scene {
+                    adhesion: Some(adhesion),
+                    ..clean
+                };
+                (s, format!("γ = {gamma} J/m²"))
+            })
+            .collect();
+        Ok(vec![family_figure(
             &clean,
+            &variants,
             accuracy,
-            "clean surfaces".to_string(),
-            6,
-            true,
-        )?);
-        series.push(experiments::bridges(1e-4, TO, 7));
-        Ok(vec![Figure {
-            name: "fig3-adhesion".to_string(),
-            title: "Fig. 3: adhesion".to_string(),
-            caption: "ε_N vs g_N for surface energies γ = 0.05…0.5 J/m² (E as printed) and clean surfaces, A = 1e-4 s. Markers: critical rebound speeds g_s of Eq. (15); the grains stick when the rebound speed without adhesion is below g_s.".to_string(),
-            x,
-            y,
-            series,
-            markers,
-            bands: experiments::bands(4),
-            map: None,
-        }])
+            "fig3-adhesion".to_string(),
+            "Fig. 3: adhesion",
+            "ε_N vs g_N for surface energies γ = 0.05…0.5 J/m² (E as printed) and clean surfaces, A = 1e-4 s. Markers: critical rebound speeds g_s of Eq. (15); the grains stick when the rebound speed without adhesion is below g_s.".to_string(),
+        )?])
     }
 
     /// Fig. 4: stick-map classes over (g_N, g_T) for hard, layered (η* = 1000 Pa s) and adhesive
