@@ -286,15 +286,16 @@ pub fn status_text(s: Status) -> &'static str {
 fn chart(app: &App, frame: &mut Frame, area: Rect) {
     let sweep = app.sweep_def();
     let focus = app.focus == Focus::Chart;
+    let title_name = Span::styled(
+        " ε_N(g_N) ",
+        Style::new().add_modifier(Modifier::BOLD).fg(if focus {
+            Color::White
+        } else {
+            Color::Gray
+        }),
+    );
     let title = Line::from(vec![
-        Span::styled(
-            " ε_N(g_N) ",
-            Style::new().add_modifier(Modifier::BOLD).fg(if focus {
-                Color::White
-            } else {
-                Color::Gray
-            }),
-        ),
+        title_name.clone(),
         Span::styled(
             format!("normal restitution · family over {} ", sweep.symbol),
             Style::new().fg(Color::Gray),
@@ -303,11 +304,10 @@ fn chart(app: &App, frame: &mut Frame, area: Rect) {
     let block = Block::new()
         .borders(Borders::TOP | Borders::BOTTOM)
         .border_style(Style::new().fg(if focus { Color::White } else { Color::DarkGray }))
-        .title(title)
         .title_bottom(chart_readout(app));
     let inner = block.inner(area);
-    frame.render_widget(block, area);
     let Some(data) = app.data.as_ref() else {
+        frame.render_widget(block.title(title), area);
         frame.render_widget(Paragraph::new("computing…"), inner);
         return;
     };
@@ -363,30 +363,32 @@ fn chart(app: &App, frame: &mut Frame, area: Rect) {
         }
     }
     let bands = rime_core::figure::experiments::bands(0);
+    // The experiments' legend: long names where two legend rows hold them, else short ones (the
+    // help names them), else in the chart's title.
+    let mut experiments_in_title = false;
     if app.experiments {
-        // Long names where they fit in two legend rows, else the short ones (the help names them).
         let used: usize = legend.iter().map(|s| s.content.chars().count()).sum();
-        let long = 2 * inner.width as usize >= used + 40;
-        legend.push(Span::styled(
-            if long {
-                "┄\u{a0}Bridges'84 "
-            } else {
-                "┄B84 "
-            },
-            Style::new().fg(Color::Gray),
-        ));
-        for (k, _) in bands.iter().enumerate() {
-            let name = if long {
-                BAND_SHORT[k % 2]
-            } else {
-                BAND_TINY[k % 2]
-            };
-            let gap = if long { "\u{a0}" } else { "" };
-            legend.push(Span::styled(
-                format!("▭{gap}{name} "),
-                Style::new().fg(BAND_COLORS[k % 2]),
-            ));
+        // Word wrapping wastes a few cells per row.
+        let room = (2 * inner.width as usize).saturating_sub(8);
+        let long = used + 40 <= room;
+        if long || used + 16 <= room {
+            legend.extend(experiment_legend(long));
+        } else {
+            experiments_in_title = true;
         }
+    }
+    if experiments_in_title {
+        let mut spans = vec![
+            title_name,
+            Span::styled(
+                format!("· over {} ", sweep.symbol),
+                Style::new().fg(Color::Gray),
+            ),
+        ];
+        spans.extend(experiment_legend(false));
+        frame.render_widget(block.title(Line::from(spans)), area);
+    } else {
+        frame.render_widget(block.title(title), area);
     }
     let legend_w: usize = legend.iter().map(|s| s.content.chars().count()).sum();
     let legend_h = if legend_w > inner.width as usize && inner.height >= 8 {
@@ -509,24 +511,6 @@ fn chart(app: &App, frame: &mut Frame, area: Rect) {
         Vec::new()
     };
     let mut datasets = Vec::new();
-    if !bridges_pts.is_empty() {
-        datasets.push(
-            Dataset::default()
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(Style::new().fg(BRIDGES))
-                .data(&bridges_pts),
-        );
-    }
-    for (pts, color) in &band_pts {
-        datasets.push(
-            Dataset::default()
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(Style::new().fg(*color))
-                .data(pts),
-        );
-    }
     for (k, pts) in family_pts.iter().enumerate() {
         datasets.push(
             Dataset::default()
@@ -542,6 +526,25 @@ fn chart(app: &App, frame: &mut Frame, area: Rect) {
                 .marker(Marker::Braille)
                 .graph_type(GraphType::Line)
                 .style(Style::new().fg(CLEAN))
+                .data(pts),
+        );
+    }
+    // The experiments above the family (else the curves hide them), below this scene's curve.
+    if !bridges_pts.is_empty() {
+        datasets.push(
+            Dataset::default()
+                .marker(Marker::Braille)
+                .graph_type(GraphType::Line)
+                .style(Style::new().fg(BRIDGES))
+                .data(&bridges_pts),
+        );
+    }
+    for (pts, color) in &band_pts {
+        datasets.push(
+            Dataset::default()
+                .marker(Marker::Braille)
+                .graph_type(GraphType::Line)
+                .style(Style::new().fg(*color))
                 .data(pts),
         );
     }
@@ -605,6 +608,27 @@ fn chart(app: &App, frame: &mut Frame, area: Rect) {
             ),
         );
     }
+}
+
+/// Legend entries of the Bridges law and the experiments' boxes (long or short names).
+fn experiment_legend(long: bool) -> Vec<Span<'static>> {
+    let mut out = vec![Span::styled(
+        if long {
+            "┄\u{a0}Bridges'84 "
+        } else {
+            "┄B84 "
+        },
+        Style::new().fg(Color::Gray),
+    )];
+    for k in 0..2 {
+        let name = if long { BAND_SHORT[k] } else { BAND_TINY[k] };
+        let gap = if long { "\u{a0}" } else { "" };
+        out.push(Span::styled(
+            format!("▭{gap}{name} "),
+            Style::new().fg(BAND_COLORS[k]),
+        ));
+    }
+    out
 }
 
 fn chart_readout(app: &App) -> Line<'static> {
@@ -975,15 +999,13 @@ pub const KEYS: &[(&str, &str)] = &[
     ),
     ("x", "export CSV, SVG, PNG + scene JSON to rime-export-*/"),
     ("w / o", "save / open a scene JSON (rime-scene.json)"),
-    ("?", "this help (any key closes)"),
-    ("q  Esc  Ctrl-C", "quit"),
+    ("?  /  q Esc Ctrl-C", "this help (any key closes) / quit"),
 ];
 
 /// Sources of the experimental context and the tidal calculator, shown in the help.
-pub const SOURCES: &str = "┄ B84 Bridges, Hatzes & Lin 1984 (Nature 309, 333): ε = 0.32 (v/1 cm/s)^−0.234 · \
-▭ H10 Heißelmann et al. 2010 (Icarus 206, 424): 6–22 cm/s, ε 0.06–0.84 · \
-▭ H15 Hill et al. 2015 (A&A 575, A6): 0.27–0.51 m/s, ε 0.08–0.65 · \
-t: Hertzsch 2002, appendix (Saturn, Encke division), with the printed numbers";
+pub const SOURCES: &str = "B84 Bridges, Hatzes & Lin 1984, Nature 309: ε = 0.32 (v/1 cm/s)^−0.234 · \
+H10 Heißelmann et al. 2010, Icarus 206: 6–22 cm/s, ε 0.06–0.84 · \
+H15 Hill et al. 2015, A&A 575: 0.27–0.51 m/s, ε 0.08–0.65 · t: Hertzsch 2002, appendix";
 
 fn help(frame: &mut Frame, area: Rect) {
     let w = 78.min(area.width);
@@ -1015,7 +1037,7 @@ fn help(frame: &mut Frame, area: Rect) {
     )));
     frame.render_widget(Clear, r);
     frame.render_widget(
-        Paragraph::new(lines).wrap(Wrap { trim: true }).block(
+        Paragraph::new(lines).wrap(Wrap { trim: false }).block(
             Block::bordered()
                 .title(" rime — keys ")
                 .title_bottom(" any key closes "),
