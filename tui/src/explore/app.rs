@@ -84,7 +84,22 @@ pub struct App {
     pub out_dir: PathBuf,
     /// Compute time to show instead of the measured one (tests use this for stable snapshots).
     pub fixed_elapsed: Option<Duration>,
+    /// Whether the ε_N chart shows the experimental context (Bridges et al. 1984 law and the
+    /// microgravity ice experiments); `b` toggles it.
+    pub experiments: bool,
+    /// Whether the tidal-appendix calculator is shown (`t`).
+    pub tidal: bool,
+    /// Planet distance of the tidal calculator as a multiple of the paper's (Encke division).
+    pub tidal_factor: f64,
+    /// Path being typed after `o` (None when not opening a scene file).
+    pub open: Option<String>,
 }
+
+/// Default file that `o` offers (the one `w` writes).
+pub const SCENE_FILE: &str = "rime-scene.json";
+
+/// Factor by which `<` / `>` change the tidal calculator's planet distance.
+pub const TIDAL_STEP: f64 = 1.05;
 
 impl App {
     /// A new explorer on `scene`; the first computation is queued in [`App::pending`].
@@ -111,6 +126,10 @@ impl App {
             size: (100, 30),
             out_dir: PathBuf::from("."),
             fixed_elapsed: None,
+            experiments: true,
+            tidal: false,
+            tidal_factor: 1.0,
+            open: None,
         };
         app.request();
         app
@@ -336,6 +355,60 @@ impl App {
         }
     }
 
+    fn handle_open_key(&mut self, key: KeyEvent) {
+        let Some(text) = self.open.as_mut() else {
+            return;
+        };
+        match key.code {
+            KeyCode::Esc => {
+                self.open = None;
+                self.info("open cancelled");
+            }
+            KeyCode::Enter => {
+                let text = std::mem::take(text);
+                self.open = None;
+                self.open_scene(text.trim());
+            }
+            KeyCode::Backspace => {
+                text.pop();
+            }
+            KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => {
+                self.quit = true;
+            }
+            KeyCode::Char('u') if key.modifiers.contains(KeyModifiers::CONTROL) => text.clear(),
+            KeyCode::Char(c) => text.push(c),
+            _ => {}
+        }
+    }
+
+    /// Loads a scene JSON file; on error the status line names the problem and the scene is kept.
+    pub fn open_scene(&mut self, path: &str) {
+        if path.is_empty() {
+            self.error("open: no file name given (scene unchanged)");
+            return;
+        }
+        let given = PathBuf::from(path);
+        let path = if given.is_relative() && !given.exists() {
+            self.out_dir.join(&given)
+        } else {
+            given
+        };
+        match scene_io::load_scene(&path) {
+            Ok(next) => {
+                self.scene = next;
+                self.preset = Preset::ALL.iter().position(|p| p.scene() == next);
+                self.fix_sweep();
+                self.request();
+                self.info(format!("opened scene {}", path.display()));
+            }
+            Err(e) => {
+                // load_scene words its errors for the command line (`--scene FILE: …`).
+                let text = e.0.strip_prefix("--scene ").unwrap_or(&e.0).to_string();
+                self.error(format!("open {text} (scene unchanged)"));
+            }
+        }
+    }
+
     fn export(&mut self) {
         let Some(data) = self.data.as_ref().filter(|d| d.scene == self.scene) else {
             self.info("still computing — press x again in a moment");
@@ -368,6 +441,10 @@ impl App {
             self.handle_input_key(key);
             return;
         }
+        if self.open.is_some() {
+            self.handle_open_key(key);
+            return;
+        }
         let shift = key.modifiers.contains(KeyModifiers::SHIFT);
         if key.modifiers.contains(KeyModifiers::CONTROL) {
             if key.code == KeyCode::Char('c') {
@@ -387,6 +464,10 @@ impl App {
         let map_step = (MAP_POINTS / 20).max(1) as i64;
         let map_step = if shift { 1 } else { map_step };
         match (key.code, self.focus) {
+            (KeyCode::Esc, _) if self.tidal => {
+                self.tidal = false;
+                self.info("tidal appendix closed (Esc again quits)");
+            }
             (KeyCode::Char('q') | KeyCode::Esc, _) => self.quit = true,
             (KeyCode::Char('?'), _) => self.help = true,
             (KeyCode::Tab, _) => {
@@ -480,6 +561,39 @@ impl App {
                 self.map_max = None;
                 self.info("stick map range: automatic");
                 self.request();
+            }
+            (KeyCode::Char('b'), _) => {
+                self.experiments = !self.experiments;
+                self.info(if self.experiments {
+                    "experiments shown on the ε_N chart: Bridges et al. 1984, Heißelmann et al. 2010, Hill et al. 2015"
+                } else {
+                    "experiments hidden (b shows them)"
+                });
+            }
+            (KeyCode::Char('t'), _) => {
+                self.tidal = !self.tidal;
+                self.info(if self.tidal {
+                    "tidal appendix for this scene's grains · < > planet distance · t closes"
+                } else {
+                    "tidal appendix closed"
+                });
+            }
+            (KeyCode::Char('<'), _) if self.tidal => {
+                self.tidal_factor = (self.tidal_factor / TIDAL_STEP).clamp(1e-3, 1e3);
+                self.info(format!(
+                    "tidal: planet distance ×{} of the paper's",
+                    super::format::sig(self.tidal_factor, 4)
+                ));
+            }
+            (KeyCode::Char('>'), _) if self.tidal => {
+                self.tidal_factor = (self.tidal_factor * TIDAL_STEP).clamp(1e-3, 1e3);
+                self.info(format!(
+                    "tidal: planet distance ×{} of the paper's",
+                    super::format::sig(self.tidal_factor, 4)
+                ));
+            }
+            (KeyCode::Char('o'), _) => {
+                self.open = Some(SCENE_FILE.to_string());
             }
             (KeyCode::Char('x'), _) => self.export(),
             (KeyCode::Char('w'), _) => self.save(),

@@ -13,6 +13,7 @@ pub mod format;
 pub mod render;
 #[cfg(test)]
 mod tests;
+pub mod tidal;
 
 use app::{App, Event, update};
 use compute::{Request, compute};

@@ -87,6 +87,13 @@ const CURRENT: Color = Color::Yellow;
 const CLEAN: Color = Color::Gray;
 const GS_LAYER: Color = Color::Red;
 const GS_ADHESION: Color = Color::LightRed;
+/// The Bridges et al. (1984) law: a dim line beneath the model's curves.
+const BRIDGES: Color = Color::DarkGray;
+/// The microgravity experiments' boxes (Heißelmann et al. 2010, Hill et al. 2015).
+const BAND_COLORS: [Color; 2] = [Color::Magenta, Color::Indexed(208)];
+/// Short legend names of the bands, in the order of `experiments::bands`.
+const BAND_SHORT: [&str; 2] = ["Heißelmann'10", "Hill'15"];
+const BAND_TINY: [&str; 2] = ["H10", "H15"];
 
 /// Draws the whole screen.
 pub fn render(app: &App, frame: &mut Frame) {
@@ -109,7 +116,7 @@ pub fn render(app: &App, frame: &mut Frame) {
             frame.render_widget(Paragraph::new(message), r);
         }
         None => {
-            let mut line = if app.input.is_some() {
+            let mut line = if app.input.is_some() || app.open.is_some() {
                 Line::default()
             } else {
                 status_line(app, l.status.width)
@@ -120,6 +127,15 @@ pub fn render(app: &App, frame: &mut Frame) {
             line.spans.extend(message.spans);
             frame.render_widget(Paragraph::new(line), l.status);
         }
+    }
+    if app.tidal {
+        let r = Rect::new(
+            l.chart.x,
+            l.chart.y,
+            l.chart.width,
+            l.chart.height + l.map.height,
+        );
+        super::tidal::render(app, frame, r);
     }
     if app.help {
         help(frame, area);
@@ -270,15 +286,16 @@ pub fn status_text(s: Status) -> &'static str {
 fn chart(app: &App, frame: &mut Frame, area: Rect) {
     let sweep = app.sweep_def();
     let focus = app.focus == Focus::Chart;
+    let title_name = Span::styled(
+        " ε_N(g_N) ",
+        Style::new().add_modifier(Modifier::BOLD).fg(if focus {
+            Color::White
+        } else {
+            Color::Gray
+        }),
+    );
     let title = Line::from(vec![
-        Span::styled(
-            " ε_N(g_N) ",
-            Style::new().add_modifier(Modifier::BOLD).fg(if focus {
-                Color::White
-            } else {
-                Color::Gray
-            }),
-        ),
+        title_name.clone(),
         Span::styled(
             format!("normal restitution · family over {} ", sweep.symbol),
             Style::new().fg(Color::Gray),
@@ -287,11 +304,10 @@ fn chart(app: &App, frame: &mut Frame, area: Rect) {
     let block = Block::new()
         .borders(Borders::TOP | Borders::BOTTOM)
         .border_style(Style::new().fg(if focus { Color::White } else { Color::DarkGray }))
-        .title(title)
         .title_bottom(chart_readout(app));
     let inner = block.inner(area);
-    frame.render_widget(block, area);
     let Some(data) = app.data.as_ref() else {
+        frame.render_widget(block.title(title), area);
         frame.render_widget(Paragraph::new("computing…"), inner);
         return;
     };
@@ -346,6 +362,34 @@ fn chart(app: &App, frame: &mut Frame, area: Rect) {
             ));
         }
     }
+    let bands = rime_core::figure::experiments::bands(0);
+    // The experiments' legend: long names where two legend rows hold them, else short ones (the
+    // help names them), else in the chart's title.
+    let mut experiments_in_title = false;
+    if app.experiments {
+        let used: usize = legend.iter().map(|s| s.content.chars().count()).sum();
+        // Word wrapping wastes a few cells per row.
+        let room = (2 * inner.width as usize).saturating_sub(8);
+        let long = used + 40 <= room;
+        if long || used + 16 <= room {
+            legend.extend(experiment_legend(long));
+        } else {
+            experiments_in_title = true;
+        }
+    }
+    if experiments_in_title {
+        let mut spans = vec![
+            title_name,
+            Span::styled(
+                format!("· over {} ", sweep.symbol),
+                Style::new().fg(Color::Gray),
+            ),
+        ];
+        spans.extend(experiment_legend(false));
+        frame.render_widget(block.title(Line::from(spans)), area);
+    } else {
+        frame.render_widget(block.title(title), area);
+    }
     let legend_w: usize = legend.iter().map(|s| s.content.chars().count()).sum();
     let legend_h = if legend_w > inner.width as usize && inner.height >= 8 {
         2
@@ -394,6 +438,12 @@ fn chart(app: &App, frame: &mut Frame, area: Rect) {
             min_eps = min_eps.min(e);
         }
     }
+    if app.experiments {
+        // Keep the experiments' boxes whole on the ε axis.
+        for b in &bands {
+            min_eps = min_eps.min(b.y.0);
+        }
+    }
     let y_floor = if min_eps.is_finite() {
         (min_eps.log10().floor() as i32).clamp(-12, -1)
     } else {
@@ -430,6 +480,36 @@ fn chart(app: &App, frame: &mut Frame, area: Rect) {
         .map(|(g, c)| (vline(g.log10()), c))
         .collect();
     let cursor_pts = data.g.get(app.cursor).map(|g| vline(g.log10()));
+    let y_hi_f = f64::from(y_hi);
+    let clip_y = |e: f64| e.log10().clamp(y_lo_f, y_hi_f);
+    let bridges_pts: Vec<(f64, f64)> = if app.experiments {
+        data.g
+            .iter()
+            .map(|&g| {
+                let e = rime_core::fit::BRIDGES_1984.eval(g).min(1.0);
+                (g.log10(), e.log10())
+            })
+            .filter(|(_, e)| e.is_finite() && *e >= y_lo_f)
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let band_pts: Vec<(Vec<(f64, f64)>, Color)> = if app.experiments {
+        bands
+            .iter()
+            .enumerate()
+            .map(|(k, b)| {
+                let (x0, x1) = (b.x.0.log10(), b.x.1.log10());
+                let (y0, y1) = (clip_y(b.y.0), clip_y(b.y.1));
+                (
+                    vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)],
+                    BAND_COLORS[k % 2],
+                )
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
     let mut datasets = Vec::new();
     for (k, pts) in family_pts.iter().enumerate() {
         datasets.push(
@@ -446,6 +526,25 @@ fn chart(app: &App, frame: &mut Frame, area: Rect) {
                 .marker(Marker::Braille)
                 .graph_type(GraphType::Line)
                 .style(Style::new().fg(CLEAN))
+                .data(pts),
+        );
+    }
+    // The experiments above the family (else the curves hide them), below this scene's curve.
+    if !bridges_pts.is_empty() {
+        datasets.push(
+            Dataset::default()
+                .marker(Marker::Braille)
+                .graph_type(GraphType::Line)
+                .style(Style::new().fg(BRIDGES))
+                .data(&bridges_pts),
+        );
+    }
+    for (pts, color) in &band_pts {
+        datasets.push(
+            Dataset::default()
+                .marker(Marker::Braille)
+                .graph_type(GraphType::Line)
+                .style(Style::new().fg(*color))
                 .data(pts),
         );
     }
@@ -509,6 +608,27 @@ fn chart(app: &App, frame: &mut Frame, area: Rect) {
             ),
         );
     }
+}
+
+/// Legend entries of the Bridges law and the experiments' boxes (long or short names).
+fn experiment_legend(long: bool) -> Vec<Span<'static>> {
+    let mut out = vec![Span::styled(
+        if long {
+            "┄\u{a0}Bridges'84 "
+        } else {
+            "┄B84 "
+        },
+        Style::new().fg(Color::Gray),
+    )];
+    for k in 0..2 {
+        let name = if long { BAND_SHORT[k] } else { BAND_TINY[k] };
+        let gap = if long { "\u{a0}" } else { "" };
+        out.push(Span::styled(
+            format!("▭{gap}{name} "),
+            Style::new().fg(BAND_COLORS[k]),
+        ));
+    }
+    out
 }
 
 fn chart_readout(app: &App) -> Line<'static> {
@@ -812,6 +932,20 @@ fn status_line(app: &App, width: u16) -> Line<'static> {
 }
 
 fn message_line(app: &App) -> Line<'static> {
+    if let Some(text) = &app.open {
+        return Line::from(vec![
+            Span::styled(
+                " open scene file: ",
+                Style::new().fg(Color::Black).bg(Color::Yellow),
+            ),
+            Span::raw(format!(" {text}")),
+            Span::styled("▏", Style::new().fg(Color::Yellow)),
+            Span::styled(
+                "  Enter load · Esc cancel · Ctrl-U clear",
+                Style::new().fg(Color::Gray),
+            ),
+        ]);
+    }
     if let Some(text) = &app.input {
         let p = PARAMETERS.get(app.selected);
         let label = p.map_or("", |p| p.label);
@@ -854,20 +988,30 @@ pub const KEYS: &[(&str, &str)] = &[
     ("p", "next preset"),
     ("a", "next accuracy (fast/balanced/precise)"),
     ("s", "next swept parameter (family of curves)"),
-    ("[ ]  { }", "move the g_N cursor (fine, coarse)"),
+    ("[ ] { }  wheel", "move the g_N cursor (fine, coarse)"),
     ("Tab", "focus: parameters → chart → stick map"),
     ("arrows (map focus)", "move the map cursor"),
     ("+ / - / 0", "stick map range ×2, ÷2, automatic"),
-    ("x", "export CSV + scene JSON to rime-export-*/"),
-    ("w", "save scene to rime-scene.json"),
-    ("mouse wheel", "move the cursor (over the chart)"),
-    ("?", "this help (any key closes)"),
-    ("q  Esc  Ctrl-C", "quit"),
+    ("b", "experiments on the ε_N chart on/off (sources below)"),
+    (
+        "t  (then < >)",
+        "tidal appendix A.1–A.7 (planet distance ÷/×1.05)",
+    ),
+    ("x", "export CSV, SVG, PNG + scene JSON to rime-export-*/"),
+    ("w / o", "save / open a scene JSON (rime-scene.json)"),
+    ("?  /  q Esc Ctrl-C", "this help (any key closes) / quit"),
 ];
 
+/// Sources of the experimental context and the tidal calculator, shown in the help.
+pub const SOURCES: &str = "B84 Bridges, Hatzes & Lin 1984, Nature 309: ε = 0.32 (v/1 cm/s)^−0.234 · \
+H10 Heißelmann et al. 2010, Icarus 206: 6–22 cm/s, ε 0.06–0.84 · \
+H15 Hill et al. 2015, A&A 575: 0.27–0.51 m/s, ε 0.08–0.65 · t: Hertzsch 2002, appendix";
+
 fn help(frame: &mut Frame, area: Rect) {
-    let w = 66.min(area.width);
-    let h = (KEYS.len() as u16 + 4).min(area.height);
+    let w = 78.min(area.width);
+    let inner_w = w.saturating_sub(2).max(1) as usize;
+    let source_rows = SOURCES.chars().count().div_ceil(inner_w) as u16 + 1;
+    let h = (KEYS.len() as u16 + 3 + source_rows).min(area.height);
     let r = Rect::new(
         area.x + (area.width - w) / 2,
         area.y + (area.height - h) / 2,
@@ -887,9 +1031,13 @@ fn help(frame: &mut Frame, area: Rect) {
         "ε_N: normal, ε_T: tangential restitution; speeds in m/s",
         Style::new().fg(Color::Gray),
     )));
+    lines.push(Line::from(Span::styled(
+        SOURCES,
+        Style::new().fg(Color::Gray),
+    )));
     frame.render_widget(Clear, r);
     frame.render_widget(
-        Paragraph::new(lines).block(
+        Paragraph::new(lines).wrap(Wrap { trim: false }).block(
             Block::bordered()
                 .title(" rime — keys ")
                 .title_bottom(" any key closes "),

@@ -350,3 +350,173 @@ fn paper_inconsistent_options_are_flagged() {
         .expect("set");
     assert_eq!(super::render::paper_options(&app).len(), 1);
 }
+
+#[test]
+fn tidal_panel_snapshot() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('t'));
+    assert!(app.tidal);
+    let s = text(&screen(&app, 100, 30));
+    // The paper's example: every quantity with its unit and the printed number beside it.
+    for needle in [
+        "ΔF tide A.1",
+        "3.84e-11 N",
+        "3.142e-3 N",
+        "6.283e-3 N",
+        "6.28e-3 N",
+        "1.341e8 m",
+        "3.077e5 m",
+        "5.43e4 m",
+        "37.72 m",
+        "37.6 m",
+        "adhesion is off",
+    ] {
+        assert!(s.contains(needle), "missing {needle}\n{s}");
+    }
+    insta::assert_snapshot!("tidal_100x30", s);
+    // Further out than the Roche distance: no r_max.
+    update(&mut app, ch('>'));
+    assert!((app.tidal_factor - super::app::TIDAL_STEP).abs() < 1e-12);
+    let s = text(&screen(&app, 100, 30));
+    assert!(s.contains("none: outside the Roche zone"), "{s}");
+    assert!(s.contains("not comparable"));
+    // The scene's adhesion supplies γ.
+    update(&mut app, ch('<'));
+    app.scene = Preset::IceSticky.scene();
+    let view = super::tidal::view(&app);
+    assert!(!view.gamma_from_paper);
+    assert_eq!(
+        view.input.surface_energy,
+        app.scene.adhesion.map_or(0.0, |a| a.surface_energy)
+    );
+    // Esc closes the panel before it quits.
+    update(&mut app, key(KeyCode::Esc));
+    assert!(!app.tidal && !app.quit);
+}
+
+#[test]
+fn tidal_panel_fits_80x24() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('t'));
+    let s = text(&screen(&app, 80, 24));
+    for needle in ["ΔF tide", "r_max A.5", "³ r_max", "t/Esc closes"] {
+        assert!(s.contains(needle), "missing {needle}\n{s}");
+    }
+}
+
+fn tmp_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("rime-tui-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp");
+    dir
+}
+
+fn type_open(app: &mut App, path: &str) {
+    update(app, ch('o'));
+    assert_eq!(app.open.as_deref(), Some(super::app::SCENE_FILE));
+    update(
+        app,
+        Event::Key(KeyEvent::new(KeyCode::Char('u'), KeyModifiers::CONTROL)),
+    );
+    for c in path.chars() {
+        update(app, ch(c));
+    }
+    update(app, key(KeyCode::Enter));
+    assert!(app.open.is_none());
+}
+
+#[test]
+fn open_bad_file_keeps_scene_and_names_the_field() {
+    let dir = tmp_dir("open-bad");
+    let bad = dir.join("bad.json");
+    let mut json: serde_json::Value =
+        serde_json::from_str(&crate::scene_io::scene_json(&Scene::default()).expect("json"))
+            .expect("parse");
+    json["grains"]["density"] = serde_json::json!(-3.0);
+    std::fs::write(&bad, json.to_string()).expect("write");
+    let mut app = app_on(Preset::IceFrost.scene());
+    let before = app.scene;
+    let g = app.generation;
+    type_open(&mut app, &bad.display().to_string());
+    assert_eq!(app.scene, before, "scene kept");
+    assert_eq!(app.generation, g, "nothing recomputed");
+    let (msg, tone) = app.message.clone().expect("message");
+    assert_eq!(tone, Tone::Error);
+    assert!(msg.contains("density"), "{msg}");
+    assert!(msg.contains("scene unchanged"), "{msg}");
+    let s = text(&screen(&app, 100, 30));
+    assert!(s.contains("density"), "error shown in the status line\n{s}");
+    // A missing file is an error too, and Esc cancels typing.
+    type_open(&mut app, &dir.join("nope.json").display().to_string());
+    assert_eq!(app.scene, before);
+    assert_eq!(app.message.as_ref().map(|m| m.1), Some(Tone::Error));
+    update(&mut app, ch('o'));
+    update(&mut app, key(KeyCode::Esc));
+    assert!(app.open.is_none() && !app.quit);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn open_good_file_replaces_scene() {
+    let dir = tmp_dir("open-good");
+    let mut app = app_on(Preset::IceFrost.scene());
+    app.out_dir = dir.clone();
+    update(&mut app, ch('w'));
+    let saved = app.scene;
+    update(&mut app, ch('p'));
+    assert_ne!(app.scene, saved);
+    let g = app.generation;
+    // The default name resolves in the folder `w` writes to.
+    update(&mut app, ch('o'));
+    update(&mut app, key(KeyCode::Enter));
+    assert_eq!(app.scene, saved);
+    assert!(app.generation > g, "recomputation requested");
+    assert_eq!(app.preset, Some(1), "recognised as the frost preset");
+    let (msg, tone) = app.message.clone().expect("message");
+    assert_eq!(tone, Tone::Info, "{msg}");
+    assert!(msg.contains("rime-scene.json"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn toggling_experiments_changes_the_chart() {
+    let mut app = app_on(Scene::default());
+    assert!(app.experiments, "on by default");
+    let on = text(&screen(&app, 100, 30));
+    assert!(on.contains("Bridges'84") && on.contains("Heißelmann'10") && on.contains("Hill'15"));
+    update(&mut app, ch('b'));
+    assert!(!app.experiments);
+    let off = text(&screen(&app, 100, 30));
+    assert!(!off.contains("Bridges"));
+    // Not only the legend: the plotted cells differ too.
+    let plot = |s: &str| -> String {
+        s.lines()
+            .skip(3)
+            .take(10)
+            .map(|l| l.chars().skip(37).collect::<String>())
+            .collect::<Vec<_>>()
+            .join("\n")
+    };
+    assert_ne!(plot(&on), plot(&off));
+    update(&mut app, ch('b'));
+    assert_eq!(plot(&text(&screen(&app, 100, 30))), plot(&on));
+}
+
+#[test]
+fn help_names_new_keys_and_sources() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('?'));
+    let s = text(&screen(&app, 100, 30));
+    for needle in [
+        "tidal appendix",
+        "experiments",
+        "open",
+        "Bridges",
+        "Heißelmann",
+        "Hill",
+    ] {
+        assert!(s.contains(needle), "missing {needle}\n{s}");
+    }
+    // Still whole at 80×24.
+    let s = text(&screen(&app, 80, 24));
+    assert!(s.contains("any key closes") && s.contains("Hill"), "{s}");
+}
