@@ -38,7 +38,7 @@ const FAMILIES = {
 };
 const DEFAULT_VIEW = { accuracy: 'fast', from: 1e-7, to: 10, mapMax: null, experiments: true };
 // Drawing styles of the experimental context (values come from wasm: Explorer.experiments()).
-const BRIDGES_STYLE = { color: '#8a8a8a', width: 1.1, dash: [5, 3], label: 'Bridges et al. 1984' };
+const BRIDGES_STYLE = { color: '#8a8a8a', width: 1.1, dash: [4, 3], label: 'Bridges et al. 1984' };
 const BAND_STYLES = [
   { fill: 'rgba(78,121,167,0.16)', stroke: 'rgba(58,96,140,0.8)', short: 'H10' },
   { fill: 'rgba(225,87,89,0.14)', stroke: 'rgba(180,60,62,0.8)', short: 'H15' },
@@ -445,6 +445,15 @@ function printedDigits(v) {
   return m.replace(/0+$/, '').length || 1;
 }
 
+/** Tidal numbers as the appendix prints them: exponent form outside [0.01, 1000). */
+function fmtTidal(v, digits) {
+  if (!Number.isFinite(v) || v === 0) return fmtNum(v);
+  const a = Math.abs(v);
+  if (a >= 0.01 && a < 1000) return String(Number(v.toPrecision(digits)));
+  const [m, e] = v.toExponential(digits - 1).split('e');
+  return `${Number(m)}e${Number(e)}`;
+}
+
 function parseQuantity(f, text) {
   const m = String(text).trim().match(/^([-+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?)\s*(.*)$/i);
   if (!m) throw new Error(`tidal.${f.key}: not a number ("${text}")`);
@@ -510,16 +519,19 @@ function showTidal(t) {
       mark = ok ? ' ✓' : ' ⚠';
       cls = ok ? 'ok' : 'bad';
     }
-    return el('tr', {},
+    const text = example || always ? (note || '') : '';
+    const tr = el('tr', {},
       el('td', {}, name),
-      el('td', {}, Number.isFinite(v) ? `${fmtNum(v, 4)} ${unit}` : '—'),
-      el('td', { class: cls }, paper === undefined ? '—' : `${fmtNum(paper, 4)} ${unit}${mark}`),
-      el('td', { class: 'note' }, example || always ? (note || '') : ''));
+      el('td', { class: 'num' }, Number.isFinite(v) ? `${fmtTidal(v, 4)} ${unit}` : '—'),
+      el('td', { class: `num ${cls}` }, paper === undefined ? '—' : `${fmtTidal(paper, printedDigits(paper))} ${unit}${mark}`),
+      el('td', { class: 'note' }, text));
+    // On narrow screens the note goes on its own line below (CSS).
+    return text ? [tr, el('tr', { class: 'note-row' }, el('td', { colspan: 3 }, text))] : [tr];
   };
   const rMax = r.r_max ?? NaN;
   $('tidal').replaceChildren(
-    el('tr', {}, el('th', {}, 'quantity'), el('th', {}, 'computed'), el('th', {}, 'paper'), el('th', {}, 'note')),
-    row('ΔF tidal force difference (A.1)', r.delta_f, 'N', q.delta_f),
+    el('tr', {}, el('th', {}, 'quantity'), el('th', {}, 'computed'), el('th', {}, 'paper'), el('th', { class: 'note' }, 'note')),
+    ...[row('ΔF tidal force difference (A.1)', r.delta_f, 'N', q.delta_f),
     row('F_s = πγR_eff, R_eff = r/2 (A.2)', r.surface_force, 'N', q.surface_force, 'the printed 6.28e-3 N is πγr, twice Eq. A.2'),
     row('πγr (what the paper prints as F_s)', r.surface_force_paper, 'N', q.surface_force),
     row('F_g mutual gravity (A.3)', r.gravity, 'N', undefined, 'not printed', true),
@@ -528,7 +540,7 @@ function showTidal(t) {
     r.r_max === null
       ? row('r_max (A.5)', rMax, 'm', q.r_max, 'none: at or outside d_Roche self-gravity holds grains of any size', true)
       : row('r_max (A.5)', rMax, 'm', q.r_max, 'A.5 gives 37.72 m vs printed 37.6 m (0.3 %); r_max moves −27× any relative change of 4M/d³'),
-  );
+  ].flat());
 }
 
 // ---------- hover ----------

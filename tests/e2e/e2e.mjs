@@ -273,11 +273,11 @@ try {
     const roche = await rowText('d_Roche');
     assert((roche.match(/1\.341e8 m/g) || []).length === 2 && /✓/.test(roche), `d_Roche row: ${roche}`);
     const dmin = await rowText('d_min');
-    assert(/3\.07\de5 m/.test(dmin) && /54300 m ⚠/.test(dmin), `d_min row: ${dmin}`);
+    assert(/3\.077e5 m/.test(dmin) && /5\.43e4 m ⚠/.test(dmin), `d_min row: ${dmin}`);
     const rmax = await rowText('r_max');
     assert(/37\.72 m/.test(rmax) && /⚠/.test(rmax), `r_max row: ${rmax}`);
     const fs2 = await rowText('πγr (what');
-    assert(/0\.006283 N/.test(fs2) && /✓/.test(fs2), `πγr row: ${fs2}`);
+    assert(/6\.283e-3 N/.test(fs2) && /6\.28e-3 N ✓/.test(fs2) && /✓/.test(fs2), `πγr row: ${fs2}`);
     const dist = page.locator('#t-distance');
     const err = page.locator('.tparam[data-field="distance"] .err');
     let lastErr = '';
