@@ -36,7 +36,23 @@ const FAMILIES = {
   adhesion: { path: 'adhesion.surface_energy', values: [0.05, 0.1, 0.2, 0.5], sym: 'γ', unit: 'J/m²' },
   damping: { path: 'bulk.damping.time', values: null, sym: 'A', unit: 's' },
 };
-const DEFAULT_VIEW = { accuracy: 'fast', from: 1e-7, to: 10, mapMax: null };
+const DEFAULT_VIEW = { accuracy: 'fast', from: 1e-7, to: 10, mapMax: null, experiments: true };
+// Drawing styles of the experimental context (values come from wasm: Explorer.experiments()).
+const BRIDGES_STYLE = { color: '#8a8a8a', width: 1.1, dash: [4, 3], label: 'Bridges et al. 1984' };
+const BAND_STYLES = [
+  { fill: 'rgba(78,121,167,0.16)', stroke: 'rgba(58,96,140,0.8)', short: 'H10' },
+  { fill: 'rgba(225,87,89,0.14)', stroke: 'rgba(180,60,62,0.8)', short: 'H15' },
+];
+// The tidal calculator's fields: accepted units (factor to SI) and the first one shown.
+const TIDAL_FIELDS = [
+  { key: 'planet_mass', label: 'planet mass M', units: { kg: 1, t: 1e3 } },
+  { key: 'distance', label: 'distance d', units: { m: 1, km: 1e3 } },
+  { key: 'radius', label: 'grain radius r', units: { m: 1, cm: 1e-2, mm: 1e-3, 'µm': 1e-6, um: 1e-6 } },
+  { key: 'density', label: 'density ρ', units: { 'kg/m³': 1, 'kg/m3': 1, 'g/cm³': 1e3, 'g/cm3': 1e3 } },
+  { key: 'surface_energy', label: 'surface energy γ', units: { 'J/m²': 1, 'J/m2': 1, 'mJ/m²': 1e-3, 'mJ/m2': 1e-3 } },
+];
+// The inputs of the paper's appendix example (its printed numbers are for these).
+const PAPER_TIDAL_INPUT = { planet_mass: 5.688e26, distance: 1.336e8, radius: 0.02, density: 900, surface_energy: 0.1 };
 const CURVE_POINTS = 240;
 const MAP_N = 120;
 
@@ -54,6 +70,9 @@ const app = {
   timings: [],
   totals: [],
   pending: false,
+  experiments: null, // {bridges: {a, b, g0, label}, bands: [{x, y, label}]}
+  tidalIn: null, // null: the paper's example with the scene's grains; else the typed TidalInput
+  tidalRows: new Map(),
 };
 
 // Exposed for tests and curious users.
@@ -210,6 +229,8 @@ function syncControls() {
   $('accuracy').value = app.view.accuracy;
   $('view-from').value = fmtNum(app.view.from, 6);
   $('view-to').value = fmtNum(app.view.to, 6);
+  $('view-experiments').checked = app.view.experiments;
+  $('chart-sources').hidden = !app.view.experiments;
   $('view-mapmax').value = app.view.mapMax === null ? '' : fmtNum(app.view.mapMax, 6);
 }
 
@@ -258,7 +279,7 @@ function compute() {
     const codes = ex.stickMap(mapMax, MAP_N, accuracy);
     map = { n: MAP_N, max: mapMax, codes, epsT: ex.mapEpsT(), epsN: ex.mapEpsN(), g: ex.mapSpeeds() };
   }
-  const tidal = JSON.parse(ex.tidal(''));
+  const tidal = JSON.parse(ex.tidal(app.tidalIn ? JSON.stringify(app.tidalIn) : ''));
   return { g, eps, status, clean, family, crit, warnings, map, mapMax, tidal, accuracy };
 }
 
@@ -296,6 +317,8 @@ function update() {
     critical: res.crit,
     warnings: res.warnings,
     mapClasses: res.map ? Array.from(res.map.codes) : null,
+    overlay: experimentOverlay(),
+    tidal: res.tidal,
     computeMs: [...app.timings],
     totalMs: [...app.totals],
     updates: (s.updates || 0) + 1,
@@ -305,8 +328,32 @@ function update() {
 
 // ---------- drawing ----------
 
+/** The Bridges et al. (1984) law ε = a (g/g0)^b, clipped at 1. */
+function bridgesAt(g) {
+  const b = app.experiments.bridges;
+  return Math.min(1, b.a * (g / b.g0) ** b.b);
+}
+
+/** The experimental context drawn on the chart (null when switched off): the Bridges line over the
+ *  view (with 1 cm/s itself as a point when in view) and the experiments' boxes. */
+function experimentOverlay() {
+  if (!app.view.experiments || !app.experiments) return null;
+  const { from, to } = app.view;
+  const n = 120;
+  const x = [];
+  for (let i = 0; i < n; i++) x.push(10 ** (Math.log10(from) + (i / (n - 1)) * (Math.log10(to) - Math.log10(from))));
+  const g0 = app.experiments.bridges.g0;
+  if (g0 > from && g0 < to && !x.includes(g0)) { x.push(g0); x.sort((a, b) => a - b); }
+  return {
+    bridges: { ...app.experiments.bridges, x, y: x.map(bridgesAt), at1cm: bridgesAt(0.01) },
+    bands: app.experiments.bands.map((b, k) => ({ ...b, ...BAND_STYLES[k % BAND_STYLES.length] })),
+  };
+}
+
 function chartSpec(res, hover) {
   const series = [];
+  const overlay = experimentOverlay();
+  if (overlay) series.push({ x: overlay.bridges.x, y: overlay.bridges.y, ...BRIDGES_STYLE });
   if (res.family) {
     res.family.values.forEach((v, k) => series.push({
       x: res.g, y: res.family.curves[k], color: SERIES_COLORS[k % SERIES_COLORS.length], width: 1.3,
@@ -330,7 +377,7 @@ function chartSpec(res, hover) {
   }
   return {
     xMin: app.view.from, xMax: app.view.to, yMin: yMin2, yMax: 10 ** Math.ceil(Math.log10(maxY) - 1e-12) || 1,
-    xLabel: 'impact speed g_N [m/s]', yLabel: 'ε_N', series, markers, hover,
+    xLabel: 'impact speed g_N [m/s]', yLabel: 'ε_N', series, markers, hover, bands: overlay ? overlay.bands : [],
   };
 }
 
@@ -392,18 +439,108 @@ function showWarnings(res) {
   $('warnings').replaceChildren(...items);
 }
 
+/** Significant digits of a printed number (3.84e-11 → 3, 1.341e8 → 4). */
+function printedDigits(v) {
+  const m = v.toExponential().split('e')[0].replace('.', '').replace('-', '');
+  return m.replace(/0+$/, '').length || 1;
+}
+
+/** Tidal numbers as the appendix prints them: exponent form outside [0.01, 1000). */
+function fmtTidal(v, digits) {
+  if (!Number.isFinite(v) || v === 0) return fmtNum(v);
+  const a = Math.abs(v);
+  if (a >= 0.01 && a < 1000) return String(Number(v.toPrecision(digits)));
+  const [m, e] = v.toExponential(digits - 1).split('e');
+  return `${Number(m)}e${Number(e)}`;
+}
+
+function parseQuantity(f, text) {
+  const m = String(text).trim().match(/^([-+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?)\s*(.*)$/i);
+  if (!m) throw new Error(`tidal.${f.key}: not a number ("${text}")`);
+  const unit = m[2].trim();
+  const factor = unit === '' ? 1 : f.units[unit];
+  if (factor === undefined) throw new Error(`tidal.${f.key}: unknown unit "${unit}" (use ${Object.keys(f.units).join(', ')})`);
+  const v = Number(m[1]) * factor;
+  if (!Number.isFinite(v)) throw new Error(`tidal.${f.key}: not a finite number ("${text}")`);
+  return v;
+}
+
+function buildTidal() {
+  const box = $('tidal-inputs');
+  for (const f of TIDAL_FIELDS) {
+    const id = `t-${f.key}`;
+    const typed = el('input', { type: 'text', id, inputmode: 'decimal', spellcheck: 'false', autocomplete: 'off', 'data-field': f.key });
+    const err = el('span', { class: 'err' });
+    const root = el('div', { class: 'tparam', 'data-field': f.key },
+      el('label', { for: id }, f.label),
+      el('span', { class: 'typed' }, typed, el('span', { class: 'unit' }, Object.keys(f.units)[0])),
+      err);
+    const commit = () => {
+      const text = typed.value.trim();
+      if (text === '' || !app.res) return;
+      try {
+        const cand = { ...app.res.tidal.input, [f.key]: parseQuantity(f, text) };
+        app.ex.tidal(JSON.stringify(cand)); // validates; throws naming the field
+        app.tidalIn = cand;
+        err.textContent = '';
+        root.classList.remove('invalid');
+        schedule();
+      } catch (e) {
+        let msg = String(e.message || e);
+        if (!msg.includes(f.key)) msg = `tidal.${f.key}: ${msg}`;
+        err.textContent = msg;
+        root.classList.add('invalid');
+      }
+    };
+    typed.addEventListener('change', commit);
+    typed.addEventListener('keydown', (e) => { if (e.key === 'Enter') commit(); });
+    box.append(root);
+    app.tidalRows.set(f.key, { f, root, typed, err });
+  }
+  $('tidal-reset').addEventListener('click', () => {
+    app.tidalIn = null;
+    for (const row of app.tidalRows.values()) { row.err.textContent = ''; row.root.classList.remove('invalid'); }
+    schedule();
+  });
+}
+
 function showTidal(t) {
-  const r = t.result, q = t.paper;
-  const row = (name, v, unit, paper) => el('tr', {}, el('td', {}, name), el('td', {}, `${fmtNum(v, 4)} ${unit}`), el('td', {}, paper === undefined ? '' : `${fmtNum(paper, 3)}`));
+  const r = t.result, q = t.paper, inp = t.input;
+  for (const row of app.tidalRows.values()) {
+    if (document.activeElement !== row.typed && !row.root.classList.contains('invalid')) row.typed.value = fmtNum(inp[row.f.key], 6);
+  }
+  $('tidal-source').textContent = app.tidalIn ? '(typed values)' : '(following the scene)';
+  const example = Object.keys(PAPER_TIDAL_INPUT).every((k) => inp[k] === PAPER_TIDAL_INPUT[k]);
+  // Notes on the paper's numbers apply to its example only; `always` notes to any input.
+  const row = (name, v, unit, paper, note, always = false) => {
+    let mark = '', cls = '';
+    if (paper !== undefined && example) {
+      const ok = Number(v.toPrecision(printedDigits(paper))) === paper;
+      mark = ok ? ' ✓' : ' ⚠';
+      cls = ok ? 'ok' : 'bad';
+    }
+    const text = example || always ? (note || '') : '';
+    const tr = el('tr', {},
+      el('td', {}, name),
+      el('td', { class: 'num' }, Number.isFinite(v) ? `${fmtTidal(v, 4)} ${unit}` : '—'),
+      el('td', { class: `num ${cls}` }, paper === undefined ? '—' : `${fmtTidal(paper, printedDigits(paper))} ${unit}${mark}`),
+      el('td', { class: 'note' }, text));
+    // On narrow screens the note goes on its own line below (CSS).
+    return text ? [tr, el('tr', { class: 'note-row' }, el('td', { colspan: 3 }, text))] : [tr];
+  };
+  const rMax = r.r_max ?? NaN;
   $('tidal').replaceChildren(
-    el('tr', {}, el('th', {}, 'quantity'), el('th', {}, 'computed'), el('th', {}, 'paper')),
-    row('ΔF tidal force difference (A.1)', r.delta_f, 'N', q.delta_f),
-    row('F_s = πγR_eff (A.2)', r.surface_force, 'N', q.surface_force),
-    row('F_g mutual gravity (A.3)', r.gravity, 'N'),
+    el('tr', {}, el('th', {}, 'quantity'), el('th', {}, 'computed'), el('th', {}, 'paper'), el('th', { class: 'note' }, 'note')),
+    ...[row('ΔF tidal force difference (A.1)', r.delta_f, 'N', q.delta_f),
+    row('F_s = πγR_eff, R_eff = r/2 (A.2)', r.surface_force, 'N', q.surface_force, 'the printed 6.28e-3 N is πγr, twice Eq. A.2'),
+    row('πγr (what the paper prints as F_s)', r.surface_force_paper, 'N', q.surface_force),
+    row('F_g mutual gravity (A.3)', r.gravity, 'N', undefined, 'not printed', true),
     row('d_Roche (A.7)', r.d_roche, 'm', q.d_roche),
-    row('d_min (A.6)', r.d_min, 'm', q.d_min),
-    row('r_max (A.5)', r.r_max ?? NaN, 'm', q.r_max),
-  );
+    row('d_min (A.6)', r.d_min, 'm', q.d_min, 'printed 5.43e4 m is not reproduced: A.6 (both printed forms) gives 3.08e5 m, also inside the planet'),
+    r.r_max === null
+      ? row('r_max (A.5)', rMax, 'm', q.r_max, 'none: at or outside d_Roche self-gravity holds grains of any size', true)
+      : row('r_max (A.5)', rMax, 'm', q.r_max, 'A.5 gives 37.72 m vs printed 37.6 m (0.3 %); r_max moves −27× any relative change of 4M/d³'),
+  ].flat());
 }
 
 // ---------- hover ----------
@@ -469,6 +606,10 @@ function readView(obj) {
   if (obj.to !== undefined) v.to = parseSpeed(obj.to);
   if (!(v.from < v.to)) throw new Error('view: from must be below to');
   if (obj.mapMax !== undefined && obj.mapMax !== null) v.mapMax = parseSpeed(obj.mapMax);
+  if (obj.experiments !== undefined) {
+    if (typeof obj.experiments !== 'boolean') throw new Error('view.experiments: true or false');
+    v.experiments = obj.experiments;
+  }
   return v;
 }
 
@@ -505,8 +646,8 @@ function showNotice(msg) {
 
 // ---------- downloads ----------
 
-function download(name, type, text) {
-  const url = URL.createObjectURL(new Blob([text], { type }));
+function download(name, type, data) {
+  const url = URL.createObjectURL(data instanceof Blob ? data : new Blob([data], { type }));
   const a = el('a', { href: url, download: name });
   document.body.append(a);
   a.click();
@@ -537,9 +678,10 @@ function mapCsv(m) {
   return lines.join('\n') + '\n';
 }
 
-function mapSvg(m) {
+/** The stick map with its legend on painter `make(width, height)`. */
+function mapFigure(m, make) {
   const legendH = 18 * app.classes.length + 10;
-  const p = new SvgPainter(560, 560 + legendH);
+  const p = make(560, 560 + legendH);
   const geom = drawMap(p, { n: m.n, codes: m.codes, max: m.max, colors: CLASS_COLORS, hover: null });
   app.classes.forEach((c, k) => {
     const y = geom.box.b + 50 + k * 18;
@@ -547,7 +689,30 @@ function mapSvg(m) {
     p.text(76, y, c.description, { size: 11 });
   });
   p.height = geom.box.b + 50 + legendH;
-  return p.svg();
+  return p;
+}
+
+function mapSvg(m) {
+  return mapFigure(m, (w, h) => new SvgPainter(w, h)).svg();
+}
+
+/** A PNG (Blob) of a figure drawn at a fixed size and 2× resolution on a detached canvas. */
+function pngOf(drawFig) {
+  const canvas = document.createElement('canvas');
+  return new Promise((resolve, reject) => {
+    try {
+      drawFig(canvas);
+      canvas.toBlob((b) => (b ? resolve(b) : reject(new Error('PNG encoding failed'))), 'image/png');
+    } catch (e) { reject(e); }
+  });
+}
+
+function chartPng() {
+  return pngOf((c) => drawChart(new CanvasPainter(c, 720, 460, 2), chartSpec(app.res, null)));
+}
+
+function mapPng() {
+  return pngOf((c) => mapFigure(app.res.map, (w, h) => new CanvasPainter(c, w, h, 2)));
 }
 
 function wireDownloads() {
@@ -560,6 +725,10 @@ function wireDownloads() {
     download('rime-chart.svg', 'image/svg+xml', p.svg());
   });
   $('dl-map-svg').addEventListener('click', () => app.res && app.res.map && download('rime-map.svg', 'image/svg+xml', mapSvg(app.res.map)));
+  const png = (name, make) => make().then((b) => download(name, 'image/png', b))
+    .catch((e) => { window.rimeState.errors.push(String(e.message || e)); });
+  $('dl-chart-png').addEventListener('click', () => app.res && png('rime-chart.png', chartPng));
+  $('dl-map-png').addEventListener('click', () => app.res && app.res.map && png('rime-map.png', mapPng));
   $('dl-scene').addEventListener('click', () => download('rime-scene.json', 'application/json', JSON.stringify(JSON.parse(app.ex.toJson()), null, 2) + '\n'));
   $('copy-link').addEventListener('click', async () => {
     try {
@@ -577,6 +746,7 @@ window.rimeExports = {
   mapSvg: () => app.res.map && mapSvg(app.res.map),
   curvesCsv: () => curvesCsv(app.res),
   mapCsv: () => app.res.map && mapCsv(app.res.map),
+  bridgesAt: (g) => bridgesAt(g),
   probe: (g) => JSON.parse(app.ex.normal(g, app.view.accuracy)),
 };
 
@@ -594,6 +764,7 @@ function wireView() {
       schedule();
     } catch (e) { $('view-err').textContent = e.message; }
   };
+  $('view-experiments').addEventListener('change', () => { app.view.experiments = $('view-experiments').checked; schedule(); });
   $('view-from').addEventListener('change', range);
   $('view-to').addEventListener('change', range);
   $('view-mapmax').addEventListener('change', () => {
@@ -643,7 +814,9 @@ async function main() {
   const presets = JSON.parse(Explorer.presets());
   $('preset').replaceChildren(el('option', { value: '' }, '— choose —'),
     ...presets.map((p) => el('option', { value: p.name, title: p.description }, p.name)));
+  app.experiments = JSON.parse(Explorer.experiments());
   buildControls();
+  buildTidal();
   wireView();
   wireDownloads();
   showNotice(loadHash());

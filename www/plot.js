@@ -62,8 +62,9 @@ export function niceTicks(lo, hi, count) {
 }
 
 export class CanvasPainter {
-  constructor(canvas, width, height) {
-    const dpr = window.devicePixelRatio || 1;
+  /** `scale`: device pixels per CSS pixel (the screen's by default; 2 for PNG exports). */
+  constructor(canvas, width, height, scale = window.devicePixelRatio || 1) {
+    const dpr = scale;
     canvas.width = Math.round(width * dpr);
     canvas.height = Math.round(height * dpr);
     canvas.style.height = `${height}px`;
@@ -198,12 +199,13 @@ function legendLayout(entries, x0, width) {
 /**
  * The ε_N(g_N) chart on log–log axes.
  * spec: {xMin, xMax, yMin, yMax (decades as numbers), xLabel, yLabel, series: [{x, y, color, width, dash, label}],
- *        markers: [{x, label}], hover: {x, y} | null}
+ *        bands: [{x: [lo, hi], y: [lo, hi], fill, stroke, label, short}], markers: [{x, label}], hover: {x, y} | null}
  * Returns the plot box and the coordinate transforms (for hover).
  */
 export function drawChart(p, spec) {
   const { width: W, height: H } = p;
   const entries = spec.series.filter((s) => s.label).map((s) => ({ label: s.label, color: s.color, dash: s.dash, width: s.width }));
+  for (const b of spec.bands || []) entries.push({ label: b.label, color: b.stroke, fill: b.fill, box: true });
   const rows = legendLayout(entries, 60, W - 72);
   const box = { l: 60, r: W - 12, t: 10 + rows.length * 16 + 6, b: H - 42 };
   const lx = [Math.log10(spec.xMin), Math.log10(spec.xMax)];
@@ -216,7 +218,8 @@ export function drawChart(p, spec) {
   // Legend.
   rows.forEach((row, r) => row.forEach((e) => {
     const y = 10 + r * 16 + 6;
-    p.line([[e.x, y], [e.x + 22, y]], { color: e.color, width: Math.max(1.5, e.width || 1.5), dash: e.dash });
+    if (e.box) p.rect(e.x + 4, y - 5, 14, 10, { fill: e.fill, stroke: e.color });
+    else p.line([[e.x, y], [e.x + 22, y]], { color: e.color, width: Math.max(1.5, e.width || 1.5), dash: e.dash });
     p.text(e.x + 26, y + 4, e.label, { size: 11 });
   }));
   // Grid and ticks.
@@ -247,6 +250,12 @@ export function drawChart(p, spec) {
   p.text(16, (box.t + box.b) / 2, spec.yLabel, { size: 12, align: 'center', rotate: -Math.PI / 2 });
 
   p.clip(box.l, box.t, box.r - box.l, box.b - box.t, () => {
+    // Experimental ranges (translucent boxes, under everything else).
+    for (const b of spec.bands || []) {
+      const x0 = X(b.x[0]), x1 = X(b.x[1]), y0 = Y(b.y[1]), y1 = Y(b.y[0]);
+      p.rect(x0, y0, x1 - x0, y1 - y0, { fill: b.fill, stroke: b.stroke });
+      if (x1 - x0 > 18) p.text(x0 + 3, y0 + 12, b.short || '', { size: 10, color: b.stroke });
+    }
     // Critical-velocity markers.
     (spec.markers || []).forEach((m, i) => {
       if (!(m.x > spec.xMin && m.x < spec.xMax)) return;

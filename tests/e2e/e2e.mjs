@@ -232,6 +232,101 @@ try {
     return `${d.curves.length - 1} curve rows, ${d.mapLines - 1} map rows`;
   });
 
+  await check('experimental context: Bridges line drawn (0.32 at 1 cm/s, clipped at 1), experiment boxes, toggle', async () => {
+    const s = await page.evaluate(() => window.rimeState);
+    assert(s.overlay && s.overlay.bridges, 'no Bridges overlay in rimeState');
+    const b = s.overlay.bridges;
+    const k = b.x.indexOf(0.01);
+    assert(k >= 0, 'the Bridges line has no point at 1 cm/s');
+    assert(Math.abs(b.y[k] - 0.32) < 1e-12 && Math.abs(b.at1cm - 0.32) < 1e-12, `Bridges at 1 cm/s: ${b.y[k]}`);
+    assert(b.y.every((v) => v <= 1) && b.y[0] === 1, 'Bridges line not clipped at 1');
+    const at1 = await page.evaluate(() => window.rimeExports.bridgesAt(1));
+    assert(Math.abs(at1 - 0.32 * 100 ** -0.234) < 1e-12, `Bridges at 1 m/s: ${at1}`);
+    const bands = s.overlay.bands;
+    assert(bands.length === 2 && /Heißelmann/.test(bands[0].label) && /Hill/.test(bands[1].label), 'experiment boxes missing');
+    assert(bands[0].x[0] === 0.06 && bands[0].x[1] === 0.22 && bands[1].y[0] === 0.08 && bands[1].y[1] === 0.65, 'box ranges wrong');
+    const svg = await page.evaluate(() => window.rimeExports.chartSvg());
+    assert(/stroke="#8a8a8a"[^>]*stroke-dasharray/.test(svg), 'no grey dashed Bridges path in the chart SVG');
+    assert(/Heißelmann et al\. 2010/.test(svg) && /Hill et al\. 2015/.test(svg), 'experiment sources missing from the chart legend');
+    const caption = await page.locator('#chart-sources').textContent();
+    assert(/Bridges/.test(caption) && /Heißelmann/.test(caption) && /Hill/.test(caption), 'caption lacks the sources');
+    const inkOn = await inked(page, 'chart');
+    let u = await updates(page);
+    await page.uncheck('#view-experiments');
+    await waitUpdate(page, u);
+    const off = await page.evaluate(() => ({ overlay: window.rimeState.overlay, svg: window.rimeExports.chartSvg(), view: window.rimeState.view }));
+    const inkOff = await inked(page, 'chart');
+    const captionHidden = await page.locator('#chart-sources').isHidden();
+    u = await updates(page);
+    await page.check('#view-experiments');
+    await waitUpdate(page, u);
+    assert(off.overlay === null && !/#8a8a8a/.test(off.svg) && off.view.experiments === false, 'overlay not removed when unchecked');
+    assert(captionHidden, 'caption shown while the overlay is off');
+    assert(inkOn > inkOff + 500, `overlay adds little ink (${inkOn} on, ${inkOff} off)`);
+    return `ε(1 cm/s) = ${b.y[k]}, ${b.x.length} points, ${inkOn - inkOff} pixels of overlay`;
+  });
+
+  await check('tidal calculator: defaults reproduce d_Roche 1.341e8 m; invalid distance named, value kept; typed values apply', async () => {
+    const t0 = await page.evaluate(() => window.rimeState.tidal);
+    assert(relErr(t0.result.d_roche, 1.341e8) < 5e-4, `d_Roche ${t0.result.d_roche}`);
+    const rowText = async (name) => page.locator('#tidal tr', { hasText: name }).first().innerText();
+    const roche = await rowText('d_Roche');
+    assert((roche.match(/1\.341e8 m/g) || []).length === 2 && /✓/.test(roche), `d_Roche row: ${roche}`);
+    const dmin = await rowText('d_min');
+    assert(/3\.077e5 m/.test(dmin) && /5\.43e4 m ⚠/.test(dmin), `d_min row: ${dmin}`);
+    const rmax = await rowText('r_max');
+    assert(/37\.72 m/.test(rmax) && /⚠/.test(rmax), `r_max row: ${rmax}`);
+    const fs2 = await rowText('πγr (what');
+    assert(/6\.283e-3 N/.test(fs2) && /6\.28e-3 N ✓/.test(fs2) && /✓/.test(fs2), `πγr row: ${fs2}`);
+    const dist = page.locator('#t-distance');
+    const err = page.locator('.tparam[data-field="distance"] .err');
+    let lastErr = '';
+    for (const bad of ['-5 m', 'far', '3 parsecs']) {
+      await dist.fill(bad);
+      await dist.press('Enter');
+      const e = await err.textContent();
+      assert(/distance/.test(e), `no error naming the distance for "${bad}": "${e}"`);
+      if (bad === '-5 m') lastErr = e;
+      assert((await dist.inputValue()) === bad, 'typed text not kept');
+    }
+    await page.waitForTimeout(100);
+    const t1 = await page.evaluate(() => window.rimeState.tidal);
+    assert(t1.input.distance === t0.input.distance && t1.result.d_min === t0.result.d_min, 'distance changed after invalid input');
+    const u = await updates(page);
+    await dist.fill('1.5e5 km');
+    await dist.press('Enter');
+    await waitUpdate(page, u);
+    const t2 = await page.evaluate(() => window.rimeState.tidal);
+    assert(t2.input.distance === 1.5e8 && t2.result.r_max === null, `typed distance not applied: ${JSON.stringify(t2.input)}`);
+    assert((await err.textContent()) === '', 'error not cleared');
+    const u2 = await updates(page);
+    await page.click('#tidal-reset');
+    await waitUpdate(page, u2);
+    const t3 = await page.evaluate(() => window.rimeState.tidal);
+    assert(t3.input.distance === t0.input.distance, 'reset did not restore the example');
+    return `d_Roche ${t0.result.d_roche.toPrecision(5)} m; "-5 m" → "${lastErr}", d kept at ${t1.input.distance} m`;
+  });
+
+  await check('PNG downloads of the chart and the stick map are valid PNGs', async () => {
+    const out = [];
+    for (const [id, name] of [['#dl-chart-png', 'www-e2e-chart.png'], ['#dl-map-png', 'www-e2e-map.png']]) {
+      const dl = page.waitForEvent('download');
+      await page.click(id);
+      const file = await dl;
+      const saved = path.join(outDir, name);
+      await file.saveAs(saved);
+      const buf = fs.readFileSync(saved);
+      const magic = [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a];
+      assert(buf.length > 2000 && magic.every((v, i) => buf[i] === v), `${name}: not a PNG (${buf.length} bytes)`);
+      assert(buf.toString('latin1', 12, 16) === 'IHDR', `${name}: no IHDR chunk`);
+      const w = buf.readUInt32BE(16), h = buf.readUInt32BE(20);
+      assert(w >= 1000 && h >= 800, `${name}: ${w}×${h}`);
+      assert(file.suggestedFilename().endsWith('.png'), 'file name');
+      out.push(`${name} ${w}×${h} ${buf.length} B`);
+    }
+    return out.join(', ');
+  });
+
   let med = NaN, medTotal = NaN;
   await check('recompute + redraw within one animation frame at fast (median of 40 inputs)', async () => {
     await page.evaluate(() => { window.rimeState.computeMs.length = 0; });

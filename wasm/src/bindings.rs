@@ -108,6 +108,13 @@ impl Explorer {
         explorer::statuses_json()
     }
 
+    /// The experimental context of the ε_N chart as JSON text: `{bridges: {a, b, g0, label},
+    /// bands: [{x: [lo, hi], y: [lo, hi], label}]}` (Bridges et al. 1984; Heißelmann et al. 2010,
+    /// Hill et al. 2015).
+    pub fn experiments() -> String {
+        explorer::experiments_json()
+    }
+
     /// The crate version.
     pub fn version() -> String {
         crate::version().to_string()

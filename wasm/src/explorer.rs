@@ -514,6 +514,23 @@ pub fn statuses_json() -> String {
     Json::from(STATUSES.map(Status::name).to_vec()).to_string()
 }
 
+/// The experimental context of the ε_N chart as JSON: the Bridges et al. (1984) law
+/// (`{a, b, g0, label}`, ε = a (g/g0)^b) and the microgravity ice experiments' ranges
+/// (`[{x: [lo, hi], y: [lo, hi], label}]`), from `rime_core::fit` and `rime_core::figure`.
+pub fn experiments_json() -> String {
+    let b = rime_core::fit::BRIDGES_1984;
+    let bands: Vec<Json> = rime_core::figure::experiments::bands(0)
+        .into_iter()
+        .map(|band| json!({"x": [band.x.0, band.x.1], "y": [band.y.0, band.y.1], "label": band.label}))
+        .collect();
+    json!({
+        "bridges": {"a": b.a, "b": b.b, "g0": b.g0,
+                    "label": "Bridges et al. 1984: ε = 0.32 (v / 1 cm/s)^−0.234"},
+        "bands": bands,
+    })
+    .to_string()
+}
+
 /// A choice parameter's current option, if active (used by the page to fill selects).
 pub fn choice_of(scene: &Scene, path: &str) -> Option<&'static str> {
     scene.get(path).ok().and_then(choice_name)
@@ -666,6 +683,9 @@ mod tests {
         assert_eq!(s[3], "overdamped");
         let pr: Vec<Json> = serde_json::from_str(&presets_json()).unwrap();
         assert_eq!(pr.len(), 4);
+        let x: Json = serde_json::from_str(&experiments_json()).unwrap();
+        assert_eq!(x["bridges"]["a"], 0.32);
+        assert_eq!(x["bands"].as_array().unwrap().len(), 2);
         let t: Json = serde_json::from_str(&Explorer::new().tidal("").unwrap()).unwrap();
         assert!(t["result"]["d_roche"].as_f64().unwrap() > 1e8);
         let n: Json = serde_json::from_str(&Explorer::new().normal(0.01, "fast").unwrap()).unwrap();
