@@ -231,7 +231,9 @@ impl Contact {
             Some(l) => g - l.critical_velocity,
             None => g,
         };
-        let u = self.log10_delta_coefficient + 0.2 * crate::math::log10(g_bulk);
+        // log₁₀ δ = log₁₀(A α^(2/5)) + 0.2 log₁₀ g, with ln (cheaper than log10 here).
+        let u = self.log10_delta_coefficient
+            + (0.2 * core::f64::consts::LOG10_E) * crate::math::ln(g_bulk);
         let mut eps = crate::master::eps_log10(u, self.contact_end, resolution);
         if g_bulk != g {
             eps *= g_bulk / g;
