@@ -29,6 +29,9 @@ count_cargo_tests() { # count_cargo_tests NAME COMMAND...: counts each Rust test
   if [ "$rc" -ne 0 ]; then grep -E 'FAILED|panicked|error(\[|:)' -A12 "$log/$name.out" | head -n 120; fi
 }
 
+# Property tests and the proptest-driven fuzzing explore a fixed sequence of cases in CI, so that a
+# run is reproducible; run `PROPTEST_RNG_SEED=<n> cargo test` (or unset it) to explore others.
+export PROPTEST_RNG_SEED="${PROPTEST_RNG_SEED:-20261122}"
 step setup scripts/setup.sh
 step fmt cargo fmt --all -- --check
 step clippy cargo clippy --workspace --all-targets -- -D warnings

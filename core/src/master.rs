@@ -227,18 +227,16 @@ impl<const D: usize> Table<D> {
         self.lookup(powf(10.0, u)).eps
     }
 
-    /// ε beyond the upper end: the measured power laws, cut to 0 where the integrator reports an
-    /// abandoned creep.
+    /// ε beyond the upper end: the strong-damping asymptotes.
     fn tail_eps(&self, delta: f64, beyond: f64) -> f64 {
-        let slope = match self.end {
-            ContactEnd::ForceZero => -5.0 / 3.0,
-            ContactEnd::ZeroOverlap => -5.0,
-        };
-        let eps = exp(self.ln_at(self.u_max, 0)) * powf(10.0, slope * beyond);
-        let creep_cut = self.end == ContactEnd::ZeroOverlap
-            && (eps < crate::normal::OVERDAMPED_THRESHOLD
-                || delta > crate::normal::viscoelastic::CREEP_DELTA_LIMIT);
-        if creep_cut { 0.0 } else { eps }
+        match self.end {
+            // Force zero: ε ∝ δ^(-5/3), continued from the table's end.
+            ContactEnd::ForceZero => {
+                exp(self.ln_at(self.u_max, 0)) * powf(10.0, -5.0 / 3.0 * beyond)
+            }
+            // Zero overlap: the creep asymptote K δ⁻⁵, exact beyond δ ≈ 30.
+            ContactEnd::ZeroOverlap => crate::normal::viscoelastic::creep_eps(delta),
+        }
     }
 
     #[inline]
@@ -423,10 +421,20 @@ mod tests {
             fz.eps
         );
         assert!(fz.eps < crate::normal::OVERDAMPED_THRESHOLD);
+        // Zero overlap: the creep asymptote K δ⁻⁵, continuous with the table at its end.
+        let creep = crate::normal::viscoelastic::creep_eps;
         assert_eq!(
             lookup(1e3, ContactEnd::ZeroOverlap, Resolution::Coarse).eps,
-            0.0
+            creep(1e3)
         );
+        let end = powf(10.0, U_MAX_ZERO_OVERLAP);
+        let inside = lookup(
+            end * (1.0 - 1e-12),
+            ContactEnd::ZeroOverlap,
+            Resolution::Fine,
+        )
+        .eps;
+        assert!(rel(inside, creep(end)) < 1e-8, "{inside} vs {}", creep(end));
     }
 
     #[cfg(feature = "std")]
