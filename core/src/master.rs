@@ -18,9 +18,9 @@
 //! exponential per quantity.
 //!
 //! Below `U_MIN` the curve is linear in δ (ε = 1 − 1.5 C1 δ + O(δ²), Schwager & Pöschel 1998) and at
-//! δ = 0 exactly elastic. Above the table's end ε follows the measured power laws
-//! ε ≈ (2/3) δ^(-5/3) (force zero; below 1e-11 there) and ≈ 0.68 δ⁻⁵ (zero overlap, cut to 0 like the
-//! integrator's abandoned creep, see [`crate::normal::viscoelastic::CREEP_DELTA_LIMIT`]).
+//! δ = 0 exactly elastic. Above the table's end ε follows the strong-damping asymptotes
+//! ε ≈ (2/3) δ^(-5/3) (force zero; below 1e-11 there) and ε = K δ⁻⁵ (zero overlap, see
+//! [`crate::normal::viscoelastic::creep_eps`]).
 
 use crate::math::{exp, log10, powf};
 use crate::normal::viscoelastic::Dimensionless;

@@ -21,12 +21,11 @@ const CREEP_FLOOR: f64 = OVERDAMPED_THRESHOLD;
 /// Step budget of one contact. Force-zero contacts need at most a few thousand steps for any δ;
 /// zero-overlap contacts at δ ≳ 30 creep apart over times of order δ, which an explicit method
 /// follows only with stability-limited steps. When a creeping contact exhausts the budget it is
-/// reported as overdamped: its ε_N follows ≈ 0.68 δ⁻⁵ (measured, see `docs/physics.md`), far below
-/// [`OVERDAMPED_THRESHOLD`] there.
+/// reported as overdamped with ε_N = [`creep_eps`] = K δ⁻⁵, far below [`OVERDAMPED_THRESHOLD`] there.
 const MAX_STEPS: usize = 40_000;
 
 /// Zero-overlap contacts with δ above this are reported overdamped at the moment the total force
-/// vanishes, without following the creep: measured ε_N ≈ 0.68 δ⁻⁵ ≤ 7e-11 there (test
+/// vanishes, without following the creep: ε_N = [`creep_eps`] = K δ⁻⁵ ≤ 7e-11 there (test
 /// `zero_overlap_creep_follows_inverse_fifth_power`).
 pub const CREEP_DELTA_LIMIT: f64 = 100.0;
 
@@ -227,7 +226,7 @@ pub fn dimensionless_with_budget(
                         if -v < CREEP_FLOOR || delta > creep_delta_limit =>
                     {
                         // ε_N ≤ |x'| here < OVERDAMPED_THRESHOLD (or, beyond the creep limit,
-                        // ≈ 0.68 δ⁻⁵): no need to follow the slow creep.
+                        // K δ⁻⁵): no need to follow the slow creep.
                         return Ok(done(
                             creep_eps(delta),
                             f64::INFINITY,
