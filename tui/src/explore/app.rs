@@ -329,13 +329,14 @@ impl App {
         let Some(text) = self.input.as_mut() else {
             return;
         };
-        match key.code {
-            KeyCode::Esc => {
+        match edit_line(text, key) {
+            LineEdit::Editing => {}
+            LineEdit::Quit => self.quit = true,
+            LineEdit::Cancel => {
                 self.input = None;
                 self.info("edit cancelled");
             }
-            KeyCode::Enter => {
-                let text = std::mem::take(text);
+            LineEdit::Submit(text) => {
                 self.input = None;
                 if let Some(p) = PARAMETERS.get(self.selected)
                     && self.set_text(p.path, &text)
@@ -343,15 +344,6 @@ impl App {
                     self.info(format!("{} = {}", p.path, text.trim()));
                 }
             }
-            KeyCode::Backspace => {
-                text.pop();
-            }
-            KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => {
-                self.quit = true;
-            }
-            KeyCode::Char('u') if key.modifiers.contains(KeyModifiers::CONTROL) => text.clear(),
-            KeyCode::Char(c) => text.push(c),
-            _ => {}
         }
     }
 
@@ -359,25 +351,17 @@ impl App {
         let Some(text) = self.open.as_mut() else {
             return;
         };
-        match key.code {
-            KeyCode::Esc => {
+        match edit_line(text, key) {
+            LineEdit::Editing => {}
+            LineEdit::Quit => self.quit = true,
+            LineEdit::Cancel => {
                 self.open = None;
                 self.info("open cancelled");
             }
-            KeyCode::Enter => {
-                let text = std::mem::take(text);
+            LineEdit::Submit(text) => {
                 self.open = None;
                 self.open_scene(text.trim());
             }
-            KeyCode::Backspace => {
-                text.pop();
-            }
-            KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => {
-                self.quit = true;
-            }
-            KeyCode::Char('u') if key.modifiers.contains(KeyModifiers::CONTROL) => text.clear(),
-            KeyCode::Char(c) => text.push(c),
-            _ => {}
         }
     }
 
@@ -633,5 +617,40 @@ pub fn update(app: &mut App, event: Event) {
                 app.data = Some(*data);
             }
         }
+    }
+}
+
+/// What a key did to a one-line input.
+enum LineEdit {
+    /// The text changed (or nothing happened); keep editing.
+    Editing,
+    /// Esc: drop the input.
+    Cancel,
+    /// Enter: the finished text.
+    Submit(String),
+    /// Ctrl-C: quit the explorer.
+    Quit,
+}
+
+/// The shared line editor of the `e` (value) and `o` (open) inputs.
+fn edit_line(text: &mut String, key: KeyEvent) -> LineEdit {
+    let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
+    match key.code {
+        KeyCode::Esc => LineEdit::Cancel,
+        KeyCode::Enter => LineEdit::Submit(std::mem::take(text)),
+        KeyCode::Char('c') if ctrl => LineEdit::Quit,
+        KeyCode::Char('u') if ctrl => {
+            text.clear();
+            LineEdit::Editing
+        }
+        KeyCode::Backspace => {
+            text.pop();
+            LineEdit::Editing
+        }
+        KeyCode::Char(c) => {
+            text.push(c);
+            LineEdit::Editing
+        }
+        _ => LineEdit::Editing,
     }
 }
