@@ -107,37 +107,47 @@ pub static ZERO_OVERLAP_COARSE: Table<COARSE_DEGREE> = Table {
     coefficients: &generated::ZERO_OVERLAP_COARSE,
 };
 
+/// Runs `$body` with `$t` bound to the table of a contact-end rule and resolution (the tables have
+/// different coefficient counts, hence a macro rather than a function returning one type).
+macro_rules! with_table {
+    ($end:expr, $resolution:expr, |$t:ident| $body:expr) => {
+        match ($end, $resolution) {
+            (ContactEnd::ForceZero, Resolution::Fine) => {
+                let $t = &FORCE_ZERO_FINE;
+                $body
+            }
+            (ContactEnd::ZeroOverlap, Resolution::Fine) => {
+                let $t = &ZERO_OVERLAP_FINE;
+                $body
+            }
+            (ContactEnd::ForceZero, Resolution::Coarse) => {
+                let $t = &FORCE_ZERO_COARSE;
+                $body
+            }
+            (ContactEnd::ZeroOverlap, Resolution::Coarse) => {
+                let $t = &ZERO_OVERLAP_COARSE;
+                $body
+            }
+        }
+    };
+}
+
 /// Evaluates the master curve at `delta ≥ 0` (no integration).
 #[inline]
 pub fn lookup(delta: f64, end: ContactEnd, resolution: Resolution) -> Dimensionless {
-    match (end, resolution) {
-        (ContactEnd::ForceZero, Resolution::Fine) => FORCE_ZERO_FINE.lookup(delta),
-        (ContactEnd::ZeroOverlap, Resolution::Fine) => ZERO_OVERLAP_FINE.lookup(delta),
-        (ContactEnd::ForceZero, Resolution::Coarse) => FORCE_ZERO_COARSE.lookup(delta),
-        (ContactEnd::ZeroOverlap, Resolution::Coarse) => ZERO_OVERLAP_COARSE.lookup(delta),
-    }
+    with_table!(end, resolution, |t| t.lookup(delta))
 }
 
 /// ε only at `u = log₁₀ δ` (the hot path: callers add logarithms instead of taking powers).
 #[inline]
 pub fn eps_log10(u: f64, end: ContactEnd, resolution: Resolution) -> f64 {
-    match (end, resolution) {
-        (ContactEnd::ForceZero, Resolution::Fine) => FORCE_ZERO_FINE.eps_log10(u),
-        (ContactEnd::ZeroOverlap, Resolution::Fine) => ZERO_OVERLAP_FINE.eps_log10(u),
-        (ContactEnd::ForceZero, Resolution::Coarse) => FORCE_ZERO_COARSE.eps_log10(u),
-        (ContactEnd::ZeroOverlap, Resolution::Coarse) => ZERO_OVERLAP_COARSE.eps_log10(u),
-    }
+    with_table!(end, resolution, |t| t.eps_log10(u))
 }
 
 /// ε only (the hot path of curves and maps).
 #[inline]
 pub fn eps(delta: f64, end: ContactEnd, resolution: Resolution) -> f64 {
-    match (end, resolution) {
-        (ContactEnd::ForceZero, Resolution::Fine) => FORCE_ZERO_FINE.eps(delta),
-        (ContactEnd::ZeroOverlap, Resolution::Fine) => ZERO_OVERLAP_FINE.eps(delta),
-        (ContactEnd::ForceZero, Resolution::Coarse) => FORCE_ZERO_COARSE.eps(delta),
-        (ContactEnd::ZeroOverlap, Resolution::Coarse) => ZERO_OVERLAP_COARSE.eps(delta),
-    }
+    with_table!(end, resolution, |t| t.eps(delta))
 }
 
 #[inline]
@@ -206,12 +216,7 @@ impl<const D: usize> Table<D> {
         if !(delta > 0.0) {
             return 1.0;
         }
-        let u = log10(delta);
-        if u < U_MIN || u >= self.u_max {
-            return self.lookup(delta).eps;
-        }
-        let (seg, t) = self.locate(u);
-        exp(clenshaw(&self.coefficients[seg][0], t))
+        self.eps_log10(log10(delta))
     }
 
     /// ε only at `u = log₁₀ δ` (`u = −∞` is δ = 0).
