@@ -8,3 +8,4 @@ mod fuzz;
 mod physics;
 mod properties;
 mod reference;
+mod takeaway;
