@@ -99,6 +99,36 @@ pub struct Figure {
     pub map: Option<ClassMap>,
 }
 
+impl Figure {
+    /// A stick-map figure over `0…max` on both axes (g_T across, g_N up).
+    pub fn stick_map(
+        name: String,
+        title: String,
+        caption: String,
+        g: Vec<f64>,
+        classes: Vec<StickClass>,
+        max: f64,
+    ) -> Figure {
+        let axis = |label: &str| Axis {
+            label: label.to_string(),
+            log: false,
+            min: 0.0,
+            max,
+        };
+        Figure {
+            name,
+            title,
+            caption,
+            x: axis("tangential speed g_T [m/s]"),
+            y: axis("normal speed g_N [m/s]"),
+            series: Vec::new(),
+            markers: Vec::new(),
+            bands: Vec::new(),
+            map: Some(ClassMap { g, classes }),
+        }
+    }
+}
+
 /// Line colours (RGB), colour-blind-safe (Okabe–Ito) first.
 pub const PALETTE: [(u8, u8, u8); 8] = [
     (0, 114, 178),
@@ -405,37 +435,26 @@ pub mod paper {
             }
             for (max, range_note) in ranges {
                 let map = sweep::StickMap::new(&contact, max, n, accuracy)?;
-                let axis = |label: &str| Axis {
-                    label: label.to_string(),
-                    log: false,
-                    min: 0.0,
-                    max,
-                };
                 let zoom = if max < 0.05 { "-zoom" } else { "" };
-                out.push(Figure {
-                    name: format!("fig4-{name}{zoom}"),
-                    title: format!("Fig. 4: {title} ({range_note})"),
-                    caption: format!(
-                        "Stick-map classes of ε_T(g_N, g_T), μ = 0.3, κ = 2/7, paper sliding law. {}",
-                        if g_s > 0.0 {
-                            format!(
-                                "The critical speed of these parameters is g_s = {}: at the paper's 0–5 cm/s range the sticking region is too small to see, so a zoomed map is shown too.",
-                                speed_label(g_s)
-                            )
-                        } else {
-                            "Hard spheres never stick; the orange wedge is the negative radicand of Eq. (23) just above ψ0.".to_string()
-                        }
-                    ),
-                    x: axis("tangential speed g_T [m/s]"),
-                    y: axis("normal speed g_N [m/s]"),
-                    series: Vec::new(),
-                    markers: Vec::new(),
-                    bands: Vec::new(),
-                    map: Some(ClassMap {
-                        g: map.g,
-                        classes: map.class,
-                    }),
-                });
+                let caption = format!(
+                    "Stick-map classes of ε_T(g_N, g_T), μ = 0.3, κ = 2/7, paper sliding law. {}",
+                    if g_s > 0.0 {
+                        format!(
+                            "The critical speed of these parameters is g_s = {}: at the paper's 0–5 cm/s range the sticking region is too small to see, so a zoomed map is shown too.",
+                            speed_label(g_s)
+                        )
+                    } else {
+                        "Hard spheres never stick; the orange wedge is the negative radicand of Eq. (23) just above ψ0.".to_string()
+                    }
+                );
+                out.push(Figure::stick_map(
+                    format!("fig4-{name}{zoom}"),
+                    format!("Fig. 4: {title} ({range_note})"),
+                    caption,
+                    map.g,
+                    map.class,
+                    max,
+                ));
             }
         }
         Ok(out)

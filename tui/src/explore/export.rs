@@ -5,7 +5,7 @@ use super::compute::{FrameData, SWEEPS};
 use super::format;
 use crate::output::num;
 use crate::scene_io::{CliError, CliResult, scene_json, write_atomic};
-use rime_core::figure::{Axis, ClassMap, Figure, Marker, Series, speed_label};
+use rime_core::figure::{Axis, Figure, Marker, Series, speed_label};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -156,26 +156,14 @@ pub fn figures(data: &FrameData) -> Vec<Figure> {
         map: None,
     }];
     if let Some(map) = &data.map {
-        let axis = |label: &str| Axis {
-            label: label.to_string(),
-            log: false,
-            min: 0.0,
-            max: data.map_max,
-        };
-        out.push(Figure {
-            name: "stick_map".to_string(),
-            title: "stick-map classes over (g_N, g_T), rime explorer".to_string(),
-            caption: format!("accuracy {}; scene {}", data.accuracy.name(), scene),
-            x: axis("tangential speed g_T [m/s]"),
-            y: axis("normal speed g_N [m/s]"),
-            series: Vec::new(),
-            markers: Vec::new(),
-            bands: Vec::new(),
-            map: Some(ClassMap {
-                g: map.g.clone(),
-                classes: map.class.clone(),
-            }),
-        });
+        out.push(Figure::stick_map(
+            "stick_map".to_string(),
+            "stick-map classes over (g_N, g_T), rime explorer".to_string(),
+            format!("accuracy {}; scene {}", data.accuracy.name(), scene),
+            map.g.clone(),
+            map.class.clone(),
+            data.map_max,
+        ));
     }
     out
 }

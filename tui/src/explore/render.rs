@@ -510,69 +510,36 @@ fn chart(app: &App, frame: &mut Frame, area: Rect) {
     } else {
         Vec::new()
     };
-    let mut datasets = Vec::new();
-    for (k, pts) in family_pts.iter().enumerate() {
-        datasets.push(
-            Dataset::default()
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(Style::new().fg(FAMILY_COLORS[k % FAMILY_COLORS.len()]))
-                .data(pts),
-        );
-    }
-    if let Some(pts) = &clean_pts {
-        datasets.push(
-            Dataset::default()
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(Style::new().fg(CLEAN))
-                .data(pts),
-        );
-    }
-    // The experiments above the family (else the curves hide them), below this scene's curve.
-    if !bridges_pts.is_empty() {
-        datasets.push(
-            Dataset::default()
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(Style::new().fg(BRIDGES))
-                .data(&bridges_pts),
-        );
-    }
-    for (pts, color) in &band_pts {
-        datasets.push(
-            Dataset::default()
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(Style::new().fg(*color))
-                .data(pts),
-        );
-    }
-    for (pts, color) in &markers {
-        datasets.push(
-            Dataset::default()
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(Style::new().fg(*color))
-                .data(pts),
-        );
-    }
-    if let Some(pts) = &cursor_pts {
-        datasets.push(
-            Dataset::default()
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(Style::new().fg(Color::White))
-                .data(pts),
-        );
-    }
-    datasets.push(
+    // Every chart line is a Braille polyline in one style; draw order is what differs.
+    fn line(pts: &[(f64, f64)], style: Style) -> Dataset<'_> {
         Dataset::default()
             .marker(Marker::Braille)
             .graph_type(GraphType::Line)
-            .style(Style::new().fg(CURRENT).add_modifier(Modifier::BOLD))
-            .data(&current_pts),
-    );
+            .style(style)
+            .data(pts)
+    }
+    let fg = |c: Color| Style::new().fg(c);
+    let mut datasets = Vec::new();
+    for (k, pts) in family_pts.iter().enumerate() {
+        datasets.push(line(pts, fg(FAMILY_COLORS[k % FAMILY_COLORS.len()])));
+    }
+    if let Some(pts) = &clean_pts {
+        datasets.push(line(pts, fg(CLEAN)));
+    }
+    // The experiments above the family (else the curves hide them), below this scene's curve.
+    if !bridges_pts.is_empty() {
+        datasets.push(line(&bridges_pts, fg(BRIDGES)));
+    }
+    for (pts, color) in band_pts.iter().chain(&markers) {
+        datasets.push(line(pts, fg(*color)));
+    }
+    if let Some(pts) = &cursor_pts {
+        datasets.push(line(pts, fg(Color::White)));
+    }
+    datasets.push(line(
+        &current_pts,
+        Style::new().fg(CURRENT).add_modifier(Modifier::BOLD),
+    ));
     let axis_style = Style::new().fg(Color::Gray);
     let chart = Chart::new(datasets)
         .x_axis(
