@@ -25,11 +25,11 @@ const SLIDER = {
 const SLIDER_STEPS = 1000;
 const GROUPS = [
   ['grains', 'Grains'],
-  ['bulk', 'Bulk material (Eq. 4)'],
+  ['bulk', 'Bulk material (Eq. (4))'],
   ['contact_end', 'Contact'],
-  ['layer', 'Soft layer (Eq. 8–10)'],
-  ['adhesion', 'Adhesion (Eq. 11–17)'],
-  ['friction', 'Friction (Eq. 18–26)'],
+  ['layer', 'Soft layer (Eq. (8)–(10))'],
+  ['adhesion', 'Adhesion (Eq. (11)–(17))'],
+  ['friction', 'Friction (Eq. (18)–(26))'],
 ];
 const FAMILIES = {
   layer: { path: 'layer.viscosity', values: [500, 1000, 2000, 5000], sym: 'η*', unit: 'Pa s' },
@@ -369,7 +369,7 @@ function chartSpec(res, hover) {
   const yMin2 = Math.min(yMin, 1e-2);
   let maxY = 1;
   for (const v of res.eps) if (v > maxY) maxY = v;
-  // Critical velocities; the bisected stick threshold only where it differs from Eq. 10/15.
+  // Critical velocities; the bisected stick threshold only where it differs from Eq. (10)/(15).
   const markers = [];
   for (const c of res.crit) {
     if (markers.some((m) => Math.abs(m.x / c.value - 1) < 0.01)) continue;
@@ -434,7 +434,7 @@ function showWarnings(res) {
   const items = res.warnings.map((w) => el('li', {}, w));
   const gap = app.classes.findIndex((c) => c.name === 'sliding_gap');
   if (res.map && gap >= 0 && res.classCounts && res.classCounts[gap] > 0) {
-    items.push(el('li', { class: 'info' }, 'sliding law "paper": Eq. 23 has a negative radicand just above ψ₀ (class sliding_gap, clamped to ε_T = 0), which the paper does not mention; "walton" has no gap.'));
+    items.push(el('li', { class: 'info' }, 'sliding law "paper": Eq. (23) has a negative radicand just above ψ₀ (class sliding_gap, clamped to ε_T = 0), which the paper does not mention; "walton" has no gap.'));
   }
   $('warnings').replaceChildren(...items);
 }
@@ -532,7 +532,7 @@ function showTidal(t) {
   $('tidal').replaceChildren(
     el('tr', {}, el('th', {}, 'quantity'), el('th', {}, 'computed'), el('th', {}, 'paper'), el('th', { class: 'note' }, 'note')),
     ...[row('ΔF tidal force difference (A.1)', r.delta_f, 'N', q.delta_f),
-    row('F_s = πγR_eff, R_eff = r/2 (A.2)', r.surface_force, 'N', q.surface_force, 'the printed 6.28e-3 N is πγr, twice Eq. A.2'),
+    row('F_s = πγR_eff, R_eff = r/2 (A.2)', r.surface_force, 'N', q.surface_force, 'the printed 6.28e-3 N is πγr, twice Eq. (A.2)'),
     row('πγr (what the paper prints as F_s)', r.surface_force_paper, 'N', q.surface_force),
     row('F_g mutual gravity (A.3)', r.gravity, 'N', undefined, 'not printed', true),
     row('d_Roche (A.7)', r.d_roche, 'm', q.d_roche),

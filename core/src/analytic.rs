@@ -1,4 +1,4 @@
-//! Closed forms: critical velocities (Eq. 10, 12, 15), the elastic Hertz limits of Eq. (4), and the
+//! Closed forms: critical velocities (Eq. (10), (12), (15)), the elastic Hertz limits of Eq. (4), and the
 //! first-order Schwager–Pöschel expansion of ε_N for weak damping.
 //!
 //! These are independent of the integrators and serve as limits and cross-checks for them.
@@ -9,14 +9,14 @@ use crate::math::{cbrt, sqrt};
 
 /// Critical velocity of a soft layer, Eq. (10): `g_s = √R_eff η* D^(3/2)/m_eff` \[m/s\], with
 /// `η* = 1/K` the layer viscosity \[Pa s\], `D = D₁ + D₂` the total thickness \[m\], `R_eff` \[m\] and
-/// `m_eff` \[kg\]. Below it the layer absorbs the whole impact (Eq. 9 with `ξ̇ = 0` at `ξ = D`).
+/// `m_eff` \[kg\]. Below it the layer absorbs the whole impact (Eq. (9) with `ξ̇ = 0` at `ξ = D`).
 pub fn critical_velocity_layer(r_eff: f64, m_eff: f64, thickness: f64, viscosity: f64) -> f64 {
     // Eq. (10).
     sqrt(r_eff) * viscosity * thickness * sqrt(thickness) / m_eff
 }
 
 /// JKR separation energy, Eq. (12): `W_s = 7.09 (γ⁵R_eff⁴/E²)^(1/3)` \[J\], with surface energy `γ`
-/// \[J/m²\], `R_eff` \[m\] and modulus `E` \[Pa\] (`Y/(1−ν²)` as printed, DESIGN.md decision 5).
+/// \[J/m²\], `R_eff` \[m\] and modulus `E` \[Pa\] (`Y/(1−ν²)` as printed, docs/physics.md#decision-5).
 ///
 /// Evaluated as `7.09 γ (γR²/E)^(2/3)`, which cannot overflow for physical inputs.
 pub fn separation_energy(surface_energy: f64, r_eff: f64, modulus: f64) -> f64 {
@@ -40,7 +40,7 @@ pub fn critical_velocity_adhesion(
     sqrt(2.0 * separation_energy(surface_energy, r_eff, modulus) / m_eff)
 }
 
-/// Duration of an elastic Hertz collision in units of `τ = ξ*/g` (DESIGN.md decision 3):
+/// Duration of an elastic Hertz collision in units of `τ = ξ*/g` (docs/physics.md#decision-3):
 /// `s_c = 2 x_max ∫₀¹ du/√(1 − u^(5/2)) = 2 x_max (2/5) B(2/5, 1/2)` with `x_max = (5/4)^(2/5)`.
 ///
 /// Value from `(2/5) B(2/5, 1/2) = 1.471637592162352328690…` (mpmath, 30 digits):
@@ -73,7 +73,7 @@ pub const SCHWAGER_POSCHEL_C1: f64 = 1.153_448_858_095_288_8;
 pub const SMALL_DELTA_SLOPE: f64 = 1.5 * SCHWAGER_POSCHEL_C1;
 
 /// First-order weak-damping limit `ε_N ≈ 1 − (3/2) C₁ δ` in the dimensionless damping
-/// `δ = A α^(2/5) g^(1/5)` of DESIGN.md decision 3 (`α = ρ_H/m_eff`).
+/// `δ = A α^(2/5) g^(1/5)` of docs/physics.md#decision-3 (`α = ρ_H/m_eff`).
 ///
 /// **Normalisation.** Schwager and Pöschel write `ε_N = 1 − C₁ (3A/2) α^(2/5) g^(1/5) + …` with the
 /// same `α = ρ_H/m_eff`, i.e. `1 − (3/2) C₁ δ`, not `1 − C₁ δ`. Checked against our integrator

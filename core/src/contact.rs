@@ -175,7 +175,7 @@ impl Contact {
         })
     }
 
-    /// The dimensionless damping `δ = A α^(2/5) g^(1/5)` at impact speed `g` \[m/s\] (DESIGN.md decision 3).
+    /// The dimensionless damping `δ = A α^(2/5) g^(1/5)` at impact speed `g` \[m/s\] (docs/physics.md#decision-3).
     pub fn delta(&self, g: f64) -> f64 {
         self.damping_time * powf(self.alpha, 0.4) * powf(g, 0.2)
     }

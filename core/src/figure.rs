@@ -341,7 +341,7 @@ pub mod paper {
             (
                 "",
                 base.bulk.damping,
-                "A = 1e-4 s (calibrated to Bridges et al. 1984; DESIGN decision 1).",
+                "A = 1e-4 s (calibrated to Bridges et al. 1984; docs/physics.md, decision 1).",
             ),
             (
                 "-paper-viscosities",

@@ -1,6 +1,6 @@
 //! Fitted laws for event-driven codes: Eq. (27) and power laws (Bridges-type).
 //!
-//! * [`fit_eq27`]: ε ≈ a g^b (1 − exp(−c g^d)) (Eq. 27), by Levenberg–Marquardt on nalgebra's
+//! * [`fit_eq27`]: ε ≈ a g^b (1 − exp(−c g^d)) (Eq. (27)), by Levenberg–Marquardt on nalgebra's
 //!   fixed-size matrices (no allocation), with a, c, d > 0 enforced through logarithms.
 //! * [`fit_power_law`]: ε ≈ a (g / g₀)^b by linear least squares in log–log; with g₀ = 1 cm/s this is
 //!   the form of Bridges et al. (1984), ε = 0.32 (v / 1 cm/s)^−0.234.

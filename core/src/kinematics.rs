@@ -2,15 +2,15 @@
 //! Eq. (2), and applying restitution coefficients (ε_N, ε_T) to both grains by one impulse.
 //!
 //! Conventions: `n` is the unit normal pointing from grain `j`'s centre to grain `i`'s centre, so the
-//! contact point is `x_i − a_i n = x_j + a_j n`. The relative surface velocity `g` (Eq. 2) is the
+//! contact point is `x_i − a_i n = x_j + a_j n`. The relative surface velocity `g` (Eq. (2)) is the
 //! velocity of `i`'s surface minus that of `j`'s surface at the contact point; the grains approach
 //! when `g·n < 0`.
 //!
 //! [`collide`] applies an impulse `J` to `i` and `−J` to `j` at the contact point, chosen so that the
-//! normal component becomes `−ε_N g_N` and the tangential vector `ε_T g_T` (Eq. 1). Linear momentum
+//! normal component becomes `−ε_N g_N` and the tangential vector `ε_T g_T` (Eq. (1)). Linear momentum
 //! and angular momentum (about any point) are conserved exactly; the kinetic energy changes by
 //! `−½ m_eff (1−ε_N²) g_N² − ½ m_t (1−ε_T²) |g_T|²`, with the tangential mass `m_t` of
-//! [`effective_tangential_mass`] (`= κ m_eff` for equal inertia factors, Eq. 22).
+//! [`effective_tangential_mass`] (`= κ m_eff` for equal inertia factors, Eq. (22)).
 
 use crate::error::{Error, Result, positive, within};
 pub use nalgebra::Vector3;
@@ -116,7 +116,7 @@ pub fn decompose(g: &Vector3<f64>, n: &Vector3<f64>) -> (f64, Vector3<f64>) {
     (g_n, g - n * g_n)
 }
 
-/// `κ = q/(1+q)` (Eq. 22): the reduced moment of inertia of two grains with the same inertia
+/// `κ = q/(1+q)` (Eq. (22)): the reduced moment of inertia of two grains with the same inertia
 /// factor `q`; 2/7 for solid spheres.
 pub fn kappa(inertia_factor: f64) -> f64 {
     inertia_factor / (1.0 + inertia_factor)
@@ -137,7 +137,7 @@ pub fn effective_tangential_mass(i: &GrainState, j: &GrainState) -> f64 {
 ///
 /// An impulse `J = −m_eff (1+ε_N) g_N n − m_t (1−ε_T) g_T` acts on `i` and `−J` on `j`, both at the
 /// contact point (`m_eff = m_i m_j/(m_i+m_j)`, `m_t` from [`effective_tangential_mass`]), so that
-/// afterwards `g'·n = −ε_N g_N` and `g'_T = ε_T g_T` (Eq. 1). Velocities and spins are updated in
+/// afterwards `g'·n = −ε_N g_N` and `g'_T = ε_T g_T` (Eq. (1)). Velocities and spins are updated in
 /// place. The direction of approach is not checked: the map is applied as given.
 ///
 /// Errors (field named): `n` not unit length within 1e-9 or not finite; non-positive or non-finite

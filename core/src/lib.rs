@@ -6,7 +6,7 @@
 //! `docs/physics.md` of the repository.
 //!
 //! * [`Scene`] — grains, bulk material and optional effects (layer, adhesion, friction).
-//! * [`Contact`] — constants derived once from a scene; [`Contact::normal`] gives ε_N (Eq. 4–17).
+//! * [`Contact`] — constants derived once from a scene; [`Contact::normal`] gives ε_N (Eq. (4)–(17)).
 //! * [`ode`] — our Dormand–Prince 5(4) stepper with dense output and event location.
 //!
 //! ```

@@ -1,6 +1,6 @@
 //! The fast path: the viscoelastic master curve tabulated once on the dimensionless form.
 //!
-//! ε_N, s_c = t_c/τ and x_max = ξ_max/ξ* depend on δ alone (DESIGN.md decision 3), so one table
+//! ε_N, s_c = t_c/τ and x_max = ξ_max/ξ* depend on δ alone (docs/physics.md#decision-3), so one table
 //! serves every material, speed and damping time. For each contact-end rule, ln ε, ln s_c and ln x_max
 //! are stored as piecewise Chebyshev series in u = log₁₀ δ on equal segments of [`U_MIN`, u_max],
 //! built from the Dormand–Prince integrator at rtol 1e-14 and stored in the generated file

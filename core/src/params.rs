@@ -149,7 +149,7 @@ pub const PARAMETERS: &[Parameter] = &[
     ),
     Parameter {
         path: "layer.reading",
-        label: "Eq. 8 reading",
+        label: "Eq. (8) reading",
         unit: "",
         kind: Kind::Choice(&["offset", "literal"]),
     },

@@ -1,7 +1,7 @@
 //! The scene: two grains, their bulk material, and the optional surface effects.
 //!
 //! A [`Scene`] is plain data with public fields. Its JSON form (feature `serde`) is the contract shared
-//! by the CLI, the terminal explorer and the web page (see `DESIGN.md`). Effects that are `None`
+//! by the CLI, the terminal explorer and the web page (see `docs/cli.md#scene-json`). Effects that are `None`
 //! cost nothing when evaluating: *model only what a scene requires*.
 
 use crate::error::{Error, Result, within};
@@ -34,9 +34,9 @@ impl Default for Grains {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Damping {
-    /// `A` given directly \[s\]. The default preset uses `A = 1e-4 s` (DESIGN.md decision 1).
+    /// `A` given directly \[s\]. The default preset uses `A = 1e-4 s` (docs/physics.md#decision-1).
     Time(f64),
-    /// `A` derived from the shear and bulk viscosities (Eq. 4, Brilliantov et al. 1996).
+    /// `A` derived from the shear and bulk viscosities (Eq. (4), Brilliantov et al. 1996).
     Viscosities(Viscosities),
 }
 
@@ -70,7 +70,7 @@ impl Default for Viscosities {
     }
 }
 
-/// The formula for `A` from viscosities (DESIGN.md decision 1).
+/// The formula for `A` from viscosities (docs/physics.md#decision-1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
@@ -82,7 +82,7 @@ pub enum DampingFormula {
     AsPrinted,
 }
 
-/// The viscoelastic bulk material (Eq. 3–4).
+/// The viscoelastic bulk material (Eq. (3)–(4)).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
@@ -105,7 +105,7 @@ impl Default for Bulk {
     }
 }
 
-/// When the contact of Eq. (4) ends (DESIGN.md decision 2).
+/// When the contact of Eq. (4) ends (docs/physics.md#decision-2).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
@@ -114,11 +114,11 @@ pub enum ContactEnd {
     /// viscoelastic force). Default.
     #[default]
     ForceZero,
-    /// The contact ends when the overlap ξ returns to zero (Eq. 5 read literally).
+    /// The contact ends when the overlap ξ returns to zero (Eq. (5) read literally).
     ZeroOverlap,
 }
 
-/// How Eq. (8) is read (DESIGN.md decision 4).
+/// How Eq. (8) is read (docs/physics.md#decision-4).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
@@ -155,7 +155,7 @@ impl Default for Layer {
     }
 }
 
-/// Which modulus `E` enters Eq. (12) and (15) (DESIGN.md decision 5).
+/// Which modulus `E` enters Eq. (12) and (15) (docs/physics.md#decision-5).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
@@ -188,7 +188,7 @@ impl Default for Adhesion {
     }
 }
 
-/// The sliding branch of Eq. (26) (DESIGN.md decision 6).
+/// The sliding branch of Eq. (26) (docs/physics.md#decision-6).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
@@ -233,7 +233,7 @@ pub struct Scene {
     pub grains: Grains,
     /// The bulk material.
     pub bulk: Bulk,
-    /// When the contact ends (Eq. 5).
+    /// When the contact ends (Eq. (5)).
     #[cfg_attr(feature = "serde", serde(default))]
     pub contact_end: ContactEnd,
     /// Optional soft surface layer.
@@ -260,7 +260,7 @@ impl Default for Scene {
     }
 }
 
-/// The named presets of DESIGN.md.
+/// The named presets (docs/cli.md#scene-json).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Preset {
     /// `ice`: A = 1e-4 s, no layer, no adhesion, friction on (the default).

@@ -1,12 +1,12 @@
-//! Tangential restitution: Eq. (18)–(26) with DESIGN.md decision 6, and the stick-map classes of
-//! DESIGN.md decision 7.
+//! Tangential restitution: Eq. (18)–(26) with docs/physics.md#decision-6, and the stick-map classes of
+//! docs/physics.md#decision-7.
 //!
-//! With the sliding angle `tan ψ = g_T/g_N` (Eq. 25) and `tan ψ₀ = μ/κ`:
+//! With the sliding angle `tan ψ = g_T/g_N` (Eq. (25)) and `tan ψ₀ = μ/κ`:
 //!
 //! * **rolling branch** `ψ ≤ ψ₀`: `ε_T = −ε_N(g_T)`, the normal law evaluated at the tangential speed
-//!   (Eq. 26, top);
+//!   (Eq. (26), top);
 //! * **sliding branch** `ψ > ψ₀`: the paper's law `ε_T = √(1 − 2μ g_N (1+ε_N(g_N))/(κ g_T))`
-//!   (Eq. 23 / Eq. 26, bottom), clamped to `ε_T = 0` where the radicand is negative, or Walton's
+//!   (Eq. (23) / Eq. (26), bottom), clamped to `ε_T = 0` where the radicand is negative, or Walton's
 //!   linear Coulomb-impulse law `ε_T = 1 − μ(1+ε_N(g_N)) g_N/(κ g_T)` ([`SlidingLaw::Walton`]).
 //!
 //! **Deviation from the paper.** The paper states (end of §3) that points with a negative radicand
@@ -26,7 +26,7 @@ use crate::error::{Error, Result, within};
 use crate::math::{atan2, sqrt};
 use crate::scene::{Friction, SlidingLaw};
 
-/// The class of a point `(g_N, g_T)` of the stick map (DESIGN.md decision 7).
+/// The class of a point `(g_N, g_T)` of the stick map (docs/physics.md#decision-7).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
@@ -91,9 +91,9 @@ impl StickClass {
     pub fn description(self) -> &'static str {
         match self {
             StickClass::Rolling => "rolling: tangential motion reverses, ε_T = −ε_N(g_T)",
-            StickClass::Sliding => "sliding: ε_T from the sliding law (Eq. 23)",
+            StickClass::Sliding => "sliding: ε_T from the sliding law (Eq. (23))",
             StickClass::RollingStop => "rolling stop: ε_N(g_T) = 0, tangential motion stops",
-            StickClass::SlidingGap => "sliding gap: Eq. 23 radicand < 0, clamped to ε_T = 0",
+            StickClass::SlidingGap => "sliding gap: Eq. (23) radicand < 0, clamped to ε_T = 0",
             StickClass::Aggregation => "aggregation: both components stop",
             StickClass::NormalStickOnly => "normal stick only: ε_N = 0, ε_T ≠ 0",
             StickClass::Undefined => "undefined: g_N = g_T = 0",
@@ -110,7 +110,7 @@ impl StickClass {
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Tangential {
-    /// Tangential restitution coefficient ε_T = g'_T/g_T ∈ \[−1, 1\] (Eq. 1, 26).
+    /// Tangential restitution coefficient ε_T = g'_T/g_T ∈ \[−1, 1\] (Eq. (1), (26)).
     pub eps_t: f64,
     /// Normal restitution coefficient ε_N(g_N) at the normal impact speed.
     pub eps_n: f64,
@@ -118,7 +118,7 @@ pub struct Tangential {
     pub class: StickClass,
 }
 
-/// `tan ψ₀ = μ/κ` (Eq. 25): the sliding angle above which the contact slides. 1.05 for μ = 0.3,
+/// `tan ψ₀ = μ/κ` (Eq. (25)): the sliding angle above which the contact slides. 1.05 for μ = 0.3,
 /// κ = 2/7.
 pub fn tan_psi0(friction: &Friction) -> f64 {
     friction.coefficient / friction.kappa
@@ -154,7 +154,7 @@ fn coulomb_ratio(g_n: f64, g_t: f64, eps_n: f64, friction: &Friction) -> f64 {
     }
 }
 
-/// Classifies one point and evaluates ε_T (Eq. 26, DESIGN.md decisions 6–7).
+/// Classifies one point and evaluates ε_T (Eq. (26), docs/physics.md#decision-6 and #decision-7).
 ///
 /// `eps_n_of_gn` is ε_N(g_N); `eps_n_of_gt` is ε_N(g_T) and is only read on the rolling branch
 /// ([`is_rolling`]), so maps can evaluate ε_N once per grid velocity and pass any value elsewhere.
@@ -187,7 +187,7 @@ pub fn classify(
     } else {
         match friction.sliding_law {
             SlidingLaw::Paper => {
-                // Eq. (23) / Eq. (26), bottom; negative radicand clamped (DESIGN.md decision 6).
+                // Eq. (23) / Eq. (26), bottom; negative radicand clamped (docs/physics.md#decision-6).
                 let radicand = paper_radicand(g_n, g_t, eps_n_of_gn, friction);
                 if radicand < 0.0 {
                     (0.0, true)
@@ -225,7 +225,7 @@ pub fn classify(
 
 impl Contact {
     /// Tangential restitution at normal impact speed `g_n` and tangential speed `g_t` \[m/s\]
-    /// (Eq. 26).
+    /// (Eq. (26)).
     ///
     /// Evaluates ε_N(g_N) and, on the rolling branch only, ε_N(g_T) with [`Contact::eps_n`] (either
     /// speed may be 0). Fails when the scene has no friction (error names `friction`) or when a speed
@@ -489,7 +489,7 @@ mod tests {
 
     #[test]
     fn surface_effects_produce_stopped_classes() {
-        // ice-frost: layer g_s ≈ 6.6 µm/s (Eq. 10). Both below g_s: aggregation; g_N above, g_T below
+        // ice-frost: layer g_s ≈ 6.6 µm/s (Eq. (10)). Both below g_s: aggregation; g_N above, g_T below
         // on the rolling branch: rolling stop; g_N below, sliding (ε_T = 1 at g_N = 0): normal stick.
         let c = contact(Preset::IceFrost);
         let g_s = c.layer.unwrap().critical_velocity;

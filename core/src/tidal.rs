@@ -1,5 +1,5 @@
 //! The appendix of the paper: tidal force, adhesion and self-gravity of two touching grains in orbit
-//! (Eq. A.1–A.7), with DESIGN.md decision 8.
+//! (Eq. (A.1)–(A.7)), with docs/physics.md#decision-8.
 //!
 //! Two identical spheres of radius `r` and density `ρ` touch; the line of centres is radial and the
 //! contact point is at distance `d` from a planet of mass `M`.
@@ -86,13 +86,13 @@ pub struct Tidal {
 pub struct TidalQuoted {
     /// ΔF ≈ 3.84e-11 N (reproduced).
     pub delta_f: f64,
-    /// F_s ≈ 6.28e-3 N (that is πγr, not Eq. A.2's πγR_eff).
+    /// F_s ≈ 6.28e-3 N (that is πγr, not Eq. (A.2)'s πγR_eff).
     pub surface_force: f64,
     /// d_Roche ≈ 1.341e8 m (reproduced).
     pub d_roche: f64,
-    /// d_min ≈ 5.43e4 m (not reproduced: Eq. A.6 gives 3.08e5 m).
+    /// d_min ≈ 5.43e4 m (not reproduced: Eq. (A.6) gives 3.08e5 m).
     pub d_min: f64,
-    /// r_max ≈ 37.6 m (Eq. A.5 gives 37.72 m, 0.3 % larger; see the module docs).
+    /// r_max ≈ 37.6 m (Eq. (A.5) gives 37.72 m, 0.3 % larger; see the module docs).
     pub r_max: f64,
 }
 

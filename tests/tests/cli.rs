@@ -1,4 +1,4 @@
-//! The `rime` binary's subcommands: the JSON/CSV contract of DESIGN.md and bad input.
+//! The `rime` binary's subcommands: the JSON/CSV contract of docs/cli.md and bad input.
 
 use rime_tests::{rel, rime_binary};
 use std::process::Command;

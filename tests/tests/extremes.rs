@@ -20,7 +20,7 @@ const LEVELS: [Accuracy; 4] = [
     Accuracy::Tolerance(1e-12),
 ];
 
-/// Schwager & Pöschel (1998): ε = 1 + C₁ (3/2) δ + …, C₁ = −1.1534 (their Eq. 40, β = (3/2) A α^(2/5)).
+/// Schwager & Pöschel (1998): ε = 1 + C₁ (3/2) δ + …, C₁ = −1.1534 (their Eq. (40), β = (3/2) A α^(2/5)).
 const SP_C1: f64 = 1.1534;
 /// Hertz contact time in units of τ = ξ*/g: 2 ∫₀^x_max dx/√(1 − (4/5)x^(5/2)) (elastic limit).
 const HERTZ_S_C: f64 = 3.218_065_459_719_043;
@@ -48,7 +48,7 @@ fn derived(s: &Scene) -> (f64, f64, f64, f64) {
     (r_eff, m_eff, rho_h / m_eff, a)
 }
 
-/// δ = A α^(2/5) g^(1/5) (DESIGN.md decision 3).
+/// δ = A α^(2/5) g^(1/5) (docs/physics.md#decision-3).
 fn delta_of(s: &Scene, g: f64) -> f64 {
     let (_, _, alpha, a) = derived(s);
     a * alpha.powf(0.4) * g.powf(0.2)
@@ -61,7 +61,7 @@ fn layer_g_s(s: &Scene) -> f64 {
     r_eff.sqrt() * l.viscosity * l.thickness.powf(1.5) / m_eff
 }
 
-/// Eq. (15): g_s = (14.18/m_eff)^(1/2) (γ⁵R⁴/E²)^(1/6), E per DESIGN.md decision 5.
+/// Eq. (15): g_s = (14.18/m_eff)^(1/2) (γ⁵R⁴/E²)^(1/6), E per docs/physics.md#decision-5.
 fn adhesion_g_s(s: &Scene) -> f64 {
     let (r_eff, m_eff, _, _) = derived(s);
     let a = s.adhesion.unwrap();
@@ -605,7 +605,7 @@ fn offset_layer_threshold_exactly_and_one_ulp_either_side() {
 
 #[test]
 fn literal_layer_threshold_exactly_and_one_ulp_either_side() {
-    // The literal reading crushes the layer on the way in exactly like the offset one (Eq. 9), so
+    // The literal reading crushes the layer on the way in exactly like the offset one (Eq. (9)), so
     // below and at g_s it sticks on the way in; above, it must either stick on the way out or
     // rebound, never fail or hang.
     for d in [1e-6, 3e-5] {

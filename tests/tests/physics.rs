@@ -225,7 +225,7 @@ fn paper_figures_show_what_their_captions_say() {
     use rime_core::figure::paper;
     let fig2 = paper::fig2(Accuracy::Fast).unwrap();
     assert_eq!(fig2.len(), 2);
-    // Calibrated A: every layer curve is 0 at and below its marker (Eq. 10) and positive above.
+    // Calibrated A: every layer curve is 0 at and below its marker (Eq. (10)) and positive above.
     for (series, marker) in fig2[0].series.iter().zip(&fig2[0].markers) {
         for &(g, e) in &series.points {
             if g <= marker.x {

@@ -1,4 +1,4 @@
-//! The non-interactive subcommands (DESIGN.md "Subcommands"): machine-readable output for scripts.
+//! The non-interactive subcommands (docs/cli.md): machine-readable output for scripts.
 
 use crate::scene_io::{CliError, CliResult, apply_set, err, load_scene, preset, scene_json};
 use rime_core::{Accuracy, Contact, Scene};
@@ -71,7 +71,7 @@ USAGE:
   rime tidal [--planet-mass KG] [--distance M] [--radius M] [--density KG/M3] [--surface-energy J/M2]
   rime scene [--preset NAME] [--out FILE]        print (or atomically write) the scene JSON
   rime export --out DIR [--from G --to G --points N]
-                                                 ε_N table (CSV, JSON), fitted Eq. 27 and power
+                                                 ε_N table (CSV, JSON), fitted Eq. (27) and power
                                                  laws, ready-to-paste C and Rust functions
   rime fit --data FILE.csv [--param PATH]        fit a parameter (default bulk.damping.time) to
                                                  measured (g [m/s], ε) points

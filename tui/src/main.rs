@@ -197,7 +197,7 @@ fn run(command: Command) -> CliResult<Option<String>> {
             let mut s = format!("wrote {} into {}\n", files.join(", "), out.display());
             if let Some(f) = e.eq27 {
                 s.push_str(&format!(
-                    "Eq. 27: eps = {:.6} g^{:.6} (1 - exp(-{:.6e} g^{:.6})), rms error {:.2e}, max {:.2e}, on {}..{} m/s\n",
+                    "Eq. (27): eps = {:.6} g^{:.6} (1 - exp(-{:.6e} g^{:.6})), rms error {:.2e}, max {:.2e}, on {}..{} m/s\n",
                     f.a, f.b, f.c, f.d, f.rms_error, f.max_error, output::num(f.g_min), output::num(f.g_max)
                 ));
             }

@@ -1,4 +1,4 @@
-//! JSON, CSV and table output of the subcommands (field names are a contract: DESIGN.md).
+//! JSON, CSV and table output of the subcommands (field names are a contract: docs/cli.md).
 
 use crate::cli::Format;
 use serde::Serialize;
@@ -45,7 +45,7 @@ pub struct TangentialRecord {
     pub eps_t: f64,
     /// ε_N(g_N).
     pub eps_n: f64,
-    /// Stick-map class (DESIGN.md §7).
+    /// Stick-map class (docs/physics.md#decision-7).
     pub class: &'static str,
 }
 

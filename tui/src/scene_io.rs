@@ -1,4 +1,4 @@
-//! Reading, overriding and writing scene JSON (the contract of DESIGN.md "Scene JSON").
+//! Reading, overriding and writing scene JSON (the contract of docs/cli.md#scene-json).
 
 use rime_core::{Preset, Scene};
 use std::fmt;

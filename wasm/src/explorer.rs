@@ -338,17 +338,17 @@ impl Explorer {
     }
 
     /// The critical velocities as JSON: a list of `{key, label, value}` with the layer's g_s
-    /// (Eq. 10), the adhesion's g_s (Eq. 15, a threshold on the rebound speed), and the impact speed
+    /// (Eq. (10)), the adhesion's g_s (Eq. (15), a threshold on the rebound speed), and the impact speed
     /// below which the grains stick (found by bisection on the status the core reports).
     pub fn critical_velocities(&self, accuracy: &str) -> Result<String, String> {
         let accuracy = parse_accuracy(accuracy)?;
         let contact = Contact::new(&self.scene).map_err(core_err)?;
         let mut out = Vec::new();
         if let Some(l) = &contact.layer {
-            out.push(json!({"key": "layer", "label": "g_s layer (Eq. 10)", "value": l.critical_velocity}));
+            out.push(json!({"key": "layer", "label": "g_s layer (Eq. (10))", "value": l.critical_velocity}));
         }
         if let Some(a) = &contact.adhesion {
-            out.push(json!({"key": "adhesion", "label": "g_s adhesion (Eq. 15)", "value": a.critical_velocity}));
+            out.push(json!({"key": "adhesion", "label": "g_s adhesion (Eq. (15))", "value": a.critical_velocity}));
         }
         if let Some(t) = stick_threshold(&contact, accuracy)? {
             out.push(json!({"key": "stick", "label": "sticks below", "value": t}));
@@ -370,7 +370,7 @@ impl Explorer {
                     .unwrap_or(f64::NAN),
             };
             w.push(format!(
-                "overdamped: ε_N < 1e-9 over {} of the plotted range (A = {a:.3e} s); Eq. 4 never \
+                "overdamped: ε_N < 1e-9 over {} of the plotted range (A = {a:.3e} s); Eq. (4) never \
                  sticks, the rebound is negligible",
                 if over == c.status.len() {
                     "all"
@@ -389,10 +389,10 @@ impl Explorer {
             );
         }
         if s.contact_end == ContactEnd::ZeroOverlap {
-            w.push("contact end zero_overlap: Eq. 5 read literally, a tensile viscoelastic force acts while separating".into());
+            w.push("contact end zero_overlap: Eq. (5) read literally, a tensile viscoelastic force acts while separating".into());
         }
         if s.layer.is_some_and(|l| l.reading == LayerReading::Literal) {
-            w.push("Eq. 8 literal reading: threshold ≈ 2 g_s and ε_N can exceed the clean value, contradicting the paper's text".into());
+            w.push("Eq. (8) literal reading: threshold ≈ 2 g_s and ε_N can exceed the clean value, contradicting the paper's text".into());
         }
         if s.adhesion
             .is_some_and(|a| a.modulus == AdhesionModulus::Consistent)
@@ -405,7 +405,7 @@ impl Explorer {
         Ok(Json::from(w).to_string())
     }
 
-    /// The appendix (Eq. A.1–A.7) as JSON: `{input, result, paper}`. `input_json` is a
+    /// The appendix (Eq. (A.1)–(A.7)) as JSON: `{input, result, paper}`. `input_json` is a
     /// `TidalInput`; empty means the paper's planet and distance with the scene's grain 1 radius,
     /// density and surface energy (the paper's 0.1 J/m² without adhesion).
     pub fn tidal(&self, input_json: &str) -> Result<String, String> {

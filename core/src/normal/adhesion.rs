@@ -1,10 +1,10 @@
-//! Adhesion on top of a rebound: Eq. (13)–(17) with DESIGN.md decision 5.
+//! Adhesion on top of a rebound: Eq. (13)–(17) with docs/physics.md#decision-5.
 
 /// Applies Eq. (17) to a rebound without adhesion.
 ///
 /// `eps_v` is ε_{N,v} of the model without adhesion, `g` the impact speed and `g_s` the critical
-/// rebound speed of Eq. (15). The threshold is on the rebound speed `g'_{N,v} = ε_{N,v} g` (Eq. 17
-/// prints `g_N`; Eq. 13–16 put it on the rebound). Returns `None` when the grains stick.
+/// rebound speed of Eq. (15). The threshold is on the rebound speed `g'_{N,v} = ε_{N,v} g` (Eq. (17)
+/// prints `g_N`; Eq. (13)–(16) put it on the rebound). Returns `None` when the grains stick.
 pub fn apply(eps_v: f64, g: f64, g_s: f64) -> Option<f64> {
     if g_s == 0.0 {
         // γ = 0: no separation energy to pay, exactly the model without adhesion (even when the
@@ -26,7 +26,7 @@ mod tests {
 
     #[test]
     fn energy_balance_of_eq_13_holds() {
-        // ½ g'² = ½ g'_v² − ½ g_s²  (W_s = ½ m g_s², Eq. 12–15).
+        // ½ g'² = ½ g'_v² − ½ g_s²  (W_s = ½ m g_s², Eq. (12)–(15)).
         let (eps_v, g, g_s) = (0.8, 0.01, 0.003);
         let eps = apply(eps_v, g, g_s).unwrap();
         let lhs = (eps * g) * (eps * g);

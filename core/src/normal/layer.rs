@@ -1,12 +1,12 @@
-//! Soft surface layers: Eq. (6)–(10), in the two readings of DESIGN.md decision 4.
+//! Soft surface layers: Eq. (6)–(10), in the two readings of docs/physics.md#decision-4.
 
 use crate::error::Result;
 use crate::math::{cbrt, ln, powf, sqrt};
 use crate::ode::{Direction, Dopri5, OdeSystem, StepOutcome, Tolerances};
 use crate::scene::ContactEnd;
 
-/// Time to crush the layer in stage 1 (Eq. 8 top) from impact speed 1 through thickness `d`, in the
-/// same units: `∫₀^d dx / (1 − λ x^(3/2))` with `r = λ d^(3/2) < 1` (Eq. 9 gives the integrand).
+/// Time to crush the layer in stage 1 (Eq. (8) top) from impact speed 1 through thickness `d`, in the
+/// same units: `∫₀^d dx / (1 − λ x^(3/2))` with `r = λ d^(3/2) < 1` (Eq. (9) gives the integrand).
 ///
 /// With `x = d w²` this is `2d ∫₀¹ w dw / (1 − r w³)`, evaluated by its series for small `r` and in
 /// closed form (partial fractions) otherwise.
@@ -71,9 +71,9 @@ pub struct LiteralOutcome {
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Phase {
-    /// `x ≤ d`: only the layer acts (Eq. 8 top).
+    /// `x ≤ d`: only the layer acts (Eq. (8) top).
     Layer,
-    /// `x > d`: only the bulk acts, with ξ itself (Eq. 8 bottom, as printed).
+    /// `x > d`: only the bulk acts, with ξ itself (Eq. (8) bottom, as printed).
     Bulk,
     /// Force-zero rule: the bulk force has vanished while separating; the grains coast to `x = d`.
     Coast,

@@ -1,4 +1,4 @@
-//! Normal restitution: viscoelastic (Eq. 4–5), soft layer (Eq. 8–10), adhesion (Eq. 11–17), and
+//! Normal restitution: viscoelastic (Eq. (4)–(5)), soft layer (Eq. (8)–(10)), adhesion (Eq. (11)–(17)), and
 //! their composition (layer, then adhesion on its rebound, as the paper's §4 prescribes).
 
 pub mod adhesion;
@@ -20,9 +20,9 @@ pub use viscoelastic::OVERDAMPED_THRESHOLD;
 pub enum Status {
     /// The grains separate.
     Rebound,
-    /// The soft layer dissipated all the kinetic energy (Eq. 10).
+    /// The soft layer dissipated all the kinetic energy (Eq. (10)).
     StuckInLayer,
-    /// The rebound could not pay the JKR separation energy (Eq. 15).
+    /// The rebound could not pay the JKR separation energy (Eq. (15)).
     StuckByAdhesion,
     /// ε_N < 1e-9: Eq. (4) never sticks in finite time, but the rebound is negligible.
     Overdamped,
@@ -43,7 +43,7 @@ impl Status {
 /// The outcome of a normal collision at impact speed `g_n`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Normal {
-    /// Normal restitution coefficient ε_N = −g'_N/g_N ∈ \[0, 1\] (Eq. 1). For `Overdamped` this is the
+    /// Normal restitution coefficient ε_N = −g'_N/g_N ∈ \[0, 1\] (Eq. (1)). For `Overdamped` this is the
     /// raw (tiny) value.
     pub eps: f64,
     /// How the collision ended.
@@ -59,11 +59,11 @@ pub struct Normal {
     pub rhs_evaluations: usize,
 }
 
-/// ε_N and the rest of a purely viscoelastic collision (Eq. 4–5) at impact speed `g > 0`.
+/// ε_N and the rest of a purely viscoelastic collision (Eq. (4)–(5)) at impact speed `g > 0`.
 fn viscoelastic(contact: &Contact, g: f64, accuracy: Accuracy) -> Result<(f64, f64, f64, usize)> {
     let delta = contact.delta(g);
     let r = match accuracy {
-        // The master curve: no integration (DESIGN.md "Accuracy levels and the fast path").
+        // The master curve: no integration (docs/physics.md#accuracy).
         Accuracy::Fast => crate::master::lookup(delta, contact.contact_end, Resolution::Coarse),
         // Precise: the fine table, built by the same integrator at rtol 1e-14 and verified to
         // 1e-10 against an independent computation; live integration via Accuracy::Tolerance.
@@ -168,7 +168,7 @@ impl Contact {
                 rhs_evaluations,
             });
         }
-        // Stage 2: adhesion on the rebound (Eq. 17).
+        // Stage 2: adhesion on the rebound (Eq. (17)).
         let mut error_estimate = error_estimate;
         let eps = match &self.adhesion {
             None => eps_v,

@@ -1,4 +1,4 @@
-//! The viscoelastic contact of Eq. (4) on its dimensionless form (DESIGN.md decision 3).
+//! The viscoelastic contact of Eq. (4) on its dimensionless form (docs/physics.md#decision-3).
 //!
 //! With ξ* = (g²/α)^(2/5), τ = ξ*/g, x = ξ/ξ*, s = t/τ, Eq. (4) becomes
 //! `x'' + x^(3/2) + 1.5 δ √x x' = 0`, `x(0) = 0`, `x'(0) = 1`, with `δ = A α^(2/5) g^(1/5)`,
@@ -10,7 +10,7 @@ use crate::math::{powf, sqrt};
 use crate::ode::{Direction, Dopri5, OdeSystem, StepOutcome, Tolerances};
 use crate::scene::ContactEnd;
 
-/// ε_N below this is reported as [`crate::Status::Overdamped`] (DESIGN.md decision 2).
+/// ε_N below this is reported as [`crate::Status::Overdamped`] (docs/physics.md#decision-2).
 pub const OVERDAMPED_THRESHOLD: f64 = 1e-9;
 
 /// Below this separation speed (in units of the impact speed) a zero-overlap contact is abandoned

@@ -1,4 +1,4 @@
-//! The interactive terminal explorer (DESIGN.md "The two surfaces").
+//! The interactive terminal explorer (ARCHITECTURE.md).
 //!
 //! Elm-like: [`app::App`] is the state, [`app::update`] applies one [`app::Event`], and
 //! [`render::render`] draws the state without side effects. One channel carries every event: keys,
