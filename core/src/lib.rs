@@ -23,7 +23,8 @@
 //! ```
 //!
 //! The crate is `#![no_std]`; feature `std` (default) adds `std::error::Error`, `alloc` adds the
-//! `Vec` helpers, `serde` the JSON form of scenes.
+//! `Vec` helpers, `serde` the JSON form of scenes, `explorer` (needs only `alloc`) the explorer model
+//! shared by the terminal and the web page, `plot` (needs `std`) rendering of figures with plotters.
 
 #![no_std]
 // `!(x > 0.0)` deliberately treats NaN as invalid; index loops mirror the formulas they implement.
@@ -39,6 +40,8 @@ pub mod accuracy;
 pub mod analytic;
 pub mod contact;
 pub mod error;
+#[cfg(feature = "explorer")]
+pub mod explorer;
 #[cfg(feature = "alloc")]
 pub mod figure;
 pub mod fit;

@@ -190,24 +190,55 @@ impl<const D: usize> Table<D> {
             );
         }
         if u >= self.u_max {
-            let beyond = u - self.u_max;
-            let eps = self.tail_eps(delta, beyond);
-            let s_c = if eps == 0.0 {
-                f64::INFINITY
-            } else {
-                exp(self.ln_at(self.u_max, 1))
-            };
-            // x_max ∝ δ^(-2/3) in the overdamped regime.
-            let x_max = exp(self.ln_at(self.u_max, 2)) * powf(10.0, -2.0 / 3.0 * beyond);
-            return point(eps, s_c, x_max);
+            return self.tail(delta, u);
         }
         let (seg, t) = self.locate(u);
         let c = &self.coefficients[seg];
+        let eps = exp(clenshaw(&c[0], t));
         point(
-            exp(clenshaw(&c[0], t)),
-            exp(clenshaw(&c[1], t)),
+            eps,
+            self.resolved_duration(eps, exp(clenshaw(&c[1], t))),
             exp(clenshaw(&c[2], t)),
         )
+    }
+
+    /// The contact duration as reported: a zero-overlap contact whose ε is below
+    /// [`crate::normal::OVERDAMPED_THRESHOLD`] creeps apart over an unboundedly long time, which the
+    /// live integration does not follow either; both report it unresolved (infinite).
+    #[inline]
+    fn resolved_duration(&self, eps: f64, s_c: f64) -> f64 {
+        if self.end == ContactEnd::ZeroOverlap && eps < crate::normal::OVERDAMPED_THRESHOLD {
+            f64::INFINITY
+        } else {
+            s_c
+        }
+    }
+
+    /// ε, s_c and x_max beyond the table's upper end: the strong-damping asymptotes.
+    ///
+    /// ε: `(2/3) δ^(−5/3)` continued from the end (force zero) or `K δ⁻⁵` (zero overlap).
+    /// x_max: the maximum compression comes before either end rule applies, so both rules share it;
+    /// past the force-zero table (δ > 1e7) it scales as δ^(−2/3). s_c: for force zero the contact ends
+    /// one relaxation time after the maximum, which scales as δ^(−2/3) too; for zero overlap it is
+    /// unresolved (ε < 1e-9 beyond the table).
+    fn tail(&self, delta: f64, u: f64) -> Dimensionless {
+        let eps = self.tail_eps(delta, u - self.u_max);
+        let (x_max, s_c) = if self.end == ContactEnd::ZeroOverlap && u < FORCE_ZERO_FINE.u_max {
+            (FORCE_ZERO_FINE.lookup(delta).x_max, f64::INFINITY)
+        } else {
+            let beyond = u - self.u_max;
+            let shrink = powf(10.0, -2.0 / 3.0 * beyond);
+            (
+                exp(self.ln_at(self.u_max, 2)) * shrink,
+                exp(self.ln_at(self.u_max, 1)) * shrink,
+            )
+        };
+        Dimensionless {
+            eps,
+            s_c: self.resolved_duration(eps, s_c),
+            x_max,
+            rhs_evaluations: 0,
+        }
     }
 
     /// ε only.

@@ -192,12 +192,7 @@ pub fn write_all(dir: &Path, e: &Export, scene_json: &str) -> CliResult<Vec<Stri
 /// Reads (g, ε) points from a CSV file: two numeric columns, an optional header line.
 pub fn read_points(path: &Path) -> CliResult<(Vec<f64>, Vec<f64>)> {
     let shown = path.display();
-    let meta = std::fs::metadata(path).map_err(|e| CliError(format!("--data {shown}: {e}")))?;
-    if meta.len() > 16 << 20 {
-        return err(format!("--data {shown}: file larger than 16 MiB"));
-    }
-    let text =
-        std::fs::read_to_string(path).map_err(|e| CliError(format!("--data {shown}: {e}")))?;
+    let text = crate::scene_io::read_bounded(path, 16 << 20, "--data")?;
     let (mut g, mut e) = (Vec::new(), Vec::new());
     for (i, line) in text.lines().enumerate() {
         let line = line.trim();

@@ -54,18 +54,46 @@ pub fn parse_scene(text: &str) -> CliResult<Scene> {
     Ok(scene)
 }
 
-/// Reads a scene file (at most [`MAX_SCENE_BYTES`]).
+/// Reads a whole text file of at most `limit` bytes, for the option or field named `what`.
+///
+/// Only regular files are read: devices (`/dev/zero`), FIFOs and directories are refused before
+/// anything is read, and the read itself stops at `limit + 1` bytes, so that a file growing while
+/// it is read cannot exhaust memory either.
+pub fn read_bounded(path: &Path, limit: u64, what: &str) -> CliResult<String> {
+    use std::io::Read;
+    let shown = path.display();
+    let meta = std::fs::metadata(path).map_err(|e| CliError(format!("{what} {shown}: {e}")))?;
+    if !meta.is_file() {
+        let kind = if meta.is_dir() {
+            "a directory"
+        } else {
+            "not a regular file (a device, FIFO or socket)"
+        };
+        return err(format!("{what} {shown}: is {kind}; give a regular file"));
+    }
+    let too_big = || {
+        CliError(format!(
+            "{what} {shown}: larger than {limit} bytes, the limit for this file"
+        ))
+    };
+    if meta.len() > limit {
+        return Err(too_big());
+    }
+    let file = std::fs::File::open(path).map_err(|e| CliError(format!("{what} {shown}: {e}")))?;
+    let mut bytes = Vec::new();
+    file.take(limit + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| CliError(format!("{what} {shown}: {e}")))?;
+    if bytes.len() as u64 > limit {
+        return Err(too_big());
+    }
+    String::from_utf8(bytes).map_err(|_| CliError(format!("{what} {shown}: is not UTF-8 text")))
+}
+
+/// Reads a scene file (at most [`MAX_SCENE_BYTES`], regular files only).
 pub fn load_scene(path: &Path) -> CliResult<Scene> {
     let shown = path.display();
-    let meta = std::fs::metadata(path).map_err(|e| CliError(format!("--scene {shown}: {e}")))?;
-    if meta.len() > MAX_SCENE_BYTES {
-        return err(format!(
-            "--scene {shown}: file is {} bytes; a scene file is at most {MAX_SCENE_BYTES} bytes",
-            meta.len()
-        ));
-    }
-    let text =
-        std::fs::read_to_string(path).map_err(|e| CliError(format!("--scene {shown}: {e}")))?;
+    let text = read_bounded(path, MAX_SCENE_BYTES, "--scene")?;
     parse_scene(&text).map_err(|e| CliError(format!("--scene {shown}: {}", e.0)))
 }
 

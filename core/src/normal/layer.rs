@@ -54,6 +54,46 @@ pub fn crush_time_with_gap(d: f64, r: f64, gap: f64) -> f64 {
     2.0 * d * integral
 }
 
+/// Time to leave the layer on the way out (Eq. (8) top, integrated once as in Eq. (9)), in the
+/// scales of the impact speed: from `x = d` to `x = 0` with `x' = −ε − λ x^(3/2)`, where `ε > 0` is
+/// the final separation speed and `g_s = λ d^(3/2)`:
+/// `T = ∫₀^d dx / (ε + λ x^(3/2)) = (2d/g_s) ∫₀¹ w dw / (b³ + w³)`, `b³ = ε/g_s`.
+///
+/// Closed form (partial fractions) for `b < 1.5`, the series `Σ (−1)^k b^(−3k−3)/(3k + 2)` above
+/// (where the closed form cancels). Near the sticking threshold (ε → 0) the time grows like
+/// ε^(−1/3): it is finite for every ε > 0 and integrating it step by step would not end.
+pub fn exit_time(d: f64, g_s: f64, eps: f64) -> f64 {
+    if d == 0.0 {
+        return 0.0;
+    }
+    if !(eps > 0.0) {
+        return f64::INFINITY;
+    }
+    if g_s == 0.0 {
+        return d / eps;
+    }
+    let b = cbrt(eps / g_s);
+    let integral = if b >= 1.5 {
+        let b3 = b * b * b;
+        let inv = 1.0 / b3;
+        let mut term = inv;
+        let mut sum = 0.0;
+        for k in 0..60 {
+            let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
+            sum += sign * term / (3.0 * k as f64 + 2.0);
+            term *= inv;
+        }
+        sum
+    } else {
+        let s3 = sqrt(3.0);
+        let log_part = ln((1.0 - b + b * b) / ((1.0 + b) * (1.0 + b))) / (6.0 * b);
+        let atan_part = (crate::math::atan((2.0 - b) / (b * s3)) + core::f64::consts::PI / 6.0)
+            / (b * s3);
+        log_part + atan_part
+    };
+    2.0 * d / g_s * integral
+}
+
 /// Result of a literal-reading layer collision, in units of the impact speed (ξ*, τ of that speed).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LiteralOutcome {
@@ -180,7 +220,6 @@ pub fn literal(
         "layer contact (literal reading)",
     );
     let mut x_max = 0.0;
-    let mut exit_eps = None;
     let mut s_offset = 0.0;
     loop {
         match stepper.step(&sys)? {
@@ -215,11 +254,18 @@ pub fn literal(
                             rhs_evaluations: stepper.rhs_evaluations(),
                         });
                     }
-                    // Eq. (9) once more: the layer takes exactly λ d^(3/2) off the way out; the
-                    // integration continues only for the contact time.
-                    exit_eps = Some(-(y[1] + g_s));
-                    sys.phase = Phase::Layer;
-                    stepper.restart(&sys, t, [0.0, y[1]]);
+                    // Eq. (9) once more: the layer takes exactly λ d^(3/2) off the way out, and
+                    // the time to cross it has a closed form too ([`exit_time`]). Integrating that
+                    // crossing would not end near the threshold, where it lasts ~ ε^(−1/3).
+                    let eps = -(y[1] + g_s);
+                    let s_bulk = if sys.sigma_clock { t * t } else { s_offset + t };
+                    return Ok(LiteralOutcome {
+                        eps: eps.clamp(0.0, 1.0),
+                        stuck: false,
+                        s_c: s_bulk + exit_time(d, g_s, eps),
+                        x_max,
+                        rhs_evaluations: stepper.rhs_evaluations(),
+                    });
                 }
                 FORCE_ZERO if end == ContactEnd::ForceZero && sys.phase == Phase::Bulk => {
                     let y = stepper.exact_state(&sys, t);
@@ -232,7 +278,7 @@ pub fn literal(
                         // Layer drag and bulk damping only dissipate and the bulk force depends
                         // on ξ alone: the exact ε lies in [0, 1]; clamping removes integration
                         // error only.
-                        eps: exit_eps.unwrap_or(-y[1]).clamp(0.0, 1.0),
+                        eps: (-y[1]).clamp(0.0, 1.0),
                         stuck: false,
                         s_c: if sys.sigma_clock { t * t } else { s_offset + t },
                         x_max,
@@ -261,6 +307,43 @@ mod tests {
             s += if i % 2 == 1 { 4.0 } else { 2.0 } * f(w);
         }
         s * h / 3.0
+    }
+
+    /// ∫₀^d dx / (ε + g_s (x/d)^(3/2)) by composite Simpson in x = d w² (smooth integrand).
+    fn exit_time_quadrature(d: f64, g_s: f64, eps: f64) -> f64 {
+        let n = 400_000;
+        let h = 1.0 / n as f64;
+        let f = |w: f64| 2.0 * d * w / (eps + g_s * w * w * w);
+        let mut s = f(0.0) + f(1.0);
+        for i in 1..n {
+            s += if i % 2 == 1 { 4.0 } else { 2.0 } * f(i as f64 * h);
+        }
+        s * h / 3.0
+    }
+
+    #[test]
+    fn exit_time_matches_quadrature_on_both_branches() {
+        // b = (ε/g_s)^(1/3) from 1e-2 (near the threshold) through the switch at 1.5 to 10.
+        for &(g_s, eps) in &[
+            (0.5, 5e-7),
+            (0.5, 1e-3),
+            (0.3, 0.3),
+            (0.2, 0.6749),
+            (0.2, 0.6751),
+            (0.01, 0.9),
+            (1e-3, 0.99),
+        ] {
+            let a = exit_time(2.0, g_s, eps);
+            let b = exit_time_quadrature(2.0, g_s, eps);
+            assert!((a - b).abs() < 1e-9 * b, "g_s = {g_s}, ε = {eps}: {a} vs {b}");
+        }
+        // No drag: the grains coast through the layer; no thickness: no time.
+        assert_eq!(exit_time(2.0, 0.0, 0.5), 4.0);
+        assert_eq!(exit_time(0.0, 0.3, 0.5), 0.0);
+        // Near the threshold T ~ (2d/g_s) (2π/(3√3)) (g_s/ε)^(1/3): finite, growing as ε^(−1/3).
+        let t = exit_time(1.0, 0.5, 1e-30);
+        let lead = 2.0 / 0.5 * 2.0 * core::f64::consts::PI / (3.0 * 3f64.sqrt()) * (0.5f64 / 1e-30).cbrt();
+        assert!((t / lead - 1.0).abs() < 1e-6, "{t} vs {lead}");
     }
 
     #[test]

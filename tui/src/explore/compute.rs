@@ -178,54 +178,15 @@ pub struct FrameData {
     pub map_max: f64,
     /// A problem to show (e.g. the contact could not be derived).
     pub error: Option<String>,
+    /// Notes to show beside the views (e.g. a range cut to the speed limit).
+    pub notes: Vec<String>,
     /// Wall time of the computation.
     pub elapsed: Duration,
 }
 
-/// The speed range of the chart: 1e-7…10 m/s, extended down to a decade below any critical velocity.
+/// The chart's decades (the one range policy of [`rime_core::explorer::range`]).
 pub fn speed_range(contact: Option<&Contact>) -> (i32, i32) {
-    let mut lo = -7;
-    if let Some(c) = contact {
-        for gs in critical_velocities(c).into_iter().flatten() {
-            if gs > 0.0 && gs.is_finite() {
-                lo = lo.min(gs.log10().floor() as i32 - 1);
-            }
-        }
-    }
-    (lo.max(-12), 1)
-}
-
-/// The critical velocities (layer, adhesion) of a contact.
-pub fn critical_velocities(c: &Contact) -> [Option<f64>; 2] {
-    [
-        c.layer.map(|l| l.critical_velocity),
-        c.adhesion.map(|a| a.critical_velocity),
-    ]
-}
-
-/// Rounds up to 1, 2 or 5 × 10^k.
-pub fn nice_ceil(v: f64) -> f64 {
-    if !(v.is_finite() && v > 0.0) {
-        return 1.0;
-    }
-    let e = v.log10().floor();
-    let base = 10f64.powf(e);
-    for m in [1.0, 2.0, 5.0, 10.0] {
-        if m * base >= v * (1.0 - 1e-12) {
-            return m * base;
-        }
-    }
-    10.0 * base
-}
-
-/// The automatic stick-map range: 5× the largest critical velocity (rounded up), else 1 m/s.
-pub fn auto_map_max(contact: &Contact) -> f64 {
-    let gs = critical_velocities(contact)
-        .into_iter()
-        .flatten()
-        .filter(|g| g.is_finite() && *g > 0.0)
-        .fold(0.0, f64::max);
-    if gs > 0.0 { nice_ceil(5.0 * gs) } else { 1.0 }
+    rime_core::explorer::range::chart_decades(contact)
 }
 
 fn eps_curve(
@@ -270,6 +231,7 @@ pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<FrameData>
         map: None,
         map_max: req.map_max.unwrap_or(1.0),
         error: None,
+        notes: Vec::new(),
         elapsed: Duration::ZERO,
     };
     let contact = match contact {
@@ -308,7 +270,14 @@ pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<FrameData>
     if cancelled() {
         return None;
     }
-    data.map_max = req.map_max.unwrap_or_else(|| auto_map_max(&contact));
+    data.map_max = match req.map_max {
+        Some(max) => max,
+        None => {
+            let range = rime_core::explorer::range::auto_map_range(&contact);
+            data.notes.extend(range.note().map(String::from));
+            range.max
+        }
+    };
     if contact.friction.is_some() {
         match StickMap::new(&contact, data.map_max, MAP_POINTS, req.accuracy) {
             Ok(m) => data.map = Some(m),

@@ -883,6 +883,9 @@ fn status_line(app: &App, width: u16) -> Line<'static> {
         if let (Some(e), Some(_)) = (&d.error, &d.contact) {
             spans.push(Span::styled(format!("│ ⚠ {e} "), warn));
         }
+        for note in &d.notes {
+            spans.push(Span::styled(format!("│ {note} "), warn));
+        }
     }
     let opts = paper_options(app);
     if !opts.is_empty() {

@@ -1,0 +1,20 @@
+//! Limits every surface enforces on what a user may ask for.
+
+/// Largest impact speed any model accepts \[m/s\] (the core refuses more, see
+/// [`crate::Contact::normal`]).
+pub const SPEED_MAX: f64 = 1e6;
+/// Smallest (positive) speed a chart or a speed list may start at \[m/s\].
+pub const SPEED_MIN: f64 = 1e-12;
+/// Largest number of points on one curve.
+pub const MAX_CURVE_POINTS: usize = 20_000;
+/// Largest stick-map side (the map has `n²` cells).
+pub const MAX_MAP_SIDE: usize = 1_000;
+/// Largest number of curves in one family.
+pub const MAX_FAMILY: usize = 32;
+/// Largest accepted scene JSON text \[bytes\] (a scene is a few hundred bytes).
+pub const MAX_SCENE_BYTES: usize = 1 << 20;
+
+/// Whether `g` is an impact speed the models accept: finite, positive and at most [`SPEED_MAX`].
+pub fn speed_is_valid(g: f64) -> bool {
+    g.is_finite() && g > 0.0 && g <= SPEED_MAX
+}
