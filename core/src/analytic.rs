@@ -10,6 +10,7 @@ use crate::math::{cbrt, sqrt};
 /// Critical velocity of a soft layer, Eq. (10): `g_s = √R_eff η* D^(3/2)/m_eff` \[m/s\], with
 /// `η* = 1/K` the layer viscosity \[Pa s\], `D = D₁ + D₂` the total thickness \[m\], `R_eff` \[m\] and
 /// `m_eff` \[kg\]. Below it the layer absorbs the whole impact (Eq. (9) with `ξ̇ = 0` at `ξ = D`).
+#[doc(alias = "Eq. (10)")]
 pub fn critical_velocity_layer(r_eff: f64, m_eff: f64, thickness: f64, viscosity: f64) -> f64 {
     // Eq. (10).
     sqrt(r_eff) * viscosity * thickness * sqrt(thickness) / m_eff
@@ -19,6 +20,7 @@ pub fn critical_velocity_layer(r_eff: f64, m_eff: f64, thickness: f64, viscosity
 /// \[J/m²\], `R_eff` \[m\] and modulus `E` \[Pa\] (`Y/(1−ν²)` as printed, docs/physics.md#decision-5).
 ///
 /// Evaluated as `7.09 γ (γR²/E)^(2/3)`, which cannot overflow for physical inputs.
+#[doc(alias = "Eq. (12)")]
 pub fn separation_energy(surface_energy: f64, r_eff: f64, modulus: f64) -> f64 {
     let u = surface_energy * r_eff * r_eff / modulus;
     // Eq. (12).
@@ -30,6 +32,7 @@ pub fn separation_energy(surface_energy: f64, r_eff: f64, modulus: f64) -> f64 {
 ///
 /// Since 14.18 = 2 × 7.09 this is `√(2 W_s/m_eff)`: the rebound kinetic energy `½ m_eff g_s²` just
 /// pays the separation energy of Eq. (12).
+#[doc(alias = "Eq. (15)")]
 pub fn critical_velocity_adhesion(
     m_eff: f64,
     surface_energy: f64,

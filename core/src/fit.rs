@@ -78,6 +78,7 @@ pub const BRIDGES_1984: PowerLaw = PowerLaw {
 };
 
 /// Eq. (27): a g^b (1 − exp(−c g^d)).
+#[doc(alias = "Eq. (27)")]
 pub fn eq27(a: f64, b: f64, c: f64, d: f64, g: f64) -> f64 {
     a * powf(g, b) * (1.0 - exp(-c * powf(g, d)))
 }
@@ -159,6 +160,7 @@ pub fn fit_power_law(g: &[f64], eps: &[f64], g0: f64) -> Result<PowerLaw> {
 ///
 /// Points with ε = 0 below the first rebound are kept (the law must stay near 0 there); the fit is
 /// started from several onset exponents and the best result is returned.
+#[doc(alias = "Eq. (27)")]
 pub fn fit_eq27(g: &[f64], eps: &[f64]) -> Result<Eq27> {
     check_points(g, eps, 4)?;
     let positive = eps.iter().filter(|&&e| e > 0.0).count();

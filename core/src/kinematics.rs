@@ -104,6 +104,7 @@ const FIELDS_J: GrainFields = GrainFields {
 
 /// The relative velocity of the surfaces at the contact point, Eq. (2):
 /// `g = (v_i − ω_i × n a_i) − (v_j + ω_j × n a_j)`, with `n` the unit normal from `j`'s centre to `i`'s.
+#[doc(alias = "Eq. (2)")]
 pub fn relative_surface_velocity(i: &GrainState, j: &GrainState, n: &Vector3<f64>) -> Vector3<f64> {
     // Eq. (2).
     (i.velocity - i.spin.cross(n) * i.radius) - (j.velocity + j.spin.cross(n) * j.radius)
@@ -118,6 +119,7 @@ pub fn decompose(g: &Vector3<f64>, n: &Vector3<f64>) -> (f64, Vector3<f64>) {
 
 /// `κ = q/(1+q)` (Eq. (22)): the reduced moment of inertia of two grains with the same inertia
 /// factor `q`; 2/7 for solid spheres.
+#[doc(alias = "Eq. (22)")]
 pub fn kappa(inertia_factor: f64) -> f64 {
     inertia_factor / (1.0 + inertia_factor)
 }

@@ -210,6 +210,12 @@ impl<const N: usize, const M: usize> Dopri5<N, M> {
         s
     }
 
+    /// Changes the tolerances (for a phase whose state variables have other scales); takes effect
+    /// from the next step.
+    pub fn set_tolerances(&mut self, tol: Tolerances<N>) {
+        self.tol = tol;
+    }
+
     /// Continues from `(t, y)`, forgetting the current step (e.g. after a terminal event or a phase switch).
     pub fn restart<S: OdeSystem<N, M>>(&mut self, sys: &S, t: f64, y: [f64; N]) {
         self.t = t;

@@ -120,6 +120,7 @@ pub struct Tangential {
 
 /// `tan ψ₀ = μ/κ` (Eq. (25)): the sliding angle above which the contact slides. 1.05 for μ = 0.3,
 /// κ = 2/7.
+#[doc(alias = "Eq. (25)")]
 pub fn tan_psi0(friction: &Friction) -> f64 {
     friction.coefficient / friction.kappa
 }
@@ -140,6 +141,7 @@ pub fn is_rolling(g_n: f64, g_t: f64, friction: &Friction) -> bool {
 /// The radicand `1 − 2μ g_N (1+ε_N)/(κ g_T)` of Eq. (23) (`1` when `μ = 0` or `g_N = 0`).
 ///
 /// Meaningful on the sliding branch, where `g_T > 0` whenever `μ > 0`.
+#[doc(alias = "Eq. (23)")]
 pub fn paper_radicand(g_n: f64, g_t: f64, eps_n: f64, friction: &Friction) -> f64 {
     1.0 - 2.0 * coulomb_ratio(g_n, g_t, eps_n, friction)
 }
@@ -159,6 +161,7 @@ fn coulomb_ratio(g_n: f64, g_t: f64, eps_n: f64, friction: &Friction) -> f64 {
 /// `eps_n_of_gn` is ε_N(g_N); `eps_n_of_gt` is ε_N(g_T) and is only read on the rolling branch
 /// ([`is_rolling`]), so maps can evaluate ε_N once per grid velocity and pass any value elsewhere.
 /// Speeds must be finite and non-negative (checked by [`Contact::tangential`], not here).
+#[doc(alias = "Eq. (26)")]
 pub fn classify(
     g_n: f64,
     g_t: f64,

@@ -118,6 +118,7 @@ fn finite(quantity: &'static str, value: f64) -> Result<f64> {
 
 /// Evaluates Eq. (A.1)–(A.7). Inputs must be finite and positive (`surface_energy` may be 0) with
 /// `radius < distance`; the error names the offending field.
+#[doc(alias = "Eq. (A.1)")]
 pub fn tidal(input: &TidalInput) -> Result<Tidal> {
     let big_m = positive("planet_mass", input.planet_mass)?;
     let d = positive("distance", input.distance)?;

@@ -9,3 +9,4 @@ mod physics;
 mod properties;
 mod reference;
 mod takeaway;
+mod thresholds;

@@ -123,8 +123,14 @@ mod tests {
         let c = contact_with_layer(0.02, 1e-6);
         let g_s = c.layer.unwrap().critical_velocity;
         let r = auto_map_range(&c);
-        assert!(r.max >= 5.0 * g_s && r.max < 10.0 * g_s && !r.clamped, "{r:?} {g_s}");
-        assert_eq!(auto_map_range(&Contact::new(&Scene::default()).unwrap()).max, 1.0);
+        assert!(
+            r.max >= 5.0 * g_s && r.max < 10.0 * g_s && !r.clamped,
+            "{r:?} {g_s}"
+        );
+        assert_eq!(
+            auto_map_range(&Contact::new(&Scene::default()).unwrap()).max,
+            1.0
+        );
     }
 
     #[test]

@@ -5,6 +5,7 @@
 /// `eps_v` is ε_{N,v} of the model without adhesion, `g` the impact speed and `g_s` the critical
 /// rebound speed of Eq. (15). The threshold is on the rebound speed `g'_{N,v} = ε_{N,v} g` (Eq. (17)
 /// prints `g_N`; Eq. (13)–(16) put it on the rebound). Returns `None` when the grains stick.
+#[doc(alias = "Eq. (17)")]
 pub fn apply(eps_v: f64, g: f64, g_s: f64) -> Option<f64> {
     if g_s == 0.0 {
         // γ = 0: no separation energy to pay, exactly the model without adhesion (even when the

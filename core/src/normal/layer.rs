@@ -10,6 +10,7 @@ use crate::scene::ContactEnd;
 ///
 /// With `x = d w²` this is `2d ∫₀¹ w dw / (1 − r w³)`, evaluated by its series for small `r` and in
 /// closed form (partial fractions) otherwise.
+#[doc(alias = "Eq. (9)")]
 pub fn crush_time(d: f64, r: f64) -> f64 {
     crush_time_with_gap(d, r, 1.0 - r)
 }
@@ -62,6 +63,7 @@ pub fn crush_time_with_gap(d: f64, r: f64, gap: f64) -> f64 {
 /// Closed form (partial fractions) for `b < 1.5`, the series `Σ (−1)^k b^(−3k−3)/(3k + 2)` above
 /// (where the closed form cancels). Near the sticking threshold (ε → 0) the time grows like
 /// ε^(−1/3): it is finite for every ε > 0 and integrating it step by step would not end.
+#[doc(alias = "Eq. (9)")]
 pub fn exit_time(d: f64, g_s: f64, eps: f64) -> f64 {
     if d == 0.0 {
         return 0.0;
@@ -87,8 +89,8 @@ pub fn exit_time(d: f64, g_s: f64, eps: f64) -> f64 {
     } else {
         let s3 = sqrt(3.0);
         let log_part = ln((1.0 - b + b * b) / ((1.0 + b) * (1.0 + b))) / (6.0 * b);
-        let atan_part = (crate::math::atan((2.0 - b) / (b * s3)) + core::f64::consts::PI / 6.0)
-            / (b * s3);
+        let atan_part =
+            (crate::math::atan((2.0 - b) / (b * s3)) + core::f64::consts::PI / 6.0) / (b * s3);
         log_part + atan_part
     };
     2.0 * d / g_s * integral
@@ -127,51 +129,162 @@ struct Literal {
     phase: Phase,
     /// The independent variable is σ = √s (from the start) rather than local time s − s₀.
     sigma_clock: bool,
+    /// In the bulk, strong damping (δ > 1) carries the total force h = x + 1.5 δ x' instead of x'
+    /// (as the viscoelastic contact does): the force then vanishes exactly when the state's second
+    /// component does, while x + 1.5 δ x' computed from x' is a difference of nearly equal numbers
+    /// whose sign the integration error decides, so that the force-zero event was missed and the
+    /// overdamped creep followed with stiffness-limited steps (10⁶ evaluations and more).
+    force_form: bool,
+    /// Zero overlap after the total force vanished: the tensile viscous force only slows the
+    /// separation down from here on.
+    creeping: bool,
+    /// Eq. (10) in units of the impact speed: the speed the layer takes off on the way out.
+    g_s: f64,
+}
+
+impl Literal {
+    /// 1.5 δ.
+    fn k(&self) -> f64 {
+        1.5 * self.delta
+    }
+
+    /// Whether the state's second component is the total force h (else the velocity).
+    fn carries_force(&self) -> bool {
+        self.force_form && self.phase == Phase::Bulk
+    }
+
+    /// dx/ds from the state.
+    fn velocity(&self, y: &[f64; 2]) -> f64 {
+        if self.carries_force() {
+            (y[1] - (self.d + y[0])) / self.k()
+        } else {
+            y[1]
+        }
+    }
+
+    /// The state's second component for velocity `v` at `u = x − d` in the current phase.
+    fn second(&self, u: f64, v: f64) -> f64 {
+        if self.carries_force() {
+            (self.d + u) + self.k() * v
+        } else {
+            v
+        }
+    }
 }
 
 const MAX: usize = 0;
 const BOUNDARY: usize = 1;
 const FORCE_ZERO: usize = 2;
 const EXIT: usize = 3;
+/// Zero overlap, after the force vanished: the separation speed falls to what the layer takes off.
+const CREEP_STICK: usize = 4;
 
-impl OdeSystem<2, 4> for Literal {
+impl OdeSystem<2, 5> for Literal {
     fn rhs(&self, sigma: f64, y: &[f64; 2], dydt: &mut [f64; 2]) {
         // The state carries u = x − d: the bulk excursion beyond the layer is often tiny next to d,
         // and x itself would round it away.
         let x = (self.d + y[0]).max(0.0);
         // dt/dσ = 2σ while the clock is σ = √s (the singular start); 1 once it is local time.
         let two_sigma = if self.sigma_clock { 2.0 * sigma } else { 1.0 };
-        dydt[0] = two_sigma * y[1];
+        let v = self.velocity(y);
+        dydt[0] = two_sigma * v;
         dydt[1] = match self.phase {
             // Eq. (8), top: ξ'' + (3/2)(√R/(K m)) √ξ ξ' = 0.
             Phase::Layer => -two_sigma * 1.5 * self.lambda * sqrt(x) * y[1],
+            // Eq. (8), bottom, with ξ itself, for h: h' = x' + 1.5 δ x'' = v − 1.5 δ √x h.
+            Phase::Bulk if self.force_form => two_sigma * (v - self.k() * sqrt(x) * y[1]),
             // Eq. (8), bottom, with ξ itself.
-            Phase::Bulk => -two_sigma * sqrt(x) * (x + 1.5 * self.delta * y[1]),
+            Phase::Bulk => -two_sigma * sqrt(x) * (x + self.k() * y[1]),
             Phase::Coast => 0.0,
         };
     }
 
-    fn events(&self, _sigma: f64, y: &[f64; 2], out: &mut [f64; 4]) {
-        out[MAX] = y[1];
-        out[BOUNDARY] = y[0];
-        out[FORCE_ZERO] = if self.phase == Phase::Bulk {
-            (self.d + y[0]) + 1.5 * self.delta * y[1]
+    fn events(&self, _sigma: f64, y: &[f64; 2], out: &mut [f64; 5]) {
+        out[MAX] = if self.carries_force() {
+            y[1] - (self.d + y[0])
         } else {
-            1.0
+            y[1]
+        };
+        out[BOUNDARY] = y[0];
+        out[FORCE_ZERO] = match self.phase {
+            Phase::Bulk if self.force_form => y[1],
+            Phase::Bulk => (self.d + y[0]) + self.k() * y[1],
+            _ => 1.0,
         };
         out[EXIT] = self.d + y[0];
+        out[CREEP_STICK] = if self.creeping {
+            self.velocity(y) + self.g_s
+        } else {
+            -1.0
+        };
     }
 
     fn direction(&self, which: usize) -> Direction {
         match which {
             BOUNDARY => Direction::Either,
+            CREEP_STICK => Direction::Rising,
             _ => Direction::Falling,
         }
     }
 }
 
+/// k²√d above which the zero-overlap creep of the literal reading is taken from its slow manifold:
+/// the neglected terms are of relative order (k²√d)⁻³ ≤ 1e-12.
+const SLOW_MANIFOLD: f64 = 1e4;
+
+/// The end of a strongly overdamped bulk excursion of the literal reading, in closed form.
+///
+/// With k = 1.5 δ, the bulk force relaxes within ~1/(k√x) to the slow creep on which
+/// x' = −x/k − √x/k³ + O(k⁻⁵) (Eq. (8), bottom, expanded in 1/k²). Force zero: the force vanishes on
+/// the way to that creep, at x ≈ `x_from`, and the grains coast to x = d at −x/k. Zero overlap: they
+/// follow the creep down to x = d and arrive at d/k + √d/k³ + 1.5/k⁵ (the expansion of the slow
+/// manifold in 1/k², next term of relative order (k²√d)⁻³), after a time
+/// k ln(x_from/d) − (2/k)(1/√d − 1/√x_from). The layer then takes g_s off the way out (Eq. (9)).
+/// Durations: the coast or the creep time, plus the closed-form layer crossing.
+fn overdamped_exit(
+    d: f64,
+    g_s: f64,
+    k: f64,
+    x_from: f64,
+    end: ContactEnd,
+    s_from: f64,
+    rhs_evaluations: usize,
+) -> LiteralOutcome {
+    let (speed, s_bulk) = match end {
+        ContactEnd::ForceZero => {
+            let v = x_from / k;
+            (v, (x_from - d) / v)
+        }
+        ContactEnd::ZeroOverlap => {
+            let k3 = k * k * k;
+            (
+                d / k + sqrt(d) / k3 + 1.5 / (k3 * k * k),
+                k * ln(x_from / d) - 2.0 / k * (1.0 / sqrt(d) - 1.0 / sqrt(x_from)),
+            )
+        }
+    };
+    let eps = speed - g_s;
+    if !(eps > 0.0) {
+        return LiteralOutcome {
+            eps: 0.0,
+            stuck: true,
+            s_c: f64::INFINITY,
+            x_max: x_from,
+            rhs_evaluations,
+        };
+    }
+    LiteralOutcome {
+        eps: eps.min(1.0),
+        stuck: false,
+        s_c: s_from + s_bulk + exit_time(d, g_s, eps),
+        x_max: x_from,
+        rhs_evaluations,
+    }
+}
+
 /// The literal reading of Eq. (8): dimensionless damping `delta`, layer drag `lambda = c ξ*^(3/2)/g`
 /// and thickness `d = D/ξ*` (both in the scales of the impact speed).
+#[doc(alias = "Eq. (8)")]
 pub fn literal(
     delta: f64,
     lambda: f64,
@@ -190,22 +303,39 @@ pub fn literal(
             rhs_evaluations: 0,
         });
     }
+    // As for the clean contact: in the overdamped regime a loose tolerance lets the step-size
+    // controller wander along the stiff, nearly force-free creep (measured: δ = 5e6 at rtol 1e-9
+    // exhausted 200 000 steps; at 1e-11 it takes 20 000 evaluations).
+    let rtol = if delta > 1e3 { rtol.min(1e-11) } else { rtol };
     let mut sys = Literal {
         delta,
         lambda,
         d,
         phase: if d > 0.0 { Phase::Layer } else { Phase::Bulk },
         sigma_clock: true,
+        force_form: delta > 1.0,
+        creeping: false,
+        g_s,
     };
     let sigma_scale = if delta > 1.0 {
         powf(delta, -1.0 / 3.0)
     } else {
         1.0
     };
+    let x_scale = sigma_scale * sigma_scale;
     let tol = Tolerances {
         rtol,
-        atol: [rtol * 1e-3 * sigma_scale * sigma_scale, rtol * 1e-6],
+        atol: [rtol * 1e-3 * x_scale, rtol * 1e-6],
         max_steps: 200_000,
+    };
+    // In the force form h runs from 1.5 δ down through 0 (near x ~ d + x_scale).
+    let bulk_tol = if sys.force_form {
+        Tolerances {
+            atol: [tol.atol[0], rtol * 1e-3 * (d + x_scale)],
+            ..tol
+        }
+    } else {
+        tol
     };
     // Bounds both clocks: σ up to the layer crossing, then local time (the way out through the
     // layer takes ~ d / exit speed).
@@ -213,7 +343,7 @@ pub fn literal(
     let mut stepper = Dopri5::new(
         &sys,
         0.0,
-        [-d, 1.0],
+        [-d, sys.second(-d, 1.0)],
         sigma_end,
         0.05 * sigma_scale.min(sqrt(d.max(1e-300))).max(1e-8),
         tol,
@@ -231,7 +361,26 @@ pub fn literal(
                 });
             }
             StepOutcome::Event { t, y, which } => match which {
-                MAX => x_max = d + y[0],
+                MAX => {
+                    x_max = d + y[0];
+                    let k = sys.k();
+                    // Past the maximum the bulk force relaxes within ~1/(k√x) to the slow creep
+                    // x' ≈ −x/k. Where k²√x exceeds what the tolerance resolves, the total force
+                    // on that creep (−√x/k² relative to x) is below the integration error and its
+                    // zero cannot be located: finish with the creep's closed form instead.
+                    if sys.phase == Phase::Bulk && d > 0.0 && k * k * sqrt(x_max) * tol.rtol > 1e3 {
+                        let t_max = if sys.sigma_clock { t * t } else { s_offset + t };
+                        return Ok(overdamped_exit(
+                            d,
+                            g_s,
+                            k,
+                            x_max,
+                            end,
+                            t_max,
+                            stepper.rhs_evaluations(),
+                        ));
+                    }
+                }
                 BOUNDARY if y[1] > 0.0 && sys.phase == Phase::Layer => {
                     // Eq. (9): the layer is crushed with speed exactly 1 − λ d^(3/2). The bulk
                     // excursion is brief next to the crushing time: continue on a local clock
@@ -239,13 +388,15 @@ pub fn literal(
                     s_offset = t * t;
                     sys.sigma_clock = false;
                     sys.phase = Phase::Bulk;
-                    stepper.restart(&sys, 0.0, [0.0, 1.0 - g_s]);
+                    stepper.set_tolerances(bulk_tol);
+                    stepper.restart(&sys, 0.0, [0.0, sys.second(0.0, 1.0 - g_s)]);
                 }
-                BOUNDARY if y[1] < 0.0 && sys.phase != Phase::Layer => {
+                BOUNDARY if sys.velocity(&y) < 0.0 && sys.phase != Phase::Layer => {
                     let y = stepper.exact_state(&sys, t);
+                    let v = sys.velocity(&y);
                     // Leaving the bulk through the layer: Eq. (9) integrated once more gives the exit
                     // speed v_d + λ d^(3/2); if that is not negative, the layer holds the grains.
-                    if y[1] + g_s >= 0.0 {
+                    if v + g_s >= 0.0 {
                         return Ok(LiteralOutcome {
                             eps: 0.0,
                             stuck: true,
@@ -257,7 +408,7 @@ pub fn literal(
                     // Eq. (9) once more: the layer takes exactly λ d^(3/2) off the way out, and
                     // the time to cross it has a closed form too ([`exit_time`]). Integrating that
                     // crossing would not end near the threshold, where it lasts ~ ε^(−1/3).
-                    let eps = -(y[1] + g_s);
+                    let eps = -(v + g_s);
                     let s_bulk = if sys.sigma_clock { t * t } else { s_offset + t };
                     return Ok(LiteralOutcome {
                         eps: eps.clamp(0.0, 1.0),
@@ -267,10 +418,74 @@ pub fn literal(
                         rhs_evaluations: stepper.rhs_evaluations(),
                     });
                 }
-                FORCE_ZERO if end == ContactEnd::ForceZero && sys.phase == Phase::Bulk => {
+                FORCE_ZERO if sys.phase == Phase::Bulk => {
                     let y = stepper.exact_state(&sys, t);
-                    sys.phase = Phase::Coast;
-                    stepper.restart(&sys, t, y);
+                    let v = sys.velocity(&y);
+                    if end == ContactEnd::ForceZero && d > 0.0 {
+                        // The bulk force has vanished while separating: the grains coast to x = d
+                        // at −v (a coast from deep in the bulk can take a time of order δ).
+                        let s_coast = s_offset + t + y[0] / -v;
+                        let eps = -(v + g_s);
+                        return Ok(if eps > 0.0 {
+                            LiteralOutcome {
+                                eps: eps.min(1.0),
+                                stuck: false,
+                                s_c: s_coast + exit_time(d, g_s, eps),
+                                x_max,
+                                rhs_evaluations: stepper.rhs_evaluations(),
+                            }
+                        } else {
+                            LiteralOutcome {
+                                eps: 0.0,
+                                stuck: true,
+                                s_c: f64::INFINITY,
+                                x_max,
+                                rhs_evaluations: stepper.rhs_evaluations(),
+                            }
+                        });
+                    } else if end == ContactEnd::ForceZero {
+                        sys.phase = Phase::Coast;
+                        stepper.set_tolerances(tol);
+                        stepper.restart(&sys, t, [y[0], v]);
+                    } else if d > 0.0 && -v > g_s && sys.k() * sys.k() * sqrt(d) > SLOW_MANIFOLD {
+                        // The creep to x = d follows its slow manifold to 1e-12: closed form.
+                        let s_fz = s_offset + t;
+                        return Ok(overdamped_exit(
+                            d,
+                            g_s,
+                            sys.k(),
+                            d + y[0],
+                            end,
+                            s_fz,
+                            stepper.rhs_evaluations(),
+                        ));
+                    } else if d > 0.0 && -v > g_s {
+                        sys.creeping = true;
+                        stepper.restart(&sys, t, y);
+                    } else if d > 0.0 {
+                        // Zero overlap: from here on the viscous force is tensile and the
+                        // separation speed only falls, so the grains reach x = d slower than −v,
+                        // which the layer takes off entirely: they stick. Following that creep
+                        // would cost stiffness-limited steps over a time of order δ.
+                        return Ok(LiteralOutcome {
+                            eps: 0.0,
+                            stuck: true,
+                            s_c: f64::INFINITY,
+                            x_max,
+                            rhs_evaluations: stepper.rhs_evaluations(),
+                        });
+                    }
+                }
+                CREEP_STICK if sys.creeping => {
+                    // The separation speed only falls from here, so the grains reach x = d
+                    // slower than the layer's g_s: they stick (see the force-zero case above).
+                    return Ok(LiteralOutcome {
+                        eps: 0.0,
+                        stuck: true,
+                        s_c: f64::INFINITY,
+                        x_max,
+                        rhs_evaluations: stepper.rhs_evaluations(),
+                    });
                 }
                 EXIT if sys.phase != Phase::Bulk || d == 0.0 => {
                     let y = stepper.exact_state(&sys, t);
@@ -278,7 +493,7 @@ pub fn literal(
                         // Layer drag and bulk damping only dissipate and the bulk force depends
                         // on ξ alone: the exact ε lies in [0, 1]; clamping removes integration
                         // error only.
-                        eps: (-y[1]).clamp(0.0, 1.0),
+                        eps: (-sys.velocity(&y)).clamp(0.0, 1.0),
                         stuck: false,
                         s_c: if sys.sigma_clock { t * t } else { s_offset + t },
                         x_max,
@@ -335,14 +550,18 @@ mod tests {
         ] {
             let a = exit_time(2.0, g_s, eps);
             let b = exit_time_quadrature(2.0, g_s, eps);
-            assert!((a - b).abs() < 1e-9 * b, "g_s = {g_s}, ε = {eps}: {a} vs {b}");
+            assert!(
+                (a - b).abs() < 1e-9 * b,
+                "g_s = {g_s}, ε = {eps}: {a} vs {b}"
+            );
         }
         // No drag: the grains coast through the layer; no thickness: no time.
         assert_eq!(exit_time(2.0, 0.0, 0.5), 4.0);
         assert_eq!(exit_time(0.0, 0.3, 0.5), 0.0);
         // Near the threshold T ~ (2d/g_s) (2π/(3√3)) (g_s/ε)^(1/3): finite, growing as ε^(−1/3).
         let t = exit_time(1.0, 0.5, 1e-30);
-        let lead = 2.0 / 0.5 * 2.0 * core::f64::consts::PI / (3.0 * 3f64.sqrt()) * (0.5f64 / 1e-30).cbrt();
+        let lead =
+            2.0 / 0.5 * 2.0 * core::f64::consts::PI / (3.0 * 3f64.sqrt()) * (0.5f64 / 1e-30).cbrt();
         assert!((t / lead - 1.0).abs() < 1e-6, "{t} vs {lead}");
     }
 

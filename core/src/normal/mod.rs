@@ -101,9 +101,11 @@ fn check_speed(g: f64) -> Result<f64> {
 
 impl Contact {
     /// Normal restitution at impact speed `g` \[m/s\] with every effect the scene enables.
+    #[doc(alias = "Eq. (5)")]
     pub fn normal(&self, g: f64, accuracy: Accuracy) -> Result<Normal> {
         let g = check_speed(g)?;
         let error_estimate = accuracy.error_bound();
+        let mut literal_widening = 1.0;
         // Stage 1: the layer, if any; gives ε_{N,v} of Eq. (17).
         let (eps_v, t_c, xi_max, stuck_in_layer, rhs_evaluations) = match &self.layer {
             None => {
@@ -148,6 +150,11 @@ impl Contact {
                         self.contact_end,
                         accuracy.integrator_rtol(),
                     )?;
+                    // ε = v_exit − g_s/g: the exit speed's relative error grows by (ε + g_s/g)/ε
+                    // near the threshold, where ε is a small difference.
+                    if out.eps > 0.0 {
+                        literal_widening = 1.0 + layer.critical_velocity / g / out.eps;
+                    }
                     (
                         out.eps,
                         out.s_c * self.time_scale(g),
@@ -169,7 +176,7 @@ impl Contact {
             });
         }
         // Stage 2: adhesion on the rebound (Eq. (17)).
-        let mut error_estimate = error_estimate;
+        let mut error_estimate = error_estimate * literal_widening;
         let eps = match &self.adhesion {
             None => eps_v,
             Some(adh) => match adhesion::apply(eps_v, g, adh.critical_velocity) {

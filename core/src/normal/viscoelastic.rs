@@ -68,6 +68,8 @@ struct Viscoelastic {
     /// 1.5 δ.
     k: f64,
     force_form: bool,
+    /// Separation speed below which a creeping zero-overlap contact is abandoned (0: never).
+    creep_floor: f64,
 }
 
 impl Viscoelastic {
@@ -75,6 +77,7 @@ impl Viscoelastic {
         Viscoelastic {
             k: 1.5 * delta,
             force_form: delta > 1.0,
+            creep_floor: CREEP_FLOOR,
         }
     }
 
@@ -130,7 +133,7 @@ impl OdeSystem<2, 4> for Viscoelastic {
         out[MAX] = if self.force_form { y[1] - y[0] } else { v };
         out[FORCE_ZERO] = self.force(y);
         out[OVERLAP_ZERO] = y[0];
-        out[CREEP] = v + CREEP_FLOOR;
+        out[CREEP] = v + self.creep_floor;
     }
 
     fn direction(&self, which: usize) -> Direction {
@@ -143,6 +146,7 @@ impl OdeSystem<2, 4> for Viscoelastic {
 }
 
 /// Integrates the dimensionless Eq. (4) for damping `delta ≥ 0` with relative tolerance `rtol`.
+#[doc(alias = "Eq. (4)")]
 pub fn dimensionless(delta: f64, end: ContactEnd, rtol: f64) -> Result<Dimensionless> {
     dimensionless_with_budget(delta, end, rtol, MAX_STEPS, CREEP_DELTA_LIMIT)
 }
@@ -155,6 +159,28 @@ pub fn dimensionless_with_budget(
     max_steps: usize,
     creep_delta_limit: f64,
 ) -> Result<Dimensionless> {
+    integrate(delta, end, rtol, max_steps, creep_delta_limit, CREEP_FLOOR)
+}
+
+/// A zero-overlap contact followed through its whole creep, however slow (for building the tables,
+/// which need the duration where ε_N is still above [`OVERDAMPED_THRESHOLD`] and a little beyond).
+pub fn dimensionless_through_creep(
+    delta: f64,
+    end: ContactEnd,
+    rtol: f64,
+    max_steps: usize,
+) -> Result<Dimensionless> {
+    integrate(delta, end, rtol, max_steps, f64::INFINITY, 0.0)
+}
+
+fn integrate(
+    delta: f64,
+    end: ContactEnd,
+    rtol: f64,
+    max_steps: usize,
+    creep_delta_limit: f64,
+    creep_floor: f64,
+) -> Result<Dimensionless> {
     if !(delta.is_finite() && delta >= 0.0) {
         return Err(Error::OutOfRange {
             field: "delta",
@@ -162,7 +188,10 @@ pub fn dimensionless_with_budget(
             expected: "must be a finite number >= 0",
         });
     }
-    let sys = Viscoelastic::new(delta);
+    let sys = Viscoelastic {
+        creep_floor,
+        ..Viscoelastic::new(delta)
+    };
     // Far in the overdamped regime loose tolerances let the step-size controller wander over the
     // long, nearly force-free tail; a tighter tolerance costs little there (measured: δ = 1e9 at
     // rtol 1e-8 exhausts any budget, at 1e-12 it takes 19k evaluations).
@@ -223,7 +252,7 @@ pub fn dimensionless_with_budget(
                 match (which, end) {
                     (MAX, _) => x_max = y[0],
                     (FORCE_ZERO, ContactEnd::ZeroOverlap)
-                        if -v < CREEP_FLOOR || delta > creep_delta_limit =>
+                        if -v < creep_floor || delta > creep_delta_limit =>
                     {
                         // ε_N ≤ |x'| here < OVERDAMPED_THRESHOLD (or, beyond the creep limit,
                         // K δ⁻⁵): no need to follow the slow creep.

@@ -763,6 +763,17 @@ fn map(app: &App, buf: &mut Buffer, area: Rect) {
                 Style::new().fg(Color::Gray),
             );
         }
+        // The convention behind "stuck" (docs/physics.md#decision-7).
+        let y = py + StickClass::ALL.len() as u16;
+        if y < inner.y + inner.height {
+            buf.set_stringn(
+                lx,
+                y,
+                "ε_N<1e-9 = rebound",
+                legend_w as usize,
+                Style::new().fg(Color::DarkGray),
+            );
+        }
     }
 }
 
