@@ -223,6 +223,23 @@ impl<const N: usize, const M: usize> Dopri5<N, M> {
         sys.rhs(t, &y, &mut self.f);
         sys.events(t, &y, &mut self.events_old);
         self.rhs_evaluations += 1;
+        // An event function that is exactly zero at the restart point (a boundary just crossed)
+        // takes the sign it has just after it, along the current derivative: otherwise a first
+        // step that leaves and re-crosses the boundary would see 0 → 0-crossing and miss it.
+        if self.events_old.contains(&0.0) {
+            let tau = 1e-9 * self.h.abs().max(f64::MIN_POSITIVE);
+            let mut nudged = y;
+            for i in 0..N {
+                nudged[i] += tau * self.f[i];
+            }
+            let mut ahead = [0.0; M];
+            sys.events(t + tau, &nudged, &mut ahead);
+            for (old, next) in self.events_old.iter_mut().zip(ahead) {
+                if *old == 0.0 {
+                    *old = next;
+                }
+            }
+        }
         // A restart usually follows a switch of the right-hand side (a phase change): the old step
         // size may be far too large for the new dynamics, and a step that swallows a whole
         // excursion would step over the events inside it. Start again from the usual estimate

@@ -228,6 +228,14 @@ impl OdeSystem<2, 5> for Literal {
     }
 }
 
+/// How many relaxation times the creep to x = d must last before the slow manifold is taken as
+/// reached: the force-zero start relaxes onto it as exp(−k√x s), and the creep lasts
+/// k ln(x/d), so what is left of the start at x = d is exp(−k²√d ln(x/d)) < e⁻⁴⁰.
+const RELAXED: f64 = 40.0;
+
+/// δ above which the bulk phase carries the total force instead of the velocity.
+const FORCE_FORM_DELTA: f64 = 1e3;
+
 /// k²√d above which the zero-overlap creep of the literal reading is taken from its slow manifold:
 /// the neglected terms are of relative order (k²√d)⁻³ ≤ 1e-12.
 const SLOW_MANIFOLD: f64 = 1e4;
@@ -313,7 +321,9 @@ pub fn literal(
         d,
         phase: if d > 0.0 { Phase::Layer } else { Phase::Bulk },
         sigma_clock: true,
-        force_form: delta > 1.0,
+        // Only where the creep is strongly overdamped: with moderate δ and a thick layer the bulk
+        // force at x = d dominates, and the velocity form resolves the brief excursion better.
+        force_form: delta > FORCE_FORM_DELTA,
         creeping: false,
         g_s,
     };
@@ -447,7 +457,11 @@ pub fn literal(
                         sys.phase = Phase::Coast;
                         stepper.set_tolerances(tol);
                         stepper.restart(&sys, t, [y[0], v]);
-                    } else if d > 0.0 && -v > g_s && sys.k() * sys.k() * sqrt(d) > SLOW_MANIFOLD {
+                    } else if d > 0.0
+                        && -v > g_s
+                        && sys.k() * sys.k() * sqrt(d) > SLOW_MANIFOLD
+                        && sys.k() * sys.k() * sqrt(d) * ln((d + y[0]) / d) > RELAXED
+                    {
                         // The creep to x = d follows its slow manifold to 1e-12: closed form.
                         let s_fz = s_offset + t;
                         return Ok(overdamped_exit(
