@@ -3,6 +3,7 @@
 mod bad_input;
 mod cli;
 mod cost;
+mod exported;
 mod extremes;
 mod fuzz;
 mod physics;
