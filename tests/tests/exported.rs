@@ -109,11 +109,12 @@ fn main() {
 
 /// Compiled probes (C, Rust) of one export.
 fn probes(dir: &Path, runtime: Option<[f64; 6]>) -> [PathBuf; 2] {
-    let (call_n, call_t, contact, rust_glue) = match runtime {
+    // The C probe's CALL_N/CALL_T/CONTACT and the Rust probe's call_n/call_t/contact.
+    let (call_n, call_t, contact_define, rust_glue) = match runtime {
         None => (
-            "rime_eps_n(g)".to_string(),
+            "rime_eps_n((g))".to_string(),
             "rime_eps_t(a, b, c)".to_string(),
-            "&RIME_SCENE_CONTACT".to_string(),
+            "#define CONTACT &RIME_SCENE_CONTACT\n".to_string(),
             "fn call_n(g: f64) -> f64 { rime_eps_n(g) }\n\
              fn call_t(a: f64, b: f64) -> (f64, RimeStickClass) { rime_eps_t(a, b) }\n\
              fn contact() -> RimeContact { RIME_SCENE_CONTACT }\n"
@@ -122,9 +123,11 @@ fn probes(dir: &Path, runtime: Option<[f64; 6]>) -> [PathBuf; 2] {
         Some(p) => {
             let args = p.map(|v| format!("{v:?}")).join(", ");
             (
-                format!("rime_eps_n(g, {args})"),
+                format!("rime_eps_n((g), {args})"),
                 format!("rime_eps_t(a, b, {args}, c)"),
-                String::new(),
+                format!(
+                    "static const struct rime_contact *probe_contact(void) {{ static struct rime_contact c; rime_contact_init(&c, {args}); return &c; }}\n#define CONTACT probe_contact()\n"
+                ),
                 format!(
                     "fn call_n(g: f64) -> f64 {{ rime_eps_n(g, {args}) }}\n\
                      fn call_t(a: f64, b: f64) -> (f64, RimeStickClass) {{ rime_eps_t(a, b, {args}) }}\n\
@@ -133,19 +136,8 @@ fn probes(dir: &Path, runtime: Option<[f64; 6]>) -> [PathBuf; 2] {
             )
         }
     };
-    // The runtime variant's contact for `k` is built by rime_contact_init into a local.
-    let contact_define = if runtime.is_some() {
-        let args = runtime.unwrap().map(|v| format!("{v:?}")).join(", ");
-        format!(
-            "static const struct rime_contact *probe_contact(void) {{ static struct rime_contact c; rime_contact_init(&c, {args}); return &c; }}\n#define CONTACT probe_contact()\n"
-        )
-    } else {
-        format!("#define CONTACT {contact}\n")
-    };
     let c_src = format!(
-        "#include \"rime_eps.h\"\n#define CALL_N(g) {}\n#define CALL_T(a, b, c) {}\n{contact_define}{C_PROBE}",
-        call_n.replace("(g", "((g)"),
-        call_t
+        "#include \"rime_eps.h\"\n#define CALL_N(g) {call_n}\n#define CALL_T(a, b, c) {call_t}\n{contact_define}{C_PROBE}"
     );
     std::fs::write(dir.join("probe.c"), c_src).unwrap();
     let c_exe = dir.join("probe-c");
@@ -159,26 +151,56 @@ fn probes(dir: &Path, runtime: Option<[f64; 6]>) -> [PathBuf; 2] {
         .arg("-lm")
         .status()
         .expect("a C compiler (cc) is needed for this test");
-    assert!(cc.success(), "generated C does not compile: {}", dir.display());
+    assert!(
+        cc.success(),
+        "generated C does not compile: {}",
+        dir.display()
+    );
     // The generated Rust is no_std: it compiles as a #![no_std] library on its own.
     let lib = dir.join("nostd.rs");
     std::fs::write(&lib, "#![no_std]\ninclude!(\"rime_eps.rs\");\n").unwrap();
     let status = Command::new("rustc")
-        .args(["--edition", "2021", "--crate-type", "rlib", "-D", "warnings", "-A", "dead_code", "--out-dir"])
+        .args([
+            "--edition",
+            "2021",
+            "--crate-type",
+            "rlib",
+            "-D",
+            "warnings",
+            "-A",
+            "dead_code",
+            "--out-dir",
+        ])
         .arg(dir)
         .arg(&lib)
         .status()
         .unwrap();
-    assert!(status.success(), "generated Rust is not no_std: {}", dir.display());
+    assert!(
+        status.success(),
+        "generated Rust is not no_std: {}",
+        dir.display()
+    );
     std::fs::write(dir.join("probe.rs"), format!("{RUST_PROBE}\n{rust_glue}")).unwrap();
     let rs_exe = dir.join("probe-rs");
     let status = Command::new("rustc")
-        .args(["-C", "opt-level=1", "--edition", "2021", "-A", "warnings", "-o"])
+        .args([
+            "-C",
+            "opt-level=1",
+            "--edition",
+            "2021",
+            "-A",
+            "warnings",
+            "-o",
+        ])
         .arg(&rs_exe)
         .arg(dir.join("probe.rs"))
         .status()
         .unwrap();
-    assert!(status.success(), "generated Rust does not compile: {}", dir.display());
+    assert!(
+        status.success(),
+        "generated Rust does not compile: {}",
+        dir.display()
+    );
     [c_exe, rs_exe]
 }
 
@@ -226,7 +248,10 @@ fn check_eps_n(exe: &Path, contact: &Contact, bound: f64, what: &str) -> f64 {
         worst = worst.max(err / amplification);
     }
     let z = lines_of(&run(exe, "z", ""));
-    assert!(z[0][0].is_nan() && z[0][1].is_nan(), "{what}: NaN in must give NaN out");
+    assert!(
+        z[0][0].is_nan() && z[0][1].is_nan(),
+        "{what}: NaN in must give NaN out"
+    );
     worst
 }
 
@@ -239,7 +264,10 @@ fn check_eps_t(exe: &Path, contact: &Contact, bound: f64, what: &str) -> f64 {
         .iter()
         .flat_map(|&a| axis.iter().map(move |&b| (a, b)))
         .collect();
-    let input: String = pairs.iter().map(|(a, b)| format!("{a:?} {b:?}\n")).collect();
+    let input: String = pairs
+        .iter()
+        .map(|(a, b)| format!("{a:?} {b:?}\n"))
+        .collect();
     let rows = lines_of(&run(exe, "t", &input));
     assert_eq!(rows.len(), pairs.len());
     let friction = contact.friction.unwrap();
@@ -301,8 +329,15 @@ fn check_kinematics(exe: &Path, contact: &Contact, bound: f64, what: &str) -> f6
     let fmt = |g: &GrainState| {
         format!(
             "{:?} {:?} {:?} {:?} {:?} {:?} {:?} {:?} {:?}\n",
-            g.mass, g.radius, g.inertia_factor, g.velocity[0], g.velocity[1], g.velocity[2],
-            g.spin[0], g.spin[1], g.spin[2]
+            g.mass,
+            g.radius,
+            g.inertia_factor,
+            g.velocity[0],
+            g.velocity[1],
+            g.velocity[2],
+            g.spin[0],
+            g.spin[1],
+            g.spin[2]
         )
     };
     let input = format!("{}{}{:?} {:?} {:?}\n", fmt(&i), fmt(&j), n[0], n[1], n[2]);
@@ -324,8 +359,14 @@ fn check_kinematics(exe: &Path, contact: &Contact, bound: f64, what: &str) -> f6
         (p, l)
     };
     let ((p0, l0), (p1, l1)) = (momenta(&i, &j), momenta(&i2, &j2));
-    assert!((p1 - p0).norm() <= 1e-14 * p0.norm(), "{what}: momentum {p0} → {p1}");
-    assert!((l1 - l0).norm() <= 1e-14 * l0.norm(), "{what}: angular momentum {l0} → {l1}");
+    assert!(
+        (p1 - p0).norm() <= 1e-14 * p0.norm(),
+        "{what}: momentum {p0} → {p1}"
+    );
+    assert!(
+        (l1 - l0).norm() <= 1e-14 * l0.norm(),
+        "{what}: angular momentum {l0} → {l1}"
+    );
     // The core's outcome with the core's ε at Precise.
     let g = rime_core::kinematics::relative_surface_velocity(&i, &j, &n);
     let (g_n, g_t) = rime_core::kinematics::decompose(&g, &n);
@@ -334,7 +375,11 @@ fn check_kinematics(exe: &Path, contact: &Contact, bound: f64, what: &str) -> f6
         .unwrap();
     let (mut ci, mut cj) = (i, j);
     collide(&mut ci, &mut cj, &n, t.eps_n, t.eps_t).unwrap();
-    assert_eq!(rows[2][1] as usize, StickClassIndex::of(t.class), "{what}: class");
+    assert_eq!(
+        rows[2][1] as usize,
+        StickClassIndex::of(t.class),
+        "{what}: class"
+    );
     let mut worst = 0.0f64;
     for (got, want, before) in [(&i2, &ci, &i), (&j2, &cj, &j)] {
         let dv = (got.velocity - want.velocity).norm() / (want.velocity - before.velocity).norm();
@@ -349,7 +394,10 @@ fn check_kinematics(exe: &Path, contact: &Contact, bound: f64, what: &str) -> f6
 struct StickClassIndex;
 impl StickClassIndex {
     fn of(c: rime_core::StickClass) -> usize {
-        rime_core::StickClass::ALL.iter().position(|&x| x == c).unwrap()
+        rime_core::StickClass::ALL
+            .iter()
+            .position(|&x| x == c)
+            .unwrap()
     }
 }
 
@@ -383,7 +431,9 @@ fn exported_laws_meet_the_level_bound_at_every_speed() {
                 let n = check_eps_n(&exe, &contact, bound, &what);
                 let t = check_eps_t(&exe, &contact, bound, &what);
                 let k = check_kinematics(&exe, &contact, bound, &what);
-                report.push(format!("{what}: eps_n {n:.2e}, eps_t {t:.2e}, resolve {k:.2e}"));
+                report.push(format!(
+                    "{what}: eps_n {n:.2e}, eps_t {t:.2e}, resolve {k:.2e}"
+                ));
             }
             std::fs::remove_dir_all(&dir).unwrap();
         }
@@ -400,7 +450,16 @@ fn runtime_parameters_reproduce_the_core_for_other_grains() {
     let dir = scratch("runtime");
     export(
         &dir,
-        &["--preset", "ice-frost", "--set", "adhesion=on", "--accuracy", "precise", "--runtime-params", "true"],
+        &[
+            "--preset",
+            "ice-frost",
+            "--set",
+            "adhesion=on",
+            "--accuracy",
+            "precise",
+            "--runtime-params",
+            "true",
+        ],
     );
     let mut scene = Preset::IceFrost.scene();
     scene.grains.radius_2 = 0.05;
@@ -427,13 +486,23 @@ fn runtime_parameters_reproduce_the_core_for_other_grains() {
 fn the_literal_layer_reading_is_refused_by_name() {
     let dir = scratch("literal");
     let out = Command::new(rime_binary())
-        .args(["export", "--preset", "ice-frost", "--set", "layer.reading=literal", "--out"])
+        .args([
+            "export",
+            "--preset",
+            "ice-frost",
+            "--set",
+            "layer.reading=literal",
+            "--out",
+        ])
         .arg(&dir)
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("layer.reading") && err.lines().count() == 1, "{err}");
+    assert!(
+        err.contains("layer.reading") && err.lines().count() == 1,
+        "{err}"
+    );
     assert!(!dir.join("rime_eps.c").exists());
     let _ = LayerReading::Literal;
     std::fs::remove_dir_all(&dir).unwrap();

@@ -144,10 +144,7 @@ impl Law {
                 "@CREEP_K@",
                 lit(rime_core::normal::viscoelastic::ZERO_OVERLAP_CREEP_COEFFICIENT),
             ),
-            (
-                "@LOG10E_FIFTH@",
-                lit(0.2 * core::f64::consts::LOG10_E),
-            ),
+            ("@LOG10E_FIFTH@", lit(0.2 * core::f64::consts::LOG10_E)),
             ("@DENSITY@", lit(self.scene.grains.density)),
             ("@YOUNGS@", lit(self.scene.bulk.youngs_modulus)),
             ("@POISSON@", lit(self.scene.bulk.poisson_ratio)),
