@@ -37,6 +37,7 @@ extern crate std;
 
 pub mod accuracy;
 pub mod analytic;
+pub mod batch;
 pub mod contact;
 pub mod error;
 #[cfg(feature = "alloc")]
