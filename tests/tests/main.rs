@@ -1,6 +1,7 @@
 //! The one integration-test binary of rime.
 
 mod bad_input;
+mod batch;
 mod cli;
 mod cost;
 mod exported;

@@ -34,6 +34,8 @@ pub enum Command {
     Explore(Common),
     /// `rime eps --g LIST`.
     Eps(Common, Vec<f64>),
+    /// `rime eps --g-file FILE` (streamed through the batch path).
+    EpsFile(Common, PathBuf),
     /// `rime curve --from G --to G --points N`.
     Curve(Common, f64, f64, usize),
     /// `rime tangential --gn LIST --gt LIST` (every combination, g_n outer).
@@ -65,6 +67,8 @@ rime — slow collisions of icy grains (Hertzsch 2002)
 USAGE:
   rime [OPTIONS]                                 start the terminal explorer
   rime eps --g LIST [OPTIONS]                    ε_N at impact speeds (m/s, comma-separated)
+  rime eps --g-file FILE [OPTIONS]               ε_N, status for a file of speeds (one per line,
+                                                 # comments), streamed through the batch path
   rime curve --from G --to G --points N          ε_N on N log-spaced speeds, both ends included
   rime tangential --gn LIST --gt LIST            ε_T for every (g_N, g_T) combination
   rime map --max G --n N                         stick-map classes on an N×N grid from 0 to G
@@ -102,7 +106,7 @@ fn number(flag: &str, text: &str) -> CliResult<f64> {
     }
 }
 
-fn speed(flag: &str, text: &str, allow_zero: bool) -> CliResult<f64> {
+pub(crate) fn speed(flag: &str, text: &str, allow_zero: bool) -> CliResult<f64> {
     let v = number(flag, text)?;
     let ok = if allow_zero { v >= 0.0 } else { v > 0.0 };
     if !ok || v > 1e6 {
@@ -225,7 +229,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
         Some("export") => &["--from", "--to", "--points", "--out", "--runtime-params"],
         Some("fit") => &["--data", "--param"],
         Some("figures") => &["--out"],
-        Some("eps") => &["--g"],
+        Some("eps") => &["--g", "--g-file"],
         Some("curve") => &["--from", "--to", "--points"],
         Some("tangential") => &["--gn", "--gt"],
         Some("map") => &["--max", "--n"],
@@ -282,10 +286,14 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             let out = PathBuf::from(get("--out").unwrap_or("target/bench"));
             Command::Bench(out, quick)
         }
-        Some("eps") => {
-            let g = speed_list("--g", require("--g")?, false)?;
-            Command::Eps(common, g)
-        }
+        Some("eps") => match (get("--g"), get("--g-file")) {
+            (Some(_), Some(_)) => return err("--g-file: cannot be combined with --g"),
+            (None, Some(file)) => Command::EpsFile(common, PathBuf::from(file)),
+            _ => {
+                let g = speed_list("--g", require("--g")?, false)?;
+                Command::Eps(common, g)
+            }
+        },
         Some("curve") => {
             let from = speed("--from", require("--from")?, false)?;
             let to = speed("--to", require("--to")?, false)?;

@@ -3,6 +3,7 @@
 mod bench;
 mod cli;
 mod codegen;
+mod eps_file;
 mod explore;
 mod export;
 mod output;
@@ -187,6 +188,10 @@ fn run(command: Command) -> CliResult<Option<String>> {
             return Ok(None);
         }
         Command::Eps(c, g) => run_eps(&c, &g)?,
+        Command::EpsFile(c, path) => {
+            eps_file::run(&c, &path)?;
+            return Ok(None);
+        }
         Command::Curve(c, from, to, n) => run_curve(&c, from, to, n)?,
         Command::Tangential(c, gn, gt) => run_tangential(&c, &gn, &gt)?,
         Command::Map(c, max, n) => run_map(&c, max, n)?,
