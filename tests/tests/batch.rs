@@ -123,3 +123,133 @@ fn batch_takes_signed_speeds_nan_zero_and_refuses_the_rest() {
         );
     }
 }
+
+fn rime(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(rime_binary()).args(args).output().unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).to_string(),
+        String::from_utf8_lossy(&out.stderr).to_string(),
+    )
+}
+
+fn temp_file(name: &str, text: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("rime-batch-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+#[test]
+fn g_file_equals_eps_with_the_same_speeds() {
+    // More than one chunk of 4096, with comments, blank lines and CRLF.
+    let g: Vec<f64> = (0..5000)
+        .map(|k| 1e-7 * 10f64.powf(k as f64 * 7.0 / 5000.0))
+        .collect();
+    let mut text = String::from("# speeds in m/s\n\n");
+    for (k, v) in g.iter().enumerate() {
+        text.push_str(&format!(
+            "{v:e}{}",
+            if k % 3 == 0 { " # c\r\n" } else { "\n" }
+        ));
+    }
+    let file = temp_file("speeds.txt", &text);
+    let list: String = g
+        .iter()
+        .map(|v| format!("{v:e}"))
+        .collect::<Vec<_>>()
+        .join(",");
+    for preset in ["ice", "ice-frost", "ice-sticky", "ice-paper-viscosities"] {
+        for (level, tolerance) in [("balanced", 0.0), ("fast", 1e-6)] {
+            let common = ["--preset", preset, "--accuracy", level, "--format", "json"];
+            let (code, out, err) = rime(
+                &[
+                    &["eps", "--g-file", file.to_str().unwrap()][..],
+                    &common[..],
+                ]
+                .concat(),
+            );
+            assert_eq!(code, 0, "{err}");
+            let streamed: serde_json::Value = serde_json::from_str(&out).unwrap();
+            let (code, out, err) = rime(&[&["eps", "--g", &list][..], &common[..]].concat());
+            assert_eq!(code, 0, "{err}");
+            let listed: serde_json::Value = serde_json::from_str(&out).unwrap();
+            let (a, b) = (streamed.as_array().unwrap(), listed.as_array().unwrap());
+            assert_eq!(a.len(), g.len());
+            assert_eq!(a.len(), b.len());
+            for (x, y) in a.iter().zip(b) {
+                assert_eq!(x["g_n"], y["g_n"]);
+                assert_eq!(x["status"], y["status"], "{preset} {level}: {x} vs {y}");
+                let (e, want) = (x["eps_n"].as_f64().unwrap(), y["eps_n"].as_f64().unwrap());
+                let err = if want == 0.0 {
+                    e.abs()
+                } else {
+                    ((e - want) / want).abs()
+                };
+                assert!(err <= tolerance, "{preset} {level}: {x} vs {y}");
+            }
+        }
+    }
+    // CSV and table carry the same numbers.
+    let (code, csv, _) = rime(&["eps", "--g-file", file.to_str().unwrap(), "--format", "csv"]);
+    assert_eq!(code, 0);
+    let mut lines = csv.lines();
+    assert_eq!(lines.next(), Some("g_n,eps_n,status"));
+    let (code, table, _) = rime(&[
+        "eps",
+        "--g-file",
+        file.to_str().unwrap(),
+        "--format",
+        "table",
+    ]);
+    assert_eq!(code, 0);
+    let mut rows = table.lines();
+    assert_eq!(
+        rows.next().unwrap().split_whitespace().collect::<Vec<_>>(),
+        ["g_n", "eps_n", "status"]
+    );
+    let c = Contact::new(&Scene::default()).unwrap();
+    for ((line, row), &gi) in lines.zip(rows).zip(&g) {
+        let cells: Vec<&str> = line.split(',').collect();
+        assert_eq!(cells, row.split_whitespace().collect::<Vec<_>>());
+        assert_eq!(cells[0].parse::<f64>().unwrap(), gi);
+        let want = c.normal(gi, Accuracy::Balanced).unwrap().eps;
+        assert_eq!(cells[1].parse::<f64>().unwrap(), want);
+    }
+}
+
+#[test]
+fn g_file_refuses_devices_directories_long_and_bad_lines() {
+    let (code, out, err) = rime(&["eps", "--g-file", "/dev/zero"]);
+    assert_eq!(code, 2);
+    assert!(out.is_empty());
+    assert!(
+        err.contains("--g-file /dev/zero") && err.contains("not a regular file"),
+        "{err}"
+    );
+    let dir = std::env::temp_dir();
+    let (code, _, err) = rime(&["eps", "--g-file", dir.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(err.contains("not a regular file"), "{err}");
+    let bad = temp_file("bad.txt", "# ok\n0.1\n\n0.2\nfast\n0.3\n");
+    let (code, _, err) = rime(&["eps", "--g-file", bad.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--g-file") && err.contains("line 5"), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    let negative = temp_file("negative.txt", "0.1\n-0.2\n");
+    let (code, _, err) = rime(&["eps", "--g-file", negative.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(err.contains("line 2"), "{err}");
+    let long = temp_file("long.txt", &format!("0.1\n0.2\n{}\n", "1".repeat(10_000)));
+    let (code, _, err) = rime(&["eps", "--g-file", long.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(err.contains("line 3") && err.contains("256 bytes"), "{err}");
+    let empty = temp_file("empty.txt", "# nothing\n\n");
+    let (code, _, err) = rime(&["eps", "--g-file", empty.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--g-file"), "{err}");
+    let (code, _, err) = rime(&["eps", "--g-file", "/nonexistent/speeds.txt"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--g-file /nonexistent/speeds.txt"), "{err}");
+}
