@@ -13,7 +13,9 @@
 //! The cells are fitted (Chebyshev interpolation, then the power basis) to the fine master table
 //! ([`crate::master::Resolution::Fine`], ≤ 1e-10) and stored in the generated file
 //! `batch_table.rs` (regenerate with `cargo run --release -p rime-core --example
-//! generate_batch_table > core/src/batch_table.rs`; a test fails when it is stale). Their relative
+//! generate_batch_table > core/src/batch_table.rs`; after changing [`CELL_BITS`] or
+//! [`BATCH_COEFFICIENTS`] first make both arrays empty of the new shape; a test fails when the file is
+//! stale). Their relative
 //! error against the fine table is ≤ [`TABLE_ERROR`].
 //!
 //! The rare speeds the cells do not cover go through the scalar path at
