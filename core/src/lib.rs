@@ -38,6 +38,7 @@ extern crate std;
 
 pub mod accuracy;
 pub mod analytic;
+pub mod batch;
 pub mod contact;
 pub mod error;
 #[cfg(feature = "explorer")]

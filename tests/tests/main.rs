@@ -1,8 +1,10 @@
 //! The one integration-test binary of rime.
 
 mod bad_input;
+mod batch;
 mod cli;
 mod cost;
+mod exported;
 mod extremes;
 mod fuzz;
 mod physics;

@@ -53,9 +53,10 @@ fn exported_rust_and_c_functions_compile_and_reproduce_the_table() {
     ]);
     let rows = table(&dir);
     assert_eq!(rows.len(), 50);
-    // Probe at the nodes (exact) and halfway between two nodes (linear in ln g).
-    let probes: Vec<f64> = vec![rows[10].0, rows[30].0, (rows[20].0 * rows[21].0).sqrt()];
-    let expected = [rows[10].1, rows[30].1, 0.5 * (rows[20].1 + rows[21].1)];
+    // The exported functions evaluate the master curve (issue 14; the bound at every speed is
+    // tests/tests/exported.rs): at the table's nodes both are within 1e-6 of the truth.
+    let probes: Vec<f64> = vec![rows[10].0, rows[30].0, rows[21].0];
+    let expected = [rows[10].1, rows[30].1, rows[21].1];
     let args: Vec<String> = probes.iter().map(|g| format!("{g:?}")).collect();
 
     // Rust: the generated file plus a main that prints the function at the probes.
@@ -80,7 +81,7 @@ fn exported_rust_and_c_functions_compile_and_reproduce_the_table() {
     let text = String::from_utf8_lossy(&out.stdout).to_string();
     for (line, want) in text.lines().zip(expected) {
         let got: f64 = line.split(' ').next().unwrap().parse().unwrap();
-        assert!(rel(got, want) < 1e-12, "Rust: {got} vs {want}");
+        assert!(rel(got, want) < 2e-6, "Rust: {got} vs {want}");
     }
 
     // C, when a compiler is there (gcc is on the machine image; say so if not).
@@ -105,7 +106,7 @@ fn exported_rust_and_c_functions_compile_and_reproduce_the_table() {
     let text = String::from_utf8_lossy(&out.stdout).to_string();
     for (line, want) in text.lines().zip(expected) {
         let got: f64 = line.trim().parse().unwrap();
-        assert!(rel(got, want) < 1e-12, "C: {got} vs {want}");
+        assert!(rel(got, want) < 2e-6, "C: {got} vs {want}");
     }
     let fits: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("fits.json")).unwrap()).unwrap();

@@ -34,6 +34,8 @@ pub enum Command {
     Explore(Common),
     /// `rime eps --g LIST`.
     Eps(Common, Vec<f64>),
+    /// `rime eps --g-file FILE` (streamed through the batch path).
+    EpsFile(Common, PathBuf),
     /// `rime curve --from G --to G --points N`.
     Curve(Common, f64, f64, usize),
     /// `rime tangential --gn LIST --gt LIST` (every combination, g_n outer).
@@ -44,8 +46,8 @@ pub enum Command {
     Tidal(Common, rime_core::tidal::TidalInput),
     /// `rime scene [--preset NAME] [--out FILE]`.
     Scene(Common, Option<PathBuf>),
-    /// `rime export --from G --to G --points N --out DIR`.
-    Export(Common, f64, f64, usize, PathBuf),
+    /// `rime export --from G --to G --points N --out DIR [--runtime-params true]`.
+    Export(Common, f64, f64, usize, PathBuf, bool),
     /// `rime fit --data FILE.csv --param PATH`.
     Fit(Common, PathBuf, String),
     /// `rime figures --out DIR`.
@@ -65,14 +67,19 @@ rime — slow collisions of icy grains (Hertzsch 2002)
 USAGE:
   rime [OPTIONS]                                 start the terminal explorer
   rime eps --g LIST [OPTIONS]                    ε_N at impact speeds (m/s, comma-separated)
+  rime eps --g-file FILE [OPTIONS]               ε_N, status for a file of speeds (one per line,
+                                                 # comments), streamed through the batch path
   rime curve --from G --to G --points N          ε_N on N log-spaced speeds, both ends included
   rime tangential --gn LIST --gt LIST            ε_T for every (g_N, g_T) combination
   rime map --max G --n N                         stick-map classes on an N×N grid from 0 to G
   rime tidal [--planet-mass KG] [--distance M] [--radius M] [--density KG/M3] [--surface-energy J/M2]
   rime scene [--preset NAME] [--out FILE]        print (or atomically write) the scene JSON
-  rime export --out DIR [--from G --to G --points N]
+  rime export --out DIR [--from G --to G --points N] [--runtime-params true]
                                                  ε_N table (CSV, JSON), fitted Eq. (27) and power
-                                                 laws, ready-to-paste C and Rust functions
+                                                 laws; C99 + no_std Rust ε_N, ε_T and collision
+                                                 kinematics (fast: 1e-6, precise: 1e-10 at every
+                                                 speed), a REBOUND collision handler + Python recipe;
+                                                 --runtime-params: A, radii, layer, γ as arguments
   rime fit --data FILE.csv [--param PATH]        fit a parameter (default bulk.damping.time) to
                                                  measured (g [m/s], ε) points
   rime figures [--out DIR]                       the paper's Figs. 2–4 from the model, SVG + PNG
@@ -99,7 +106,7 @@ fn number(flag: &str, text: &str) -> CliResult<f64> {
     }
 }
 
-fn speed(flag: &str, text: &str, allow_zero: bool) -> CliResult<f64> {
+pub(crate) fn speed(flag: &str, text: &str, allow_zero: bool) -> CliResult<f64> {
     let v = number(flag, text)?;
     let ok = if allow_zero { v >= 0.0 } else { v > 0.0 };
     if !ok || v > 1e6 {
@@ -118,6 +125,14 @@ fn speed_list(flag: &str, text: &str, allow_zero: bool) -> CliResult<Vec<f64>> {
         return err(format!("{flag}: at most 1000000 values"));
     }
     items.iter().map(|s| speed(flag, s, allow_zero)).collect()
+}
+
+fn flag_bool(flag: &str, value: Option<&str>) -> CliResult<bool> {
+    match value {
+        None | Some("false") => Ok(false),
+        Some("true") => Ok(true),
+        Some(other) => err(format!("{flag} {other}: expected true or false")),
+    }
 }
 
 fn count(flag: &str, text: &str, min: usize, max: usize) -> CliResult<usize> {
@@ -211,10 +226,10 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
         None | Some("explore") => &[],
         Some("scene") => &["--out"],
         Some("bench") => &["--out", "--quick"],
-        Some("export") => &["--from", "--to", "--points", "--out"],
+        Some("export") => &["--from", "--to", "--points", "--out", "--runtime-params"],
         Some("fit") => &["--data", "--param"],
         Some("figures") => &["--out"],
-        Some("eps") => &["--g"],
+        Some("eps") => &["--g", "--g-file"],
         Some("curve") => &["--from", "--to", "--points"],
         Some("tangential") => &["--gn", "--gt"],
         Some("map") => &["--max", "--n"],
@@ -255,7 +270,8 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             }
             let n = count("--points", get("--points").unwrap_or("200"), 8, 100_000)?;
             let out = PathBuf::from(require("--out")?);
-            Command::Export(common, from, to, n, out)
+            let runtime = flag_bool("--runtime-params", get("--runtime-params"))?;
+            Command::Export(common, from, to, n, out, runtime)
         }
         Some("figures") => {
             Command::Figures(common, PathBuf::from(get("--out").unwrap_or("figures")))
@@ -266,18 +282,18 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             Command::Fit(common, data, param)
         }
         Some("bench") => {
-            let quick = match get("--quick") {
-                None | Some("false") => false,
-                Some("true") => true,
-                Some(other) => return err(format!("--quick {other}: expected true or false")),
-            };
+            let quick = flag_bool("--quick", get("--quick"))?;
             let out = PathBuf::from(get("--out").unwrap_or("target/bench"));
             Command::Bench(out, quick)
         }
-        Some("eps") => {
-            let g = speed_list("--g", require("--g")?, false)?;
-            Command::Eps(common, g)
-        }
+        Some("eps") => match (get("--g"), get("--g-file")) {
+            (Some(_), Some(_)) => return err("--g-file: cannot be combined with --g"),
+            (None, Some(file)) => Command::EpsFile(common, PathBuf::from(file)),
+            _ => {
+                let g = speed_list("--g", require("--g")?, false)?;
+                Command::Eps(common, g)
+            }
+        },
         Some("curve") => {
             let from = speed("--from", require("--from")?, false)?;
             let to = speed("--to", require("--to")?, false)?;

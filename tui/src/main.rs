@@ -2,6 +2,8 @@
 
 mod bench;
 mod cli;
+mod codegen;
+mod eps_file;
 mod explore;
 mod export;
 mod output;
@@ -186,14 +188,19 @@ fn run(command: Command) -> CliResult<Option<String>> {
             return Ok(None);
         }
         Command::Eps(c, g) => run_eps(&c, &g)?,
+        Command::EpsFile(c, path) => {
+            eps_file::run(&c, &path)?;
+            return Ok(None);
+        }
         Command::Curve(c, from, to, n) => run_curve(&c, from, to, n)?,
         Command::Tangential(c, gn, gt) => run_tangential(&c, &gn, &gt)?,
         Command::Map(c, max, n) => run_map(&c, max, n)?,
         Command::Tidal(c, input) => run_tidal(&c, &input)?,
-        Command::Export(c, from, to, n, out) => {
-            let e = export::compute(&c.scene, from, to, n, c.accuracy)?;
+        Command::Export(c, from, to, n, out, runtime_params) => {
             let scene = scene_io::scene_json(&c.scene)?;
-            let files = export::write_all(&out, &e, &scene)?;
+            let law = codegen::Law::new(&c.scene, c.accuracy, &scene, runtime_params)?;
+            let e = export::compute(&c.scene, from, to, n, c.accuracy)?;
+            let files = export::write_all(&out, &e, &scene, &law)?;
             let mut s = format!("wrote {} into {}\n", files.join(", "), out.display());
             if let Some(f) = e.eq27 {
                 s.push_str(&format!(

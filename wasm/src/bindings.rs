@@ -197,6 +197,25 @@ impl Explorer {
         self.inner.normal(g, accuracy).map_err(js)
     }
 
+    /// ε_N for a Float64Array of speeds (|g|; NaN → NaN, 0 → the at-rest limit, 0 when stuck)
+    /// through the core's batch path (`rime_core::batch`); at most 1e7 speeds.
+    #[wasm_bindgen(js_name = epsNBatch)]
+    pub fn eps_n_batch(&self, speeds: &[f64], accuracy: &str) -> Result<Vec<f64>, JsError> {
+        if speeds.len() > 10_000_000 {
+            return Err(js(format!(
+                "speeds: at most 1e7 values (got {})",
+                speeds.len()
+            )));
+        }
+        let accuracy = explorer::parse_accuracy(accuracy).map_err(js)?;
+        let contact = rime_core::Contact::new(&self.inner.scene).map_err(|e| js(e.to_string()))?;
+        let mut out = vec![0.0; speeds.len()];
+        contact
+            .eps_n_batch(speeds, &mut out, accuracy)
+            .map_err(|e| js(format!("speeds: {e}")))?;
+        Ok(out)
+    }
+
     /// The tangential result at one point as JSON text.
     pub fn tangential(&self, g_n: f64, g_t: f64, accuracy: &str) -> Result<String, JsError> {
         self.inner.tangential(g_n, g_t, accuracy).map_err(js)

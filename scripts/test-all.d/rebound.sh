@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# rime's exported REBOUND collision handler checked inside REBOUND (pinned, in a local venv).
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+venv=target/venv-rebound
+version=5.2.2
+if ! "$venv/bin/python" -c "import rebound, sys; sys.exit(rebound.__version__ != '$version')" 2>/dev/null; then
+  python3 -m venv "$venv"
+  "$venv/bin/pip" install -q "rebound==$version"
+fi
+cargo build -q --release -p rime-tui
+rime="${CARGO_TARGET_DIR:-target}/release/rime"
+out=target/rebound-check
+rm -rf "$out"
+"$rime" export --preset ice --accuracy precise --out "$out/ice" >/dev/null
+"$rime" export --preset ice-sticky --accuracy precise --out "$out/sticky" >/dev/null
+exec "$venv/bin/python" tests/rebound/check.py "$rime" "$out/ice" "$out/sticky"
