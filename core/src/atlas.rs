@@ -744,8 +744,19 @@ mod tests {
         let s = score(&contact, Accuracy::Fast, &above, None).unwrap();
         let e_lo = contact.eps_n(0.27, Accuracy::Fast).unwrap();
         let e_hi = contact.eps_n(0.51, Accuracy::Fast).unwrap();
-        assert!(s >= 1.0 - e_lo.max(e_hi) && s <= 1.0 - e_lo.min(e_hi), "{s}");
-        assert!(score(&contact, Accuracy::Fast, find("gundlach2015").unwrap(), None).is_err());
+        assert!(
+            s >= 1.0 - e_lo.max(e_hi) && s <= 1.0 - e_lo.min(e_hi),
+            "{s}"
+        );
+        assert!(
+            score(
+                &contact,
+                Accuracy::Fast,
+                find("gundlach2015").unwrap(),
+                None
+            )
+            .is_err()
+        );
         assert!(score(&contact, Accuracy::Fast, find("bridges1984").unwrap(), None).unwrap() > 0.0);
     }
 }

@@ -236,7 +236,8 @@ impl Problem<'_> {
     }
 
     fn cost(&self, u: &[f64]) -> f64 {
-        self.residuals(u).map_or(f64::INFINITY, |r| r.norm_squared())
+        self.residuals(u)
+            .map_or(f64::INFINITY, |r| r.norm_squared())
     }
 
     fn jacobian(&self, u: &[f64]) -> Option<DMatrix<f64>> {
@@ -564,7 +565,10 @@ mod tests {
         let scene = Scene::default();
         let g = [1e-3, 1e-2, 1e-1, 1.0];
         let c = Contact::new(&scene).unwrap();
-        let e: Vec<f64> = g.iter().map(|&x| c.eps_n(x, Accuracy::Fast).unwrap()).collect();
+        let e: Vec<f64> = g
+            .iter()
+            .map(|&x| c.eps_n(x, Accuracy::Fast).unwrap())
+            .collect();
         let err = fit(&scene, &["layer.viscosity"], &g, &e, None, Accuracy::Fast).unwrap_err();
         assert!(err.contains("off in this scene"), "{err}");
         // ε depends on A and Y only through A Y^(2/5) (docs/physics.md#decision-3): degenerate.

@@ -91,10 +91,7 @@ pub fn scene_for(base: &Scene, radius: f64, gamma: f64) -> Result<Scene> {
 
 fn sticks(contact: &Contact, g: f64, accuracy: Accuracy) -> Result<bool> {
     let n = contact.normal(g, accuracy)?;
-    Ok(matches!(
-        n.status,
-        Status::StuckByAdhesion | Status::StuckInLayer
-    ) || n.eps <= 0.0)
+    Ok(matches!(n.status, Status::StuckByAdhesion | Status::StuckInLayer) || n.eps <= 0.0)
 }
 
 /// Sticking thresholds for grains of `radius` \[m\] at `temperature` \[K\] in `base`'s material.
@@ -156,11 +153,28 @@ mod tests {
         // γ = 0.19 J/m²: g_s = 0.615852 m/s; with w = 2γ the factor 2^(5/6) = 1.781797.
         let mut base = Scene::default();
         base.bulk.damping = crate::Damping::Time(0.0);
-        let t = threshold(&base, 1e-6, 250.0, Convention::WorkOfAdhesion, Accuracy::Fast).unwrap();
+        let t = threshold(
+            &base,
+            1e-6,
+            250.0,
+            Convention::WorkOfAdhesion,
+            Accuracy::Fast,
+        )
+        .unwrap();
         assert!((t.v_elastic / 0.615_852 - 1.0).abs() < 1e-5, "{t:?}");
         // Without dissipation the full model sticks exactly up to g_s.
-        assert!((t.v_stick.unwrap() / t.v_elastic - 1.0).abs() < 1e-6, "{t:?}");
-        let s = threshold(&base, 1e-6, 250.0, Convention::SurfaceEnergy, Accuracy::Fast).unwrap();
+        assert!(
+            (t.v_stick.unwrap() / t.v_elastic - 1.0).abs() < 1e-6,
+            "{t:?}"
+        );
+        let s = threshold(
+            &base,
+            1e-6,
+            250.0,
+            Convention::SurfaceEnergy,
+            Accuracy::Fast,
+        )
+        .unwrap();
         assert!((s.v_elastic / t.v_elastic - 1.781_797).abs() < 1e-5);
         assert_eq!(s.gamma, 0.38);
     }
@@ -168,12 +182,44 @@ mod tests {
     #[test]
     fn damping_raises_the_threshold_and_cold_ice_is_less_sticky() {
         let base = Scene::default();
-        let warm = threshold(&base, 1e-3, 250.0, Convention::SurfaceEnergy, Accuracy::Fast).unwrap();
+        let warm = threshold(
+            &base,
+            1e-3,
+            250.0,
+            Convention::SurfaceEnergy,
+            Accuracy::Fast,
+        )
+        .unwrap();
         assert!(warm.v_stick.unwrap() > warm.v_elastic);
-        let cold = threshold(&base, 1e-3, 150.0, Convention::SurfaceEnergy, Accuracy::Fast).unwrap();
+        let cold = threshold(
+            &base,
+            1e-3,
+            150.0,
+            Convention::SurfaceEnergy,
+            Accuracy::Fast,
+        )
+        .unwrap();
         // γ drops by 0.19/0.0029: g_s by (0.19/0.0029)^(5/6) = 32.6.
         assert!((warm.v_elastic / cold.v_elastic - 32.6).abs() < 0.1);
-        assert!(threshold(&base, -1.0, 150.0, Convention::SurfaceEnergy, Accuracy::Fast).is_err());
-        assert!(threshold(&base, 1e-3, f64::NAN, Convention::SurfaceEnergy, Accuracy::Fast).is_err());
+        assert!(
+            threshold(
+                &base,
+                -1.0,
+                150.0,
+                Convention::SurfaceEnergy,
+                Accuracy::Fast
+            )
+            .is_err()
+        );
+        assert!(
+            threshold(
+                &base,
+                1e-3,
+                f64::NAN,
+                Convention::SurfaceEnergy,
+                Accuracy::Fast
+            )
+            .is_err()
+        );
     }
 }

@@ -160,7 +160,10 @@ fn data_lists_the_atlas_with_the_contract_fields() {
         "gundlach2015",
         "musiolik2019",
     ] {
-        let r = rows.iter().find(|r| r["id"] == id).unwrap_or_else(|| panic!("{id}"));
+        let r = rows
+            .iter()
+            .find(|r| r["id"] == id)
+            .unwrap_or_else(|| panic!("{id}"));
         for key in ["kind", "citation", "temperature", "geometry", "source"] {
             assert!(!r[key].is_null(), "{id}: {key}");
         }
@@ -190,7 +193,10 @@ fn data_evaluates_a_law_and_flags_extrapolation() {
     assert!((v[0]["eps_n"].as_f64().unwrap() - 0.612_405_6).abs() < 1e-7);
     let (code, _, err) = rime(&["data", "--law", "nope", "--g", "1"]);
     assert_eq!(code, 2);
-    assert!(err.contains("--law") && err.contains("bridges1984"), "{err}");
+    assert!(
+        err.contains("--law") && err.contains("bridges1984"),
+        "{err}"
+    );
     let (code, _, err) = rime(&["data", "--law", "hatzes1988_compacted", "--g", "1"]);
     assert_eq!(code, 2);
     assert!(err.contains("--radius"), "{err}");
@@ -210,7 +216,13 @@ fn fit_names_bad_lines_and_never_switches_an_effect_on() {
         "g eps sigma\n0.001 0.6 0.05\n0.01 0.36 0.05\n0.1 0.2 0.05\n1 0.1 0.05\n",
     )
     .unwrap();
-    let v = json(&["fit", "--data", good.to_str().unwrap(), "--accuracy", "fast"]);
+    let v = json(&[
+        "fit",
+        "--data",
+        good.to_str().unwrap(),
+        "--accuracy",
+        "fast",
+    ]);
     assert_eq!(v["header"], "g eps sigma");
     assert_eq!(v["weighted"], true);
     assert!(v["standard_error"].as_f64().unwrap() > 0.0);
@@ -222,7 +234,10 @@ fn fit_names_bad_lines_and_never_switches_an_effect_on() {
         "layer.viscosity",
     ]);
     assert_eq!(code, 2);
-    assert!(err.contains("layer.viscosity") && err.contains("off"), "{err}");
+    assert!(
+        err.contains("layer.viscosity") && err.contains("off"),
+        "{err}"
+    );
     let (code, _, err) = rime(&["fit", "--data", dir.to_str().unwrap()]);
     assert_eq!(code, 2);
     assert!(err.contains("not a regular file"), "{err}");
@@ -237,7 +252,10 @@ fn fit_names_bad_lines_and_never_switches_an_effect_on() {
         "fast",
     ]);
     let w = v["warnings"].as_array().unwrap();
-    assert!(w.iter().any(|w| w.as_str().unwrap().contains("degenerate")), "{w:?}");
+    assert!(
+        w.iter().any(|w| w.as_str().unwrap().contains("degenerate")),
+        "{w:?}"
+    );
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -43,7 +43,7 @@ pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
     let radius = get("--radius")
         .map(|r| number("--radius", &r))
         .transpose()?;
-    if radius.is_some_and(|r| !(r > 0.0)) {
+    if radius.is_some_and(|r| r <= 0.0) {
         return err("--radius: must be a radius > 0 [m]");
     }
     let law = match (get("--law"), get("--g")) {

@@ -84,8 +84,10 @@ fn render(common: &Common, f: &SceneFit, points: &Points, what: &str) -> CliResu
             let params: Vec<_> = f
                 .params
                 .iter()
-                .map(|p| serde_json::json!({"param": p.path, "value": p.value, "unit": p.unit,
-                    "standard_error": p.standard_error}))
+                .map(|p| {
+                    serde_json::json!({"param": p.path, "value": p.value, "unit": p.unit,
+                    "standard_error": p.standard_error})
+                })
                 .collect();
             let mut v = serde_json::json!({
                 "source": what, "params": params, "correlation": f.correlation,

@@ -69,9 +69,7 @@ pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
 
 fn in_measured_regime(t: &Threshold) -> bool {
     rime_core::atlas::find("gundlach2015").is_some_and(|e| {
-        t.radius >= e.radius[0]
-            && t.radius <= e.radius[1]
-            && t.temperature <= e.temperature[1]
+        t.radius >= e.radius[0] && t.radius <= e.radius[1] && t.temperature <= e.temperature[1]
     })
 }
 
