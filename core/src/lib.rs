@@ -8,6 +8,8 @@
 //! * [`Scene`] — grains, bulk material and optional effects (layer, adhesion, friction).
 //! * [`Contact`] — constants derived once from a scene; [`Contact::normal`] gives ε_N (Eq. (4)–(17)).
 //! * [`ode`] — our Dormand–Prince 5(4) stepper with dense output and event location.
+//! * [`atlas`] — published ice measurements with provenance; [`stick`] — sticking thresholds;
+//!   `fit_scene` (feature `alloc`) — scene parameters fitted to data, with standard errors.
 //!
 //! ```
 //! use rime_core::{Accuracy, Contact, Preset, Status};
@@ -38,6 +40,7 @@ extern crate std;
 
 pub mod accuracy;
 pub mod analytic;
+pub mod atlas;
 pub mod batch;
 pub mod contact;
 pub mod error;
@@ -46,6 +49,8 @@ pub mod explorer;
 #[cfg(feature = "alloc")]
 pub mod figure;
 pub mod fit;
+#[cfg(feature = "alloc")]
+pub mod fit_scene;
 pub mod kinematics;
 pub mod master;
 mod math;
@@ -53,6 +58,7 @@ pub mod normal;
 pub mod ode;
 pub mod params;
 pub mod scene;
+pub mod stick;
 pub mod sweep;
 pub mod tangential;
 pub mod tidal;

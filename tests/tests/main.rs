@@ -7,6 +7,7 @@ mod cost;
 mod exported;
 mod extremes;
 mod fuzz;
+mod measured;
 mod physics;
 mod properties;
 mod reference;

@@ -48,8 +48,12 @@ pub enum Command {
     Scene(Common, Option<PathBuf>),
     /// `rime export --from G --to G --points N --out DIR [--runtime-params true]`.
     Export(Common, f64, f64, usize, PathBuf, bool),
-    /// `rime fit --data FILE.csv --param PATH`.
-    Fit(Common, PathBuf, String),
+    /// `rime fit (--data FILE.csv | --law ID) [--param A,B]`.
+    Fit(Common, crate::commands::fit::Args),
+    /// `rime data [--law ID --g LIST [--radius R]]`.
+    Data(Common, crate::commands::data::Args),
+    /// `rime stick --radius LIST [--temperature LIST] [--gamma surface|adhesion] [--out DIR]`.
+    Stick(Common, crate::commands::stick::Args),
     /// `rime figures --out DIR`.
     Figures(Common, PathBuf),
     /// `rime bench [--out DIR] [--quick]`.
@@ -80,8 +84,14 @@ USAGE:
                                                  kinematics (fast: 1e-6, precise: 1e-10 at every
                                                  speed), a REBOUND collision handler + Python recipe;
                                                  --runtime-params: A, radii, layer, γ as arguments
-  rime fit --data FILE.csv [--param PATH]        fit a parameter (default bulk.damping.time) to
-                                                 measured (g [m/s], ε) points
+  rime fit (--data FILE.csv | --law ID [--radius R]) [--param P1,P2]
+                                                 fit parameters (default bulk.damping.time) to
+                                                 measured (g [m/s], ε[, σ]) points or an atlas law,
+                                                 with standard errors and correlations
+  rime data [--law ID --g LIST [--radius R]]     the atlas of measured ice, or one law evaluated
+  rime stick --radius LIST [--temperature LIST] [--gamma surface|adhesion] [--out DIR]
+                                                 sticking thresholds v_stick(r, T), γ(T) of Musiolik
+                                                 & Wurm 2019; --out writes a table and a C function
   rime figures [--out DIR]                       the paper's Figs. 2–4 from the model, SVG + PNG
   rime bench [--out DIR] [--quick true]          speed/accuracy of every model and level (writes
                                                  DIR/bench.json and DIR/work-precision.svg)
@@ -98,7 +108,7 @@ OPTIONS:
 
 Errors are one line naming the field, with exit code 2.";
 
-fn number(flag: &str, text: &str) -> CliResult<f64> {
+pub(crate) fn number(flag: &str, text: &str) -> CliResult<f64> {
     match text.trim().parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
         Ok(v) => err(format!("{flag}: {v} is not a finite number")),
@@ -116,7 +126,7 @@ pub(crate) fn speed(flag: &str, text: &str, allow_zero: bool) -> CliResult<f64> 
     Ok(v)
 }
 
-fn speed_list(flag: &str, text: &str, allow_zero: bool) -> CliResult<Vec<f64>> {
+pub(crate) fn speed_list(flag: &str, text: &str, allow_zero: bool) -> CliResult<Vec<f64>> {
     let items: Vec<&str> = text.split(',').map(str::trim).collect();
     if items.iter().all(|s| s.is_empty()) {
         return err(format!("{flag}: empty list"));
@@ -227,7 +237,9 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
         Some("scene") => &["--out"],
         Some("bench") => &["--out", "--quick"],
         Some("export") => &["--from", "--to", "--points", "--out", "--runtime-params"],
-        Some("fit") => &["--data", "--param"],
+        Some("fit") => &["--data", "--param", "--law", "--radius"],
+        Some("data") => &["--law", "--g", "--radius"],
+        Some("stick") => &["--radius", "--temperature", "--gamma", "--out"],
         Some("figures") => &["--out"],
         Some("eps") => &["--g", "--g-file"],
         Some("curve") => &["--from", "--to", "--points"],
@@ -256,6 +268,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             .find(|(f, _)| f == name)
             .map(|(_, v)| v.as_str())
     };
+    let owned = |name: &str| get(name).map(str::to_string);
     let require = |name: &str| -> CliResult<&str> {
         get(name).ok_or_else(|| CliError(format!("{name}: required")))
     };
@@ -276,11 +289,9 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
         Some("figures") => {
             Command::Figures(common, PathBuf::from(get("--out").unwrap_or("figures")))
         }
-        Some("fit") => {
-            let data = PathBuf::from(require("--data")?);
-            let param = get("--param").unwrap_or("bulk.damping.time").to_string();
-            Command::Fit(common, data, param)
-        }
+        Some("fit") => Command::Fit(common, crate::commands::fit::parse(&owned)?),
+        Some("data") => Command::Data(common, crate::commands::data::parse(&owned)?),
+        Some("stick") => Command::Stick(common, crate::commands::stick::parse(&owned)?),
         Some("bench") => {
             let quick = flag_bool("--quick", get("--quick"))?;
             let out = PathBuf::from(get("--out").unwrap_or("target/bench"));

@@ -2,7 +2,7 @@
 
 use crate::codegen::Law;
 use crate::output::num;
-use crate::scene_io::{CliError, CliResult, err, write_atomic};
+use crate::scene_io::{CliError, CliResult, write_atomic};
 use rime_core::fit::{Eq27, PowerLaw, fit_eq27, fit_power_law};
 use rime_core::{Accuracy, Contact, Scene, sweep};
 use std::path::Path;
@@ -131,108 +131,4 @@ pub fn write_all(dir: &Path, e: &Export, scene_json: &str, law: &Law) -> CliResu
         names.push(name.to_string());
     }
     Ok(names)
-}
-
-/// Reads (g, ε) points from a CSV file: two numeric columns, an optional header line.
-pub fn read_points(path: &Path) -> CliResult<(Vec<f64>, Vec<f64>)> {
-    let shown = path.display();
-    let text = crate::scene_io::read_bounded(path, 16 << 20, "--data")?;
-    let (mut g, mut e) = (Vec::new(), Vec::new());
-    for (i, line) in text.lines().enumerate() {
-        let line = line.trim();
-        if line.is_empty() || line.starts_with('#') {
-            continue;
-        }
-        let cells: Vec<&str> = line
-            .split([',', ';', '\t', ' '])
-            .filter(|c| !c.is_empty())
-            .collect();
-        let parsed = (
-            cells.first().map(|c| c.parse::<f64>()),
-            cells.get(1).map(|c| c.parse::<f64>()),
-        );
-        match parsed {
-            (Some(Ok(a)), Some(Ok(b)))
-                if a.is_finite() && b.is_finite() && a > 0.0 && (0.0..=1.0).contains(&b) =>
-            {
-                g.push(a);
-                e.push(b);
-            }
-            _ if i == 0 && g.is_empty() => continue, // a header
-            _ => {
-                return err(format!(
-                    "--data {shown}: line {}: expected two numbers g > 0 [m/s] and 0 ≤ ε ≤ 1",
-                    i + 1
-                ));
-            }
-        }
-    }
-    if g.len() < 2 {
-        return err(format!("--data {shown}: need at least two (g, ε) points"));
-    }
-    Ok((g, e))
-}
-
-/// Fits one numeric scene parameter (by path) to measured (g, ε) points: the value minimising the
-/// squared error of ε_N, searched on a log scale (golden section after a coarse scan).
-pub fn fit_parameter(
-    scene: &Scene,
-    path: &str,
-    g: &[f64],
-    e: &[f64],
-    accuracy: Accuracy,
-) -> CliResult<(f64, f64, Scene)> {
-    let p = rime_core::params::parameter(path)
-        .ok_or_else(|| CliError(format!("--param {path}: unknown parameter")))?;
-    let rime_core::params::Kind::Number { min, max, .. } = p.kind else {
-        return err(format!("--param {path}: not a numeric parameter"));
-    };
-    let lo = if min > 0.0 {
-        min
-    } else {
-        1e-12f64.max(max * 1e-30)
-    };
-    let cost = |x: f64| -> Option<(f64, Scene)> {
-        let mut s = *scene;
-        s.set_number(p.path, x).ok()?;
-        let c = Contact::new(&s).ok()?;
-        let mut sum = 0.0;
-        for (&gi, &ei) in g.iter().zip(e) {
-            let r = c.eps_n(gi, accuracy).ok()? - ei;
-            sum += r * r;
-        }
-        Some((sum, s))
-    };
-    let (a, b) = (lo.ln(), max.ln());
-    let mut best = (f64::INFINITY, a);
-    let steps = 80;
-    for i in 0..=steps {
-        let u = a + (b - a) * i as f64 / steps as f64;
-        if let Some((c, _)) = cost(u.exp())
-            && c < best.0
-        {
-            best = (c, u);
-        }
-    }
-    if !best.0.is_finite() {
-        return err(format!(
-            "--param {path}: no valid value found in [{lo}, {max}]"
-        ));
-    }
-    let h = (b - a) / steps as f64;
-    let (mut l, mut r) = (best.1 - h, best.1 + h);
-    let phi = 0.5 * (5f64.sqrt() - 1.0);
-    let f = |u: f64| cost(u.exp()).map_or(f64::INFINITY, |c| c.0);
-    for _ in 0..80 {
-        let (m1, m2) = (r - phi * (r - l), l + phi * (r - l));
-        if f(m1) < f(m2) {
-            r = m2;
-        } else {
-            l = m1;
-        }
-    }
-    let u = 0.5 * (l + r);
-    let (sse, fitted) =
-        cost(u.exp()).ok_or_else(|| CliError(format!("--param {path}: fit failed")))?;
-    Ok((u.exp(), (sse / g.len() as f64).sqrt(), fitted))
 }

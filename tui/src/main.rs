@@ -3,6 +3,7 @@
 mod bench;
 mod cli;
 mod codegen;
+mod commands;
 mod eps_file;
 mod explore;
 mod export;
@@ -216,25 +217,9 @@ fn run(command: Command) -> CliResult<Option<String>> {
             }
             s
         }
-        Command::Fit(c, data, param) => {
-            let (g, e) = export::read_points(&data)?;
-            let (value, rms, fitted) = export::fit_parameter(&c.scene, &param, &g, &e, c.accuracy)?;
-            let unit = rime_core::params::parameter(&param).map_or("", |p| p.unit);
-            match c.format {
-                cli::Format::Json => format!(
-                    "{:#}\n",
-                    serde_json::json!({"param": param, "value": value, "unit": unit,
-                        "rms_error": rms, "points": g.len(),
-                        "scene": serde_json::to_value(fitted).unwrap_or_default()})
-                ),
-                _ => format!(
-                    "{param} = {} {unit}  (rms error of ε_N {:.3e} over {} points)\n",
-                    output::num(value),
-                    rms,
-                    g.len()
-                ),
-            }
-        }
+        Command::Fit(c, a) => commands::fit::run(&c, &a)?,
+        Command::Data(c, a) => commands::data::run(&c, &a)?,
+        Command::Stick(c, a) => commands::stick::run(&c, &a)?,
         Command::Figures(c, out) => {
             std::fs::create_dir_all(&out)
                 .map_err(|e| CliError(format!("--out {}: {e}", out.display())))?;

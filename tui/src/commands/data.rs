@@ -1,0 +1,173 @@
+//! `rime data`: the atlas of measured ice (rime_core::atlas), listed or evaluated.
+
+use crate::cli::{Common, Format, number, speed_list};
+use crate::output::{num, table};
+use crate::scene_io::{CliError, CliResult, err};
+use rime_core::atlas::{ENTRIES, Entry, Kind, find};
+
+/// Arguments of `rime data`.
+#[derive(Debug, Clone)]
+pub struct Args {
+    /// `--law ID` with `--g LIST` and optional `--radius R`.
+    pub law: Option<(String, Vec<f64>, Option<f64>)>,
+}
+
+/// Ids of the entries that are laws, comma-separated.
+pub fn law_ids() -> String {
+    ENTRIES
+        .iter()
+        .filter(|e| e.kind == Kind::Law)
+        .map(|e| e.id)
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The law `id`, or an error naming `flag` and listing the valid ids.
+pub fn law(flag: &str, id: &str) -> CliResult<&'static Entry> {
+    match find(id) {
+        Some(e) if e.kind == Kind::Law => Ok(e),
+        Some(e) => err(format!(
+            "{flag} {id}: a {}, not a law; laws: {}",
+            e.kind.name(),
+            law_ids()
+        )),
+        None => err(format!(
+            "{flag} {id}: unknown atlas entry; laws: {}",
+            law_ids()
+        )),
+    }
+}
+
+/// Parses the flags of `rime data`.
+pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
+    let radius = get("--radius")
+        .map(|r| number("--radius", &r))
+        .transpose()?;
+    if radius.is_some_and(|r| r <= 0.0) {
+        return err("--radius: must be a radius > 0 [m]");
+    }
+    let law = match (get("--law"), get("--g")) {
+        (Some(id), Some(g)) => Some((id, speed_list("--g", &g, false)?, radius)),
+        (Some(_), None) => return err("--g: required with --law (speeds in m/s)"),
+        (None, Some(_)) => return err("--law: required with --g"),
+        (None, None) if radius.is_some() => return err("--law: required with --radius"),
+        (None, None) => None,
+    };
+    Ok(Args { law })
+}
+
+fn range(v: [f64; 2]) -> String {
+    if v[0] == v[1] {
+        num(v[0])
+    } else {
+        format!("{}..{}", num(v[0]), num(v[1]))
+    }
+}
+
+fn entry_json(e: &Entry) -> serde_json::Value {
+    let c = &e.citation;
+    serde_json::json!({
+        "id": e.id,
+        "kind": e.kind.name(),
+        "citation": {"authors": c.authors, "year": c.year, "journal": c.journal,
+            "volume": c.volume, "pages": c.pages, "doi": c.doi},
+        "material": e.material,
+        "formula": e.formula,
+        "units": e.units,
+        "valid_speed": e.valid_speed,
+        "radius": e.radius,
+        "temperature": e.temperature,
+        "geometry": e.geometry.name(),
+        "clamp": e.clamp,
+        "source": e.source,
+        "verified": e.verified,
+        "conflicts_with": e.conflicts_with,
+    })
+}
+
+/// Runs `rime data`.
+pub fn run(common: &Common, args: &Args) -> CliResult<String> {
+    let Some((id, speeds, radius)) = &args.law else {
+        return Ok(match common.format {
+            Format::Json => {
+                let all: Vec<_> = ENTRIES.iter().map(entry_json).collect();
+                serde_json::to_string_pretty(&all).map_err(|e| CliError(e.to_string()))? + "\n"
+            }
+            Format::Csv => {
+                let mut s = String::from(
+                    "id,kind,year,speed_lo,speed_hi,temperature_lo,temperature_hi,geometry\n",
+                );
+                for e in ENTRIES {
+                    s.push_str(&format!(
+                        "{},{},{},{},{},{},{},{}\n",
+                        e.id,
+                        e.kind.name(),
+                        e.citation.year,
+                        num(e.valid_speed[0]),
+                        num(e.valid_speed[1]),
+                        num(e.temperature[0]),
+                        num(e.temperature[1]),
+                        e.geometry.name()
+                    ));
+                }
+                s
+            }
+            Format::Table => {
+                let rows: Vec<Vec<String>> = ENTRIES
+                    .iter()
+                    .map(|e| {
+                        vec![
+                            e.id.to_string(),
+                            e.kind.name().to_string(),
+                            range(e.valid_speed),
+                            range(e.temperature),
+                            e.geometry.name().to_string(),
+                            e.formula.to_string(),
+                        ]
+                    })
+                    .collect();
+                table(
+                    &["id", "kind", "speed [m/s]", "T [K]", "geometry", "formula"],
+                    &rows,
+                ) + "Provenance and what was verified: rime data --format json (field verified).\n"
+            }
+        });
+    };
+    let entry = law("--law", id)?;
+    if entry.needs_radius() && radius.is_none() {
+        return err(format!(
+            "--radius: required by --law {} (reduced radius in m)",
+            entry.id
+        ));
+    }
+    let mut rows = Vec::with_capacity(speeds.len());
+    for &g in speeds {
+        let e = entry
+            .eval(g, *radius)
+            .map_err(|e| CliError(format!("--law {}: {e}", entry.id)))?;
+        rows.push(e);
+    }
+    Ok(match common.format {
+        Format::Json => {
+            let v: Vec<_> = rows
+                .iter()
+                .map(|e| serde_json::json!({"g_n": e.g, "eps_n": e.eps, "extrapolated": e.extrapolated}))
+                .collect();
+            serde_json::to_string_pretty(&v).map_err(|e| CliError(e.to_string()))? + "\n"
+        }
+        Format::Csv => {
+            let mut s = String::from("g_n,eps_n,extrapolated\n");
+            for e in &rows {
+                s.push_str(&format!("{},{},{}\n", num(e.g), num(e.eps), e.extrapolated));
+            }
+            s
+        }
+        Format::Table => table(
+            &["g_n", "eps_n", "extrapolated"],
+            &rows
+                .iter()
+                .map(|e| vec![num(e.g), num(e.eps), e.extrapolated.to_string()])
+                .collect::<Vec<_>>(),
+        ),
+    })
+}

@@ -1,0 +1,188 @@
+//! `rime fit`: scene parameters fitted to measured points or to an atlas law, with standard errors
+//! and correlations (rime_core::fit_scene).
+
+use crate::cli::{Common, Format, number};
+use crate::commands::data::law;
+use crate::output::num;
+use crate::scene_io::{CliError, CliResult, err};
+use rime_core::fit_scene::{Points, SceneFit, fit, parse_points};
+use std::path::{Path, PathBuf};
+
+/// Largest points file read \[bytes\].
+pub const MAX_DATA_BYTES: u64 = 16 << 20;
+
+/// Points sampled from an atlas law.
+pub const LAW_POINTS: usize = 40;
+
+/// Where the points come from.
+#[derive(Debug, Clone)]
+pub enum Source {
+    /// `--data FILE.csv`.
+    Data(PathBuf),
+    /// `--law ID [--radius R]`.
+    Law(String, Option<f64>),
+}
+
+/// Arguments of `rime fit`.
+#[derive(Debug, Clone)]
+pub struct Args {
+    /// The points.
+    pub source: Source,
+    /// `--param a,b,c` (default `bulk.damping.time`).
+    pub params: Vec<String>,
+}
+
+/// Parses the flags of `rime fit`.
+pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
+    let radius = get("--radius")
+        .map(|r| number("--radius", &r))
+        .transpose()?;
+    let source = match (get("--data"), get("--law")) {
+        (Some(d), None) => {
+            if radius.is_some() {
+                return err("--radius: only with --law");
+            }
+            Source::Data(PathBuf::from(d))
+        }
+        (None, Some(l)) => Source::Law(l, radius),
+        (Some(_), Some(_)) => return err("--law: cannot be combined with --data"),
+        (None, None) => return err("--data: required (or --law ID)"),
+    };
+    let params: Vec<String> = get("--param")
+        .unwrap_or_else(|| "bulk.damping.time".into())
+        .split(',')
+        .map(|s| s.trim().to_string())
+        .collect();
+    if params.iter().any(String::is_empty) {
+        return err("--param: empty name in the list");
+    }
+    Ok(Args { source, params })
+}
+
+/// Reads a points file: regular files of at most [`MAX_DATA_BYTES`] only.
+pub fn read_points(path: &Path) -> CliResult<Points> {
+    let shown = path.display();
+    let meta = std::fs::metadata(path).map_err(|e| CliError(format!("--data {shown}: {e}")))?;
+    if !meta.is_file() {
+        return err(format!("--data {shown}: not a regular file"));
+    }
+    if meta.len() > MAX_DATA_BYTES {
+        return err(format!(
+            "--data {shown}: file is {} bytes; at most {MAX_DATA_BYTES} bytes are read",
+            meta.len()
+        ));
+    }
+    let text =
+        std::fs::read_to_string(path).map_err(|e| CliError(format!("--data {shown}: {e}")))?;
+    parse_points(&text).map_err(|e| CliError(format!("--data {shown}: {e}")))
+}
+
+fn render(common: &Common, f: &SceneFit, points: &Points, what: &str) -> CliResult<String> {
+    let n = points.g.len();
+    Ok(match common.format {
+        Format::Json => {
+            let params: Vec<_> = f
+                .params
+                .iter()
+                .map(|p| {
+                    serde_json::json!({"param": p.path, "value": p.value, "unit": p.unit,
+                    "standard_error": p.standard_error})
+                })
+                .collect();
+            let mut v = serde_json::json!({
+                "source": what, "params": params, "correlation": f.correlation,
+                "rms_error": f.rms_error, "reduced_chi2": f.reduced_chi2, "dof": f.dof,
+                "points": n, "weighted": f.weighted, "header": points.header,
+                "warnings": f.warnings,
+                "scene": serde_json::to_value(f.scene).map_err(|e| CliError(e.to_string()))?,
+            });
+            if let ([p], Some(obj)) = (f.params.as_slice(), v.as_object_mut()) {
+                obj.insert("param".into(), p.path.into());
+                obj.insert("value".into(), p.value.into());
+                obj.insert("unit".into(), p.unit.into());
+                obj.insert("standard_error".into(), p.standard_error.into());
+            }
+            format!("{v:#}\n")
+        }
+        _ => {
+            let mut s = format!("fit to {what} ({n} points");
+            if let Some(h) = &points.header {
+                s.push_str(&format!(", header line '{h}' skipped"));
+            }
+            s.push_str(if f.weighted {
+                ", weighted by the sigma column)\n"
+            } else {
+                ", unweighted)\n"
+            });
+            for p in &f.params {
+                let se = p
+                    .standard_error
+                    .map_or("(not determined)".into(), |e| format!("± {}", num(e)));
+                s.push_str(&format!("{} = {} {se} {}\n", p.path, num(p.value), p.unit));
+            }
+            if let (Some(c), true) = (&f.correlation, f.params.len() > 1) {
+                s.push_str("correlation:\n");
+                for row in c {
+                    let cells: Vec<String> = row.iter().map(|x| format!("{x:>8.4}")).collect();
+                    s.push_str(&format!("  {}\n", cells.join(" ")));
+                }
+            }
+            s.push_str(&format!(
+                "rms error of eps_n {:.3e}, reduced chi^2 {:.3e} ({} degrees of freedom)\n",
+                f.rms_error, f.reduced_chi2, f.dof
+            ));
+            for w in &f.warnings {
+                s.push_str(&format!("warning: {w}\n"));
+            }
+            s
+        }
+    })
+}
+
+/// Runs `rime fit`.
+pub fn run(common: &Common, args: &Args) -> CliResult<String> {
+    let (points, what, extra) = match &args.source {
+        Source::Data(path) => (read_points(path)?, format!("{}", path.display()), None),
+        Source::Law(id, radius) => {
+            let entry = law("--law", id)?;
+            if entry.needs_radius() && radius.is_none() {
+                return err(format!(
+                    "--radius: required by --law {} (reduced radius in m)",
+                    entry.id
+                ));
+            }
+            let mut g = vec![0.0; LAW_POINTS];
+            rime_core::sweep::log_space(entry.valid_speed[0], entry.valid_speed[1], &mut g);
+            let mut eps = Vec::with_capacity(LAW_POINTS);
+            for &x in &g {
+                let e = entry
+                    .eval(x, *radius)
+                    .map_err(|e| CliError(format!("--law {}: {e}", entry.id)))?;
+                eps.push(e.eps.clamp(0.0, 1.0));
+            }
+            let points = Points {
+                g,
+                eps,
+                sigma: None,
+                header: None,
+            };
+            let note = "fitted to a law's curve over its measured speeds: the standard errors \
+                        measure the model's misfit to the law, not measurement noise";
+            (points, format!("law {}", entry.id), Some(note))
+        }
+    };
+    let paths: Vec<&str> = args.params.iter().map(String::as_str).collect();
+    let mut f = fit(
+        &common.scene,
+        &paths,
+        &points.g,
+        &points.eps,
+        points.sigma.as_deref(),
+        common.accuracy,
+    )
+    .map_err(|e| CliError(format!("--param {e}")))?;
+    if let Some(note) = extra {
+        f.warnings.push(note.to_string());
+    }
+    render(common, &f, &points, &what)
+}

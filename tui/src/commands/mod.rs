@@ -1,0 +1,5 @@
+//! Subcommands with their own files: argument parsing and rendering (docs/cli.md).
+
+pub mod data;
+pub mod fit;
+pub mod stick;
