@@ -44,6 +44,7 @@ pub mod figure;
 pub mod fit;
 pub mod kinematics;
 pub mod master;
+pub mod models;
 mod math;
 pub mod normal;
 pub mod ode;
@@ -61,7 +62,7 @@ pub use kinematics::GrainState;
 pub use normal::{Normal, Status};
 pub use scene::{
     Adhesion, AdhesionModulus, Bulk, ContactEnd, Damping, DampingFormula, Friction, Grains, Layer,
-    LayerReading, Preset, Scene, SlidingLaw, Viscosities,
+    LayerReading, Plasticity, Preset, Scene, SlidingLaw, Viscosities,
 };
 pub use tangential::{StickClass, Tangential};
 pub use tidal::{Tidal, TidalInput};
