@@ -5,6 +5,7 @@ mod cli;
 mod cost;
 mod extremes;
 mod fuzz;
+mod models;
 mod physics;
 mod properties;
 mod reference;

@@ -2,6 +2,7 @@
 
 mod bench;
 mod cli;
+mod commands;
 mod explore;
 mod export;
 mod output;
@@ -186,6 +187,7 @@ fn run(command: Command) -> CliResult<Option<String>> {
             return Ok(None);
         }
         Command::Eps(c, g) => run_eps(&c, &g)?,
+        Command::Compare(c, a) => commands::compare::run(&c, &a)?,
         Command::Curve(c, from, to, n) => run_curve(&c, from, to, n)?,
         Command::Tangential(c, gn, gt) => run_tangential(&c, &gn, &gt)?,
         Command::Map(c, max, n) => run_map(&c, max, n)?,

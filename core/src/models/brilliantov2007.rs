@@ -228,7 +228,10 @@ fn integrate(
     };
     let tol = Tolerances {
         rtol,
-        atol: [rtol * 1e-3 * x_scale * sigma_scale * sigma_scale, rtol * 1e-6],
+        atol: [
+            rtol * 1e-3 * x_scale * sigma_scale * sigma_scale,
+            rtol * 1e-6,
+        ],
         max_steps: MAX_STEPS,
     };
     let sigma_end = 1e3 * (1.0 + sqrt(delta)) * (1.0 + powf(kappa, 0.5));
@@ -248,7 +251,13 @@ fn integrate(
     loop {
         let outcome = match stepper.step(&sys) {
             Err(Error::StepBudgetExceeded { .. }) if past_max => {
-                return Ok((0.0, f64::INFINITY, x_max, Outcome::Overdamped, stepper.rhs_evaluations()));
+                return Ok((
+                    0.0,
+                    f64::INFINITY,
+                    x_max,
+                    Outcome::Overdamped,
+                    stepper.rhs_evaluations(),
+                ));
             }
             other => other?,
         };
@@ -266,20 +275,44 @@ fn integrate(
                     }
                     PULL_OFF if past_max || y[1] < 0.0 => {
                         let eps = (-y[1]).clamp(0.0, 1.0);
-                        return Ok((eps, t * t, x_max, Outcome::PullOff, stepper.rhs_evaluations()));
+                        return Ok((
+                            eps,
+                            t * t,
+                            x_max,
+                            Outcome::PullOff,
+                            stepper.rhs_evaluations(),
+                        ));
                     }
                     STOP if past_max => {
-                        return Ok((0.0, f64::INFINITY, x_max, Outcome::Stuck, stepper.rhs_evaluations()));
+                        return Ok((
+                            0.0,
+                            f64::INFINITY,
+                            x_max,
+                            Outcome::Stuck,
+                            stepper.rhs_evaluations(),
+                        ));
                     }
                     CREEP if past_max && kappa == 0.0 => {
                         // Without adhesion nothing catches the grains, but the rebound is < 1e-9.
-                        return Ok((0.0, f64::INFINITY, x_max, Outcome::Overdamped, stepper.rhs_evaluations()));
+                        return Ok((
+                            0.0,
+                            f64::INFINITY,
+                            x_max,
+                            Outcome::Overdamped,
+                            stepper.rhs_evaluations(),
+                        ));
                     }
                     _ => {}
                 }
             }
             StepOutcome::Done if past_max => {
-                return Ok((0.0, f64::INFINITY, x_max, Outcome::Overdamped, stepper.rhs_evaluations()));
+                return Ok((
+                    0.0,
+                    f64::INFINITY,
+                    x_max,
+                    Outcome::Overdamped,
+                    stepper.rhs_evaluations(),
+                ));
             }
             StepOutcome::Done => {
                 return Err(Error::StepBudgetExceeded {
@@ -473,7 +506,10 @@ mod tests {
             for x in [sys.x_c * 0.5, 0.0, 1e-3, 0.5, 3.0, 1e3] {
                 let b = sys.radius(x);
                 let back = b * b - kappa * sqrt(b);
-                assert!((back - x).abs() <= 1e-12 * (1.0 + x.abs() + kappa), "κ={kappa} x={x}: {back}");
+                assert!(
+                    (back - x).abs() <= 1e-12 * (1.0 + x.abs() + kappa),
+                    "κ={kappa} x={x}: {back}"
+                );
                 assert!(b >= sys.b_c);
             }
         }
@@ -486,12 +522,19 @@ mod tests {
         assert_eq!(outcome, Outcome::PullOff);
         assert!((eps - 1.0).abs() < 1e-9, "{eps}");
         assert!((x_max - libm::pow(1.25, 0.4)).abs() < 1e-10);
-        assert!((s_c - crate::analytic::HERTZ_CONTACT_TIME).abs() < 1e-8, "{s_c}");
+        assert!(
+            (s_c - crate::analytic::HERTZ_CONTACT_TIME).abs() < 1e-8,
+            "{s_c}"
+        );
     }
 
     #[test]
     fn hysteresis_constant_is_the_closed_form() {
         // mpmath: pi**(5/3)*(1/10 + 3/5*2**(2/3)) = 7.0921959718639588…
-        assert!((hysteresis_constant() - 7.092_195_971_863_959).abs() < 1e-13, "{}", hysteresis_constant());
+        assert!(
+            (hysteresis_constant() - 7.092_195_971_863_959).abs() < 1e-13,
+            "{}",
+            hysteresis_constant()
+        );
     }
 }

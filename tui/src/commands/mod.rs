@@ -1,0 +1,3 @@
+//! Subcommand bodies, one file each.
+
+pub mod compare;
