@@ -62,7 +62,7 @@ pub struct Collision {
     pub outcome: Outcome,
     /// Contact duration \[s\] (infinite when stuck or overdamped).
     pub t_c: f64,
-    /// Maximum compression ξ_max \[m\].
+    /// Maximum compression ξ_max \[m\] (0 where δ > [`DELTA_LIMIT`] and nothing is integrated).
     pub xi_max: f64,
     /// Right-hand-side evaluations spent.
     pub rhs_evaluations: usize,
@@ -91,6 +91,7 @@ pub struct Dynamic {
     /// Dupré work of adhesion `w` \[J/m²\].
     pub work_of_adhesion: f64,
     r_eff: f64,
+    m_eff: f64,
     alpha: f64,
     rho_h: f64,
     damping_time: f64,
@@ -338,6 +339,7 @@ impl Dynamic {
             modulus: 0.75 * contact.rho_h / sqrt(contact.r_eff),
             work_of_adhesion,
             r_eff: contact.r_eff,
+            m_eff: contact.m_eff,
             alpha: contact.alpha,
             rho_h: contact.rho_h,
             damping_time: contact.damping_time,
@@ -383,6 +385,21 @@ impl Dynamic {
     pub fn collide(&self, g: f64, rtol: f64) -> Result<Collision> {
         let g = Self::check_speed(g)?;
         let (delta, kappa) = self.parameters(g);
+        if delta > DELTA_LIMIT && self.work_of_adhesion > 0.0 {
+            // Not integrated: without adhesion the rebound would be at most K δ⁻⁵ g (the
+            // zero-overlap creep bound, docs/physics.md#decision-2); adhesion only takes energy
+            // away, so if that cannot pay the hysteresis W the grains are caught.
+            let rebound = crate::normal::viscoelastic::creep_eps(delta) * g;
+            if 0.5 * self.m_eff * rebound * rebound < self.hysteresis_energy() {
+                return Ok(Collision {
+                    eps: 0.0,
+                    outcome: Outcome::Stuck,
+                    t_c: f64::INFINITY,
+                    xi_max: 0.0,
+                    rhs_evaluations: 0,
+                });
+            }
+        }
         let (eps, s_c, x_max, outcome, n) = integrate(delta, kappa, rtol, |_, _, _, _| {})?;
         let xi_star = self.length_scale(g);
         Ok(Collision {
