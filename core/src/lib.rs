@@ -54,6 +54,7 @@ pub mod fit_scene;
 pub mod kinematics;
 pub mod master;
 mod math;
+pub mod models;
 pub mod normal;
 pub mod ode;
 pub mod params;
@@ -71,7 +72,7 @@ pub use kinematics::GrainState;
 pub use normal::{Normal, Status};
 pub use scene::{
     Adhesion, AdhesionModulus, Bulk, ContactEnd, Damping, DampingFormula, Friction, Grains, Layer,
-    LayerReading, Preset, Scene, SlidingLaw, Viscosities,
+    LayerReading, Plasticity, Preset, Scene, SlidingLaw, Viscosities,
 };
 pub use tangential::{StickClass, Tangential};
 pub use tidal::{Tidal, TidalInput};

@@ -198,8 +198,30 @@ pub const PARAMETERS: &[Parameter] = &[
 
 /// Looks a parameter up by its path.
 pub fn parameter(path: &str) -> Option<&'static Parameter> {
-    PARAMETERS.iter().find(|p| p.path == path)
+    PARAMETERS
+        .iter()
+        .chain(MODEL_PARAMETERS.iter())
+        .find(|p| p.path == path)
 }
+
+/// Parameters read only by the alternative models of `rime compare` (docs/physics.md#models): settable
+/// with `--set` and in scene files, but not part of the explorer's panel ([`PARAMETERS`]).
+pub static MODEL_PARAMETERS: &[Parameter] = &[
+    Parameter {
+        path: "plasticity",
+        label: "plasticity",
+        unit: "",
+        kind: Kind::Toggle,
+    },
+    num(
+        "plasticity.yield_pressure",
+        "p_y yield pressure",
+        "Pa",
+        1e-3,
+        1e15,
+        true,
+    ),
+];
 
 fn choice(
     field: &'static str,
@@ -284,6 +306,10 @@ impl Scene {
                     AdhesionModulus::Consistent => "consistent",
                 })
             }),
+            "plasticity" => Value::Enabled(self.plasticity.is_some()),
+            "plasticity.yield_pressure" => self
+                .plasticity
+                .map_or(Value::Inactive, |p| n(p.yield_pressure)),
             "friction" => Value::Enabled(self.friction.is_some()),
             "friction.coefficient" => self.friction.map_or(Value::Inactive, |f| n(f.coefficient)),
             "friction.kappa" => self.friction.map_or(Value::Inactive, |f| n(f.kappa)),
@@ -344,6 +370,14 @@ impl Scene {
             }
             "friction" => {
                 next.friction = toggle(field, text)?.then(|| self.friction.unwrap_or_default())
+            }
+            "plasticity" => {
+                next.plasticity = toggle(field, text)?.then(|| self.plasticity.unwrap_or_default())
+            }
+            "plasticity.yield_pressure" => {
+                let mut p = next.plasticity.unwrap_or_default();
+                p.yield_pressure = number()?;
+                next.plasticity = Some(p);
             }
             "layer.thickness" | "layer.viscosity" | "layer.reading" => {
                 let mut l = next.layer.unwrap_or_default();

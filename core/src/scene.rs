@@ -188,6 +188,25 @@ impl Default for Adhesion {
     }
 }
 
+/// Plastic yielding of the bulk (Thornton 1997; docs/physics.md#model-thornton1997). The paper's own model
+/// ignores it; the plastic models of `rime compare` need it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct Plasticity {
+    /// Limiting contact pressure `p_y` \[Pa\]: the Hertz pressure at the centre of the contact cannot exceed
+    /// it. Default 1e7 Pa, of the order of the compressive strength of cold ice.
+    pub yield_pressure: f64,
+}
+
+impl Default for Plasticity {
+    fn default() -> Self {
+        Plasticity {
+            yield_pressure: 1.0e7,
+        }
+    }
+}
+
 /// The sliding branch of Eq. (26) (docs/physics.md#decision-6).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -245,6 +264,12 @@ pub struct Scene {
     /// Optional friction (needed for tangential restitution).
     #[cfg_attr(feature = "serde", serde(default))]
     pub friction: Option<Friction>,
+    /// Optional plastic yielding, used only by the plastic models of `rime compare`.
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub plasticity: Option<Plasticity>,
 }
 
 impl Default for Scene {
@@ -256,6 +281,7 @@ impl Default for Scene {
             layer: None,
             adhesion: None,
             friction: Some(Friction::default()),
+            plasticity: None,
         }
     }
 }
@@ -431,6 +457,15 @@ impl Scene {
                 0.0,
                 1e6,
                 "must lie in [0, 1e6] J/m²",
+            )?;
+        }
+        if let Some(plasticity) = &self.plasticity {
+            within(
+                "plasticity.yield_pressure",
+                plasticity.yield_pressure,
+                1e-3,
+                1e15,
+                "must lie in [1e-3, 1e15] Pa",
             )?;
         }
         if let Some(friction) = &self.friction {

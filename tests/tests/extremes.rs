@@ -957,6 +957,7 @@ fn regression_balanced_zero_overlap_meets_its_1e_6_bound() {
         layer: None,
         adhesion: None,
         friction: None,
+        plasticity: None,
     };
     let c = Contact::new(&s).unwrap();
     let p = c.normal(1.0, Accuracy::Precise).unwrap().eps;

@@ -8,6 +8,7 @@ mod exported;
 mod extremes;
 mod fuzz;
 mod measured;
+mod models;
 mod physics;
 mod properties;
 mod reference;

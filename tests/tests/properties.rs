@@ -88,6 +88,7 @@ fn base() -> impl Strategy<Value = Scene> + Clone {
             layer: None,
             adhesion: None,
             friction: None,
+            plasticity: None,
         })
 }
 

@@ -56,6 +56,8 @@ pub enum Command {
     Stick(Common, crate::commands::stick::Args),
     /// `rime figures --out DIR`.
     Figures(Common, PathBuf),
+    /// `rime compare --models LIST --g LIST | --list | --bench`.
+    Compare(Common, crate::commands::compare::Args),
     /// `rime bench [--out DIR] [--quick]`.
     Bench(PathBuf, bool),
     /// `rime help` or `--help`.
@@ -93,6 +95,9 @@ USAGE:
                                                  sticking thresholds v_stick(r, T), γ(T) of Musiolik
                                                  & Wurm 2019; --out writes a table and a C function
   rime figures [--out DIR]                       the paper's Figs. 2–4 from the model, SVG + PNG
+  rime compare --models LIST --g LIST            ε_N of several models side by side and their
+                                                 characteristic speeds (g_cr, v_yield, …);
+                                                 --list names every model, --bench its cost
   rime bench [--out DIR] [--quick true]          speed/accuracy of every model and level (writes
                                                  DIR/bench.json and DIR/work-precision.svg)
 
@@ -174,6 +179,11 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
         match raw {
             "-h" | "--help" => return Ok(Command::Help),
             "-V" | "--version" => return Ok(Command::Version),
+            "--list" | "--bench" if sub == Some("compare") => {
+                flags.push((raw.to_string(), "true".into()));
+                i += 1;
+                continue;
+            }
             _ => {}
         }
         if !raw.starts_with("--") {
@@ -242,6 +252,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
         Some("stick") => &["--radius", "--temperature", "--gamma", "--out"],
         Some("figures") => &["--out"],
         Some("eps") => &["--g", "--g-file"],
+        Some("compare") => &["--models", "--g", "--list", "--bench"],
         Some("curve") => &["--from", "--to", "--points"],
         Some("tangential") => &["--gn", "--gt"],
         Some("map") => &["--max", "--n"],
@@ -297,6 +308,21 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             let out = PathBuf::from(get("--out").unwrap_or("target/bench"));
             Command::Bench(out, quick)
         }
+        Some("compare") => Command::Compare(
+            common,
+            crate::commands::compare::Args {
+                models: match get("--models") {
+                    Some(m) => crate::commands::compare::parse_models(m)?,
+                    None => Vec::new(),
+                },
+                g: match get("--g") {
+                    Some(g) => speed_list("--g", g, false)?,
+                    None => Vec::new(),
+                },
+                list: get("--list").is_some(),
+                bench: get("--bench").is_some(),
+            },
+        ),
         Some("eps") => match (get("--g"), get("--g-file")) {
             (Some(_), Some(_)) => return err("--g-file: cannot be combined with --g"),
             (None, Some(file)) => Command::EpsFile(common, PathBuf::from(file)),

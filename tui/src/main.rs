@@ -193,6 +193,7 @@ fn run(command: Command) -> CliResult<Option<String>> {
             eps_file::run(&c, &path)?;
             return Ok(None);
         }
+        Command::Compare(c, a) => commands::compare::run(&c, &a)?,
         Command::Curve(c, from, to, n) => run_curve(&c, from, to, n)?,
         Command::Tangential(c, gn, gt) => run_tangential(&c, &gn, &gt)?,
         Command::Map(c, max, n) => run_map(&c, max, n)?,

@@ -110,6 +110,7 @@ pub fn apply_set(scene: &mut Scene, assignment: &str) -> CliResult<()> {
         Err(rime_core::Error::UnknownParameter) => {
             let known: Vec<&str> = rime_core::params::PARAMETERS
                 .iter()
+                .chain(rime_core::params::MODEL_PARAMETERS)
                 .map(|p| p.path)
                 .collect();
             err(format!(

@@ -1,0 +1,557 @@
+//! The dynamic collision of adhesive viscoelastic spheres (Brilliantov, Albers, Spahn & Pöschel 2007,
+//! Phys. Rev. E 76, 051302): the JKR contact force plus the quasi-static viscous force, integrated
+//! through loading, unloading and the neck to pull-off (docs/physics.md#model-brilliantov2007).
+//!
+//! With `E*` the contact modulus of Eq. (4) (`ρ_H = (4/3) E* √R_eff`), `w` the Dupré work of adhesion
+//! (the scene's `adhesion.surface_energy`) and `a` the contact radius, the JKR relations are
+//! `ξ(a) = a²/R − √(2π w a/E*)` and `F_el(a) = 4E*a³/(3R) − √(8π w E* a³)`; the viscous force is
+//! `F_dis = 2 E* A a ξ'`, which for `w = 0` (`a = √(Rξ)`) is exactly the damping term
+//! `1.5 ρ_H A √ξ ξ'` of Eq. (4). On the scales of docs/physics.md#decision-3 (`x = ξ/ξ*`,
+//! `s = t/τ`, `b = a/√(R ξ*)`) the motion is
+//!
+//! `x'' = −(b³ − 1.5 κ b^(3/2)) − 1.5 δ b x'`,  `x = b² − κ √b`,  `x(0) = 0`, `x'(0) = 1`,
+//!
+//! with `δ = A α^(2/5) g^(1/5)` as in the paper's model and `κ = √(2π w/E*) R^(1/4) ξ*^(−3/4)`.
+//! The contact forms at `x = 0` with `b = κ^(2/3)` (the JKR jump-in) and breaks at the end of the
+//! stable JKR branch, `dx/db = 0`: `b_c = (κ/4)^(2/3)`, `x_c = −(3/4) κ (κ/4)^(1/3)` (the neck
+//! ends, the force jumps from `F_el(b_c)` to 0). If the grains stop separating before `x_c` they
+//! are caught: they aggregate (ε_N = 0).
+
+use crate::contact::Contact;
+use crate::error::{Error, Result};
+use crate::math::{powf, sqrt};
+use crate::ode::{Direction, Dopri5, OdeSystem, StepOutcome, Tolerances};
+
+/// δ beyond which the collision is reported overdamped without integration (as for the paper's
+/// model with `zero_overlap`, docs/physics.md#decision-2: the rebound is below 1e-10 there).
+pub const DELTA_LIMIT: f64 = crate::normal::viscoelastic::CREEP_DELTA_LIMIT;
+
+/// Step budget of one collision.
+const MAX_STEPS: usize = 100_000;
+
+/// Separation speeds below this (in units of the impact speed) after the maximum compression are
+/// treated as a stop: ε_N < 1e-9, reported overdamped.
+const CREEP_FLOOR: f64 = 1e-9;
+
+/// `π^(5/3) (1/10 + (3/5) 2^(2/3))`: the JKR hysteresis energy (the work done against the
+/// adhesive force through the neck, from `ξ = 0` to pull-off) in units of `(w⁵R⁴/E*²)^(1/3)`.
+/// Integrating `F_el dξ` in closed form along the JKR branch from `a³ = πwR²/(8E*)` to
+/// `a³ = 2πwR²/E*` gives `π^(5/3)(1/10 + (3/5)2^(2/3)) = 7.09220…`: the paper's 7.09 of Eq. (12)
+/// when its γ is the Dupré energy `w` and its `E` the contact modulus `E*`.
+pub fn hysteresis_constant() -> f64 {
+    powf(core::f64::consts::PI, 5.0 / 3.0) * (0.1 + 0.6 * powf(2.0, 2.0 / 3.0))
+}
+
+/// How a dynamic adhesive collision ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Outcome {
+    /// The neck broke: the grains separate.
+    PullOff,
+    /// The grains stopped separating before pull-off: they aggregate.
+    Stuck,
+    /// Damping so strong that the rebound is below 1e-9 (or δ above [`DELTA_LIMIT`]).
+    Overdamped,
+}
+
+/// The result of one collision.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Collision {
+    /// ε_N = −ξ'(pull-off)/g (0 when stuck or overdamped).
+    pub eps: f64,
+    /// How it ended.
+    pub outcome: Outcome,
+    /// Contact duration \[s\] (infinite when stuck or overdamped).
+    pub t_c: f64,
+    /// Maximum compression ξ_max \[m\] (0 where δ > [`DELTA_LIMIT`] and nothing is integrated).
+    pub xi_max: f64,
+    /// Right-hand-side evaluations spent.
+    pub rhs_evaluations: usize,
+}
+
+/// One point of the force–overlap loop.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoopPoint {
+    /// Time since first contact \[s\].
+    pub t: f64,
+    /// Overlap ξ \[m\] (negative in the neck).
+    pub xi: f64,
+    /// Approach speed ξ' \[m/s\] (negative while separating).
+    pub xi_dot: f64,
+    /// Total normal force \[N\], repulsive positive (elastic JKR + viscous).
+    pub force: f64,
+    /// JKR contact radius \[m\].
+    pub contact_radius: f64,
+}
+
+/// The constants of one collision of a scene at one impact speed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Dynamic {
+    /// Contact modulus `E* = 3ρ_H/(4√R_eff)` \[Pa\].
+    pub modulus: f64,
+    /// Dupré work of adhesion `w` \[J/m²\].
+    pub work_of_adhesion: f64,
+    r_eff: f64,
+    m_eff: f64,
+    alpha: f64,
+    rho_h: f64,
+    damping_time: f64,
+}
+
+/// The dimensionless system in `σ = √s` with state `(x, v = dx/ds)`.
+struct System {
+    /// 1.5 δ.
+    k: f64,
+    kappa: f64,
+    /// κ^(1/3), the start of Newton's iteration.
+    kappa_third: f64,
+    /// Pull-off overlap x_c and radius b_c.
+    x_c: f64,
+    b_c: f64,
+}
+
+const MAX: usize = 0;
+const PULL_OFF: usize = 1;
+const STOP: usize = 2;
+const CREEP: usize = 3;
+
+impl System {
+    fn new(delta: f64, kappa: f64) -> System {
+        let q = powf(0.25 * kappa, 1.0 / 3.0);
+        System {
+            k: 1.5 * delta,
+            kappa,
+            kappa_third: powf(kappa, 1.0 / 3.0),
+            x_c: -0.75 * kappa * q,
+            b_c: q * q,
+        }
+    }
+
+    /// The contact radius `b(x)` on the stable JKR branch: the largest root `s = √b` of
+    /// `s⁴ − κ s − x = 0`. The function is convex in `s`; Newton's iteration from
+    /// `s₀ = x^(1/4) + κ^(1/3)` (which lies above the root) descends monotonically onto it.
+    #[inline]
+    fn radius(&self, x: f64) -> f64 {
+        if self.kappa == 0.0 {
+            return sqrt(x.max(0.0));
+        }
+        if x <= self.x_c {
+            return self.b_c;
+        }
+        let mut s = sqrt(sqrt(x.max(0.0))) + self.kappa_third;
+        let s_c = sqrt(self.b_c);
+        for _ in 0..100 {
+            let s2 = s * s;
+            let f = s2 * s2 - self.kappa * s - x;
+            let df = 4.0 * s2 * s - self.kappa;
+            if !(df > 0.0) {
+                break;
+            }
+            let step = f / df;
+            let next = (s - step).max(s_c);
+            if !(step > 1e-16 * s) {
+                s = next;
+                break;
+            }
+            s = next;
+        }
+        s * s
+    }
+
+    /// Elastic JKR force `b³ − 1.5 κ b^(3/2)` at radius `b`.
+    #[inline]
+    fn elastic(&self, b: f64) -> f64 {
+        b * b * b - 1.5 * self.kappa * b * sqrt(b)
+    }
+}
+
+impl OdeSystem<2, 4> for System {
+    #[inline]
+    fn rhs(&self, sigma: f64, y: &[f64; 2], dydt: &mut [f64; 2]) {
+        let b = self.radius(y[0]);
+        let two_sigma = 2.0 * sigma;
+        dydt[0] = two_sigma * y[1];
+        dydt[1] = -two_sigma * (self.elastic(b) + self.k * b * y[1]);
+    }
+
+    #[inline]
+    fn events(&self, _sigma: f64, y: &[f64; 2], out: &mut [f64; 4]) {
+        out[MAX] = y[1];
+        // Pull-off only counts while separating (x falls through x_c).
+        out[PULL_OFF] = y[0] - self.x_c;
+        out[STOP] = y[1];
+        out[CREEP] = y[1] + CREEP_FLOOR;
+    }
+
+    fn direction(&self, which: usize) -> Direction {
+        match which {
+            STOP | CREEP => Direction::Rising,
+            _ => Direction::Falling,
+        }
+    }
+}
+
+/// The dimensionless result: `(ε, s_c, x_max, outcome, rhs evaluations)`.
+type Raw = (f64, f64, f64, Outcome, usize);
+
+/// Integrates one collision with damping `delta`, adhesion `kappa` and relative tolerance `rtol`;
+/// `visit(σ, x, v, b)` sees the start, every accepted step and every event (in order).
+fn integrate(
+    delta: f64,
+    kappa: f64,
+    rtol: f64,
+    mut visit: impl FnMut(f64, f64, f64, f64),
+) -> Result<Raw> {
+    if !(delta.is_finite() && delta >= 0.0) {
+        return Err(Error::OutOfRange {
+            field: "bulk.damping",
+            value: delta,
+            expected: "the dimensionless damping must be a finite number >= 0",
+        });
+    }
+    if !(kappa.is_finite() && kappa >= 0.0) {
+        return Err(Error::OutOfRange {
+            field: "adhesion.surface_energy",
+            value: kappa,
+            expected: "the dimensionless adhesion must be a finite number >= 0",
+        });
+    }
+    if delta > DELTA_LIMIT {
+        return Ok((0.0, f64::INFINITY, 0.0, Outcome::Overdamped, 0));
+    }
+    let sys = System::new(delta, kappa);
+    // Scales: strong adhesion (κ ≫ 1) squeezes the contact to x ~ κ^(4/3) over s ~ κ^(−1/3)… the
+    // controller adapts; only the first trial step and the absolute tolerances need a scale.
+    let x_scale = 1.0f64.max(powf(kappa, 4.0 / 3.0));
+    let sigma_scale = if delta > 1.0 {
+        powf(delta, -1.0 / 3.0)
+    } else {
+        1.0
+    };
+    let tol = Tolerances {
+        rtol,
+        atol: [
+            rtol * 1e-3 * x_scale * sigma_scale * sigma_scale,
+            rtol * 1e-6,
+        ],
+        max_steps: MAX_STEPS,
+    };
+    let sigma_end = 1e3 * (1.0 + sqrt(delta)) * (1.0 + powf(kappa, 0.5));
+    let y0 = [0.0, 1.0];
+    let mut stepper = Dopri5::new(
+        &sys,
+        0.0,
+        y0,
+        sigma_end,
+        0.05 * sigma_scale / (1.0 + sys.kappa_third),
+        tol,
+        "adhesive viscoelastic contact (brilliantov2007)",
+    );
+    visit(0.0, y0[0], y0[1], sys.radius(y0[0]));
+    let mut x_max: f64 = 0.0;
+    let mut past_max = false;
+    loop {
+        let outcome = match stepper.step(&sys) {
+            Err(Error::StepBudgetExceeded { .. }) if past_max => {
+                return Ok((
+                    0.0,
+                    f64::INFINITY,
+                    x_max,
+                    Outcome::Overdamped,
+                    stepper.rhs_evaluations(),
+                ));
+            }
+            other => other?,
+        };
+        match outcome {
+            StepOutcome::Step => {
+                let (t, y) = (stepper.t(), *stepper.y());
+                visit(t, y[0], y[1], sys.radius(y[0]));
+            }
+            StepOutcome::Event { t, y, which } => {
+                visit(t, y[0], y[1], sys.radius(y[0]));
+                match which {
+                    MAX if !past_max => {
+                        past_max = true;
+                        x_max = y[0];
+                    }
+                    PULL_OFF if past_max || y[1] < 0.0 => {
+                        let eps = (-y[1]).clamp(0.0, 1.0);
+                        return Ok((
+                            eps,
+                            t * t,
+                            x_max,
+                            Outcome::PullOff,
+                            stepper.rhs_evaluations(),
+                        ));
+                    }
+                    STOP if past_max => {
+                        return Ok((
+                            0.0,
+                            f64::INFINITY,
+                            x_max,
+                            Outcome::Stuck,
+                            stepper.rhs_evaluations(),
+                        ));
+                    }
+                    CREEP if past_max && kappa == 0.0 => {
+                        // Without adhesion nothing catches the grains, but the rebound is < 1e-9.
+                        return Ok((
+                            0.0,
+                            f64::INFINITY,
+                            x_max,
+                            Outcome::Overdamped,
+                            stepper.rhs_evaluations(),
+                        ));
+                    }
+                    _ => {}
+                }
+            }
+            StepOutcome::Done if past_max => {
+                return Ok((
+                    0.0,
+                    f64::INFINITY,
+                    x_max,
+                    Outcome::Overdamped,
+                    stepper.rhs_evaluations(),
+                ));
+            }
+            StepOutcome::Done => {
+                return Err(Error::StepBudgetExceeded {
+                    what: "adhesive viscoelastic contact (no maximum compression before the time limit)",
+                    steps: 0,
+                });
+            }
+        }
+    }
+}
+
+impl Dynamic {
+    /// The constants of a scene; `work_of_adhesion` is `adhesion.surface_energy` (0 without adhesion).
+    pub fn new(contact: &Contact, work_of_adhesion: f64) -> Result<Dynamic> {
+        if !(work_of_adhesion.is_finite() && work_of_adhesion >= 0.0) {
+            return Err(Error::OutOfRange {
+                field: "adhesion.surface_energy",
+                value: work_of_adhesion,
+                expected: "must be a finite number >= 0",
+            });
+        }
+        Ok(Dynamic {
+            modulus: 0.75 * contact.rho_h / sqrt(contact.r_eff),
+            work_of_adhesion,
+            r_eff: contact.r_eff,
+            m_eff: contact.m_eff,
+            alpha: contact.alpha,
+            rho_h: contact.rho_h,
+            damping_time: contact.damping_time,
+        })
+    }
+
+    /// `ξ* = (g²/α)^(2/5)` \[m\].
+    fn length_scale(&self, g: f64) -> f64 {
+        powf(g * g / self.alpha, 0.4)
+    }
+
+    /// `(δ, κ)` at impact speed `g`.
+    pub fn parameters(&self, g: f64) -> (f64, f64) {
+        let xi_star = self.length_scale(g);
+        let delta = self.damping_time * g / xi_star;
+        let kappa = sqrt(2.0 * core::f64::consts::PI * self.work_of_adhesion / self.modulus)
+            * sqrt(sqrt(self.r_eff))
+            / powf(xi_star, 0.75);
+        (delta, kappa)
+    }
+
+    /// The JKR hysteresis energy `W = 7.09220… (w⁵R⁴/E*²)^(1/3)` \[J\] ([`hysteresis_constant`]).
+    pub fn hysteresis_energy(&self) -> f64 {
+        let w = self.work_of_adhesion;
+        let r = self.r_eff;
+        // (w⁵R⁴/E*²)^(1/3) = w (w R² / E*)^(2/3).
+        hysteresis_constant() * w * powf(w * r * r / self.modulus, 2.0 / 3.0)
+    }
+
+    fn check_speed(g: f64) -> Result<f64> {
+        if g.is_finite() && g > 0.0 && g <= 1e6 {
+            Ok(g)
+        } else {
+            Err(Error::OutOfRange {
+                field: "g_n",
+                value: g,
+                expected: "impact speed must lie in (0, 1e6] m/s",
+            })
+        }
+    }
+
+    /// One collision at impact speed `g` \[m/s\], integrated at relative tolerance `rtol`.
+    pub fn collide(&self, g: f64, rtol: f64) -> Result<Collision> {
+        let g = Self::check_speed(g)?;
+        let (delta, kappa) = self.parameters(g);
+        if delta > DELTA_LIMIT && self.work_of_adhesion > 0.0 {
+            // Not integrated: without adhesion the rebound would be at most K δ⁻⁵ g (the
+            // zero-overlap creep bound, docs/physics.md#decision-2); adhesion only takes energy
+            // away, so if that cannot pay the hysteresis W the grains are caught.
+            let rebound = crate::normal::viscoelastic::creep_eps(delta) * g;
+            if 0.5 * self.m_eff * rebound * rebound < self.hysteresis_energy() {
+                return Ok(Collision {
+                    eps: 0.0,
+                    outcome: Outcome::Stuck,
+                    t_c: f64::INFINITY,
+                    xi_max: 0.0,
+                    rhs_evaluations: 0,
+                });
+            }
+        }
+        let (eps, s_c, x_max, outcome, n) = integrate(delta, kappa, rtol, |_, _, _, _| {})?;
+        let xi_star = self.length_scale(g);
+        Ok(Collision {
+            eps,
+            outcome,
+            t_c: s_c * xi_star / g,
+            xi_max: x_max * xi_star,
+            rhs_evaluations: n,
+        })
+    }
+
+    /// The critical aggregation speed `g_cr` \[m/s\]: impacts slower than it stick. `None` without
+    /// adhesion, or where every collision near it is overdamped. Found by bisection in ln g to
+    /// relative 1e-10, bracketed from the elastic estimate `√(2W/m_eff)`.
+    pub fn critical_speed(&self, m_eff: f64, rtol: f64) -> Result<Option<f64>> {
+        if self.work_of_adhesion == 0.0 {
+            return Ok(None);
+        }
+        let estimate = sqrt(2.0 * self.hysteresis_energy() / m_eff);
+        if !(estimate.is_finite() && estimate > 0.0 && estimate < 1e6) {
+            return Ok(None);
+        }
+        let stuck = |g: f64| -> Result<Option<bool>> {
+            let c = self.collide(g, rtol)?;
+            Ok(match c.outcome {
+                Outcome::Stuck => Some(true),
+                Outcome::PullOff => Some(false),
+                Outcome::Overdamped => None,
+            })
+        };
+        let (mut lo, mut hi) = (estimate, estimate);
+        // Damping only adds loss: g_cr ≥ the elastic estimate, up to integration error.
+        let mut found = false;
+        for _ in 0..80 {
+            match stuck(hi)? {
+                Some(false) => {
+                    found = true;
+                    break;
+                }
+                Some(true) => {
+                    lo = hi;
+                    hi *= 2.0;
+                    if hi > 1e6 {
+                        return Ok(None);
+                    }
+                }
+                None => return Ok(None),
+            }
+        }
+        if !found {
+            return Ok(None);
+        }
+        if lo == hi {
+            found = false;
+            for _ in 0..80 {
+                lo *= 0.5;
+                if stuck(lo)? == Some(true) {
+                    found = true;
+                    break;
+                }
+            }
+            if !found {
+                return Ok(None);
+            }
+        }
+        while hi / lo - 1.0 > 1e-10 {
+            let mid = sqrt(lo * hi);
+            match stuck(mid)? {
+                Some(true) => lo = mid,
+                Some(false) => hi = mid,
+                None => return Ok(None),
+            }
+        }
+        Ok(Some(sqrt(lo * hi)))
+    }
+
+    /// The force–overlap loop of one collision: the first contact (jump-in), every accepted step,
+    /// the maximum compression, the neck and, at pull-off, a last point at the same overlap with
+    /// force 0 (the pull-off jump).
+    #[cfg(feature = "alloc")]
+    pub fn force_loop(&self, g: f64, rtol: f64) -> Result<alloc::vec::Vec<LoopPoint>> {
+        let g = Self::check_speed(g)?;
+        let (delta, kappa) = self.parameters(g);
+        let xi_star = self.length_scale(g);
+        let tau = xi_star / g;
+        let force_scale = self.rho_h * xi_star * sqrt(xi_star);
+        let radius_scale = sqrt(self.r_eff * xi_star);
+        let k = 1.5 * delta;
+        let mut points = alloc::vec::Vec::new();
+        let (_, _, _, outcome, _) = integrate(delta, kappa, rtol, |sigma, x, v, b| {
+            let elastic = b * b * b - 1.5 * kappa * b * sqrt(b);
+            points.push(LoopPoint {
+                t: sigma * sigma * tau,
+                xi: x * xi_star,
+                xi_dot: v * g,
+                force: (elastic + k * b * v) * force_scale,
+                contact_radius: b * radius_scale,
+            });
+        })?;
+        if outcome == Outcome::PullOff
+            && let Some(last) = points.last().copied()
+        {
+            points.push(LoopPoint {
+                force: 0.0,
+                contact_radius: 0.0,
+                ..last
+            });
+        }
+        Ok(points)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn radius_inverts_the_jkr_overlap() {
+        for kappa in [0.0, 1e-6, 0.3, 2.0, 50.0] {
+            let sys = System::new(0.0, kappa);
+            for x in [sys.x_c * 0.5, 0.0, 1e-3, 0.5, 3.0, 1e3] {
+                let b = sys.radius(x);
+                let back = b * b - kappa * sqrt(b);
+                assert!(
+                    (back - x).abs() <= 1e-12 * (1.0 + x.abs() + kappa),
+                    "κ={kappa} x={x}: {back}"
+                );
+                assert!(b >= sys.b_c);
+            }
+        }
+    }
+
+    #[test]
+    fn elastic_hertz_limit_conserves_energy() {
+        // δ = κ = 0: Hertz, ε = 1 and x_max = (5/4)^(2/5) (energy conservation).
+        let (eps, s_c, x_max, outcome, _) = integrate(0.0, 0.0, 1e-12, |_, _, _, _| {}).unwrap();
+        assert_eq!(outcome, Outcome::PullOff);
+        assert!((eps - 1.0).abs() < 1e-9, "{eps}");
+        assert!((x_max - libm::pow(1.25, 0.4)).abs() < 1e-10);
+        assert!(
+            (s_c - crate::analytic::HERTZ_CONTACT_TIME).abs() < 1e-8,
+            "{s_c}"
+        );
+    }
+
+    #[test]
+    fn hysteresis_constant_is_the_closed_form() {
+        // mpmath: pi**(5/3)*(1/10 + 3/5*2**(2/3)) = 7.0921959718639588…
+        assert!(
+            (hysteresis_constant() - 7.092_195_971_863_959).abs() < 1e-13,
+            "{}",
+            hysteresis_constant()
+        );
+    }
+}

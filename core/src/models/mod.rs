@@ -1,0 +1,353 @@
+//! Other models of the same collision, side by side with the paper's (docs/physics.md#models).
+//!
+//! Every model reads the same [`Scene`]; the paper's model ([`Model::Hertzsch2002`], i.e.
+//! [`Contact::normal`]) stays the default everywhere else. What each model takes from the scene,
+//! and what it ignores, is listed in docs/physics.md.
+
+pub mod approximants;
+pub mod brilliantov2007;
+pub mod thornton1997;
+
+use crate::accuracy::Accuracy;
+use crate::contact::Contact;
+use crate::error::{Error, Result};
+use crate::normal::Status;
+use crate::scene::Scene;
+
+/// A model of the normal collision.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Model {
+    /// The paper: Eq. (4)–(17) with the scene's decisions (the default).
+    Hertzsch2002,
+    /// Dynamic JKR adhesion with viscous dissipation, integrated to pull-off.
+    Brilliantov2007,
+    /// Elastic–perfectly-plastic, closed form.
+    Thornton1997,
+    /// The Schwager–Pöschel series of ε_N(δ) to second order.
+    SchwagerPoschel2008,
+    /// The Müller–Pöschel [1/4] Padé approximant of ε_N(δ).
+    MullerPoschel2011,
+}
+
+impl Model {
+    /// Every model, the default first.
+    pub const ALL: [Model; 5] = [
+        Model::Hertzsch2002,
+        Model::Brilliantov2007,
+        Model::Thornton1997,
+        Model::SchwagerPoschel2008,
+        Model::MullerPoschel2011,
+    ];
+
+    /// The name used by `rime compare --models`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Model::Hertzsch2002 => "hertzsch2002",
+            Model::Brilliantov2007 => "brilliantov2007",
+            Model::Thornton1997 => "thornton1997",
+            Model::SchwagerPoschel2008 => "schwager_poschel2008",
+            Model::MullerPoschel2011 => "muller_poschel2011",
+        }
+    }
+
+    /// The citation.
+    pub fn citation(self) -> &'static str {
+        match self {
+            Model::Hertzsch2002 => {
+                "Hertzsch (2002), Planet. Space Sci. 50, 1387: viscoelastic + layer + adhesion (default)"
+            }
+            Model::Brilliantov2007 => {
+                "Brilliantov, Albers, Spahn & Pöschel (2007), Phys. Rev. E 76, 051302: dynamic JKR adhesion + viscous dissipation to pull-off"
+            }
+            Model::Thornton1997 => {
+                "Thornton (1997), J. Appl. Mech. 64, 383: elastic-perfectly-plastic, limiting contact pressure"
+            }
+            Model::SchwagerPoschel2008 => {
+                "Schwager & Pöschel (2008), Phys. Rev. E 78, 051304: series of eps(delta) to second order (both end rules)"
+            }
+            Model::MullerPoschel2011 => {
+                "Müller & Pöschel (2011), Phys. Rev. E 84, 021302: [1/4] Padé approximant of eps(delta) (force_zero end)"
+            }
+        }
+    }
+
+    /// Looks a model up by name.
+    pub fn from_name(name: &str) -> Option<Model> {
+        Model::ALL.into_iter().find(|m| m.name() == name)
+    }
+}
+
+/// How a collision of any model ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ModelStatus {
+    /// The grains separate.
+    Rebound,
+    /// Stopped in the soft layer (paper, Eq. (10)).
+    StuckInLayer,
+    /// Held by adhesion (paper: Eq. (15); brilliantov2007: caught before pull-off).
+    StuckByAdhesion,
+    /// ε_N < 1e-9.
+    Overdamped,
+    /// A truncated series used beyond where it decreases: the number is not to be trusted.
+    OutsideValidity,
+}
+
+impl ModelStatus {
+    /// The snake_case name used in JSON and CSV.
+    pub fn name(self) -> &'static str {
+        match self {
+            ModelStatus::Rebound => "rebound",
+            ModelStatus::StuckInLayer => "stuck_in_layer",
+            ModelStatus::StuckByAdhesion => "stuck_by_adhesion",
+            ModelStatus::Overdamped => "overdamped",
+            ModelStatus::OutsideValidity => "outside_validity",
+        }
+    }
+}
+
+impl From<Status> for ModelStatus {
+    fn from(s: Status) -> Self {
+        match s {
+            Status::Rebound => ModelStatus::Rebound,
+            Status::StuckInLayer => ModelStatus::StuckInLayer,
+            Status::StuckByAdhesion => ModelStatus::StuckByAdhesion,
+            Status::Overdamped => ModelStatus::Overdamped,
+        }
+    }
+}
+
+/// ε_N of one model at one speed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ModelResult {
+    /// ε_N ∈ \[0, 1\].
+    pub eps: f64,
+    /// How the collision ended.
+    pub status: ModelStatus,
+}
+
+/// A named speed that characterises a model on a scene (`g_cr`, `v_yield`, …).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CharacteristicSpeed {
+    /// `g_cr` (impacts slower than it stick), `g_s_adhesion` (Eq. (15), a rebound speed),
+    /// `g_s_layer` (Eq. (10)), `v_yield` (first plastic yield).
+    pub name: &'static str,
+    /// The speed \[m/s\].
+    pub value: f64,
+}
+
+/// Up to four [`CharacteristicSpeed`]s, without allocation.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct CharacteristicSpeeds {
+    items: [Option<CharacteristicSpeed>; 4],
+}
+
+impl CharacteristicSpeeds {
+    fn push(&mut self, name: &'static str, value: f64) {
+        if let Some(slot) = self.items.iter_mut().find(|s| s.is_none()) {
+            *slot = Some(CharacteristicSpeed { name, value });
+        }
+    }
+
+    /// The speeds, in a fixed order per model.
+    pub fn iter(&self) -> impl Iterator<Item = CharacteristicSpeed> + '_ {
+        self.items.iter().flatten().copied()
+    }
+
+    /// The speed called `name`, if the model has it on this scene.
+    pub fn get(&self, name: &str) -> Option<f64> {
+        self.iter().find(|s| s.name == name).map(|s| s.value)
+    }
+}
+
+/// One model prepared for one scene.
+#[derive(Debug, Clone, Copy)]
+pub struct Evaluator {
+    model: Model,
+    contact: Contact,
+    dynamic: Option<brilliantov2007::Dynamic>,
+    plastic: Option<thornton1997::Plastic>,
+}
+
+impl Evaluator {
+    /// Prepares `model` for `scene`; a model that needs a scene section the scene lacks is an error
+    /// naming it (thornton1997 needs `plasticity.yield_pressure`).
+    pub fn new(model: Model, scene: &Scene) -> Result<Evaluator> {
+        scene.validate()?;
+        let contact = Contact::new(scene)?;
+        let mut e = Evaluator {
+            model,
+            contact,
+            dynamic: None,
+            plastic: None,
+        };
+        match model {
+            Model::Brilliantov2007 => {
+                let w = scene.adhesion.map_or(0.0, |a| a.surface_energy);
+                e.dynamic = Some(brilliantov2007::Dynamic::new(&contact, w)?);
+            }
+            Model::Thornton1997 => {
+                let p = scene.plasticity.ok_or(Error::InvalidValue {
+                    field: "plasticity.yield_pressure",
+                    expected: "a yield pressure [Pa] for the plastic model thornton1997 (scene section plasticity, or --set plasticity.yield_pressure=…)",
+                })?;
+                e.plastic = Some(thornton1997::Plastic::new(&contact, p.yield_pressure)?);
+            }
+            _ => {}
+        }
+        Ok(e)
+    }
+
+    /// The model.
+    pub fn model(&self) -> Model {
+        self.model
+    }
+
+    /// ε_N at impact speed `g` \[m/s\].
+    pub fn eps(&self, g: f64, accuracy: Accuracy) -> Result<ModelResult> {
+        if !(g.is_finite() && g > 0.0 && g <= 1e6) {
+            return Err(Error::OutOfRange {
+                field: "g_n",
+                value: g,
+                expected: "impact speed must lie in (0, 1e6] m/s",
+            });
+        }
+        let rebound = |eps: f64| ModelResult {
+            eps,
+            status: if eps < crate::normal::OVERDAMPED_THRESHOLD {
+                ModelStatus::Overdamped
+            } else {
+                ModelStatus::Rebound
+            },
+        };
+        Ok(match self.model {
+            Model::Hertzsch2002 => {
+                let n = self.contact.normal(g, accuracy)?;
+                ModelResult {
+                    eps: n.eps,
+                    status: n.status.into(),
+                }
+            }
+            Model::Brilliantov2007 => {
+                let d = self.dynamic.ok_or(Error::UnknownParameter)?;
+                let c = d.collide(g, accuracy.integrator_rtol())?;
+                match c.outcome {
+                    brilliantov2007::Outcome::PullOff => rebound(c.eps),
+                    brilliantov2007::Outcome::Stuck => ModelResult {
+                        eps: 0.0,
+                        status: ModelStatus::StuckByAdhesion,
+                    },
+                    brilliantov2007::Outcome::Overdamped => ModelResult {
+                        eps: 0.0,
+                        status: ModelStatus::Overdamped,
+                    },
+                }
+            }
+            Model::Thornton1997 => rebound(self.plastic.ok_or(Error::UnknownParameter)?.eps(g)),
+            Model::SchwagerPoschel2008 => {
+                let (eps, valid) = approximants::series(self.contact.delta(g));
+                if valid {
+                    rebound(eps)
+                } else {
+                    ModelResult {
+                        eps,
+                        status: ModelStatus::OutsideValidity,
+                    }
+                }
+            }
+            Model::MullerPoschel2011 => rebound(approximants::pade(self.contact.delta(g))),
+        })
+    }
+
+    /// The model's characteristic speeds on this scene.
+    pub fn characteristic_speeds(&self, accuracy: Accuracy) -> Result<CharacteristicSpeeds> {
+        let mut out = CharacteristicSpeeds::default();
+        match self.model {
+            Model::Hertzsch2002 => {
+                if let Some(l) = &self.contact.layer
+                    && l.critical_velocity > 0.0
+                {
+                    out.push("g_s_layer", l.critical_velocity);
+                }
+                if let Some(a) = &self.contact.adhesion
+                    && a.critical_velocity > 0.0
+                {
+                    out.push("g_s_adhesion", a.critical_velocity);
+                }
+                if self.contact.eps_n_at_rest() == 0.0 {
+                    let stuck = |g: f64| -> Result<bool> {
+                        Ok(self.contact.normal(g, accuracy)?.eps == 0.0)
+                    };
+                    let start = self
+                        .contact
+                        .adhesion
+                        .map_or(0.0, |a| a.critical_velocity)
+                        .max(self.contact.layer.map_or(0.0, |l| l.critical_velocity));
+                    if let Some(g) = threshold(stuck, start)? {
+                        out.push("g_cr", g);
+                    }
+                }
+            }
+            Model::Brilliantov2007 => {
+                let d = self.dynamic.ok_or(Error::UnknownParameter)?;
+                if let Some(g) = d.critical_speed(self.contact.m_eff, accuracy.integrator_rtol())? {
+                    out.push("g_cr", g);
+                }
+            }
+            Model::Thornton1997 => {
+                out.push(
+                    "v_yield",
+                    self.plastic.ok_or(Error::UnknownParameter)?.yield_speed,
+                );
+            }
+            Model::SchwagerPoschel2008 => {
+                // The speed where 1.5 δ reaches the series' limit: δ = A α^(2/5) g^(1/5).
+                let a = self.contact.delta(1.0);
+                if a > 0.0 {
+                    let d = approximants::SERIES_LIMIT / 1.5;
+                    let g = crate::math::powf(d / a, 5.0);
+                    if g.is_finite() && g > 0.0 {
+                        out.push("g_validity", g);
+                    }
+                }
+            }
+            Model::MullerPoschel2011 => {}
+        }
+        Ok(out)
+    }
+}
+
+/// The speed below which `stuck` holds (it must hold for small and fail for large speeds), by
+/// bisection in ln g to relative 1e-10; bracketed from `start` (or 1 µm/s if 0). `None` if no
+/// bracket is found in (1e-15, 1e6] m/s.
+fn threshold(stuck: impl Fn(f64) -> Result<bool>, start: f64) -> Result<Option<f64>> {
+    let start = if start > 0.0 { start } else { 1e-6 };
+    let (mut lo, mut hi) = (start, start);
+    while stuck(hi)? {
+        lo = hi;
+        hi *= 2.0;
+        if hi > 1e6 {
+            return Ok(None);
+        }
+    }
+    if lo == hi {
+        loop {
+            lo *= 0.5;
+            if lo < 1e-15 {
+                return Ok(None);
+            }
+            if stuck(lo)? {
+                break;
+            }
+            hi = lo;
+        }
+    }
+    while hi / lo - 1.0 > 1e-10 {
+        let mid = crate::math::sqrt(lo * hi);
+        if stuck(mid)? {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Ok(Some(crate::math::sqrt(lo * hi)))
+}

@@ -1,0 +1,256 @@
+//! `rime compare`: several models of the same collision side by side (docs/cli.md#compare).
+
+use crate::cli::{Common, Format};
+use crate::output::{num, table};
+use crate::scene_io::{CliError, CliResult, err};
+use rime_core::Accuracy;
+use rime_core::models::{Evaluator, Model};
+use serde::Serialize;
+
+/// The options of `rime compare`.
+#[derive(Debug, Clone, Default)]
+pub struct Args {
+    /// `--models`; empty: every model the scene supports.
+    pub models: Vec<Model>,
+    /// `--g`.
+    pub g: Vec<f64>,
+    /// `--list`: name every model with its citation.
+    pub list: bool,
+    /// `--bench`: the cost per ε_N of each model at each accuracy level.
+    pub bench: bool,
+}
+
+/// Parses `--models a,b,…`; an unknown name is an error naming `--models` and the valid names.
+pub fn parse_models(text: &str) -> CliResult<Vec<Model>> {
+    let names = || {
+        Model::ALL
+            .iter()
+            .map(|m| m.name())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let mut out = Vec::new();
+    for name in text.split(',').map(str::trim) {
+        match Model::from_name(name) {
+            Some(m) if !out.contains(&m) => out.push(m),
+            Some(_) => {}
+            None => {
+                return err(format!(
+                    "--models: unknown model '{name}' (valid: {})",
+                    names()
+                ));
+            }
+        }
+    }
+    Ok(out)
+}
+
+#[derive(Serialize)]
+struct Record {
+    model: &'static str,
+    g_n: f64,
+    eps_n: f64,
+    status: &'static str,
+}
+
+#[derive(Serialize)]
+struct Speed {
+    model: &'static str,
+    name: &'static str,
+    value: f64,
+}
+
+#[derive(Serialize)]
+struct Listing {
+    model: &'static str,
+    citation: &'static str,
+}
+
+fn evaluators(common: &Common, args: &Args) -> CliResult<Vec<Evaluator>> {
+    if args.models.is_empty() {
+        // Every model this scene can run (the plastic one needs a plasticity section).
+        return Ok(Model::ALL
+            .into_iter()
+            .filter_map(|m| Evaluator::new(m, &common.scene).ok())
+            .collect());
+    }
+    args.models
+        .iter()
+        .map(|&m| {
+            Evaluator::new(m, &common.scene).map_err(|e| CliError(format!("{}: {e}", m.name())))
+        })
+        .collect()
+}
+
+/// Runs `rime compare`.
+pub fn run(common: &Common, args: &Args) -> CliResult<String> {
+    if args.list {
+        let rows: Vec<Listing> = Model::ALL
+            .iter()
+            .map(|m| Listing {
+                model: m.name(),
+                citation: m.citation(),
+            })
+            .collect();
+        return Ok(match common.format {
+            Format::Json => to_json(&rows)?,
+            Format::Csv => {
+                let mut s = String::from("model,citation\n");
+                for r in &rows {
+                    s.push_str(&format!(
+                        "{},\"{}\"\n",
+                        r.model,
+                        r.citation.replace('"', "'")
+                    ));
+                }
+                s
+            }
+            Format::Table => table(
+                &["model", "citation"],
+                &rows
+                    .iter()
+                    .map(|r| vec![r.model.to_string(), r.citation.to_string()])
+                    .collect::<Vec<_>>(),
+            ),
+        });
+    }
+    let evaluators = evaluators(common, args)?;
+    if args.bench {
+        return bench(common, &evaluators, &args.g);
+    }
+    if args.g.is_empty() {
+        return err("--g: required (or --list, --bench)");
+    }
+    let mut records = Vec::new();
+    let mut speeds = Vec::new();
+    for e in &evaluators {
+        let name = e.model().name();
+        for &g in &args.g {
+            let r = e
+                .eps(g, common.accuracy)
+                .map_err(|x| CliError(format!("{name}, g_n = {g}: {x}")))?;
+            records.push(Record {
+                model: name,
+                g_n: g,
+                eps_n: r.eps,
+                status: r.status.name(),
+            });
+        }
+        let cs = e
+            .characteristic_speeds(common.accuracy)
+            .map_err(|x| CliError(format!("{name}: {x}")))?;
+        for s in cs.iter() {
+            speeds.push(Speed {
+                model: name,
+                name: s.name,
+                value: s.value,
+            });
+        }
+    }
+    Ok(match common.format {
+        Format::Json => to_json(&serde_json::json!({
+            "records": records,
+            "characteristic_speeds": speeds,
+        }))?,
+        Format::Csv => {
+            let mut s = String::from("model,g_n,eps_n,status\n");
+            for r in &records {
+                s.push_str(&format!(
+                    "{},{},{},{}\n",
+                    r.model,
+                    num(r.g_n),
+                    num(r.eps_n),
+                    r.status
+                ));
+            }
+            s.push_str("\nmodel,name,value\n");
+            for c in &speeds {
+                s.push_str(&format!("{},{},{}\n", c.model, c.name, num(c.value)));
+            }
+            s
+        }
+        Format::Table => {
+            let mut s = table(
+                &["model", "g_n", "eps_n", "status"],
+                &records
+                    .iter()
+                    .map(|r| vec![r.model.into(), num(r.g_n), num(r.eps_n), r.status.into()])
+                    .collect::<Vec<_>>(),
+            );
+            s.push('\n');
+            s.push_str(&table(
+                &["model", "speed", "value [m/s]"],
+                &speeds
+                    .iter()
+                    .map(|c| vec![c.model.into(), c.name.into(), num(c.value)])
+                    .collect::<Vec<_>>(),
+            ));
+            s
+        }
+    })
+}
+
+fn to_json<T: Serialize>(v: &T) -> CliResult<String> {
+    serde_json::to_string_pretty(v)
+        .map(|s| s + "\n")
+        .map_err(|e| CliError(e.to_string()))
+}
+
+#[derive(Serialize)]
+struct Cost {
+    model: &'static str,
+    accuracy: &'static str,
+    ns_per_eps: f64,
+    evaluations: usize,
+}
+
+/// The cost per ε_N of each model at each accuracy level, measured in one run: every speed of
+/// `g` (default 60 log-spaced speeds 1e-6…1 m/s) evaluated repeatedly for at least 0.2 s.
+fn bench(common: &Common, evaluators: &[Evaluator], g: &[f64]) -> CliResult<String> {
+    let default: Vec<f64> = (0..60)
+        .map(|i| 10f64.powf(-6.0 + 6.0 * i as f64 / 59.0))
+        .collect();
+    let g = if g.is_empty() { &default[..] } else { g };
+    let mut rows = Vec::new();
+    for e in evaluators {
+        for level in Accuracy::LEVELS {
+            let start = std::time::Instant::now();
+            let mut n = 0usize;
+            let mut sink = 0.0;
+            while n == 0 || start.elapsed().as_secs_f64() < 0.2 {
+                for &x in g {
+                    sink += e
+                        .eps(x, level)
+                        .map_err(|err| CliError(format!("{}: {err}", e.model().name())))?
+                        .eps;
+                }
+                n += g.len();
+            }
+            let ns = start.elapsed().as_secs_f64() * 1e9 / n as f64;
+            std::hint::black_box(sink);
+            rows.push(Cost {
+                model: e.model().name(),
+                accuracy: level.name(),
+                ns_per_eps: ns,
+                evaluations: n,
+            });
+        }
+    }
+    Ok(match common.format {
+        Format::Json => to_json(&rows)?,
+        _ => table(
+            &["model", "accuracy", "ns/eps", "evaluations"],
+            &rows
+                .iter()
+                .map(|r| {
+                    vec![
+                        r.model.into(),
+                        r.accuracy.into(),
+                        format!("{:.1}", r.ns_per_eps),
+                        r.evaluations.to_string(),
+                    ]
+                })
+                .collect::<Vec<_>>(),
+        ),
+    })
+}
