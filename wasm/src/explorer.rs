@@ -150,18 +150,39 @@ impl Explorer {
     /// Sets a parameter from text (number with optional unit, choice, `on`/`off`); on error the
     /// scene is unchanged and the message names the field.
     pub fn set(&mut self, path: &str, text: &str) -> Result<(), String> {
+        let before = self.scene;
         self.scene.set(path, text).map_err(|e| match e {
             rime_core::Error::UnknownParameter => format!("{path}: unknown parameter"),
             e => core_err(e),
-        })
+        })?;
+        self.check(path, before)
+    }
+
+    /// The core's full check of the scene after a change of `path` (`Contact::new`, which also
+    /// checks derived quantities); on error the scene goes back to `before`.
+    fn check(&mut self, path: &str, before: Scene) -> Result<(), String> {
+        match Contact::new(&self.scene) {
+            Ok(_) => Ok(()),
+            Err(e) => {
+                self.scene = before;
+                let msg = core_err(e);
+                Err(if msg.contains(path) {
+                    msg
+                } else {
+                    format!("{path}: {msg}")
+                })
+            }
+        }
     }
 
     /// Sets a numeric parameter directly; same rules as [`Explorer::set`].
     pub fn set_number(&mut self, path: &str, value: f64) -> Result<(), String> {
+        let before = self.scene;
         self.scene.set_number(path, value).map_err(|e| match e {
             rime_core::Error::UnknownParameter => format!("{path}: unknown parameter"),
             e => core_err(e),
-        })
+        })?;
+        self.check(path, before)
     }
 
     /// A parameter's value as JSON: a number, a choice name, a boolean for effects, `null` when
