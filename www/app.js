@@ -311,7 +311,10 @@ function request() {
     tidal: app.tidalIn,
   };
   if (window.rimeTest.fail.length) view.fail = [...window.rimeTest.fail];
-  app.computer.request(app.wantScene, view, { view: { ...v }, t0: performance.now() });
+  // Main-thread calls across the wasm boundary made for this request (edits since the last one).
+  const calls = app.calls;
+  app.calls = 0;
+  app.computer.request(app.wantScene, view, { view: { ...v }, t0: performance.now(), calls });
 }
 
 /** The frame's parts as typed-array views into its two flat arrays. */
@@ -367,9 +370,7 @@ function onFrame(msg, req) {
   syncControls();
   writeHash();
   const t2 = performance.now();
-  const calls = app.calls + msg.calls;
-  app.calls = 0;
-  app.callsPerUpdate.push(calls);
+  app.callsPerUpdate.push(req.page.calls + msg.calls);
   app.timings.push(msg.ms);
   app.totals.push(t2 - req.page.t0);
   if (app.timings.length > 200) { app.timings.shift(); app.totals.shift(); app.callsPerUpdate.shift(); }

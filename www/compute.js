@@ -46,12 +46,18 @@ export class Computer {
   request(scene, view, page) {
     const req = { type: 'frame', gen: ++this.gen, scene, view, page };
     this.queued = req;
-    if (this.running && performance.now() - this.running.since > RESTART_AFTER_MS) {
-      // The running request is stale and slow: drop it with its worker.
-      this.running = null;
-      this.restart();
-    } else {
+    const run = this.running;
+    if (!run) {
       this.pump();
+    } else {
+      // The running request is stale: if it is slow, drop it with its worker.
+      const wait = Math.max(0, RESTART_AFTER_MS - (performance.now() - run.since));
+      setTimeout(() => {
+        if (this.running === run && this.queued) {
+          this.running = null;
+          this.restart();
+        }
+      }, wait);
     }
     return req.gen;
   }
@@ -63,7 +69,6 @@ export class Computer {
     this.running = { req, since: performance.now() };
     this.worker.postMessage(req);
     this.onBusy(true);
-    // A request that runs long holds up nothing: a newer one restarts the worker (see request()).
   }
 
   answer(msg) {

@@ -423,6 +423,7 @@ try {
     await pf.waitForFunction(() => JSON.parse(window.rimeState.sceneJson).layer.thickness === 1e-6, null, { timeout: 10000 });
     await pf.selectOption('[id="p-layer.reading"]', 'literal');
     await pf.selectOption('#accuracy', 'precise');
+    await pf.waitForFunction(() => window.rimeState.view.accuracy === 'precise' && JSON.parse(window.rimeState.sceneJson).layer.reading === 'literal', null, { timeout: 20000 });
     const u = await updates(pf);
     await pf.selectOption('#damping-form', 'viscosities'); // now ε_N takes many seconds per curve
     await pf.waitForTimeout(400);
