@@ -511,7 +511,7 @@ function showPartNotes(res) {
   cn.textContent = chartNotes.length ? `⚠ ${chartNotes.join(' · ')} (see the message above)` : '';
   cn.hidden = !chartNotes.length;
   const rn = $('map-range-note');
-  rn.textContent = res.mapNote ? `ⓘ ${res.mapNote}` : '';
+  rn.textContent = res.mapNote ? `Note: ${res.mapNote}.` : '';
   rn.hidden = !res.mapNote;
 }
 

@@ -407,6 +407,9 @@ try {
     await pf.setViewportSize({ width: 375, height: 800 });
     await pf.waitForTimeout(300);
     await pf.screenshot({ path: path.join(outDir, 'www-screenshot-banner-375.png'), fullPage: true });
+    await pf.screenshot({ path: path.join(outDir, 'www-screenshot-banner-375-top.png') });
+    await pf.locator('.map-card').screenshot({ path: path.join(outDir, 'www-screenshot-banner-375-map.png') });
+    await pf.evaluate(() => window.scrollTo(0, 0));
     await pf.setViewportSize({ width: 1280, height: 1000 });
     // A later valid edit works and clears the banner.
     await pf.evaluate(() => { window.rimeTest.fail = []; });
