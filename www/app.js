@@ -238,7 +238,7 @@ function buildControls() {
           if (apply(p.path, () => app.ex.set(p.path, text))) typed.dataset.dirty = '';
         };
         typed.addEventListener('change', commit);
-        typed.addEventListener('keydown', (e) => { if (e.key === 'Enter') commit(); });
+        // Enter fires `change` too (committing twice would cost a second pass through the core).
         typed.addEventListener('input', () => { typed.dataset.dirty = '1'; });
         const unitText = p.unit || (p.log ? '' : '–');
         const root = el('div', { class: 'param', 'data-path': p.path },
