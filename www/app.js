@@ -1,5 +1,9 @@
-// The rime web explorer: controls, recompute (coalesced per animation frame), drawing, URL state.
+// The rime web explorer: controls, requests to the computing worker (coalesced per animation
+// frame), drawing of the frame it returns, URL state. Each part of a frame fails on its own: what
+// succeeded is drawn, the failing part leaves a note in its place, the banner names the cause and
+// the console gets the error; controls and the link always show the scene actually drawn.
 import init, { Explorer } from './pkg/rime_wasm.js';
+import { Computer } from './compute.js';
 import {
   CLASS_COLORS, SERIES_COLORS, CanvasPainter, SvgPainter, drawChart, drawMap, fmtNum, fmtSpeed, prefixFor,
 } from './plot.js';
@@ -57,7 +61,16 @@ const CURVE_POINTS = 240;
 const MAP_N = 120;
 
 const app = {
-  ex: null,
+  ex: null, // the scene being edited (main thread: validation only; always valid)
+  wantScene: null, // its JSON, the newest scene asked of the worker
+  drawn: null, // {scene, view} of the frame on screen
+  computer: null,
+  hoverEx: null, // the drawn scene, for hover readouts (set lazily)
+  hoverScene: null,
+  calls: 0, // calls across the wasm boundary on the main thread since the last drawn frame
+  callsPerUpdate: [],
+  bannerKey: '',
+  bannerDismissed: '',
   view: { ...DEFAULT_VIEW },
   params: [],
   rows: new Map(),
@@ -77,6 +90,21 @@ const app = {
 
 // Exposed for tests and curious users.
 window.rimeState = { ready: false, errors: [] };
+// Test hook: parts of the frame to fail on purpose (see the view's `fail` in wasm/src/frame.rs).
+window.rimeTest = { fail: [] };
+
+/** Counts the calls made across the wasm boundary through `obj` (an Explorer). */
+function counted(obj) {
+  return new Proxy(obj, {
+    get(t, k) {
+      const v = t[k];
+      if (typeof v !== 'function') return v;
+      return (...args) => { app.calls++; return v.apply(t, args); };
+    },
+  });
+}
+
+const errText = (e) => String(e && e.message ? e.message : e);
 
 function median(a) {
   if (!a.length) return NaN;
@@ -125,16 +153,38 @@ function setErr(path, msg) {
   row.root.classList.toggle('invalid', !!msg);
 }
 
+/** Applies one edit through the core; a value it rejects is refused at the control (message naming
+ *  the field, also to the console) and the control goes back to the drawn scene. */
 function apply(path, fn) {
   try {
     fn();
+    app.wantScene = app.ex.toJson();
     setErr(path, '');
     schedule();
     return true;
   } catch (e) {
-    setErr(path, String(e.message || e));
+    let msg = errText(e);
+    if (!msg.includes(path)) msg = `${path}: ${msg}`;
+    setErr(path, msg);
+    console.error(`rime: refused: ${msg}`);
+    revertRow(path);
     return false;
   }
+}
+
+/** Shows the drawn scene's value in the control of `path` again. */
+function revertRow(path) {
+  const row = app.rows.get(path);
+  if (!row || !app.res) return;
+  const v = app.res.values[path];
+  if (row.typed) {
+    row.typed.dataset.dirty = '';
+    row.typed.value = v === null || v === undefined ? '' : fmtNum(v, 6);
+    if (v !== null && v !== undefined) row.slider.value = toSlider(path, row.p, v);
+  }
+  if (row.sel) row.sel.value = v ?? '';
+  if (row.cb) row.cb.checked = v === true;
+  syncDampingForm();
 }
 
 function buildControls() {
@@ -188,7 +238,7 @@ function buildControls() {
           if (apply(p.path, () => app.ex.set(p.path, text))) typed.dataset.dirty = '';
         };
         typed.addEventListener('change', commit);
-        typed.addEventListener('keydown', (e) => { if (e.key === 'Enter') commit(); });
+        // Enter fires `change` too (committing twice would cost a second pass through the core).
         typed.addEventListener('input', () => { typed.dataset.dirty = '1'; });
         const unitText = p.unit || (p.log ? '' : '–');
         const root = el('div', { class: 'param', 'data-path': p.path },
@@ -203,10 +253,16 @@ function buildControls() {
   }
 }
 
+function syncDampingForm() {
+  if (!app.res) return;
+  $('damping-form').value = app.res.values['bulk.damping.time'] === null ? 'viscosities' : 'time';
+}
+
+/** Shows the drawn scene and view in every control (a field being typed in keeps its text). */
 function syncControls() {
-  const ex = app.ex;
+  const values = app.res.values;
   for (const [path, row] of app.rows) {
-    const v = JSON.parse(ex.get(path));
+    const v = values[path];
     if (row.cb) {
       row.cb.checked = v === true;
     } else if (row.sel) {
@@ -215,23 +271,25 @@ function syncControls() {
       else row.sel.selectedIndex = -1;
     } else {
       row.root.classList.toggle('inactive', v === null);
+      const typing = document.activeElement === row.typed && row.typed.dataset.dirty === '1';
       if (v === null) {
-        if (document.activeElement !== row.typed && !row.root.classList.contains('invalid')) row.typed.value = '';
+        if (!typing) row.typed.value = '';
         row.typed.placeholder = 'off';
       } else {
         row.slider.value = toSlider(path, row.p, v);
-        if (document.activeElement !== row.typed && !row.root.classList.contains('invalid')) row.typed.value = fmtNum(v, 6);
+        if (!typing) row.typed.value = fmtNum(v, 6);
       }
     }
   }
-  const time = JSON.parse(ex.get('bulk.damping.time'));
-  $('damping-form').value = time === null ? 'viscosities' : 'time';
-  $('accuracy').value = app.view.accuracy;
-  $('view-from').value = fmtNum(app.view.from, 6);
-  $('view-to').value = fmtNum(app.view.to, 6);
-  $('view-experiments').checked = app.view.experiments;
-  $('chart-sources').hidden = !app.view.experiments;
-  $('view-mapmax').value = app.view.mapMax === null ? '' : fmtNum(app.view.mapMax, 6);
+  syncDampingForm();
+  const view = app.drawn.view;
+  $('accuracy').value = view.accuracy;
+  const keep = (id) => document.activeElement === $(id) && $(id).dataset.dirty === '1';
+  if (!keep('view-from')) $('view-from').value = fmtNum(view.from, 6);
+  if (!keep('view-to')) $('view-to').value = fmtNum(view.to, 6);
+  $('view-experiments').checked = view.experiments;
+  $('chart-sources').hidden = !view.experiments;
+  if (!keep('view-mapmax')) $('view-mapmax').value = view.mapMax === null ? '' : fmtNum(view.mapMax, 6);
 }
 
 // ---------- compute ----------
@@ -241,89 +299,132 @@ function schedule() {
   app.pending = true;
   requestAnimationFrame(() => {
     app.pending = false;
-    update();
+    request();
   });
 }
 
-function familySpec(ex) {
-  if (JSON.parse(ex.get('layer'))) return FAMILIES.layer;
-  if (JSON.parse(ex.get('adhesion'))) return FAMILIES.adhesion;
-  const a = ex.dampingTime();
-  if (!(a > 0)) return null;
-  return { ...FAMILIES.damping, values: [a / 10, a / 3, a * 3, a * 10].map((v) => Number(v.toPrecision(3))) };
+/** Asks the worker for the frame of the wanted scene and view (a newer request supersedes it). */
+function request() {
+  const v = app.view;
+  const view = {
+    accuracy: v.accuracy, from: v.from, to: v.to, points: CURVE_POINTS, mapMax: v.mapMax, mapN: MAP_N,
+    tidal: app.tidalIn,
+  };
+  if (window.rimeTest.fail.length) view.fail = [...window.rimeTest.fail];
+  // Main-thread calls across the wasm boundary made for this request (edits since the last one).
+  const calls = app.calls;
+  app.calls = 0;
+  app.computer.request(app.wantScene, view, { view: { ...v }, t0: performance.now(), calls });
 }
 
-function compute() {
-  const ex = app.ex;
-  const { accuracy, from, to } = app.view;
-  const eps = ex.curve(from, to, CURVE_POINTS, accuracy);
-  const g = ex.curveSpeeds();
-  const status = ex.statuses();
-  const clean = ex.cleanCurve(from, to, CURVE_POINTS, accuracy);
-  const fam = familySpec(ex);
-  let family = null;
-  if (fam) {
-    const flat = ex.family(fam.path, fam.values, from, to, CURVE_POINTS, accuracy);
-    family = { ...fam, curves: fam.values.map((_, k) => flat.subarray(k * CURVE_POINTS, (k + 1) * CURVE_POINTS)) };
-  }
-  const crit = JSON.parse(ex.criticalVelocities(accuracy));
-  const warnings = JSON.parse(ex.warnings(from, to));
-  let map = null;
-  const friction = JSON.parse(ex.get('friction'));
-  let mapMax = app.view.mapMax;
-  if (mapMax === null) {
-    const vs = crit.map((c) => c.value).filter((v) => v > 0);
-    mapMax = vs.length ? Number((6 * Math.max(...vs)).toPrecision(2)) : 0.1;
-  }
-  if (friction) {
-    const codes = ex.stickMap(mapMax, MAP_N, accuracy);
-    map = { n: MAP_N, max: mapMax, codes, epsT: ex.mapEpsT(), epsN: ex.mapEpsN(), g: ex.mapSpeeds() };
-  }
-  const tidal = JSON.parse(ex.tidal(app.tidalIn ? JSON.stringify(app.tidalIn) : ''));
-  return { g, eps, status, clean, family, crit, warnings, map, mapMax, tidal, accuracy };
+/** The frame's parts as typed-array views into its two flat arrays. */
+function decode(msg, req) {
+  const j = JSON.parse(msg.json);
+  const F = (r) => msg.numbers.subarray(r.at, r.at + r.len);
+  const U = (r) => msg.codes.subarray(r.at, r.at + r.len);
+  const m = j.map;
+  return {
+    accuracy: req.view.accuracy,
+    values: j.values,
+    g: F(j.g),
+    eps: j.curve ? F(j.curve.eps) : null,
+    status: j.curve ? U(j.curve.status) : null,
+    gaps: j.curve ? j.curve.failed : 0,
+    clean: j.clean ? F(j.clean.eps) : null,
+    family: j.family && {
+      ...j.family, curves: j.family.curves.map((c) => (c ? F(c.eps) : null)),
+    },
+    crit: j.critical,
+    warnings: j.warnings,
+    friction: j.friction,
+    map: m && !m.error ? { n: m.n, max: m.max, note: m.note, codes: U(m.class), epsT: F(m.epsT), epsN: F(m.epsN), g: F(m.g) } : null,
+    mapFailed: m && m.error ? m : null,
+    mapNote: m ? m.note : null,
+    tidal: j.tidal.error ? null : j.tidal,
+    errors: j.errors,
+  };
 }
 
-function update() {
-  const t0 = performance.now();
-  let res;
-  try {
-    res = compute();
-  } catch (e) {
-    window.rimeState.errors.push(String(e.message || e));
-    $('timing').textContent = `error: ${e.message || e}`;
+/** The worker's answer to the newest request: draw what succeeded, report what failed. */
+function onFrame(msg, req) {
+  const t1 = performance.now();
+  if (msg.error || !req) {
+    // The request itself was refused (it never is for a scene the page accepted): keep the drawn
+    // frame and put the controls back to it.
+    showBanner([{ part: 'request', message: msg.error }]);
+    if (app.drawn) {
+      app.ex.setJson(app.drawn.scene);
+      app.wantScene = app.drawn.scene;
+      app.view = { ...app.drawn.view };
+      syncControls();
+    }
     return;
   }
-  const t1 = performance.now();
+  const res = decode(msg, req.page);
   app.res = res;
+  app.drawn = { scene: req.scene, view: req.page.view };
   draw();
   showWarnings(res);
-  showTidal(res.tidal);
+  showTidal(res);
+  showBanner(res.errors);
   syncControls();
   writeHash();
   const t2 = performance.now();
-  app.timings.push(t1 - t0);
-  app.totals.push(t2 - t0);
-  if (app.timings.length > 200) { app.timings.shift(); app.totals.shift(); }
-  $('timing').textContent = `recompute ${(t1 - t0).toFixed(2)} ms (median ${median(app.timings).toFixed(2)} ms) · with redraw ${(t2 - t0).toFixed(1)} ms · ${res.accuracy}`;
+  app.callsPerUpdate.push(req.page.calls + msg.calls);
+  app.timings.push(msg.ms);
+  app.totals.push(t2 - req.page.t0);
+  if (app.timings.length > 200) { app.timings.shift(); app.totals.shift(); app.callsPerUpdate.shift(); }
+  $('timing').textContent = `frame ${msg.ms.toFixed(1)} ms in the worker (median ${median(app.timings).toFixed(1)} ms) · shown after ${(t2 - req.page.t0).toFixed(1)} ms · ${res.accuracy}`;
+  $('timing').classList.remove('busy');
   const s = window.rimeState;
   Object.assign(s, {
     ready: true,
-    sceneJson: app.ex.toJson(),
-    view: { ...app.view },
+    sceneJson: req.scene,
+    view: { ...req.page.view },
     g: Array.from(res.g),
-    eps: Array.from(res.eps),
-    status: Array.from(res.status, (c) => app.statusNames[c]),
-    family: res.family && { path: res.family.path, values: res.family.values, curves: res.family.curves.map((c) => Array.from(c)) },
+    eps: res.eps ? Array.from(res.eps) : [],
+    status: res.status ? Array.from(res.status, (c) => app.statusNames[c] ?? 'failed') : [],
+    family: res.family && { path: res.family.path, values: res.family.values, curves: res.family.curves.map((c) => c && Array.from(c)) },
     critical: res.crit,
     warnings: res.warnings,
     mapClasses: res.map ? Array.from(res.map.codes) : null,
+    mapNote: res.mapNote,
     overlay: experimentOverlay(),
     tidal: res.tidal,
+    frameErrors: res.errors,
     computeMs: [...app.timings],
     totalMs: [...app.totals],
+    callsPerUpdate: [...app.callsPerUpdate],
+    workerRestarts: app.computer.restarts,
     updates: (s.updates || 0) + 1,
   });
   document.body.dataset.updates = String(s.updates);
+  void t1;
+}
+
+let busyTimer = null;
+function onBusy(busy) {
+  clearTimeout(busyTimer);
+  if (!busy) { $('timing').classList.remove('busy'); return; }
+  // Say so only when it takes long enough to notice.
+  busyTimer = setTimeout(() => {
+    if (!app.computer.busy) return;
+    $('timing').classList.add('busy');
+    $('timing').textContent = `computing (${app.view.accuracy})… the controls stay live; a newer edit replaces this one`;
+  }, 120);
+}
+
+/** The banner naming every part that failed (role=alert), each error also to the console. */
+function showBanner(errors) {
+  const key = JSON.stringify(errors);
+  if (key !== app.bannerKey) {
+    for (const e of errors) console.error(`rime: ${e.part}: ${e.message}`);
+    app.bannerKey = key;
+  }
+  const b = $('banner');
+  if (!errors.length || app.bannerDismissed === key) { b.hidden = true; return; }
+  $('banner-list').replaceChildren(...errors.map((e) => el('li', {}, el('strong', {}, e.part), `: ${e.message}`)));
+  b.hidden = false;
 }
 
 // ---------- drawing ----------
@@ -337,8 +438,8 @@ function bridgesAt(g) {
 /** The experimental context drawn on the chart (null when switched off): the Bridges line over the
  *  view (with 1 cm/s itself as a point when in view) and the experiments' boxes. */
 function experimentOverlay() {
-  if (!app.view.experiments || !app.experiments) return null;
-  const { from, to } = app.view;
+  if (!app.drawn || !app.drawn.view.experiments || !app.experiments) return null;
+  const { from, to } = app.drawn.view;
   const n = 120;
   const x = [];
   for (let i = 0; i < n; i++) x.push(10 ** (Math.log10(from) + (i / (n - 1)) * (Math.log10(to) - Math.log10(from))));
@@ -355,20 +456,19 @@ function chartSpec(res, hover) {
   const overlay = experimentOverlay();
   if (overlay) series.push({ x: overlay.bridges.x, y: overlay.bridges.y, ...BRIDGES_STYLE });
   if (res.family) {
-    res.family.values.forEach((v, k) => series.push({
+    res.family.values.forEach((v, k) => res.family.curves[k] && series.push({
       x: res.g, y: res.family.curves[k], color: SERIES_COLORS[k % SERIES_COLORS.length], width: 1.3,
       label: `${res.family.sym} = ${fmtNum(v, 3)} ${res.family.unit}`,
     }));
   }
-  const hasEffect = JSON.parse(app.ex.get('layer')) || JSON.parse(app.ex.get('adhesion'));
-  if (hasEffect) series.push({ x: res.g, y: res.clean, color: '#555', width: 1.4, dash: [6, 4], label: 'clean surface' });
-  series.push({ x: res.g, y: res.eps, color: '#111', width: 2.4, label: 'this scene' });
+  if (res.clean) series.push({ x: res.g, y: res.clean, color: '#555', width: 1.4, dash: [6, 4], label: 'clean surface' });
+  if (res.eps) series.push({ x: res.g, y: res.eps, color: '#111', width: 2.4, label: res.gaps ? 'this scene (gaps: failed)' : 'this scene' });
   let minPos = 1;
-  for (const arr of [res.eps, res.clean]) for (const v of arr) if (v > 0 && v < minPos) minPos = v;
+  for (const arr of [res.eps, res.clean]) if (arr) for (const v of arr) if (v > 0 && v < minPos) minPos = v;
   const yMin = Math.max(1e-12, 10 ** Math.floor(Math.log10(minPos) - 1e-9));
   const yMin2 = Math.min(yMin, 1e-2);
   let maxY = 1;
-  for (const v of res.eps) if (v > maxY) maxY = v;
+  if (res.eps) for (const v of res.eps) if (v > maxY) maxY = v;
   // Critical velocities; the bisected stick threshold only where it differs from Eq. (10)/(15).
   const markers = [];
   for (const c of res.crit) {
@@ -376,7 +476,7 @@ function chartSpec(res, hover) {
     markers.push({ x: c.value, label: `${c.label}: ${fmtSpeed(c.value)}`, short: `${c.key === 'stick' ? 'stick' : 'g_s'} ${fmtSpeed(c.value)}` });
   }
   return {
-    xMin: app.view.from, xMax: app.view.to, yMin: yMin2, yMax: 10 ** Math.ceil(Math.log10(maxY) - 1e-12) || 1,
+    xMin: app.drawn.view.from, xMax: app.drawn.view.to, yMin: yMin2, yMax: 10 ** Math.ceil(Math.log10(maxY) - 1e-12) || 1,
     xLabel: 'impact speed g_N [m/s]', yLabel: 'ε_N', series, markers, hover, bands: overlay ? overlay.bands : [],
   };
 }
@@ -392,6 +492,27 @@ function draw() {
   drawChartCanvas();
   drawMapCanvas();
   drawLegend(app.res);
+  showPartNotes(app.res);
+}
+
+/** A visible note in place of each part of the chart that failed (the banner has the details). */
+function showPartNotes(res) {
+  const chartNotes = [];
+  for (const e of res.errors) {
+    if (e.part === 'stick map' || e.part === 'tidal') continue;
+    const what = e.part === 'curve' ? `this scene: ${res.gaps} of ${res.g.length} speeds failed, drawn as gaps`
+      : e.part === 'clean' ? 'clean surface: gaps where ε_N failed'
+        : e.part.startsWith('family') ? `${e.part.replace('family ', 'family curve ')} not drawn`
+          : e.part.startsWith('marker') ? `${e.part} not drawn`
+            : `${e.part}: not drawn`;
+    chartNotes.push(what);
+  }
+  const cn = $('chart-note');
+  cn.textContent = chartNotes.length ? `⚠ ${chartNotes.join(' · ')} (see the message above)` : '';
+  cn.hidden = !chartNotes.length;
+  const rn = $('map-range-note');
+  rn.textContent = res.mapNote ? `Note: ${res.mapNote}.` : '';
+  rn.hidden = !res.mapNote;
 }
 
 function drawChartCanvas() {
@@ -411,12 +532,33 @@ function drawMapCanvas() {
     app.mapGeom = drawMap(new CanvasPainter(mapCanvas, mw, mh), {
       n: res.map.n, codes: res.map.codes, max: res.map.max, colors: CLASS_COLORS, hover: app.hover.map,
     });
+    mapCanvas.setAttribute('aria-label', `stick map, 0 to ${fmtSpeed(res.map.max)}`);
   } else {
-    const p = new CanvasPainter(mapCanvas, mw, 120);
-    p.rect(0, 0, mw, 120, { fill: '#fafafa' });
-    p.text(mw / 2, 60, 'friction is off: no tangential restitution, no stick map', { size: 13, align: 'center', color: '#666' });
+    const failed = res.mapFailed;
+    const p = new CanvasPainter(mapCanvas, mw, failed ? 160 : 120);
+    p.rect(0, 0, mw, p.height, { fill: failed ? '#fdf3f2' : '#fafafa', stroke: failed ? '#e2a49f' : undefined });
+    if (failed) {
+      p.text(mw / 2, 50, '⚠ stick map not computed', { size: 14, align: 'center', color: '#b3261e' });
+      wrapText(failed.error, Math.max(20, Math.floor((mw - 24) / 6.6))).slice(0, 4)
+        .forEach((line, k) => p.text(mw / 2, 76 + k * 17, line, { size: 12, align: 'center', color: '#444' }));
+      mapCanvas.setAttribute('aria-label', `stick map not computed: ${failed.error}`);
+    } else {
+      p.text(mw / 2, 60, res.friction ? 'no stick map for this scene' : 'friction is off: no tangential restitution, no stick map', { size: 13, align: 'center', color: '#666' });
+      mapCanvas.setAttribute('aria-label', 'stick map (friction is off)');
+    }
     app.mapGeom = null;
   }
+}
+
+/** Splits `text` into lines of at most `width` characters at spaces. */
+function wrapText(text, width) {
+  const lines = [];
+  let line = '';
+  for (const w of String(text).split(/\s+/)) {
+    if (line && line.length + 1 + w.length > width) { lines.push(line); line = w; } else line = line ? `${line} ${w}` : w;
+  }
+  if (line) lines.push(line);
+  return lines;
 }
 
 function drawLegend(res) {
@@ -477,9 +619,10 @@ function buildTidal() {
       err);
     const commit = () => {
       const text = typed.value.trim();
-      if (text === '' || !app.res) return;
+      if (text === '') return;
       try {
-        const cand = { ...app.res.tidal.input, [f.key]: parseQuantity(f, text) };
+        const base = app.res && app.res.tidal ? app.res.tidal.input : (app.tidalIn || PAPER_TIDAL_INPUT);
+        const cand = { ...base, [f.key]: parseQuantity(f, text) };
         app.ex.tidal(JSON.stringify(cand)); // validates; throws naming the field
         app.tidalIn = cand;
         err.textContent = '';
@@ -504,7 +647,14 @@ function buildTidal() {
   });
 }
 
-function showTidal(t) {
+function showTidal(res) {
+  const t = res.tidal;
+  const note = $('tidal-note');
+  const failed = res.errors.find((e) => e.part === 'tidal');
+  note.hidden = !failed;
+  note.textContent = failed ? `⚠ not computed: ${failed.message}` : '';
+  $('tidal').hidden = !t;
+  if (!t) return;
   const r = t.result, q = t.paper, inp = t.input;
   for (const row of app.tidalRows.values()) {
     if (document.activeElement !== row.typed && !row.root.classList.contains('invalid')) row.typed.value = fmtNum(inp[row.f.key], 6);
@@ -553,7 +703,7 @@ function chartHover(ev) {
   if (x < box.l || x > box.r) return;
   const g = inv(x);
   try {
-    const n = JSON.parse(app.ex.normal(g, 'fast'));
+    const n = probe(g, 'fast');
     app.hover.chart = { x: g, y: n.eps_n };
     $('chart-readout').textContent = `g_N = ${fmtSpeed(g, 4)} · ε_N = ${fmtNum(n.eps_n, 6)} · ${n.status}` +
       (n.t_c === null ? '' : ` · t_c = ${fmtNum(n.t_c, 3)} s`) + ` · ξ_max = ${fmtNum(n.xi_max, 3)} m`;
@@ -580,6 +730,16 @@ function mapHover(ev) {
   drawMapCanvas();
 }
 
+/** The normal result at `g` for the drawn scene (main thread; hover readouts and tests). */
+function probe(g, accuracy) {
+  if (!app.drawn) throw new Error('nothing drawn yet');
+  if (app.hoverScene !== app.drawn.scene) {
+    app.hoverEx.setJson(app.drawn.scene);
+    app.hoverScene = app.drawn.scene;
+  }
+  return JSON.parse(app.hoverEx.normal(g, accuracy));
+}
+
 // ---------- URL state ----------
 
 let hashTimer = null;
@@ -589,9 +749,11 @@ function writeHash() {
   hashTimer = setTimeout(() => { hashTimer = null; writeHashNow(); }, 150);
 }
 
+/** The link of the drawn scene and view. */
 function writeHashNow() {
-  const v = { ...app.view };
-  const hash = `#s=${encodeURIComponent(app.ex.toJson())}&v=${encodeURIComponent(JSON.stringify(v))}`;
+  if (!app.drawn) return;
+  const v = { ...app.drawn.view };
+  const hash = `#s=${encodeURIComponent(app.drawn.scene)}&v=${encodeURIComponent(JSON.stringify(v))}`;
   if (location.hash !== hash) history.replaceState(null, '', hash);
 }
 
@@ -622,17 +784,17 @@ function loadHash() {
     const s = q.get('s');
     if (s === null) throw new Error('no scene in the link');
     const view = q.get('v') ? readView(JSON.parse(q.get('v'))) : { ...DEFAULT_VIEW };
-    const ex = Explorer.fromJson(s);
-    app.ex.free();
-    app.ex = ex;
+    app.ex.setJson(s);
     app.view = view;
+    app.wantScene = app.ex.toJson();
     return null;
   } catch (e) {
     // Fall back to the defaults (also when a pasted link is broken after start).
-    app.ex.free();
-    app.ex = new Explorer();
+    app.ex.loadPreset('ice');
     app.view = { ...DEFAULT_VIEW };
-    return String(e.message || e);
+    app.wantScene = app.ex.toJson();
+    console.error(`rime: link: ${errText(e)}`);
+    return errText(e);
   }
 }
 
@@ -660,8 +822,10 @@ function curvesCsv(res) {
   if (res.family) res.family.values.forEach((v) => cols.push(`eps_n[${res.family.path}=${v}]`));
   const lines = [cols.join(',')];
   for (let i = 0; i < res.g.length; i++) {
-    const row = [res.g[i], res.eps[i], app.statusNames[res.status[i]], res.clean[i]];
-    if (res.family) res.family.curves.forEach((c) => row.push(c[i]));
+    // Failed speeds (gaps) and parts not computed are empty cells.
+    const at = (arr) => (arr && Number.isFinite(arr[i]) ? arr[i] : '');
+    const row = [res.g[i], at(res.eps), res.status ? app.statusNames[res.status[i]] ?? 'failed' : '', at(res.clean)];
+    if (res.family) res.family.curves.forEach((c) => row.push(at(c)));
     lines.push(row.join(','));
   }
   return lines.join('\n') + '\n';
@@ -729,7 +893,7 @@ function wireDownloads() {
     .catch((e) => { window.rimeState.errors.push(String(e.message || e)); });
   $('dl-chart-png').addEventListener('click', () => app.res && png('rime-chart.png', chartPng));
   $('dl-map-png').addEventListener('click', () => app.res && app.res.map && png('rime-map.png', mapPng));
-  $('dl-scene').addEventListener('click', () => download('rime-scene.json', 'application/json', JSON.stringify(JSON.parse(app.ex.toJson()), null, 2) + '\n'));
+  $('dl-scene').addEventListener('click', () => app.drawn && download('rime-scene.json', 'application/json', JSON.stringify(JSON.parse(app.drawn.scene), null, 2) + '\n'));
   $('copy-link').addEventListener('click', async () => {
     try {
       await navigator.clipboard.writeText(location.href);
@@ -747,22 +911,32 @@ window.rimeExports = {
   curvesCsv: () => curvesCsv(app.res),
   mapCsv: () => app.res.map && mapCsv(app.res.map),
   bridgesAt: (g) => bridgesAt(g),
-  probe: (g) => JSON.parse(app.ex.normal(g, app.view.accuracy)),
+  probe: (g) => probe(g, app.drawn.view.accuracy),
 };
 
 // ---------- start ----------
 
 function wireView() {
   $('accuracy').addEventListener('change', () => { app.view.accuracy = $('accuracy').value; schedule(); });
+  for (const id of ['view-from', 'view-to', 'view-mapmax']) $(id).addEventListener('input', () => { $(id).dataset.dirty = '1'; });
+  const refuse = (errId, msg) => {
+    $(errId).textContent = msg;
+    console.error(`rime: refused: ${msg}`);
+    if (app.drawn) {
+      app.view = { ...app.drawn.view };
+      for (const id of ['view-from', 'view-to', 'view-mapmax']) $(id).dataset.dirty = '';
+      syncControls();
+    }
+  };
   const range = () => {
-    try {
-      const from = parseSpeed($('view-from').value);
-      const to = parseSpeed($('view-to').value);
-      if (!(from < to)) throw new Error('"from" must be below "to"');
-      app.view.from = from; app.view.to = to;
-      $('view-err').textContent = '';
-      schedule();
-    } catch (e) { $('view-err').textContent = e.message; }
+    let from, to;
+    try { from = parseSpeed($('view-from').value); } catch (e) { return refuse('view-err', `g from: ${e.message}`); }
+    try { to = parseSpeed($('view-to').value); } catch (e) { return refuse('view-err', `g to: ${e.message}`); }
+    if (!(from < to)) return refuse('view-err', 'g from: must be below "to"');
+    app.view.from = from; app.view.to = to;
+    $('view-from').dataset.dirty = ''; $('view-to').dataset.dirty = '';
+    $('view-err').textContent = '';
+    schedule();
   };
   $('view-experiments').addEventListener('change', () => { app.view.experiments = $('view-experiments').checked; schedule(); });
   $('view-from').addEventListener('change', range);
@@ -771,19 +945,22 @@ function wireView() {
     const t = $('view-mapmax').value.trim();
     try {
       app.view.mapMax = t === '' || t === 'auto' ? null : parseSpeed(t);
-      $('mapmax-err').textContent = '';
-      schedule();
-    } catch (e) { $('mapmax-err').textContent = e.message; }
+    } catch (e) { return refuse('mapmax-err', `map max speed: ${e.message}`); }
+    $('view-mapmax').dataset.dirty = '';
+    $('mapmax-err').textContent = '';
+    schedule();
   });
   $('preset').addEventListener('change', () => {
     const name = $('preset').value;
     if (!name) return;
     try {
       app.ex.loadPreset(name);
+      app.wantScene = app.ex.toJson();
       for (const path of app.rows.keys()) setErr(path, '');
       schedule();
     } catch (e) { showNotice(e.message); }
   });
+  $('banner-close').addEventListener('click', () => { app.bannerDismissed = app.bannerKey; $('banner').hidden = true; });
   const chart = $('chart');
   chart.addEventListener('pointermove', chartHover);
   chart.addEventListener('pointerdown', chartHover);
@@ -799,14 +976,19 @@ function wireView() {
     requestAnimationFrame(() => { resizeQueued = false; draw(); });
   });
   window.addEventListener('hashchange', () => {
+    // Our own replaceState does not fire this; a pasted or edited link does.
     showNotice(loadHash());
     schedule();
   });
 }
 
 async function main() {
-  await init();
-  app.ex = new Explorer();
+  // One compiled module for the page (validation, readouts) and the worker (frames).
+  const bytes = await (await fetch(new URL('./pkg/rime_wasm_bg.wasm', import.meta.url))).arrayBuffer();
+  const module = await WebAssembly.compile(bytes);
+  await init({ module_or_path: module });
+  app.ex = counted(new Explorer());
+  app.hoverEx = new Explorer();
   app.params = JSON.parse(Explorer.parameters());
   app.classes = JSON.parse(Explorer.classes());
   app.statusNames = JSON.parse(Explorer.statusNames());
@@ -819,11 +1001,15 @@ async function main() {
   buildTidal();
   wireView();
   wireDownloads();
+  app.computer = new Computer(module, onFrame, onBusy);
+  app.wantScene = app.ex.toJson();
   showNotice(loadHash());
-  update();
+  app.calls = 0;
+  request();
 }
 
 main().catch((e) => {
+  console.error(`rime: failed to start: ${errText(e)}`);
   window.rimeState.errors.push(String(e && e.message ? e.message : e));
   $('timing').textContent = `failed to start: ${e && e.message ? e.message : e}`;
 });

@@ -22,7 +22,8 @@ CHROMEDRIVER=${CHROMEDRIVER:-$(command -v chromedriver || echo /usr/bin/chromedr
   cargo test -p rime-wasm --target wasm32-unknown-unknown
 
 echo "--- end-to-end"
-[ -x target/release/rime ] || cargo build --release -p rime-tui
+rime_bin=${CARGO_TARGET_DIR:-target}/release/rime
+[ -x "$rime_bin" ] || cargo build --release -p rime-tui
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
 python3 -m http.server "$port" --bind 127.0.0.1 --directory www >/dev/null 2>&1 &
 server=$!
@@ -31,4 +32,4 @@ for _ in $(seq 50); do
   python3 -c "import urllib.request; urllib.request.urlopen('http://127.0.0.1:$port/')" 2>/dev/null && break
   sleep 0.1
 done
-node tests/e2e/e2e.mjs "http://127.0.0.1:$port/"
+RIME_BIN=${RIME_BIN:-$rime_bin} node tests/e2e/e2e.mjs "http://127.0.0.1:$port/"

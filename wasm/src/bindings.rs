@@ -4,29 +4,53 @@
 //! stuck_by_adhesion, overdamped); classes are indices into `Explorer.classes()` (legend order of
 //! the core's `StickClass::ALL`).
 
-use crate::explorer::{self, CurveData, MapData};
+use crate::explorer;
+use crate::frame;
 use wasm_bindgen::prelude::*;
 
 fn js(e: String) -> JsError {
     JsError::new(&e)
 }
 
-fn count(field: &str, n: f64) -> Result<usize, JsError> {
-    if n.is_finite() && n >= 0.0 && n.fract() == 0.0 && n <= 1e9 {
-        Ok(n as usize)
-    } else {
-        Err(JsError::new(&format!(
-            "{field}: must be a whole number (got {n})"
-        )))
+/// One frame of the page (see [`crate::frame`]): a JSON description and two flat arrays it points
+/// into. Each getter hands its part over once (a second call returns it empty).
+#[wasm_bindgen]
+pub struct Frame {
+    inner: frame::Frame,
+}
+
+#[wasm_bindgen]
+impl Frame {
+    /// The frame's JSON: parts, `{at, len}` offsets into `numbers()`/`codes()`, and `errors`.
+    pub fn json(&mut self) -> String {
+        std::mem::take(&mut self.inner.json)
+    }
+
+    /// Every floating-point array of the frame, concatenated.
+    pub fn numbers(&mut self) -> Vec<f64> {
+        std::mem::take(&mut self.inner.numbers)
+    }
+
+    /// Every code array (statuses, stick classes), concatenated.
+    pub fn codes(&mut self) -> Vec<u8> {
+        std::mem::take(&mut self.inner.codes)
     }
 }
 
-/// A scene being explored, with the last computed curve and stick map kept for the getters.
+/// The whole frame of `scene` (JSON) seen through `view` (JSON) in one call. Throws only for a
+/// request that is not valid (naming the field); a part that fails is listed in the frame's
+/// `errors` and the other parts are drawn.
+#[wasm_bindgen(js_name = computeFrame)]
+pub fn compute_frame(scene: &str, view: &str) -> Result<Frame, JsError> {
+    Ok(Frame {
+        inner: frame::frame(scene, view).map_err(js)?,
+    })
+}
+
+/// A scene being edited: validation of typed values, presets and readouts.
 #[wasm_bindgen]
 pub struct Explorer {
     inner: explorer::Explorer,
-    curve: CurveData,
-    map: MapData,
 }
 
 #[wasm_bindgen]
@@ -36,17 +60,6 @@ impl Explorer {
     pub fn new() -> Explorer {
         Explorer {
             inner: explorer::Explorer::new(),
-            curve: CurveData {
-                g: Vec::new(),
-                eps: Vec::new(),
-                status: Vec::new(),
-            },
-            map: MapData {
-                g: Vec::new(),
-                eps_n: Vec::new(),
-                class: Vec::new(),
-                eps_t: Vec::new(),
-            },
         }
     }
 
@@ -132,66 +145,6 @@ impl Explorer {
         self.inner.load_preset(name).map_err(js)
     }
 
-    /// `n` log-spaced speeds from `from` to `to` inclusive.
-    pub fn speeds(from: f64, to: f64, n: f64) -> Result<Vec<f64>, JsError> {
-        explorer::speeds(from, to, count("n", n)?).map_err(js)
-    }
-
-    /// ε_N at `n` log-spaced speeds from `from` to `to`; the statuses are then in `statuses()`.
-    pub fn curve(
-        &mut self,
-        from: f64,
-        to: f64,
-        n: f64,
-        accuracy: &str,
-    ) -> Result<Vec<f64>, JsError> {
-        self.curve = self
-            .inner
-            .curve(from, to, count("n", n)?, accuracy)
-            .map_err(js)?;
-        Ok(self.curve.eps.clone())
-    }
-
-    /// Status codes of the last `curve()`.
-    pub fn statuses(&self) -> Vec<u8> {
-        self.curve.status.clone()
-    }
-
-    /// Speeds of the last `curve()`.
-    #[wasm_bindgen(js_name = curveSpeeds)]
-    pub fn curve_speeds(&self) -> Vec<f64> {
-        self.curve.g.clone()
-    }
-
-    /// ε_N curves with `path` set to each of `values` (row-major, `values.length × n`).
-    pub fn family(
-        &self,
-        path: &str,
-        values: Vec<f64>,
-        from: f64,
-        to: f64,
-        n: f64,
-        accuracy: &str,
-    ) -> Result<Vec<f64>, JsError> {
-        self.inner
-            .family(path, &values, from, to, count("n", n)?, accuracy)
-            .map_err(js)
-    }
-
-    /// ε_N of the scene without layer and adhesion.
-    #[wasm_bindgen(js_name = cleanCurve)]
-    pub fn clean_curve(
-        &self,
-        from: f64,
-        to: f64,
-        n: f64,
-        accuracy: &str,
-    ) -> Result<Vec<f64>, JsError> {
-        self.inner
-            .clean_curve(from, to, count("n", n)?, accuracy)
-            .map_err(js)
-    }
-
     /// The normal result at one speed as JSON text.
     pub fn normal(&self, g: f64, accuracy: &str) -> Result<String, JsError> {
         self.inner.normal(g, accuracy).map_err(js)
@@ -219,46 +172,6 @@ impl Explorer {
     /// The tangential result at one point as JSON text.
     pub fn tangential(&self, g_n: f64, g_t: f64, accuracy: &str) -> Result<String, JsError> {
         self.inner.tangential(g_n, g_t, accuracy).map_err(js)
-    }
-
-    /// Class codes of an `n × n` stick map from 0 to `max` (row-major, `[i*n+j]` at g_N = g\[i\],
-    /// g_T = g\[j\]); ε_T, ε_N and the grid are then in `mapEpsT()`, `mapEpsN()`, `mapSpeeds()`.
-    #[wasm_bindgen(js_name = stickMap)]
-    pub fn stick_map(&mut self, max: f64, n: f64, accuracy: &str) -> Result<Vec<u8>, JsError> {
-        self.map = self
-            .inner
-            .stick_map(max, count("n", n)?, accuracy)
-            .map_err(js)?;
-        Ok(self.map.class.clone())
-    }
-
-    /// ε_T of the last stick map (row-major).
-    #[wasm_bindgen(js_name = mapEpsT)]
-    pub fn map_eps_t(&self) -> Vec<f64> {
-        self.map.eps_t.clone()
-    }
-
-    /// ε_N at the grid speeds of the last stick map.
-    #[wasm_bindgen(js_name = mapEpsN)]
-    pub fn map_eps_n(&self) -> Vec<f64> {
-        self.map.eps_n.clone()
-    }
-
-    /// Grid speeds of the last stick map.
-    #[wasm_bindgen(js_name = mapSpeeds)]
-    pub fn map_speeds(&self) -> Vec<f64> {
-        self.map.g.clone()
-    }
-
-    /// Critical velocities as JSON text (`[{key, label, value}]`).
-    #[wasm_bindgen(js_name = criticalVelocities)]
-    pub fn critical_velocities(&self, accuracy: &str) -> Result<String, JsError> {
-        self.inner.critical_velocities(accuracy).map_err(js)
-    }
-
-    /// Warnings for the scene over `[from, to]` as JSON text (a list of strings).
-    pub fn warnings(&self, from: f64, to: f64) -> Result<String, JsError> {
-        self.inner.warnings(from, to).map_err(js)
     }
 
     /// The appendix values as JSON text; `input` is a TidalInput JSON or empty for the scene's grains.

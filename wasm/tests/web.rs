@@ -2,7 +2,7 @@
 #![cfg(target_arch = "wasm32")]
 #![allow(clippy::unwrap_used, clippy::expect_used, missing_docs)]
 
-use rime_wasm::bindings::Explorer;
+use rime_wasm::bindings::{Explorer, compute_frame};
 use wasm_bindgen_test::*;
 
 wasm_bindgen_test_configure!(run_in_browser);
@@ -23,43 +23,36 @@ fn errors_are_exceptions_not_panics() {
     assert!(e.set("layer.viscosity", "-1").is_err());
     assert!(e.set("no.such", "1").is_err());
     assert!(Explorer::from_json("{").is_err());
-    assert!(e.curve(f64::NAN, 1.0, 10.0, "fast").is_err());
-    assert!(e.curve(1e-3, 1.0, 1e12, "fast").is_err());
-    assert!(e.curve(1e-3, 1.0, 2.5, "fast").is_err());
-    assert!(e.stick_map(0.1, -3.0, "fast").is_err());
-    assert!(e.curve(1e-3, 1.0, 10.0, "nope").is_err());
+    assert!(compute_frame(&before, r#"{"from": NaN}"#).is_err());
+    assert!(compute_frame(&before, r#"{"points": 1e12}"#).is_err());
+    assert!(compute_frame(&before, r#"{"points": 2.5}"#).is_err());
+    assert!(compute_frame(&before, r#"{"mapN": -3}"#).is_err());
+    assert!(compute_frame(&before, r#"{"accuracy": "nope"}"#).is_err());
     assert_eq!(e.to_json().unwrap(), before);
     // The module still works after the errors.
-    assert_eq!(e.curve(1e-3, 1.0, 10.0, "fast").unwrap().len(), 10);
+    assert!(compute_frame(&before, "{}").is_ok());
 }
 
 #[wasm_bindgen_test]
-fn curve_family_and_map() {
+fn one_frame_per_call_with_parts_failing_alone() {
     let mut e = Explorer::new();
     e.load_preset("ice-frost").unwrap();
-    let eps = e.curve(1e-6, 1.0, 64.0, "fast").unwrap();
-    let status = e.statuses();
-    assert_eq!(eps.len(), 64);
-    assert_eq!(status.len(), 64);
-    assert_eq!(status[0], 1, "stuck in layer at 1 µm/s");
-    assert!(eps[63] > 0.0 && eps[63] < 1.0);
-    let fam = e
-        .family(
-            "layer.viscosity",
-            vec![500.0, 1000.0],
-            1e-6,
-            1.0,
-            64.0,
-            "fast",
-        )
-        .unwrap();
-    assert_eq!(&fam[64..], &eps[..]);
-    let classes = e.stick_map(1e-3, 16.0, "fast").unwrap();
-    assert_eq!(classes.len(), 256);
-    assert_eq!(e.map_eps_t().len(), 256);
-    assert_eq!(classes[0], 6, "undefined at the origin");
-    let crit = e.critical_velocities("fast").unwrap();
-    assert!(crit.contains("layer"));
+    let scene = e.to_json().unwrap();
+    let mut f = compute_frame(&scene, r#"{"points": 64, "mapN": 16}"#).unwrap();
+    let json = f.json();
+    let numbers = f.numbers();
+    let codes = f.codes();
+    assert!(json.contains("\"errors\":[]"), "{json}");
+    assert!(json.contains("\"key\":\"layer\""));
+    // g (64), curve (64), clean (64), 4 family curves, map g, ε_N (16) and ε_T (256).
+    assert_eq!(numbers.len(), 64 * 7 + 16 * 2 + 256);
+    // statuses: curve, clean, 4 family curves; classes 256.
+    assert_eq!(codes.len(), 64 * 6 + 256);
+    assert_eq!(codes[0], 1, "stuck in layer at the lowest speed");
+    let mut bad = compute_frame(&scene, r#"{"points": 8, "mapN": 4, "mapMax": 5e6}"#).unwrap();
+    let j = bad.json();
+    assert!(j.contains("\"part\":\"stick map\""), "{j}");
+    assert!(bad.numbers().len() >= 8 * 2);
 }
 
 #[wasm_bindgen_test]

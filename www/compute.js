@@ -1,0 +1,92 @@
+// The page's side of the worker: posts requests, drops stale answers by generation, and restarts
+// the worker when a newer request waits behind a slow one (a computation cannot be interrupted).
+
+/** How long a running request may hold up a newer one before the worker is restarted [ms]. */
+const RESTART_AFTER_MS = 150;
+
+export class Computer {
+  /**
+   * @param {WebAssembly.Module} module the compiled wasm module (shared with the worker)
+   * @param {(answer: object, request: object) => void} onFrame called with the newest request's answer
+   * @param {(busy: boolean) => void} onBusy called when computing starts and stops
+   */
+  constructor(module, onFrame, onBusy) {
+    this.module = module;
+    this.onFrame = onFrame;
+    this.onBusy = onBusy;
+    this.gen = 0;
+    this.running = null; // {req, since}
+    this.queued = null;
+    this.restarts = 0;
+    this.spawn();
+  }
+
+  spawn() {
+    this.worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+    this.worker.onmessage = (ev) => this.answer(ev.data);
+    this.worker.onerror = (ev) => {
+      ev.preventDefault();
+      const req = this.running && this.running.req;
+      this.running = null;
+      if (req) this.onFrame({ gen: req.gen, error: `worker: ${ev.message || 'crashed'}`, ms: 0, calls: 0 }, req);
+      this.restart();
+    };
+    this.worker.postMessage({ type: 'init', module: this.module });
+  }
+
+  restart() {
+    this.worker.terminate();
+    this.restarts++;
+    this.spawn();
+    this.pump();
+  }
+
+  /** Asks for the frame of `scene` (JSON text) seen through `view`; `page` comes back with the
+   *  answer. Returns the request's generation. */
+  request(scene, view, page) {
+    const req = { type: 'frame', gen: ++this.gen, scene, view, page };
+    this.queued = req;
+    const run = this.running;
+    if (!run) {
+      this.pump();
+    } else {
+      // The running request is stale: if it is slow, drop it with its worker.
+      const wait = Math.max(0, RESTART_AFTER_MS - (performance.now() - run.since));
+      setTimeout(() => {
+        if (this.running === run && this.queued) {
+          this.running = null;
+          this.restart();
+        }
+      }, wait);
+    }
+    return req.gen;
+  }
+
+  pump() {
+    if (this.running || !this.queued) return;
+    const req = this.queued;
+    this.queued = null;
+    this.running = { req, since: performance.now() };
+    this.worker.postMessage(req);
+    this.onBusy(true);
+  }
+
+  answer(msg) {
+    if (msg.type === 'ready') return;
+    if (msg.type === 'fatal') {
+      this.onFrame({ gen: this.gen, error: msg.message, ms: 0, calls: 0 }, null);
+      return;
+    }
+    const run = this.running;
+    this.running = null;
+    if (run && msg.gen === this.gen) this.onFrame(msg, run.req);
+    // else: a stale answer (a newer request exists), dropped.
+    if (this.queued) this.pump();
+    else this.onBusy(false);
+  }
+
+  /** Whether the newest request has not been answered yet. */
+  get busy() {
+    return this.running !== null || this.queued !== null;
+  }
+}

@@ -1,0 +1,32 @@
+// The computing half of the page: a module worker holding the wasm module. It answers each request
+// {gen, scene, view} with one whole frame (one computeFrame call, then its three arrays) or with the
+// request's error, so that no level of accuracy ever blocks the page's input.
+import init, { computeFrame } from './pkg/rime_wasm.js';
+
+let ready = null;
+
+self.onmessage = async (ev) => {
+  const msg = ev.data;
+  if (msg.type === 'init') {
+    ready = init({ module_or_path: msg.module }).then(() => self.postMessage({ type: 'ready' }));
+    try { await ready; } catch (e) { self.postMessage({ type: 'fatal', message: `worker: ${e && e.message ? e.message : e}` }); }
+    return;
+  }
+  if (msg.type !== 'frame') return;
+  await ready;
+  const t0 = performance.now();
+  let calls = 0;
+  try {
+    const f = computeFrame(msg.scene, JSON.stringify(msg.view));
+    const json = f.json();
+    const numbers = f.numbers();
+    const codes = f.codes();
+    f.free();
+    calls += 5;
+    const ms = performance.now() - t0;
+    self.postMessage({ type: 'frame', gen: msg.gen, json, numbers, codes, ms, calls }, [numbers.buffer, codes.buffer]);
+  } catch (e) {
+    calls += 1;
+    self.postMessage({ type: 'frame', gen: msg.gen, error: String(e && e.message ? e.message : e), ms: performance.now() - t0, calls });
+  }
+};
