@@ -91,7 +91,7 @@ const app = {
 // Exposed for tests and curious users.
 window.rimeState = { ready: false, errors: [] };
 // Test hook: parts of the frame to fail on purpose (see the view's `fail` in wasm/src/frame.rs).
-window.rimeTest = { fail: [] };
+window.rimeTest = { fail: [], delayMs: 0 };
 
 /** Counts the calls made across the wasm boundary through `obj` (an Explorer). */
 function counted(obj) {
@@ -311,6 +311,8 @@ function request() {
     tidal: app.tidalIn,
   };
   if (window.rimeTest.fail.length) view.fail = [...window.rimeTest.fail];
+  // Test hook: hold the worker this long before it computes (a stand-in for a slow level).
+  if (window.rimeTest.delayMs > 0) view.testDelayMs = window.rimeTest.delayMs;
   // Main-thread calls across the wasm boundary made for this request (edits since the last one).
   const calls = app.calls;
   app.calls = 0;

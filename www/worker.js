@@ -17,7 +17,10 @@ self.onmessage = async (ev) => {
   const t0 = performance.now();
   let calls = 0;
   try {
-    const f = computeFrame(msg.scene, JSON.stringify(msg.view));
+    // The end-to-end test's stand-in for a slow computation: the worker is busy, the page is not.
+    const { testDelayMs, ...view } = msg.view;
+    if (testDelayMs > 0) { const until = performance.now() + testDelayMs; while (performance.now() < until) { /* busy */ } }
+    const f = computeFrame(msg.scene, JSON.stringify(view));
     const json = f.json();
     const numbers = f.numbers();
     const codes = f.codes();
