@@ -1,0 +1,678 @@
+//! One frame of the explorer, computed once for every surface: the ε_N curve of the scene, the
+//! clean-surface curve, a family over a swept parameter, the critical-speed markers, the stick map
+//! with its range policy, and the warnings.
+//!
+//! Every part fails on its own: a part that errors is left out and named in [`Frame::errors`], the
+//! others are still computed; a speed whose ε_N fails is a gap (`None`) on its curve. The terminal
+//! explorer and the web page call [`compute`] with the same [`Request`] and so draw the same numbers.
+//! Pure: no I/O and no clock; cancellable between curves and every few points.
+
+use super::limits::{MAX_CURVE_POINTS, MAX_MAP_SIDE, speed_is_valid};
+use super::range::{MapRange, auto_map_range, chart_decades};
+use crate::normal::{Normal, Status};
+use crate::params::Value;
+use crate::sweep::{StickMap, log_space};
+use crate::{
+    Accuracy, AdhesionModulus, Contact, ContactEnd, Damping, DampingFormula, LayerReading,
+};
+use crate::{Scene, error::Error};
+use alloc::format;
+use alloc::string::String;
+use alloc::vec::Vec;
+
+/// A parameter that the chart's family of curves can sweep.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sweep {
+    /// Parameter path (`grains.radius` sets both radii).
+    pub path: &'static str,
+    /// Short symbol for legends.
+    pub symbol: &'static str,
+    /// SI unit.
+    pub unit: &'static str,
+    /// Fixed values (the paper's figures), or `None` for multiples of the current value.
+    pub values: Option<&'static [f64]>,
+}
+
+/// Multiples of the current value used when a sweep has no fixed values.
+pub const RELATIVE: [f64; 4] = [0.1, 0.3, 3.0, 10.0];
+
+/// Every sweepable parameter, in the order the explorer cycles through them.
+pub const SWEEPS: [Sweep; 6] = [
+    Sweep {
+        path: "layer.viscosity",
+        symbol: "η*",
+        unit: "Pa s",
+        values: Some(&[500.0, 1000.0, 2000.0, 5000.0]),
+    },
+    Sweep {
+        path: "layer.thickness",
+        symbol: "D",
+        unit: "m",
+        values: Some(&[0.5e-6, 1e-6, 2e-6, 5e-6]),
+    },
+    Sweep {
+        path: "adhesion.surface_energy",
+        symbol: "γ",
+        unit: "J/m²",
+        values: Some(&[0.05, 0.1, 0.2, 0.5]),
+    },
+    Sweep {
+        path: "bulk.damping.time",
+        symbol: "A",
+        unit: "s",
+        values: None,
+    },
+    Sweep {
+        path: "grains.radius",
+        symbol: "R₁=R₂",
+        unit: "m",
+        values: None,
+    },
+    Sweep {
+        path: "bulk.youngs_modulus",
+        symbol: "Y",
+        unit: "Pa",
+        values: None,
+    },
+];
+
+impl Sweep {
+    /// The sweep with this path.
+    pub fn by_path(path: &str) -> Option<usize> {
+        SWEEPS.iter().position(|s| s.path == path)
+    }
+
+    /// Whether the sweep applies to `scene` (layer/adhesion sweeps need the effect on).
+    pub fn available(&self, scene: &Scene) -> bool {
+        if self.path.starts_with("layer.") {
+            scene.layer.is_some()
+        } else if self.path.starts_with("adhesion.") {
+            scene.adhesion.is_some()
+        } else {
+            true
+        }
+    }
+
+    /// The default sweep for a scene: η* with a layer, γ with adhesion, else the damping time.
+    pub fn default_for(scene: &Scene) -> usize {
+        if scene.layer.is_some() {
+            0
+        } else if scene.adhesion.is_some() {
+            2
+        } else {
+            3
+        }
+    }
+
+    /// The current value of the swept parameter in `scene` (NaN when it has none).
+    pub fn current(&self, scene: &Scene) -> f64 {
+        match self.path {
+            "grains.radius" => scene.grains.radius_1,
+            "bulk.damping.time" => scene.damping_time(),
+            p => match scene.get(p) {
+                Ok(Value::Number(v)) => v,
+                _ => f64::NAN,
+            },
+        }
+    }
+
+    /// The family's values for `scene`.
+    pub fn values(&self, scene: &Scene) -> Vec<f64> {
+        if let Some(v) = self.values {
+            return v.to_vec();
+        }
+        let c = self.current(scene);
+        if c.is_finite() && c > 0.0 {
+            RELATIVE.iter().map(|f| f * c).collect()
+        } else {
+            alloc::vec![1e-5, 1e-4, 1e-3, 1e-2]
+        }
+    }
+
+    /// `scene` with the swept parameter set to `v`.
+    pub fn apply(&self, scene: &Scene, v: f64) -> crate::Result<Scene> {
+        let mut s = *scene;
+        if self.path == "grains.radius" {
+            s.set_number("grains.radius_1", v)?;
+            s.set_number("grains.radius_2", v)?;
+        } else {
+            s.set_number(self.path, v)?;
+        }
+        Ok(s)
+    }
+}
+
+/// Parts of a frame that a request can make fail on purpose (to test how a surface shows failures).
+pub const FORCIBLE: [&str; 4] = ["curve", "family", "marker", "map"];
+
+/// What a surface asks to see.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Request {
+    /// The scene.
+    pub scene: Scene,
+    /// Accuracy level.
+    pub accuracy: Accuracy,
+    /// Index into [`SWEEPS`]; `None` for [`Sweep::default_for`] the scene.
+    pub sweep: Option<usize>,
+    /// Whether to compute the family of curves.
+    pub family: bool,
+    /// Chart speeds \[m/s\] (`None`: the decades of [`chart_decades`]).
+    pub speeds: Option<(f64, f64)>,
+    /// Points per curve.
+    pub points: usize,
+    /// Upper end of both stick-map axes \[m/s\]; `None` for [`auto_map_range`].
+    pub map_max: Option<f64>,
+    /// Stick-map side (`map_n²` cells).
+    pub map_n: usize,
+    /// Parts to fail on purpose (see [`FORCIBLE`]).
+    pub fail: Vec<String>,
+}
+
+impl Request {
+    /// The default view of a scene at an accuracy: 241 points on the chart's decades, an 81×81 map.
+    pub fn new(scene: Scene, accuracy: Accuracy) -> Request {
+        Request {
+            scene,
+            accuracy,
+            sweep: None,
+            family: true,
+            speeds: None,
+            points: 241,
+            map_max: None,
+            map_n: 81,
+            fail: Vec::new(),
+        }
+    }
+
+    /// Checks the request's own fields; errors name the field.
+    pub fn validate(&self) -> crate::Result<()> {
+        if let Some((from, to)) = self.speeds {
+            for (field, g) in [("from", from), ("to", to)] {
+                if !speed_is_valid(g) {
+                    return Err(Error::OutOfRange {
+                        field,
+                        value: g,
+                        expected: "a speed in (0, 1e6] m/s",
+                    });
+                }
+            }
+            if from >= to {
+                return Err(Error::OutOfRange {
+                    field: "to",
+                    value: to,
+                    expected: "greater than from",
+                });
+            }
+        }
+        if !(2..=MAX_CURVE_POINTS).contains(&self.points) {
+            return Err(Error::OutOfRange {
+                field: "points",
+                value: self.points as f64,
+                expected: "a count in [2, 20000]",
+            });
+        }
+        if !(2..=MAX_MAP_SIDE).contains(&self.map_n) {
+            return Err(Error::OutOfRange {
+                field: "map_n",
+                value: self.map_n as f64,
+                expected: "a count in [2, 1000]",
+            });
+        }
+        if let Some(m) = self.map_max
+            && !speed_is_valid(m)
+        {
+            return Err(Error::OutOfRange {
+                field: "map_max",
+                value: m,
+                expected: "a speed in (0, 1e6] m/s",
+            });
+        }
+        if self.sweep.is_some_and(|k| k >= SWEEPS.len()) {
+            return Err(Error::InvalidValue {
+                field: "sweep",
+                expected: "one of the sweepable parameters",
+            });
+        }
+        if self.fail.iter().any(|p| !FORCIBLE.contains(&p.as_str())) {
+            return Err(Error::InvalidValue {
+                field: "fail",
+                expected: "parts among curve, family, marker, map",
+            });
+        }
+        Ok(())
+    }
+
+    fn forced(&self, part: &str) -> bool {
+        self.fail.iter().any(|p| p == part)
+    }
+}
+
+/// A part of the frame that failed, and why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PartError {
+    /// Which part (`curve`, `clean`, `family η* = 500`, `marker "sticks below"`, `stick map`, `scene`).
+    pub part: String,
+    /// The cause, naming the field where there is one.
+    pub message: String,
+}
+
+/// One ε_N curve on the frame's speeds.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Curve {
+    /// The full result at each speed (`None` where it failed: a gap).
+    pub points: Vec<Option<Normal>>,
+}
+
+impl Curve {
+    /// ε_N at each speed, NaN in the gaps.
+    pub fn eps(&self) -> Vec<f64> {
+        self.points
+            .iter()
+            .map(|p| p.map_or(f64::NAN, |n| n.eps))
+            .collect()
+    }
+
+    /// Number of gaps.
+    pub fn failed(&self) -> usize {
+        self.points.iter().filter(|p| p.is_none()).count()
+    }
+}
+
+/// One member of the family of curves.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Member {
+    /// Value of the swept parameter.
+    pub value: f64,
+    /// Whether this member is the scene itself (its value equals the scene's).
+    pub is_scene: bool,
+    /// Its curve (`None` when the member's scene is invalid).
+    pub curve: Option<Curve>,
+}
+
+/// A marker on the speed axis.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Marker {
+    /// `layer`, `adhesion` or `stick`.
+    pub key: &'static str,
+    /// Legend text.
+    pub label: &'static str,
+    /// Speed \[m/s\].
+    pub value: f64,
+}
+
+/// The stick map part.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MapPart {
+    /// Upper end of both axes \[m/s\].
+    pub max: f64,
+    /// Whether the range is automatic, and its note (cut to the speed limit).
+    pub auto: Option<MapRange>,
+    /// The map, or why it could not be computed.
+    pub map: Option<StickMap>,
+}
+
+/// Everything one frame shows.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Frame {
+    /// The request it answers.
+    pub request: Request,
+    /// Derived constants (`None` if the scene cannot be evaluated; see `errors`).
+    pub contact: Option<Contact>,
+    /// The sweep of the family (index into [`SWEEPS`]).
+    pub sweep: usize,
+    /// Log-spaced impact speeds of every curve \[m/s\].
+    pub g: Vec<f64>,
+    /// The scene's curve.
+    pub curve: Option<Curve>,
+    /// The clean surface (no layer, no adhesion), when the scene has either.
+    pub clean: Option<Curve>,
+    /// The family of curves (empty when the sweep does not apply).
+    pub family: Vec<Member>,
+    /// Critical speeds (Eq. (10), Eq. (15)) and where the grains stick.
+    pub markers: Vec<Marker>,
+    /// The stick map (`None` without friction).
+    pub map: Option<MapPart>,
+    /// Warnings about the scene (options that deviate from the paper, overdamped ranges).
+    pub warnings: Vec<String>,
+    /// Parts that failed.
+    pub errors: Vec<PartError>,
+}
+
+fn part_error(part: impl Into<String>, message: impl Into<String>) -> PartError {
+    PartError {
+        part: part.into(),
+        message: message.into(),
+    }
+}
+
+/// ε_N at every speed; `None` if cancelled. `force` fails every 40th speed (a test of gaps).
+fn curve(
+    contact: &Contact,
+    g: &[f64],
+    accuracy: Accuracy,
+    force: bool,
+    cancelled: &dyn Fn() -> bool,
+) -> Option<(Curve, Option<String>)> {
+    let mut points = Vec::with_capacity(g.len());
+    let mut first = None;
+    for (i, &gi) in g.iter().enumerate() {
+        if i % 32 == 31 && cancelled() {
+            return None;
+        }
+        let r = if force && i % 40 == 20 {
+            Err(String::from("failure forced for testing"))
+        } else {
+            contact.normal(gi, accuracy).map_err(|e| format!("{e}"))
+        };
+        match r {
+            Ok(n) => points.push(Some(n)),
+            Err(e) => {
+                first.get_or_insert_with(|| format!("at g_N = {gi:.4e} m/s: {e}"));
+                points.push(None);
+            }
+        }
+    }
+    Some((Curve { points }, first))
+}
+
+fn gap_error(part: &str, c: &Curve, first: Option<String>) -> Option<PartError> {
+    first.map(|msg| {
+        part_error(
+            part,
+            format!(
+                "{} of {} speeds failed (gaps), first {msg}",
+                c.failed(),
+                c.points.len()
+            ),
+        )
+    })
+}
+
+/// The largest impact speed at which the grains stick, by bisection in log speed on the status the
+/// core reports (`None` when they never stick in \[1e-12, 1e2\] m/s, or always do).
+pub fn stick_threshold(contact: &Contact, accuracy: Accuracy) -> crate::Result<Option<f64>> {
+    let stuck = |g: f64| -> crate::Result<bool> {
+        let r = contact.normal(g, accuracy)?;
+        Ok(matches!(
+            r.status,
+            Status::StuckInLayer | Status::StuckByAdhesion
+        ))
+    };
+    let (mut lo, mut hi) = (1e-12_f64, 1e2_f64);
+    if !stuck(lo)? || stuck(hi)? {
+        return Ok(None);
+    }
+    for _ in 0..80 {
+        let mid = crate::math::sqrt(lo * hi);
+        if stuck(mid)? {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+        if hi / lo < 1.0 + 1e-12 {
+            break;
+        }
+    }
+    Ok(Some(hi))
+}
+
+/// Warnings about the scene: overdamped collisions on the curve, and options that deviate from (or
+/// expose inconsistencies of) the paper.
+pub fn warnings(scene: &Scene, curve: Option<&Curve>, damping_time: Option<f64>) -> Vec<String> {
+    let mut w = Vec::new();
+    if let Some(c) = curve {
+        let over = c
+            .points
+            .iter()
+            .filter(|p| p.is_some_and(|n| n.status == Status::Overdamped))
+            .count();
+        if over > 0 {
+            let a = damping_time.map_or(String::from("?"), |a| format!("{a:.3e}"));
+            w.push(format!(
+                "overdamped: ε_N < 1e-9 over {} of the plotted range (A = {a} s); Eq. (4) never \
+                 sticks, the rebound is negligible (the stick map counts it as a rebound)",
+                if over == c.points.len() {
+                    "all"
+                } else {
+                    "part"
+                }
+            ));
+        }
+    }
+    if let Damping::Viscosities(v) = scene.bulk.damping
+        && v.formula == DampingFormula::AsPrinted
+    {
+        w.push(
+            "A formula as printed: the paper omits the factor (1−2ν) of Brilliantov et al.".into(),
+        );
+    }
+    if scene.contact_end == ContactEnd::ZeroOverlap {
+        w.push("contact end zero_overlap: Eq. (5) read literally, a tensile viscoelastic force acts while separating".into());
+    }
+    if scene
+        .layer
+        .is_some_and(|l| l.reading == LayerReading::Literal)
+    {
+        w.push("Eq. (8) literal reading: threshold ≈ 2 g_s and ε_N can exceed the clean value, contradicting the paper's text".into());
+    }
+    if scene
+        .adhesion
+        .is_some_and(|a| a.modulus == AdhesionModulus::Consistent)
+    {
+        w.push(
+            "adhesion modulus consistent: E = Y/(2(1−ν²)) instead of the printed Y/(1−ν²)".into(),
+        );
+    }
+    w
+}
+
+/// Computes a frame. Returns `None` as soon as `cancelled()` says a newer request is waiting.
+/// A request that is not valid (see [`Request::validate`]) is reported as a `request` part error.
+pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<Frame> {
+    let scene = req.scene;
+    let sweep = req.sweep.unwrap_or_else(|| Sweep::default_for(&scene));
+    let contact = Contact::new(&scene);
+    let mut frame = Frame {
+        request: req.clone(),
+        contact: contact.as_ref().ok().copied(),
+        sweep,
+        g: Vec::new(),
+        curve: None,
+        clean: None,
+        family: Vec::new(),
+        markers: Vec::new(),
+        map: None,
+        warnings: Vec::new(),
+        errors: Vec::new(),
+    };
+    if let Err(e) = req.validate() {
+        frame.errors.push(part_error("request", format!("{e}")));
+        return Some(frame);
+    }
+    let (from, to) = req.speeds.unwrap_or_else(|| {
+        let (lo, hi) = chart_decades(contact.as_ref().ok());
+        (
+            crate::math::powf(10.0, lo as f64),
+            crate::math::powf(10.0, hi as f64),
+        )
+    });
+    frame.g = alloc::vec![0.0; req.points];
+    log_space(from, to, &mut frame.g);
+    let contact = match contact {
+        Ok(c) => c,
+        Err(e) => {
+            frame.errors.push(part_error("scene", format!("{e}")));
+            return Some(frame);
+        }
+    };
+    let (c, first) = curve(
+        &contact,
+        &frame.g,
+        req.accuracy,
+        req.forced("curve"),
+        cancelled,
+    )?;
+    frame.errors.extend(gap_error("curve", &c, first));
+    frame.curve = Some(c);
+
+    if scene.layer.is_some() || scene.adhesion.is_some() {
+        let clean = Scene {
+            layer: None,
+            adhesion: None,
+            ..scene
+        };
+        match Contact::new(&clean) {
+            Ok(cc) => {
+                let (c, first) = curve(&cc, &frame.g, req.accuracy, false, cancelled)?;
+                frame.errors.extend(gap_error("clean", &c, first));
+                frame.clean = Some(c);
+            }
+            Err(e) => frame.errors.push(part_error("clean", format!("{e}"))),
+        }
+    }
+
+    let s = SWEEPS[sweep];
+    if req.family && s.available(&scene) {
+        let current = s.current(&scene);
+        for v in s.values(&scene) {
+            if cancelled() {
+                return None;
+            }
+            let part = format!("family {} = {v}", s.symbol);
+            let member_contact = if req.forced("family") {
+                Err(String::from("failure forced for testing"))
+            } else {
+                s.apply(&scene, v)
+                    .and_then(|m| Contact::new(&m))
+                    .map_err(|e| format!("{e}"))
+            };
+            let curve = match member_contact {
+                Ok(mc) => {
+                    let (c, first) = curve(&mc, &frame.g, req.accuracy, false, cancelled)?;
+                    frame.errors.extend(gap_error(&part, &c, first));
+                    Some(c)
+                }
+                Err(e) => {
+                    frame.errors.push(part_error(part, e));
+                    None
+                }
+            };
+            frame.family.push(Member {
+                value: v,
+                is_scene: v == current,
+                curve,
+            });
+        }
+    }
+
+    if let Some(l) = &contact.layer {
+        frame.markers.push(Marker {
+            key: "layer",
+            label: "g_s layer (Eq. (10))",
+            value: l.critical_velocity,
+        });
+    }
+    if let Some(a) = &contact.adhesion {
+        frame.markers.push(Marker {
+            key: "adhesion",
+            label: "g_s adhesion (Eq. (15)), a rebound speed",
+            value: a.critical_velocity,
+        });
+    }
+    if cancelled() {
+        return None;
+    }
+    let threshold = if req.forced("marker") {
+        Err(String::from("failure forced for testing"))
+    } else {
+        stick_threshold(&contact, req.accuracy).map_err(|e| format!("{e}"))
+    };
+    match threshold {
+        Ok(Some(t)) => frame.markers.push(Marker {
+            key: "stick",
+            label: "sticks below",
+            value: t,
+        }),
+        Ok(None) => {}
+        Err(e) => frame.errors.push(part_error("marker \"sticks below\"", e)),
+    }
+    frame.warnings = warnings(&scene, frame.curve.as_ref(), Some(contact.damping_time));
+
+    if contact.friction.is_some() {
+        if cancelled() {
+            return None;
+        }
+        let auto = req.map_max.is_none().then(|| auto_map_range(&contact));
+        let max = req.map_max.or(auto.map(|a| a.max)).unwrap_or(1.0);
+        let map = if req.forced("map") {
+            Err(String::from("failure forced for testing"))
+        } else {
+            StickMap::new(&contact, max, req.map_n, req.accuracy).map_err(|e| format!("{e}"))
+        };
+        let map = match map {
+            Ok(m) => Some(m),
+            Err(e) => {
+                frame.errors.push(part_error("stick map", e));
+                None
+            }
+        };
+        frame.map = Some(MapPart { max, auto, map });
+    }
+    Some(frame)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Preset;
+
+    #[test]
+    fn every_part_fails_on_its_own() {
+        let mut req = Request::new(Preset::IceFrost.scene(), Accuracy::Fast);
+        req.points = 81;
+        req.map_n = 11;
+        req.fail = alloc::vec![String::from("map"), String::from("marker")];
+        let f = compute(&req, &|| false).unwrap();
+        assert!(f.curve.is_some() && f.clean.is_some() && f.family.len() == 4);
+        assert!(f.map.as_ref().is_some_and(|m| m.map.is_none()));
+        assert!(f.markers.iter().any(|m| m.key == "layer"));
+        assert!(!f.markers.iter().any(|m| m.key == "stick"));
+        let parts: Vec<&str> = f.errors.iter().map(|e| e.part.as_str()).collect();
+        assert_eq!(parts, ["marker \"sticks below\"", "stick map"]);
+    }
+
+    #[test]
+    fn the_frame_equals_the_core_speed_by_speed() {
+        // What every surface draws is exactly what `Contact::normal` gives at those speeds.
+        let req = Request::new(Preset::IceSticky.scene(), Accuracy::Precise);
+        let f = compute(&req, &|| false).unwrap();
+        let c = Contact::new(&req.scene).unwrap();
+        for (g, p) in f.g.iter().zip(&f.curve.unwrap().points) {
+            assert_eq!(p.unwrap(), c.normal(*g, Accuracy::Precise).unwrap());
+        }
+        // The stick threshold lies above Eq. (15)'s g_s (a rebound speed): ε_v g = g_s there.
+        let t = f.markers.iter().find(|m| m.key == "stick").unwrap().value;
+        let g_s = c.adhesion.unwrap().critical_velocity;
+        let eps_v = Contact::new(&Scene {
+            adhesion: None,
+            ..req.scene
+        })
+        .unwrap()
+        .normal(t, Accuracy::Precise)
+        .unwrap()
+        .eps;
+        assert!((eps_v * t / g_s - 1.0).abs() < 1e-9, "{t} {g_s} {eps_v}");
+    }
+
+    #[test]
+    fn a_bad_request_names_its_field() {
+        let mut req = Request::new(Preset::Ice.scene(), Accuracy::Fast);
+        req.speeds = Some((1.0, 1e-3));
+        let f = compute(&req, &|| false).unwrap();
+        assert_eq!(f.errors.len(), 1);
+        assert!(f.errors[0].message.starts_with("to"), "{:?}", f.errors);
+        assert!(compute(&req, &|| true).is_some()); // validation precedes any cancellation point
+        let req = Request::new(Preset::Ice.scene(), Accuracy::Fast);
+        assert!(compute(&req, &|| true).is_none());
+    }
+}
