@@ -38,6 +38,7 @@ step clippy cargo clippy --workspace --all-targets -- -D warnings
 step doc env RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps
 step no_std cargo build -p rime-core --no-default-features --target thumbv7em-none-eabihf
 step no_std_alloc cargo build -p rime-core --no-default-features --features alloc --target thumbv7em-none-eabihf
+step no_std_explorer cargo build -p rime-core --no-default-features --features explorer --target thumbv7em-none-eabihf
 step build cargo build --release --workspace
 count_cargo_tests cargo-test cargo test --workspace --release --no-fail-fast
 for extra in scripts/test-all.d/*.sh; do

@@ -9,14 +9,10 @@
 use crate::explorer::{
     MAX_MAP_SIDE, STATUSES, class_code, parse_accuracy, parse_scene, speeds, status_code,
 };
-use rime_core::explorer::range::auto_map_range;
+use rime_core::explorer::frame::{Curve, Request, SWEEPS, compute};
 use rime_core::params::{PARAMETERS, Value};
-use rime_core::sweep::StickMap;
 use rime_core::tidal::{PAPER_QUOTED, TidalInput, tidal};
-use rime_core::{
-    Accuracy, AdhesionModulus, Contact, ContactEnd, Damping, DampingFormula, LayerReading, Scene,
-    Status,
-};
+use rime_core::{Scene, Status};
 use serde::Deserialize;
 use serde_json::{Value as Json, json};
 
@@ -77,6 +73,9 @@ pub struct View {
 
 /// The parts a view can fail on purpose (`curve` fails every 40th speed, a gap; the others whole).
 pub const FORCIBLE: [&str; 5] = ["curve", "family", "marker", "map", "tidal"];
+
+/// Those of [`FORCIBLE`] that the core's frame fails (the tidal appendix is computed here).
+const FORCIBLE_IN_CORE: [&str; 4] = rime_core::explorer::frame::FORCIBLE;
 
 fn forced(part: &str) -> String {
     format!("failure forced for testing ({part} in view.fail)")
@@ -151,162 +150,14 @@ impl Errors {
     }
 }
 
-/// ε_N and statuses along `g`; failed speeds are gaps (NaN, [`FAILED`]) and the first failure's
-/// message is returned with their count.
-fn curve_with_gaps(
-    contact: &Contact,
-    g: &[f64],
-    accuracy: Accuracy,
-    force: bool,
-) -> (Vec<f64>, Vec<u8>, usize, Option<String>) {
-    let mut eps = Vec::with_capacity(g.len());
-    let mut status = Vec::with_capacity(g.len());
-    let (mut failed, mut first) = (0, None);
-    for (i, &gi) in g.iter().enumerate() {
-        let r = if force && i % 40 == 20 {
-            Err(forced("curve"))
-        } else {
-            contact.normal(gi, accuracy).map_err(|e| e.to_string())
-        };
-        match r {
-            Ok(r) => {
-                eps.push(r.eps);
-                status.push(status_code(r.status));
-            }
-            Err(e) => {
-                eps.push(f64::NAN);
-                status.push(FAILED);
-                failed += 1;
-                first.get_or_insert_with(|| format!("at g_N = {gi:.4e} m/s: {e}"));
-            }
-        }
-    }
-    (eps, status, failed, first)
-}
-
-/// A curve part as JSON, its gaps reported in `errors` under `part`.
-fn curve_part(
-    pack: &mut Pack,
-    errors: &mut Errors,
-    part: &str,
-    contact: &Contact,
-    g: &[f64],
-    accuracy: Accuracy,
-    force: bool,
-) -> (Json, Vec<u8>) {
-    let (eps, status, failed, first) = curve_with_gaps(contact, g, accuracy, force);
-    if let Some(msg) = &first {
-        errors.push(
-            part,
-            format!("{failed} of {} speeds failed (gaps), first {msg}", g.len()),
-        );
-    }
-    let j = json!({"eps": pack.f(&eps), "status": pack.u(&status), "failed": failed});
-    (j, status)
-}
-
-/// The swept parameter of the family: η* with a layer, γ with adhesion, else the damping time A.
-/// Returns `(path, symbol, unit, values)`.
-pub fn family_spec(
-    scene: &Scene,
-    damping_time: Option<f64>,
-) -> Option<(&'static str, &'static str, &'static str, Vec<f64>)> {
-    if scene.layer.is_some() {
-        return Some((
-            "layer.viscosity",
-            "η*",
-            "Pa s",
-            vec![500.0, 1000.0, 2000.0, 5000.0],
-        ));
-    }
-    if scene.adhesion.is_some() {
-        return Some((
-            "adhesion.surface_energy",
-            "γ",
-            "J/m²",
-            vec![0.05, 0.1, 0.2, 0.5],
-        ));
-    }
-    let a = damping_time.filter(|a| a.is_finite() && *a > 0.0)?;
-    let round3 = |v: f64| format!("{v:.2e}").parse::<f64>().unwrap_or(v);
-    Some((
-        "bulk.damping.time",
-        "A",
-        "s",
-        [a / 10.0, a / 3.0, a * 3.0, a * 10.0]
-            .into_iter()
-            .map(round3)
-            .collect(),
-    ))
-}
-
-/// The impact speed below which the grains stick, by bisection in log speed on the status the core
-/// reports (`None` when they never stick in [1e-12, 1e2] m/s, or always do).
-pub fn stick_threshold(contact: &Contact, accuracy: Accuracy) -> Result<Option<f64>, String> {
-    let stuck = |g: f64| -> Result<bool, String> {
-        let r = contact.normal(g, accuracy).map_err(|e| e.to_string())?;
-        Ok(matches!(
-            r.status,
-            Status::StuckInLayer | Status::StuckByAdhesion
-        ))
-    };
-    let (mut lo, mut hi) = (1e-12_f64, 1e2_f64);
-    if !stuck(lo)? || stuck(hi)? {
-        return Ok(None);
-    }
-    for _ in 0..60 {
-        let mid = (lo * hi).sqrt();
-        if stuck(mid)? {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-        if hi / lo < 1.0 + 1e-12 {
-            break;
-        }
-    }
-    Ok(Some(hi))
-}
-
-/// Warnings about the scene: overdamped collisions among the speeds `g` (statuses `status`), and
-/// options that deviate from (or expose inconsistencies of) the paper.
-fn warnings(scene: &Scene, status: &[u8], damping_time: Option<f64>) -> Vec<String> {
-    let mut w = Vec::new();
-    let overdamped = status_code(Status::Overdamped);
-    let over = status.iter().filter(|s| **s == overdamped).count();
-    if over > 0 {
-        let a = damping_time.map_or("?".to_string(), |a| format!("{a:.3e}"));
-        w.push(format!(
-            "overdamped: ε_N < 1e-9 over {} of the plotted range (A = {a} s); Eq. (4) never \
-             sticks, the rebound is negligible",
-            if over == status.len() { "all" } else { "part" }
-        ));
-    }
-    if let Damping::Viscosities(v) = scene.bulk.damping
-        && v.formula == DampingFormula::AsPrinted
-    {
-        w.push(
-            "A formula as printed: the paper omits the factor (1−2ν) of Brilliantov et al.".into(),
-        );
-    }
-    if scene.contact_end == ContactEnd::ZeroOverlap {
-        w.push("contact end zero_overlap: Eq. (5) read literally, a tensile viscoelastic force acts while separating".into());
-    }
-    if scene
-        .layer
-        .is_some_and(|l| l.reading == LayerReading::Literal)
-    {
-        w.push("Eq. (8) literal reading: threshold ≈ 2 g_s and ε_N can exceed the clean value, contradicting the paper's text".into());
-    }
-    if scene
-        .adhesion
-        .is_some_and(|a| a.modulus == AdhesionModulus::Consistent)
-    {
-        w.push(
-            "adhesion modulus consistent: E = Y/(2(1−ν²)) instead of the printed Y/(1−ν²)".into(),
-        );
-    }
-    w
+/// A core curve as JSON: ε_N (NaN in the gaps) and status codes ([`FAILED`] in the gaps).
+fn curve_json(pack: &mut Pack, c: &Curve) -> Json {
+    let status: Vec<u8> = c
+        .points
+        .iter()
+        .map(|p| p.map_or(FAILED, |n| status_code(n.status)))
+        .collect();
+    json!({"eps": pack.f(&c.eps()), "status": pack.u(&status), "failed": c.failed()})
 }
 
 /// Every parameter's value (number, choice name, boolean, or `null` when inactive), by path.
@@ -349,7 +200,8 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
     let scene = parse_scene(scene_json)?;
     let view = parse_view(view_json)?;
     let accuracy = parse_accuracy(&view.accuracy)?;
-    let g = speeds(view.from, view.to, view.points).map_err(|e| format!("view.{e}"))?;
+    // Validated here so that the error names the view's field; the core builds the same grid.
+    speeds(view.from, view.to, view.points).map_err(|e| format!("view.{e}"))?;
     if !(2..=MAX_MAP_SIDE).contains(&view.map_n) {
         return Err(format!(
             "view.mapN: must lie in [2, {MAX_MAP_SIDE}] (got {})",
@@ -367,137 +219,78 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
     let mut errors = Errors(Vec::new());
     let mut out = serde_json::Map::new();
     out.insert("values".into(), values(&scene));
-    out.insert("g".into(), pack.f(&g));
-
-    let contact = Contact::new(&scene).map_err(|e| e.to_string());
-    let damping_time = contact.as_ref().ok().map(|c| c.damping_time);
-    match &contact {
-        Err(e) => {
-            // Without a contact nothing but the tidal appendix can be drawn.
-            errors.push("scene", e.clone());
-            for k in ["curve", "clean", "family", "map"] {
-                out.insert(k.into(), Json::Null);
-            }
-            out.insert("critical".into(), json!([]));
-            out.insert("warnings".into(), json!([]));
-        }
-        Ok(contact) => {
-            let (curve, status) = curve_part(
-                &mut pack,
-                &mut errors,
-                "curve",
-                contact,
-                &g,
-                accuracy,
-                force("curve"),
-            );
-            out.insert("curve".into(), curve);
-
-            // The clean surface: the scene without layer and adhesion (drawn only with either).
-            let clean = if scene.layer.is_some() || scene.adhesion.is_some() {
-                let s = Scene {
-                    layer: None,
-                    adhesion: None,
-                    ..scene
-                };
-                match Contact::new(&s) {
-                    Ok(c) => curve_part(&mut pack, &mut errors, "clean", &c, &g, accuracy, false).0,
-                    Err(e) => {
-                        errors.push("clean", e.to_string());
-                        Json::Null
-                    }
-                }
-            } else {
-                Json::Null
-            };
-            out.insert("clean".into(), clean);
-
-            let family = match family_spec(&scene, damping_time).filter(|_| view.family) {
-                None => Json::Null,
-                Some((path, sym, unit, vals)) => {
-                    let mut curves = Vec::new();
-                    for &v in &vals {
-                        let part = format!("family {sym} = {v}");
-                        let mut s = scene;
-                        let c = if force("family") {
-                            Err(forced("family"))
-                        } else {
-                            s.set_number(path, v)
-                                .and_then(|()| Contact::new(&s))
-                                .map_err(|e| e.to_string())
-                        };
-                        match c {
-                            Ok(c) => curves.push(
-                                curve_part(&mut pack, &mut errors, &part, &c, &g, accuracy, false)
-                                    .0,
-                            ),
-                            Err(e) => {
-                                errors.push(&part, e);
-                                curves.push(Json::Null);
-                            }
-                        }
-                    }
-                    json!({"path": path, "sym": sym, "unit": unit, "values": vals, "curves": curves})
-                }
-            };
-            out.insert("family".into(), family);
-
-            let mut critical = Vec::new();
-            if let Some(l) = &contact.layer {
-                critical.push(json!({"key": "layer", "label": "g_s layer (Eq. (10))", "value": l.critical_velocity}));
-            }
-            if let Some(a) = &contact.adhesion {
-                critical.push(json!({"key": "adhesion", "label": "g_s adhesion (Eq. (15))", "value": a.critical_velocity}));
-            }
-            let threshold = if force("marker") {
-                Err(forced("marker"))
-            } else {
-                stick_threshold(contact, accuracy)
-            };
-            match threshold {
-                Ok(Some(t)) => {
-                    critical.push(json!({"key": "stick", "label": "sticks below", "value": t}))
-                }
-                Ok(None) => {}
-                Err(e) => errors.push("marker \"sticks below\"", e),
-            }
-            out.insert("critical".into(), Json::from(critical));
-            out.insert(
-                "warnings".into(),
-                Json::from(warnings(&scene, &status, damping_time)),
-            );
-
-            let map = if contact.friction.is_none() {
-                Json::Null
-            } else {
-                let auto = auto_map_range(contact);
-                let (max, note) = match view.map_max {
-                    Some(m) => (m, None),
-                    None => (auto.max, auto.note()),
-                };
-                let m = crate::explorer::map_speeds(max, view.map_n).and_then(|_| {
-                    if force("map") {
-                        return Err(forced("map"));
-                    }
-                    StickMap::new(contact, max, view.map_n, accuracy).map_err(|e| e.to_string())
-                });
-                match m {
-                    Ok(m) => {
-                        let class: Vec<u8> = m.class.iter().map(|c| class_code(*c)).collect();
-                        json!({"n": view.map_n, "max": max, "auto": view.map_max.is_none(), "note": note,
-                               "g": pack.f(&m.g), "epsN": pack.f(&m.eps_n), "epsT": pack.f(&m.eps_t),
-                               "class": pack.u(&class)})
-                    }
-                    Err(e) => {
-                        errors.push("stick map", e.clone());
-                        json!({"n": view.map_n, "max": max, "auto": view.map_max.is_none(), "note": note,
-                               "error": e})
-                    }
-                }
-            };
-            out.insert("map".into(), map);
-        }
+    // The one explorer model of the core computes every part; this binding only packs it.
+    let mut req = Request::new(scene, accuracy);
+    req.speeds = Some((view.from, view.to));
+    req.points = view.points;
+    req.map_max = view.map_max;
+    req.map_n = view.map_n;
+    req.family = view.family;
+    req.fail = view
+        .fail
+        .iter()
+        .filter(|p| FORCIBLE_IN_CORE.contains(&p.as_str()))
+        .cloned()
+        .collect();
+    let f = compute(&req, &|| false).ok_or("frame: cancelled")?;
+    out.insert("g".into(), pack.f(&f.g));
+    for e in &f.errors {
+        errors.push(&e.part, e.message.clone());
     }
+    let curve = f.curve.as_ref().map(|c| curve_json(&mut pack, c));
+    out.insert("curve".into(), curve.unwrap_or(Json::Null));
+    let clean = f.clean.as_ref().map(|c| curve_json(&mut pack, c));
+    out.insert("clean".into(), clean.unwrap_or(Json::Null));
+    let family = if f.family.is_empty() {
+        Json::Null
+    } else {
+        let s = SWEEPS[f.sweep];
+        let curves: Vec<Json> = f
+            .family
+            .iter()
+            .map(|m| {
+                m.curve
+                    .as_ref()
+                    .map_or(Json::Null, |c| curve_json(&mut pack, c))
+            })
+            .collect();
+        let values: Vec<f64> = f.family.iter().map(|m| m.value).collect();
+        let is_scene: Vec<bool> = f.family.iter().map(|m| m.is_scene).collect();
+        json!({"path": s.path, "sym": s.symbol, "unit": s.unit, "values": values,
+               "isScene": is_scene, "curves": curves})
+    };
+    out.insert("family".into(), family);
+    let critical: Vec<Json> = f
+        .markers
+        .iter()
+        .map(|m| json!({"key": m.key, "label": m.label, "value": m.value}))
+        .collect();
+    out.insert("critical".into(), Json::from(critical));
+    out.insert("warnings".into(), Json::from(f.warnings.clone()));
+    let map = match &f.map {
+        None => Json::Null,
+        Some(part) => {
+            let note = part.auto.and_then(|a| a.note());
+            match &part.map {
+                Some(m) => {
+                    let class: Vec<u8> = m.class.iter().map(|c| class_code(*c)).collect();
+                    json!({"n": view.map_n, "max": part.max, "auto": part.auto.is_some(), "note": note,
+                           "g": pack.f(&m.g), "epsN": pack.f(&m.eps_n), "epsT": pack.f(&m.eps_t),
+                           "class": pack.u(&class)})
+                }
+                None => {
+                    let e = f
+                        .errors
+                        .iter()
+                        .find(|e| e.part == "stick map")
+                        .map_or(String::new(), |e| e.message.clone());
+                    json!({"n": view.map_n, "max": part.max, "auto": part.auto.is_some(), "note": note,
+                           "error": e})
+                }
+            }
+        }
+    };
+    out.insert("map".into(), map);
     out.insert("friction".into(), Json::from(scene.friction.is_some()));
     out.insert(
         "tidal".into(),
@@ -528,6 +321,8 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rime_core::explorer::range::auto_map_range;
+    use rime_core::{Accuracy, Contact};
 
     fn get<'a>(f: &'a Frame, j: &Json) -> &'a [f64] {
         let at = j["at"].as_u64().unwrap() as usize;
@@ -656,11 +451,26 @@ mod tests {
 
     #[test]
     fn family_follows_the_effects() {
-        let s = Scene::default();
-        let (path, _, _, v) = family_spec(&s, Some(1e-4)).unwrap();
-        assert_eq!(path, "bulk.damping.time");
-        assert_eq!(v, vec![1e-5, 3.33e-5, 3e-4, 1e-3]);
-        assert_eq!(family_spec(&frost(), None).unwrap().0, "layer.viscosity");
-        assert!(family_spec(&s, None).is_none());
+        // The core's sweep policy: η* with a layer, γ with adhesion, else A (×0.1, 0.3, 3, 10).
+        let family = |scene: &Scene| -> Json {
+            let text = serde_json::to_string(scene).unwrap();
+            let f = frame(&text, r#"{"points": 10, "mapN": 4}"#).unwrap();
+            serde_json::from_str::<Json>(&f.json).unwrap()["family"].clone()
+        };
+        let f = family(&Scene::default());
+        assert_eq!(f["path"], "bulk.damping.time");
+        let v: Vec<f64> = serde_json::from_value(f["values"].clone()).unwrap();
+        let expected = [1e-5, 3e-5, 3e-4, 1e-3];
+        assert!(
+            v.iter()
+                .zip(expected)
+                .all(|(a, b)| (a / b - 1.0).abs() < 1e-12),
+            "{v:?}"
+        );
+        assert_eq!(family(&frost())["path"], "layer.viscosity");
+        assert_eq!(
+            family(&frost())["isScene"],
+            json!([false, true, false, false])
+        );
     }
 }

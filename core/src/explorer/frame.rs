@@ -218,15 +218,6 @@ impl Request {
                 expected: "a count in [2, 1000]",
             });
         }
-        if let Some(m) = self.map_max
-            && !speed_is_valid(m)
-        {
-            return Err(Error::OutOfRange {
-                field: "map_max",
-                value: m,
-                expected: "a speed in (0, 1e6] m/s",
-            });
-        }
         if self.sweep.is_some_and(|k| k >= SWEEPS.len()) {
             return Err(Error::InvalidValue {
                 field: "sweep",
@@ -606,6 +597,9 @@ pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<Frame> {
         let max = req.map_max.or(auto.map(|a| a.max)).unwrap_or(1.0);
         let map = if req.forced("map") {
             Err(String::from("failure forced for testing"))
+        } else if !speed_is_valid(max) {
+            // A range the models refuse fails the map alone.
+            Err(format!("map_max: {max} m/s is not a speed in (0, 1e6] m/s"))
         } else {
             StickMap::new(&contact, max, req.map_n, req.accuracy).map_err(|e| format!("{e}"))
         };
