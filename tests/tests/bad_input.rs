@@ -312,3 +312,40 @@ fn extreme_valid_values_through_the_cli_never_print_nan() {
         serde_json::from_str::<serde_json::Value>(&text).unwrap();
     }
 }
+
+/// Runs `rime` and gives up after 20 s (a read that never ends must fail the test, not hang it).
+fn rime_within_20_s(args: &[&str]) -> (Option<i32>, String) {
+    let mut child = std::process::Command::new(rime_tests::rime_binary())
+        .args(args)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = std::time::Instant::now();
+    while start.elapsed() < std::time::Duration::from_secs(20) {
+        if child.try_wait().unwrap().is_some() {
+            let out = child.wait_with_output().unwrap();
+            return (out.status.code(), String::from_utf8_lossy(&out.stderr).to_string());
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    child.kill().unwrap();
+    (None, String::from("timed out"))
+}
+
+#[test]
+fn devices_and_fifos_are_refused_before_reading_issue_10() {
+    // `/dev/zero` used to be read without end, growing memory; a FIFO with no writer blocks.
+    let d = std::env::temp_dir().join(format!("rime-fifo-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    let fifo = d.join("scene.json");
+    let _ = std::fs::remove_file(&fifo);
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status().unwrap();
+    assert!(made.success());
+    for path in ["/dev/zero", fifo.to_str().unwrap()] {
+        let (code, err) = rime_within_20_s(&["eps", "--g", "0.01", "--scene", path]);
+        assert_eq!(code, Some(2), "{path}: {err}");
+        assert!(err.contains("--scene") && err.contains("not a regular file"), "{path}: {err}");
+    }
+    let _ = std::fs::remove_dir_all(&d);
+}
