@@ -325,7 +325,10 @@ fn rime_within_20_s(args: &[&str]) -> (Option<i32>, String) {
     while start.elapsed() < std::time::Duration::from_secs(20) {
         if child.try_wait().unwrap().is_some() {
             let out = child.wait_with_output().unwrap();
-            return (out.status.code(), String::from_utf8_lossy(&out.stderr).to_string());
+            return (
+                out.status.code(),
+                String::from_utf8_lossy(&out.stderr).to_string(),
+            );
         }
         std::thread::sleep(std::time::Duration::from_millis(20));
     }
@@ -340,12 +343,18 @@ fn devices_and_fifos_are_refused_before_reading_issue_10() {
     std::fs::create_dir_all(&d).unwrap();
     let fifo = d.join("scene.json");
     let _ = std::fs::remove_file(&fifo);
-    let made = std::process::Command::new("mkfifo").arg(&fifo).status().unwrap();
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap();
     assert!(made.success());
     for path in ["/dev/zero", fifo.to_str().unwrap()] {
         let (code, err) = rime_within_20_s(&["eps", "--g", "0.01", "--scene", path]);
         assert_eq!(code, Some(2), "{path}: {err}");
-        assert!(err.contains("--scene") && err.contains("not a regular file"), "{path}: {err}");
+        assert!(
+            err.contains("--scene") && err.contains("not a regular file"),
+            "{path}: {err}"
+        );
     }
     let _ = std::fs::remove_dir_all(&d);
 }

@@ -111,6 +111,19 @@ pub struct LiteralOutcome {
     pub rhs_evaluations: usize,
 }
 
+impl LiteralOutcome {
+    /// The layer holds the grains: ε = 0, an unresolved (infinite) duration.
+    fn stuck(x_max: f64, rhs_evaluations: usize) -> LiteralOutcome {
+        LiteralOutcome {
+            eps: 0.0,
+            stuck: true,
+            s_c: f64::INFINITY,
+            x_max,
+            rhs_evaluations,
+        }
+    }
+}
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Phase {
     /// `x ≤ d`: only the layer acts (Eq. (8) top).
@@ -273,13 +286,7 @@ fn overdamped_exit(
     };
     let eps = speed - g_s;
     if !(eps > 0.0) {
-        return LiteralOutcome {
-            eps: 0.0,
-            stuck: true,
-            s_c: f64::INFINITY,
-            x_max: x_from,
-            rhs_evaluations,
-        };
+        return LiteralOutcome::stuck(x_from, rhs_evaluations);
     }
     LiteralOutcome {
         eps: eps.min(1.0),
@@ -303,13 +310,7 @@ pub fn literal(
     let g_s = lambda * d * sqrt(d); // Eq. (10) in units of the impact speed
     if g_s >= 1.0 {
         // Eq. (9): the layer stops the grains on the way in at x = λ^(-2/3).
-        return Ok(LiteralOutcome {
-            eps: 0.0,
-            stuck: true,
-            s_c: f64::INFINITY,
-            x_max: powf(lambda, -2.0 / 3.0),
-            rhs_evaluations: 0,
-        });
+        return Ok(LiteralOutcome::stuck(powf(lambda, -2.0 / 3.0), 0));
     }
     // As for the clean contact: in the overdamped regime a loose tolerance lets the step-size
     // controller wander along the stiff, nearly force-free creep (measured: δ = 5e6 at rtol 1e-9
@@ -407,13 +408,7 @@ pub fn literal(
                     // Leaving the bulk through the layer: Eq. (9) integrated once more gives the exit
                     // speed v_d + λ d^(3/2); if that is not negative, the layer holds the grains.
                     if v + g_s >= 0.0 {
-                        return Ok(LiteralOutcome {
-                            eps: 0.0,
-                            stuck: true,
-                            s_c: f64::INFINITY,
-                            x_max,
-                            rhs_evaluations: stepper.rhs_evaluations(),
-                        });
+                        return Ok(LiteralOutcome::stuck(x_max, stepper.rhs_evaluations()));
                     }
                     // Eq. (9) once more: the layer takes exactly λ d^(3/2) off the way out, and
                     // the time to cross it has a closed form too ([`exit_time`]). Integrating that
@@ -445,13 +440,7 @@ pub fn literal(
                                 rhs_evaluations: stepper.rhs_evaluations(),
                             }
                         } else {
-                            LiteralOutcome {
-                                eps: 0.0,
-                                stuck: true,
-                                s_c: f64::INFINITY,
-                                x_max,
-                                rhs_evaluations: stepper.rhs_evaluations(),
-                            }
+                            LiteralOutcome::stuck(x_max, stepper.rhs_evaluations())
                         });
                     } else if end == ContactEnd::ForceZero {
                         sys.phase = Phase::Coast;
@@ -481,25 +470,13 @@ pub fn literal(
                         // separation speed only falls, so the grains reach x = d slower than −v,
                         // which the layer takes off entirely: they stick. Following that creep
                         // would cost stiffness-limited steps over a time of order δ.
-                        return Ok(LiteralOutcome {
-                            eps: 0.0,
-                            stuck: true,
-                            s_c: f64::INFINITY,
-                            x_max,
-                            rhs_evaluations: stepper.rhs_evaluations(),
-                        });
+                        return Ok(LiteralOutcome::stuck(x_max, stepper.rhs_evaluations()));
                     }
                 }
                 CREEP_STICK if sys.creeping => {
                     // The separation speed only falls from here, so the grains reach x = d
                     // slower than the layer's g_s: they stick (see the force-zero case above).
-                    return Ok(LiteralOutcome {
-                        eps: 0.0,
-                        stuck: true,
-                        s_c: f64::INFINITY,
-                        x_max,
-                        rhs_evaluations: stepper.rhs_evaluations(),
-                    });
+                    return Ok(LiteralOutcome::stuck(x_max, stepper.rhs_evaluations()));
                 }
                 EXIT if sys.phase != Phase::Bulk || d == 0.0 => {
                     let y = stepper.exact_state(&sys, t);
