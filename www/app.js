@@ -40,7 +40,9 @@ const FAMILIES = {
   adhesion: { path: 'adhesion.surface_energy', values: [0.05, 0.1, 0.2, 0.5], sym: 'γ', unit: 'J/m²' },
   damping: { path: 'bulk.damping.time', values: null, sym: 'A', unit: 's' },
 };
-const DEFAULT_VIEW = { accuracy: 'fast', from: 1e-7, to: 10, mapMax: null, experiments: true };
+const DEFAULT_VIEW = { accuracy: 'fast', from: 1e-7, to: 10, mapMax: null, experiments: true, overlays: [] };
+// Colours of the overlays (measured laws solid, other models dotted), in the order chosen.
+const OVERLAY_COLORS = ['#0072b2', '#e69f00', '#009e73', '#cc79a7', '#56b4e9', '#d55e00', '#000000'];
 // Drawing styles of the experimental context (values come from wasm: Explorer.experiments()).
 const BRIDGES_STYLE = { color: '#8a8a8a', width: 1.1, dash: [4, 3], label: 'Bridges et al. 1984' };
 const BAND_STYLES = [
@@ -288,6 +290,7 @@ function syncControls() {
   if (!keep('view-from')) $('view-from').value = fmtNum(view.from, 6);
   if (!keep('view-to')) $('view-to').value = fmtNum(view.to, 6);
   $('view-experiments').checked = view.experiments;
+  for (const box of document.querySelectorAll('#overlay-list input')) box.checked = view.overlays.includes(box.value);
   $('chart-sources').hidden = !view.experiments;
   if (!keep('view-mapmax')) $('view-mapmax').value = view.mapMax === null ? '' : fmtNum(view.mapMax, 6);
 }
@@ -309,6 +312,7 @@ function request() {
   const view = {
     accuracy: v.accuracy, from: v.from, to: v.to, points: CURVE_POINTS, mapMax: v.mapMax, mapN: MAP_N,
     tidal: app.tidalIn,
+    overlays: [...v.overlays],
   };
   if (window.rimeTest.fail.length) view.fail = [...window.rimeTest.fail];
   // Test hook: hold the worker this long before it computes (a stand-in for a slow level).
@@ -343,6 +347,7 @@ function decode(msg, req) {
     mapFailed: m && m.error ? m : null,
     mapNote: m ? m.note : null,
     tidal: j.tidal.error ? null : j.tidal,
+    overlays: (j.overlays || []).map((o) => ({ ...o, g: F(o.g), eps: F(o.eps) })),
     errors: j.errors,
   };
 }
@@ -392,6 +397,7 @@ function onFrame(msg, req) {
     mapClasses: res.map ? Array.from(res.map.codes) : null,
     mapNote: res.mapNote,
     overlay: experimentOverlay(),
+    overlays: (res.overlays || []).map((o) => ({ key: o.key, label: o.label, band: o.band, score: o.score, g: Array.from(o.g), eps: Array.from(o.eps), speeds: o.speeds })),
     tidal: res.tidal,
     frameErrors: res.errors,
     computeMs: [...app.timings],
@@ -463,6 +469,19 @@ function chartSpec(res, hover) {
       label: `${res.family.sym} = ${fmtNum(v, 3)} ${res.family.unit}`,
     }));
   }
+  // Overlays beneath the scene's own curves: measured ranges as boxes, laws over their measured
+  // speeds only, other models dotted over the whole view.
+  const overlayBands = [];
+  const overlayMarkers = [];
+  (res.overlays || []).forEach((o, k) => {
+    const color = OVERLAY_COLORS[k % OVERLAY_COLORS.length];
+    if (o.band) {
+      overlayBands.push({ x: [o.g[0], o.g[1]], y: [o.eps[0], o.eps[1]], fill: `${color}22`, stroke: color, label: o.label, short: o.key.split(':')[1] });
+    } else {
+      series.push({ x: o.g, y: o.eps, color, width: 1.6, dash: o.key.startsWith('model:') ? [2, 3] : undefined, label: o.key.startsWith('model:') ? o.key.slice(6) : o.label });
+    }
+    for (const s of o.speeds) overlayMarkers.push({ x: s.value, label: `${o.key.slice(6)} ${s.name}: ${fmtSpeed(s.value)}`, short: `${s.name} ${fmtSpeed(s.value)}` });
+  });
   if (res.clean) series.push({ x: res.g, y: res.clean, color: '#555', width: 1.4, dash: [6, 4], label: 'clean surface' });
   if (res.eps) series.push({ x: res.g, y: res.eps, color: '#111', width: 2.4, label: res.gaps ? 'this scene (gaps: failed)' : 'this scene' });
   let minPos = 1;
@@ -477,9 +496,10 @@ function chartSpec(res, hover) {
     if (markers.some((m) => Math.abs(m.x / c.value - 1) < 0.01)) continue;
     markers.push({ x: c.value, label: `${c.label}: ${fmtSpeed(c.value)}`, short: `${c.key === 'stick' ? 'stick' : 'g_s'} ${fmtSpeed(c.value)}` });
   }
+  for (const m of overlayMarkers) if (m.x > app.drawn.view.from && m.x < app.drawn.view.to) markers.push(m);
   return {
     xMin: app.drawn.view.from, xMax: app.drawn.view.to, yMin: yMin2, yMax: 10 ** Math.ceil(Math.log10(maxY) - 1e-12) || 1,
-    xLabel: 'impact speed g_N [m/s]', yLabel: 'ε_N', series, markers, hover, bands: overlay ? overlay.bands : [],
+    xLabel: 'impact speed g_N [m/s]', yLabel: 'ε_N', series, markers, hover, bands: [...(overlay ? overlay.bands : []), ...overlayBands],
   };
 }
 
@@ -574,7 +594,31 @@ function drawLegend(res) {
   res.classCounts = counts;
 }
 
+/** One checkbox per measured law, measured range and other model (the core's list). */
+function buildOverlayChoices() {
+  const kinds = { law: 'measured law', range: 'measured range', model: 'model' };
+  $('overlay-list').replaceChildren(...app.overlayChoices.map((c) => {
+    const box = el('input', { type: 'checkbox', value: c.key });
+    box.addEventListener('change', () => {
+      const chosen = [...document.querySelectorAll('#overlay-list input')].filter((b) => b.checked).map((b) => b.value);
+      app.view.overlays = chosen;
+      schedule();
+    });
+    const where = c.valid ? ` · ${fmtSpeed(c.valid[0])}–${fmtSpeed(c.valid[1])}, ${c.temperature[0] === c.temperature[1] ? c.temperature[0] : `${c.temperature[0]}–${c.temperature[1]}`} K, ${c.geometry}` : '';
+    return el('label', { class: 'overlay-choice', title: c.label }, box, ` ${c.key.split(':')[1]} (${kinds[c.kind] || c.kind}${where})`);
+  }));
+}
+
+/** The score of the scene against each measured overlay, and what failed among them. */
+function showOverlayScores(res) {
+  const items = (res.overlays || []).filter((o) => o.score !== null && o.score !== undefined)
+    .map((o) => el('li', {}, `rms ε_N difference against ${o.label}: ${fmtNum(o.score, 3)}`));
+  for (const e of res.errors) if (/^(atlas|model):/.test(e.part)) items.push(el('li', { class: 'err' }, `${e.part}: ${e.message}`));
+  $('overlay-scores').replaceChildren(...items);
+}
+
 function showWarnings(res) {
+  showOverlayScores(res);
   const items = res.warnings.map((w) => el('li', {}, w));
   const gap = app.classes.findIndex((c) => c.name === 'sliding_gap');
   if (res.map && gap >= 0 && res.classCounts && res.classCounts[gap] > 0) {
@@ -773,6 +817,13 @@ function readView(obj) {
   if (obj.experiments !== undefined) {
     if (typeof obj.experiments !== 'boolean') throw new Error('view.experiments: true or false');
     v.experiments = obj.experiments;
+  }
+  if (obj.overlays !== undefined) {
+    const known = new Set((app.overlayChoices || []).map((c) => c.key));
+    if (!Array.isArray(obj.overlays) || obj.overlays.some((o) => !known.has(o))) {
+      throw new Error('view.overlays: a list of atlas:ID or model:NAME among the offered ones');
+    }
+    v.overlays = [...obj.overlays];
   }
   return v;
 }
@@ -999,6 +1050,8 @@ async function main() {
   $('preset').replaceChildren(el('option', { value: '' }, '— choose —'),
     ...presets.map((p) => el('option', { value: p.name, title: p.description }, p.name)));
   app.experiments = JSON.parse(Explorer.experiments());
+  app.overlayChoices = JSON.parse(Explorer.overlays());
+  buildOverlayChoices();
   buildControls();
   buildTidal();
   wireView();

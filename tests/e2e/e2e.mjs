@@ -462,6 +462,32 @@ try {
     return `typed value shown after ${dt} ms while the worker computed; ${s.workerRestarts} worker restart(s)`;
   });
 
+  await check('overlays: a measured law drawn only over its measured speeds with its score, another model with its g_cr (issues 15, 16)', async () => {
+    await pf.selectOption('#preset', 'ice-sticky');
+    await pf.waitForFunction(() => JSON.parse(window.rimeState.sceneJson).adhesion !== null, null, { timeout: 10000 });
+    await pf.selectOption('#accuracy', 'fast');
+    await pf.locator('#overlay-box summary').click();
+    await pf.locator('#overlay-list input[value="atlas:bridges1984"]').check();
+    await pf.locator('#overlay-list input[value="model:brilliantov2007"]').check();
+    await pf.waitForFunction(() => (window.rimeState.overlays || []).length === 2, null, { timeout: 60000 });
+    const s = await pf.evaluate(() => window.rimeState);
+    const law = s.overlays.find((o) => o.key === 'atlas:bridges1984');
+    const model = s.overlays.find((o) => o.key === 'model:brilliantov2007');
+    // The law's speeds stay inside its measured range, which the atlas gives.
+    const lo = Math.min(...law.g), hi = Math.max(...law.g);
+    assert(lo > 1e-6 && hi < 1 && law.g.length > 10, `law drawn over ${lo}…${hi}`);
+    assert(Number.isFinite(law.score) && law.score >= 0, `score ${law.score}`);
+    assert(model.g.length === s.eps.length && model.speeds.some((x) => x.name === 'g_cr'), `model: ${JSON.stringify(model.speeds)}`);
+    const scores = await pf.locator('#overlay-scores').innerText();
+    assert(/rms ε_N difference against/.test(scores), `scores: "${scores}"`);
+    // The choice is kept in the link.
+    await pf.waitForFunction(() => decodeURIComponent(location.hash).includes('atlas:bridges1984'), null, { timeout: 5000 });
+    await pf.locator('#overlay-list input[value="model:brilliantov2007"]').uncheck();
+    await pf.locator('#overlay-list input[value="atlas:bridges1984"]').uncheck();
+    await pf.waitForFunction(() => (window.rimeState.overlays || []).length === 0, null, { timeout: 20000 });
+    return `law over ${lo.toExponential(2)}…${hi.toExponential(2)} m/s, score ${law.score.toFixed(4)}; brilliantov2007 g_cr ${model.speeds.find((x) => x.name === 'g_cr').value.toExponential(3)} m/s`;
+  });
+
   await check('calls across the wasm boundary per update (one frame call)', async () => {
     const s = await pf.evaluate(() => window.rimeState);
     const last = s.callsPerUpdate.slice(-5);

@@ -105,6 +105,11 @@ impl Explorer {
         explorer::parameters_json()
     }
 
+    /// What can be drawn over the ε_N chart (measured ice, other models) as JSON.
+    pub fn overlays() -> String {
+        explorer::overlays_json()
+    }
+
     /// The presets as JSON text (`[{name, description}]`).
     pub fn presets() -> String {
         explorer::presets_json()

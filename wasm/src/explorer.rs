@@ -313,6 +313,30 @@ pub fn presets_json() -> String {
     Json::from(list).to_string()
 }
 
+/// What can be drawn over the ε_N chart, as JSON: a list of `{key, label, kind, valid, temperature,
+/// geometry}` (measured laws and ranges of the atlas, then the other models).
+pub fn overlays_json() -> String {
+    use rime_core::atlas::{ENTRIES, Kind as EntryKind};
+    use rime_core::models::Model;
+    let mut list: Vec<Json> = ENTRIES
+        .iter()
+        .filter(|e| e.kind != EntryKind::Threshold)
+        .map(|e| {
+            json!({"key": format!("atlas:{}", e.id),
+                   "label": format!("{} {}: {}", e.citation.authors, e.citation.year, e.material),
+                   "kind": e.kind.name(), "valid": e.valid_speed, "temperature": e.temperature,
+                   "geometry": e.geometry.name()})
+        })
+        .collect();
+    list.extend(
+        Model::ALL
+            .iter()
+            .filter(|m| **m != Model::Hertzsch2002)
+            .map(|m| json!({"key": format!("model:{}", m.name()), "label": m.citation(), "kind": "model"})),
+    );
+    Json::from(list).to_string()
+}
+
 /// The stick classes in code order as JSON: a list of `{name, letter, description}`.
 pub fn classes_json() -> String {
     let list: Vec<Json> = StickClass::ALL

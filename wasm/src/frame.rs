@@ -9,7 +9,7 @@
 use crate::explorer::{
     MAX_MAP_SIDE, STATUSES, class_code, parse_accuracy, parse_scene, speeds, status_code,
 };
-use rime_core::explorer::frame::{Curve, Request, SWEEPS, compute};
+use rime_core::explorer::frame::{Curve, Overlay, Request, SWEEPS, compute};
 use rime_core::params::{PARAMETERS, Value};
 use rime_core::tidal::{PAPER_QUOTED, TidalInput, tidal};
 use rime_core::{Scene, Status};
@@ -69,6 +69,9 @@ pub struct View {
     /// Parts to fail on purpose, for testing the page's failure handling (see [`FORCIBLE`]).
     #[serde(default)]
     pub fail: Vec<String>,
+    /// Measured laws (`atlas:ID`) and other models (`model:NAME`) drawn over the chart.
+    #[serde(default)]
+    pub overlays: Vec<String>,
 }
 
 /// The parts a view can fail on purpose (`curve` fails every 40th speed, a gap; the others whole).
@@ -93,6 +96,7 @@ impl Default for View {
             family: true,
             tidal: None,
             fail: Vec::new(),
+            overlays: Vec::new(),
         }
     }
 }
@@ -232,6 +236,11 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
         .filter(|p| FORCIBLE_IN_CORE.contains(&p.as_str()))
         .cloned()
         .collect();
+    req.overlays = view
+        .overlays
+        .iter()
+        .map(|o| Overlay::parse(o).map_err(|e| format!("view.{e} (got {o:?})")))
+        .collect::<Result<_, _>>()?;
     let f = compute(&req, &|| false).ok_or("frame: cancelled")?;
     out.insert("g".into(), pack.f(&f.g));
     for e in &f.errors {
@@ -291,6 +300,20 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
         }
     };
     out.insert("map".into(), map);
+    let overlays: Vec<Json> = f
+        .overlays
+        .iter()
+        .map(|o| {
+            let speeds: Vec<Json> = o
+                .speeds
+                .iter()
+                .map(|(name, value)| json!({"name": name, "value": value}))
+                .collect();
+            json!({"key": o.overlay.key(), "label": o.label, "band": o.band, "score": o.score,
+                   "g": pack.f(&o.g), "eps": pack.f(&o.eps), "speeds": speeds})
+        })
+        .collect();
+    out.insert("overlays".into(), Json::from(overlays));
     out.insert("friction".into(), Json::from(scene.friction.is_some()));
     out.insert(
         "tidal".into(),
@@ -447,6 +470,23 @@ mod tests {
                 .unwrap_err()
                 .starts_with("view.fail")
         );
+    }
+
+    #[test]
+    fn overlays_are_packed_and_bad_ones_name_the_field() {
+        let text = serde_json::to_string(&Scene::default()).unwrap();
+        let f = frame(
+            &text,
+            r#"{"points": 20, "mapN": 4, "overlays": ["atlas:bridges1984", "model:muller_poschel2011"]}"#,
+        )
+        .unwrap();
+        let j: Json = serde_json::from_str(&f.json).unwrap();
+        let o = &j["overlays"];
+        assert_eq!(o[0]["key"], "atlas:bridges1984");
+        assert!(o[0]["score"].as_f64().unwrap() >= 0.0);
+        assert_eq!(get(&f, &o[1]["g"]), get(&f, &j["g"]));
+        let e = frame(&text, r#"{"overlays": ["atlas:nope"]}"#).unwrap_err();
+        assert!(e.starts_with("view.overlays") && e.contains("nope"), "{e}");
     }
 
     #[test]

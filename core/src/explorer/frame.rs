@@ -142,6 +142,61 @@ impl Sweep {
     }
 }
 
+/// Something drawn over the ε_N chart beside the scene's own model.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Overlay {
+    /// A measured law or range of the data atlas ([`crate::atlas`]), drawn only over its measured
+    /// speeds; `radius` for entries that need one (the scene's reduced radius when `None`).
+    Atlas(&'static crate::atlas::Entry),
+    /// Another collision model on the same scene ([`crate::models`]), with its characteristic speeds.
+    Model(crate::models::Model),
+}
+
+impl Overlay {
+    /// Parses `atlas:ID` or `model:NAME` (the form surfaces store in links and flags).
+    pub fn parse(text: &str) -> crate::Result<Overlay> {
+        let bad = Error::InvalidValue {
+            field: "overlays",
+            expected: "atlas:ID (see rime data) or model:NAME (see rime compare --list)",
+        };
+        match text.split_once(':') {
+            Some(("atlas", id)) => crate::atlas::find(id).map(Overlay::Atlas).ok_or(bad),
+            Some(("model", name)) => crate::models::Model::from_name(name)
+                .map(Overlay::Model)
+                .ok_or(bad),
+            _ => Err(bad),
+        }
+    }
+
+    /// `atlas:ID` or `model:NAME`.
+    pub fn key(&self) -> String {
+        match self {
+            Overlay::Atlas(e) => format!("atlas:{}", e.id),
+            Overlay::Model(m) => format!("model:{}", m.name()),
+        }
+    }
+}
+
+/// An overlay as drawn.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OverlayCurve {
+    /// The overlay.
+    pub overlay: Overlay,
+    /// Legend text (source, temperature and geometry for measured data).
+    pub label: String,
+    /// Speeds \[m/s\]: the frame's speeds for a model; the measured speeds for a law (never
+    /// beyond them); the two ends of the measured speeds for a range.
+    pub g: Vec<f64>,
+    /// ε_N at `g` (NaN where the model failed); for a range, the band's low and high ε.
+    pub eps: Vec<f64>,
+    /// Whether `eps` is a band (a measured range) rather than a curve.
+    pub band: bool,
+    /// rms of ε_scene − ε_entry over the entry's measured speeds (atlas laws and ranges).
+    pub score: Option<f64>,
+    /// The model's characteristic speeds (`g_cr`, `v_yield`, …) \[m/s\].
+    pub speeds: Vec<(&'static str, f64)>,
+}
+
 /// Parts of a frame that a request can make fail on purpose (to test how a surface shows failures).
 pub const FORCIBLE: [&str; 4] = ["curve", "family", "marker", "map"];
 
@@ -166,6 +221,8 @@ pub struct Request {
     pub map_n: usize,
     /// Parts to fail on purpose (see [`FORCIBLE`]).
     pub fail: Vec<String>,
+    /// Measured laws and other models to draw over the chart.
+    pub overlays: Vec<Overlay>,
 }
 
 impl Request {
@@ -181,6 +238,7 @@ impl Request {
             map_max: None,
             map_n: 81,
             fail: Vec::new(),
+            overlays: Vec::new(),
         }
     }
 
@@ -325,6 +383,8 @@ pub struct Frame {
     pub map: Option<MapPart>,
     /// Warnings about the scene (options that deviate from the paper, overdamped ranges).
     pub warnings: Vec<String>,
+    /// The requested overlays that could be computed (the others are named in `errors`).
+    pub overlays: Vec<OverlayCurve>,
     /// Parts that failed.
     pub errors: Vec<PartError>,
 }
@@ -457,6 +517,97 @@ pub fn warnings(scene: &Scene, curve: Option<&Curve>, damping_time: Option<f64>)
     w
 }
 
+/// Points on an atlas law's measured speeds.
+const OVERLAY_LAW_POINTS: usize = 64;
+
+/// One overlay on the frame's speeds `g` (see [`OverlayCurve`]).
+pub fn overlay_curve(
+    overlay: Overlay,
+    scene: &Scene,
+    contact: &Contact,
+    g: &[f64],
+    accuracy: Accuracy,
+) -> crate::Result<OverlayCurve> {
+    use crate::atlas::Kind;
+    match overlay {
+        Overlay::Atlas(entry) => {
+            let [lo, hi] = entry.valid_speed;
+            let t = entry.temperature;
+            let temperature = if t[0] == t[1] {
+                format!("{} K", t[0])
+            } else {
+                format!("{}–{} K", t[0], t[1])
+            };
+            let label = format!(
+                "{} {} ({temperature}, {}, measured {lo:.2e}–{hi:.2e} m/s)",
+                entry.citation.authors,
+                entry.citation.year,
+                entry.geometry.name()
+            );
+            // An entry that needs a radius takes the scene's reduced radius.
+            let radius = entry.needs_radius().then_some(contact.r_eff);
+            match entry.kind {
+                Kind::Threshold => Err(Error::InvalidValue {
+                    field: "overlays",
+                    expected: "a law or a range (a threshold is not a curve)",
+                }),
+                Kind::Range => {
+                    let band = entry.band().ok_or(Error::InvalidValue {
+                        field: "overlays",
+                        expected: "a range entry with an ε band",
+                    })?;
+                    Ok(OverlayCurve {
+                        overlay,
+                        label,
+                        g: alloc::vec![lo, hi],
+                        eps: band.to_vec(),
+                        band: true,
+                        score: Some(crate::atlas::score(contact, accuracy, entry, radius)?),
+                        speeds: Vec::new(),
+                    })
+                }
+                Kind::Law => {
+                    let mut gs = alloc::vec![0.0; OVERLAY_LAW_POINTS];
+                    log_space(lo, hi, &mut gs);
+                    let mut eps = Vec::with_capacity(gs.len());
+                    for &gi in &gs {
+                        eps.push(entry.eval(gi, radius)?.eps);
+                    }
+                    Ok(OverlayCurve {
+                        overlay,
+                        label,
+                        g: gs,
+                        eps,
+                        band: false,
+                        score: Some(crate::atlas::score(contact, accuracy, entry, radius)?),
+                        speeds: Vec::new(),
+                    })
+                }
+            }
+        }
+        Overlay::Model(model) => {
+            let evaluator = crate::models::Evaluator::new(model, scene)?;
+            let eps = g
+                .iter()
+                .map(|&gi| evaluator.eps(gi, accuracy).map_or(f64::NAN, |r| r.eps))
+                .collect();
+            let speeds = evaluator
+                .characteristic_speeds(accuracy)
+                .map(|s| s.iter().map(|c| (c.name, c.value)).collect())
+                .unwrap_or_default();
+            Ok(OverlayCurve {
+                overlay,
+                label: String::from(model.citation()),
+                g: g.to_vec(),
+                eps,
+                band: false,
+                score: None,
+                speeds,
+            })
+        }
+    }
+}
+
 /// Computes a frame. Returns `None` as soon as `cancelled()` says a newer request is waiting.
 /// A request that is not valid (see [`Request::validate`]) is reported as a `request` part error.
 pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<Frame> {
@@ -474,6 +625,7 @@ pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<Frame> {
         markers: Vec::new(),
         map: None,
         warnings: Vec::new(),
+        overlays: Vec::new(),
         errors: Vec::new(),
     };
     if let Err(e) = req.validate() {
@@ -588,6 +740,15 @@ pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<Frame> {
         Err(e) => frame.errors.push(part_error("marker \"sticks below\"", e)),
     }
     frame.warnings = warnings(&scene, frame.curve.as_ref(), Some(contact.damping_time));
+    for overlay in &req.overlays {
+        if cancelled() {
+            return None;
+        }
+        match overlay_curve(*overlay, &scene, &contact, &frame.g, req.accuracy) {
+            Ok(o) => frame.overlays.push(o),
+            Err(e) => frame.errors.push(part_error(overlay.key(), format!("{e}"))),
+        }
+    }
 
     if contact.friction.is_some() {
         if cancelled() {
@@ -656,6 +817,36 @@ mod tests {
         .unwrap()
         .eps;
         assert!((eps_v * t / g_s - 1.0).abs() < 1e-9, "{t} {g_s} {eps_v}");
+    }
+
+    #[test]
+    fn overlays_are_drawn_over_their_measured_speeds_only() {
+        let mut req = Request::new(Preset::Ice.scene(), Accuracy::Fast);
+        req.points = 41;
+        req.map_n = 5;
+        req.overlays = alloc::vec![
+            Overlay::parse("atlas:bridges1984").unwrap(),
+            Overlay::parse("model:thornton1997").unwrap(),
+            Overlay::parse("model:muller_poschel2011").unwrap(),
+        ];
+        let f = compute(&req, &|| false).unwrap();
+        // thornton1997 needs a plasticity section the preset lacks: that overlay alone fails.
+        assert_eq!(f.overlays.len(), 2, "{:?}", f.errors);
+        assert!(f.errors.iter().any(|e| e.part == "model:thornton1997"));
+        let law = &f.overlays[0];
+        let entry = crate::atlas::find("bridges1984").unwrap();
+        assert_eq!(law.g.first(), Some(&entry.valid_speed[0]));
+        assert_eq!(law.g.last(), Some(&entry.valid_speed[1]));
+        for (g, e) in law.g.iter().zip(&law.eps) {
+            assert_eq!(*e, entry.eval(*g, None).unwrap().eps);
+        }
+        let c = Contact::new(&req.scene).unwrap();
+        assert_eq!(
+            law.score,
+            Some(crate::atlas::score(&c, Accuracy::Fast, entry, None).unwrap())
+        );
+        assert_eq!(f.overlays[1].g, f.g);
+        assert!(Overlay::parse("atlas:nope").is_err() && Overlay::parse("bridges1984").is_err());
     }
 
     #[test]
