@@ -2,7 +2,8 @@
 //! from the files that `x` and `w` write).
 
 use super::compute::{CURVE_POINTS, FrameData, MAP_POINTS, Request, SWEEPS, Sweep};
-use super::export;
+use super::frame_export;
+use super::keymap::{self, Action};
 use crate::scene_io;
 use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseEvent, MouseEventKind};
 use rime_core::params::{Kind, PARAMETERS, Value};
@@ -398,7 +399,7 @@ impl App {
             self.info("still computing — press x again in a moment");
             return;
         };
-        match export::export(&self.out_dir, data) {
+        match frame_export::export(&self.out_dir, data) {
             Ok(dir) => self.info(format!(
                 "exported scene.json, CSV tables, SVG + PNG figures to {}/",
                 dir.display()
@@ -429,32 +430,35 @@ impl App {
             self.handle_open_key(key);
             return;
         }
-        let shift = key.modifiers.contains(KeyModifiers::SHIFT);
-        if key.modifiers.contains(KeyModifiers::CONTROL) {
-            if key.code == KeyCode::Char('c') {
-                self.quit = true;
-            }
-            return;
-        }
-        if self.help {
+        let action = keymap::action(key);
+        if self.help && !key.modifiers.contains(KeyModifiers::CONTROL) {
             // Any key closes the help; q still quits.
             self.help = false;
-            if matches!(key.code, KeyCode::Char('q')) {
+            if action == Some(Action::Quit) {
                 self.quit = true;
             }
             return;
         }
+        let Some(action) = action else {
+            return;
+        };
+        let shift = key.modifiers.contains(KeyModifiers::SHIFT);
+        self.perform(action, shift);
+    }
+
+    /// Does what the keymap says `action` does, on the focused pane.
+    fn perform(&mut self, action: Action, shift: bool) {
         let n = PARAMETERS.len();
         let map_step = (MAP_POINTS / 20).max(1) as i64;
         let map_step = if shift { 1 } else { map_step };
-        match (key.code, self.focus) {
-            (KeyCode::Esc, _) if self.tidal => {
+        match (action, self.focus) {
+            (Action::Back, _) if self.tidal => {
                 self.tidal = false;
                 self.info("tidal appendix closed (Esc again quits)");
             }
-            (KeyCode::Char('q') | KeyCode::Esc, _) => self.quit = true,
-            (KeyCode::Char('?'), _) => self.help = true,
-            (KeyCode::Tab, _) => {
+            (Action::Quit | Action::Back, _) => self.quit = true,
+            (Action::Help, _) => self.help = true,
+            (Action::FocusNext, _) => {
                 self.focus = match self.focus {
                     Focus::Panel => Focus::Chart,
                     Focus::Chart => Focus::Map,
@@ -466,54 +470,48 @@ impl App {
                     Focus::Map => "focus: stick map (arrows move the map cursor)",
                 });
             }
-            (KeyCode::BackTab, _) => {
+            (Action::FocusPrev, _) => {
                 self.focus = match self.focus {
                     Focus::Panel => Focus::Map,
                     Focus::Chart => Focus::Panel,
                     Focus::Map => Focus::Chart,
                 };
             }
-            (KeyCode::Up | KeyCode::Char('k'), Focus::Panel) => {
-                self.selected = (self.selected + n - 1) % n;
-            }
-            (KeyCode::Down | KeyCode::Char('j'), Focus::Panel) => {
-                self.selected = (self.selected + 1) % n;
-            }
-            (KeyCode::Right | KeyCode::Char('l'), Focus::Panel) => self.step(1.0, shift),
-            (KeyCode::Left | KeyCode::Char('h'), Focus::Panel) => self.step(-1.0, shift),
-            (KeyCode::Char('L'), Focus::Panel) => self.step(1.0, true),
-            (KeyCode::Char('H'), Focus::Panel) => self.step(-1.0, true),
-            (KeyCode::Right | KeyCode::Char('l'), Focus::Chart) => {
-                self.move_cursor(if shift { 1 } else { 5 })
-            }
-            (KeyCode::Left | KeyCode::Char('h'), Focus::Chart) => {
-                self.move_cursor(if shift { -1 } else { -5 })
-            }
-            (KeyCode::Char('L'), Focus::Chart) => self.move_cursor(1),
-            (KeyCode::Char('H'), Focus::Chart) => self.move_cursor(-1),
-            (KeyCode::Up | KeyCode::Char('k'), Focus::Map) => self.move_map(map_step, 0),
-            (KeyCode::Down | KeyCode::Char('j'), Focus::Map) => self.move_map(-map_step, 0),
-            (KeyCode::Right | KeyCode::Char('l'), Focus::Map) => self.move_map(0, map_step),
-            (KeyCode::Left | KeyCode::Char('h'), Focus::Map) => self.move_map(0, -map_step),
-            (KeyCode::Up | KeyCode::Down | KeyCode::Char('k' | 'j'), Focus::Chart) => {
+            (Action::Up, Focus::Panel) => self.selected = (self.selected + n - 1) % n,
+            (Action::Down, Focus::Panel) => self.selected = (self.selected + 1) % n,
+            (Action::Right, Focus::Panel) => self.step(1.0, shift),
+            (Action::Left, Focus::Panel) => self.step(-1.0, shift),
+            (Action::FineRight, Focus::Panel) => self.step(1.0, true),
+            (Action::FineLeft, Focus::Panel) => self.step(-1.0, true),
+            (Action::Right, Focus::Chart) => self.move_cursor(5),
+            (Action::Left, Focus::Chart) => self.move_cursor(-5),
+            (Action::FineRight, Focus::Chart) => self.move_cursor(1),
+            (Action::FineLeft, Focus::Chart) => self.move_cursor(-1),
+            (Action::Up, Focus::Map) => self.move_map(map_step, 0),
+            (Action::Down, Focus::Map) => self.move_map(-map_step, 0),
+            (Action::Right, Focus::Map) => self.move_map(0, map_step),
+            (Action::Left, Focus::Map) => self.move_map(0, -map_step),
+            (Action::FineRight, Focus::Map) => self.move_map(0, 1),
+            (Action::FineLeft, Focus::Map) => self.move_map(0, -1),
+            (Action::Up | Action::Down, Focus::Chart) => {
                 self.focus = Focus::Panel;
-                self.handle_key(key);
+                self.perform(action, shift);
             }
-            (KeyCode::Enter | KeyCode::Char(' '), _) => {
+            (Action::Activate, _) => {
                 self.focus = Focus::Panel;
                 self.activate();
             }
-            (KeyCode::Char('e'), _) => {
+            (Action::Edit, _) => {
                 self.focus = Focus::Panel;
                 self.start_input();
             }
-            (KeyCode::Char('p'), _) => self.cycle_preset(),
-            (KeyCode::Char('a'), _) => {
+            (Action::Preset, _) => self.cycle_preset(),
+            (Action::Accuracy, _) => {
                 self.accuracy = self.accuracy.next();
                 self.info(format!("accuracy: {}", self.accuracy.name()));
                 self.request();
             }
-            (KeyCode::Char('s'), _) => {
+            (Action::Sweep, _) => {
                 let k = SWEEPS.len();
                 for d in 1..=k {
                     let i = (self.sweep + d) % k;
@@ -526,14 +524,14 @@ impl App {
                 self.info(format!("family of curves: {} ({})", s.symbol, s.path));
                 self.request();
             }
-            (KeyCode::Char(']'), _) => self.move_cursor(1),
-            (KeyCode::Char('['), _) => self.move_cursor(-1),
-            (KeyCode::Char('}'), _) => self.move_cursor(10),
-            (KeyCode::Char('{'), _) => self.move_cursor(-10),
-            (KeyCode::Char('+' | '='), _) | (KeyCode::Char('-'), _) => {
+            (Action::Cursor(d), _) => self.move_cursor(i64::from(d)),
+            (Action::MapWider | Action::MapNarrower, _) => {
                 let shown = self.data.as_ref().map_or(1.0, |d| d.map_max);
-                let zoom_out = key.code != KeyCode::Char('-');
-                let next = if zoom_out { shown * 2.0 } else { shown / 2.0 };
+                let next = if action == Action::MapWider {
+                    shown * 2.0
+                } else {
+                    shown / 2.0
+                };
                 self.map_max = Some(next.clamp(1e-9, 1e6));
                 self.info(format!(
                     "stick map range 0 … {}",
@@ -541,12 +539,12 @@ impl App {
                 ));
                 self.request();
             }
-            (KeyCode::Char('0'), _) => {
+            (Action::MapAuto, _) => {
                 self.map_max = None;
                 self.info("stick map range: automatic");
                 self.request();
             }
-            (KeyCode::Char('b'), _) => {
+            (Action::Experiments, _) => {
                 self.experiments = !self.experiments;
                 self.info(if self.experiments {
                     "experiments shown on the ε_N chart: Bridges et al. 1984, Heißelmann et al. 2010, Hill et al. 2015"
@@ -554,7 +552,7 @@ impl App {
                     "experiments hidden (b shows them)"
                 });
             }
-            (KeyCode::Char('t'), _) => {
+            (Action::Tidal, _) => {
                 self.tidal = !self.tidal;
                 self.info(if self.tidal {
                     "tidal appendix for this scene's grains · < > planet distance · t closes"
@@ -562,31 +560,31 @@ impl App {
                     "tidal appendix closed"
                 });
             }
-            (KeyCode::Char('<'), _) if self.tidal => {
-                self.tidal_factor = (self.tidal_factor / TIDAL_STEP).clamp(1e-3, 1e3);
+            (Action::TidalNearer | Action::TidalFarther, _) if self.tidal => {
+                let f = if action == Action::TidalFarther {
+                    TIDAL_STEP
+                } else {
+                    1.0 / TIDAL_STEP
+                };
+                self.tidal_factor = (self.tidal_factor * f).clamp(1e-3, 1e3);
                 self.info(format!(
                     "tidal: planet distance ×{} of the paper's",
                     super::format::sig(self.tidal_factor, 4)
                 ));
             }
-            (KeyCode::Char('>'), _) if self.tidal => {
-                self.tidal_factor = (self.tidal_factor * TIDAL_STEP).clamp(1e-3, 1e3);
-                self.info(format!(
-                    "tidal: planet distance ×{} of the paper's",
-                    super::format::sig(self.tidal_factor, 4)
-                ));
+            (Action::TidalNearer | Action::TidalFarther, _) => {
+                self.info("< > change the tidal appendix's planet distance: press t first");
             }
-            (KeyCode::Char('o'), _) => {
+            (Action::Open, _) => {
                 self.open = Some(SCENE_FILE.to_string());
             }
-            (KeyCode::Char('x'), _) => self.export(),
-            (KeyCode::Char('w'), _) => self.save(),
-            _ => {}
+            (Action::Export, _) => self.export(),
+            (Action::Save, _) => self.save(),
         }
     }
 
     fn handle_mouse(&mut self, m: MouseEvent) {
-        let layout = super::render::layout(self.size.0, self.size.1);
+        let layout = super::layout::layout(self.size.0, self.size.1);
         let Some(layout) = layout else { return };
         let inside = |r: ratatui::layout::Rect| {
             m.column >= r.x && m.column < r.x + r.width && m.row >= r.y && m.row < r.y + r.height

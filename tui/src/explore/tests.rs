@@ -2,7 +2,7 @@
 
 use super::app::{App, Event, Focus, Tone, update};
 use super::compute::{SWEEPS, compute};
-use super::render::render;
+use super::view::render;
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
@@ -343,12 +343,12 @@ fn paper_inconsistent_options_are_flagged() {
     app.scene
         .set("friction.sliding_law", "walton")
         .expect("set");
-    let opts = super::render::paper_options(&app);
+    let opts = super::view::lines::paper_options(&app.scene);
     assert_eq!(opts, vec!["layer.reading=literal"]);
     app.scene
         .set("adhesion.modulus", "consistent")
         .expect("set");
-    assert_eq!(super::render::paper_options(&app).len(), 1);
+    assert_eq!(super::view::lines::paper_options(&app.scene).len(), 1);
 }
 
 #[test]
@@ -383,7 +383,7 @@ fn tidal_panel_snapshot() {
     // The scene's adhesion supplies γ.
     update(&mut app, ch('<'));
     app.scene = Preset::IceSticky.scene();
-    let view = super::tidal::view(&app);
+    let view = super::tidal::view(&app.scene, app.tidal_factor);
     assert!(!view.gamma_from_paper);
     assert_eq!(
         view.input.surface_energy,
@@ -519,4 +519,55 @@ fn help_names_new_keys_and_sources() {
     // Still whole at 80×24.
     let s = text(&screen(&app, 80, 24));
     assert!(s.contains("any key closes") && s.contains("Hill"), "{s}");
+}
+
+#[test]
+fn readme_key_list_is_the_keymap_table() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../README.md"))
+        .expect("README.md");
+    let start = readme
+        .find("<!-- keys: generated from tui/src/explore/keymap.rs -->\n")
+        .expect("README key list start marker");
+    let rest = &readme[start..];
+    let body_start = rest.find('\n').expect("marker line") + 1;
+    let end = rest
+        .find("<!-- /keys -->")
+        .expect("README key list end marker");
+    assert_eq!(
+        &rest[body_start..end],
+        super::keymap::readme_list(),
+        "README.md's key list differs from tui/src/explore/keymap.rs: paste readme_list()"
+    );
+}
+
+#[test]
+fn every_key_in_the_keymap_is_handled() {
+    use super::keymap::{KEYMAP, Key};
+    let dir = tmp_dir("keymap");
+    let mut seen = Vec::new();
+    for row in KEYMAP {
+        for (k, action) in row.bindings {
+            assert!(!seen.contains(k), "{k:?} bound twice");
+            seen.push(*k);
+            assert_eq!(super::keymap::action(k.event()), Some(*action), "{k:?}");
+            // Every key changes something visible in some pane (the tidal keys with the panel open).
+            let mut changed = false;
+            for focus in [Focus::Panel, Focus::Chart, Focus::Map] {
+                let mut app = app_on(Preset::IceFrost.scene());
+                app.out_dir = dir.clone();
+                app.focus = focus;
+                app.message = None;
+                select(&mut app, "layer.viscosity");
+                app.focus = focus;
+                if matches!(k, Key::Char('<' | '>')) {
+                    app.tidal = true;
+                }
+                let before = format!("{app:?}");
+                update(&mut app, Event::Key(k.event()));
+                changed |= format!("{app:?}") != before;
+            }
+            assert!(changed, "{k:?} ({}) does nothing", row.keys);
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
 }
