@@ -59,8 +59,8 @@ pub struct App {
     pub focus: Focus,
     /// Index into [`SWEEPS`].
     pub sweep: usize,
-    /// Text being typed after `e` (None when not editing).
-    pub input: Option<String>,
+    /// Value being typed after `e` (None when not editing).
+    pub input: Option<LineInput>,
     /// Whether the help overlay is shown.
     pub help: bool,
     /// Last status message.
@@ -93,7 +93,7 @@ pub struct App {
     /// Planet distance of the tidal calculator as a multiple of the paper's (Encke division).
     pub tidal_factor: f64,
     /// Path being typed after `o` (None when not opening a scene file).
-    pub open: Option<String>,
+    pub open: Option<LineInput>,
 }
 
 /// Default file that `o` offers (the one `w` writes).
@@ -288,17 +288,19 @@ impl App {
         }
     }
 
+    /// Opens the value input on the selected parameter, pre-filled with its value without float
+    /// noise ([`super::format::editable`]); the first typed character replaces the pre-fill.
     fn start_input(&mut self) {
         let current = match PARAMETERS
             .get(self.selected)
             .map(|p| (p, self.scene.get(p.path)))
         {
-            Some((_, Ok(Value::Number(v)))) => format!("{v}"),
+            Some((p, Ok(Value::Number(v)))) => super::format::editable(v, p.unit),
             Some((_, Ok(Value::Choice(c)))) => c.to_string(),
             Some((_, Ok(Value::Enabled(b)))) => (if b { "on" } else { "off" }).to_string(),
             _ => String::new(),
         };
-        self.input = Some(current);
+        self.input = Some(LineInput::prefilled(current));
     }
 
     fn cycle_preset(&mut self) {
@@ -327,10 +329,10 @@ impl App {
     }
 
     fn handle_input_key(&mut self, key: KeyEvent) {
-        let Some(text) = self.input.as_mut() else {
+        let Some(input) = self.input.as_mut() else {
             return;
         };
-        match edit_line(text, key) {
+        match input.key(key) {
             LineEdit::Editing => {}
             LineEdit::Quit => self.quit = true,
             LineEdit::Cancel => {
@@ -349,10 +351,10 @@ impl App {
     }
 
     fn handle_open_key(&mut self, key: KeyEvent) {
-        let Some(text) = self.open.as_mut() else {
+        let Some(input) = self.open.as_mut() else {
             return;
         };
-        match edit_line(text, key) {
+        match input.key(key) {
             LineEdit::Editing => {}
             LineEdit::Quit => self.quit = true,
             LineEdit::Cancel => {
@@ -576,7 +578,7 @@ impl App {
                 self.info("< > change the tidal appendix's planet distance: press t first");
             }
             (Action::Open, _) => {
-                self.open = Some(SCENE_FILE.to_string());
+                self.open = Some(LineInput::prefilled(SCENE_FILE));
             }
             (Action::Export, _) => self.export(),
             (Action::Save, _) => self.save(),
@@ -630,25 +632,87 @@ enum LineEdit {
     Quit,
 }
 
-/// The shared line editor of the `e` (value) and `o` (open) inputs.
-fn edit_line(text: &mut String, key: KeyEvent) -> LineEdit {
-    let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
-    match key.code {
-        KeyCode::Esc => LineEdit::Cancel,
-        KeyCode::Enter => LineEdit::Submit(std::mem::take(text)),
-        KeyCode::Char('c') if ctrl => LineEdit::Quit,
-        KeyCode::Char('u') if ctrl => {
-            text.clear();
-            LineEdit::Editing
+/// A one-line input (`e` values, `o` file names): the text, a cursor, and whether the text is
+/// still the pre-fill, which the first typed character replaces.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct LineInput {
+    /// The text.
+    pub text: String,
+    /// Cursor position in characters (0 … length).
+    pub cursor: usize,
+    /// True until the user edits: the text is the pre-fill and a typed character replaces it.
+    pub fresh: bool,
+}
+
+impl LineInput {
+    /// An input pre-filled with `text` (cursor at the end; the first typed character replaces it).
+    pub fn prefilled(text: impl Into<String>) -> LineInput {
+        let text = text.into();
+        LineInput {
+            cursor: text.chars().count(),
+            text,
+            fresh: true,
         }
-        KeyCode::Backspace => {
-            text.pop();
-            LineEdit::Editing
+    }
+
+    /// The text before and after the cursor.
+    pub fn split(&self) -> (String, String) {
+        let before: String = self.text.chars().take(self.cursor).collect();
+        let after: String = self.text.chars().skip(self.cursor).collect();
+        (before, after)
+    }
+
+    fn byte(&self, chars: usize) -> usize {
+        self.text
+            .char_indices()
+            .nth(chars)
+            .map_or(self.text.len(), |(i, _)| i)
+    }
+
+    /// Applies one key: characters insert at the cursor (replacing a fresh pre-fill), Backspace and
+    /// Delete remove, ←/→/Home/End (and Ctrl-A/E) move, Ctrl-U clears.
+    fn key(&mut self, key: KeyEvent) -> LineEdit {
+        let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
+        let len = self.text.chars().count();
+        let was_fresh = std::mem::replace(&mut self.fresh, false);
+        match key.code {
+            KeyCode::Esc => return LineEdit::Cancel,
+            KeyCode::Enter => return LineEdit::Submit(std::mem::take(&mut self.text)),
+            KeyCode::Char('c') if ctrl => return LineEdit::Quit,
+            KeyCode::Char('u') if ctrl => {
+                self.text.clear();
+                self.cursor = 0;
+            }
+            KeyCode::Char('a') if ctrl => self.cursor = 0,
+            KeyCode::Char('e') if ctrl => self.cursor = len,
+            KeyCode::Home => self.cursor = 0,
+            KeyCode::End => self.cursor = len,
+            KeyCode::Left => self.cursor = self.cursor.saturating_sub(1),
+            KeyCode::Right => self.cursor = (self.cursor + 1).min(len),
+            KeyCode::Backspace if was_fresh => {
+                self.text.clear();
+                self.cursor = 0;
+            }
+            KeyCode::Backspace if self.cursor > 0 => {
+                let at = self.byte(self.cursor - 1);
+                self.text.remove(at);
+                self.cursor -= 1;
+            }
+            KeyCode::Delete if self.cursor < len => {
+                let at = self.byte(self.cursor);
+                self.text.remove(at);
+            }
+            KeyCode::Char(c) if !ctrl => {
+                if was_fresh {
+                    self.text.clear();
+                    self.cursor = 0;
+                }
+                let at = self.byte(self.cursor);
+                self.text.insert(at, c);
+                self.cursor += 1;
+            }
+            _ => self.fresh = was_fresh,
         }
-        KeyCode::Char(c) => {
-            text.push(c);
-            LineEdit::Editing
-        }
-        _ => LineEdit::Editing,
+        LineEdit::Editing
     }
 }

@@ -169,7 +169,6 @@ fn typed_value_with_units_is_applied() {
     select(&mut app, "layer.thickness");
     update(&mut app, ch('e'));
     assert!(app.input.is_some());
-    app.input = Some(String::new());
     for c in "2 um".chars() {
         update(&mut app, ch(c));
     }
@@ -184,7 +183,9 @@ fn typed_bad_value_keeps_scene_and_names_the_field() {
     let before = app.scene;
     select(&mut app, "grains.density");
     update(&mut app, ch('e'));
-    app.input = Some("-5".into());
+    for c in "-5".chars() {
+        update(&mut app, ch(c));
+    }
     update(&mut app, key(KeyCode::Enter));
     assert_eq!(app.scene, before);
     let (msg, tone) = app.message.clone().expect("a message");
@@ -195,7 +196,9 @@ fn typed_bad_value_keeps_scene_and_names_the_field() {
     // Wrong unit.
     select(&mut app, "layer.thickness");
     update(&mut app, ch('e'));
-    app.input = Some("1 Pa".into());
+    for c in "1 Pa".chars() {
+        update(&mut app, ch(c));
+    }
     update(&mut app, key(KeyCode::Enter));
     assert_eq!(app.scene, before);
     assert!(
@@ -412,7 +415,10 @@ fn tmp_dir(name: &str) -> std::path::PathBuf {
 
 fn type_open(app: &mut App, path: &str) {
     update(app, ch('o'));
-    assert_eq!(app.open.as_deref(), Some(super::app::SCENE_FILE));
+    assert_eq!(
+        app.open.as_ref().map(|i| i.text.as_str()),
+        Some(super::app::SCENE_FILE)
+    );
     update(
         app,
         Event::Key(KeyEvent::new(KeyCode::Char('u'), KeyModifiers::CONTROL)),
@@ -570,4 +576,41 @@ fn every_key_in_the_keymap_is_handled() {
         }
     }
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 12, item 1: `e` pre-filled "0.000199999999999999982" and typing appended to it.
+#[test]
+fn typing_after_e_replaces_the_prefill() {
+    let mut app = app_on(Scene::default());
+    select(&mut app, "bulk.damping.time");
+    // A damping time with float noise, as viscosities give it.
+    let noisy = 2e-4 * (1.0 - f64::EPSILON);
+    app.scene
+        .set_number("bulk.damping.time", noisy)
+        .expect("set");
+    update(&mut app, ch('e'));
+    let input = app.input.clone().expect("input open");
+    assert_eq!(input.text, "200 µs", "pre-fill without float noise");
+    let s = text(&screen(&app, 100, 30));
+    assert!(s.contains("200 µs") && s.contains("typing replaces"), "{s}");
+    for c in "2 ms".chars() {
+        update(&mut app, ch(c));
+    }
+    update(&mut app, key(KeyCode::Enter));
+    assert_eq!(number(&app, "bulk.damping.time"), 2e-3);
+    // Editing keys keep the pre-fill: End, ←, Backspace, then a digit.
+    update(&mut app, ch('e'));
+    assert_eq!(app.input.as_ref().map(|i| i.text.as_str()), Some("2 ms"));
+    for k in [KeyCode::End, KeyCode::Left, KeyCode::Left, KeyCode::Left] {
+        update(&mut app, key(k));
+    }
+    update(&mut app, key(KeyCode::Backspace));
+    update(&mut app, ch('5'));
+    assert_eq!(app.input.as_ref().map(|i| i.text.as_str()), Some("5 ms"));
+    update(&mut app, key(KeyCode::Home));
+    update(&mut app, ch('1'));
+    update(&mut app, key(KeyCode::Enter));
+    assert_eq!(number(&app, "bulk.damping.time"), 15e-3);
+    let s = text(&screen(&app, 100, 30));
+    assert!(!s.contains("999999"), "{s}");
 }

@@ -376,7 +376,8 @@ fn experiment_legend(long: bool) -> Vec<Span<'static>> {
         } else {
             "┄B84 "
         },
-        Style::new().fg(Color::Gray),
+        // The swatch is the drawn colour (it was grey over a dark-grey line).
+        Style::new().fg(BRIDGES),
     )];
     for k in 0..2 {
         let name = if long { BAND_SHORT[k] } else { BAND_TINY[k] };

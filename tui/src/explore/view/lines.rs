@@ -1,6 +1,6 @@
 //! The one-line views: derived quantities, status (accuracy, timing, warnings), message or input.
 
-use crate::explore::app::Tone;
+use crate::explore::app::{LineInput, Tone};
 use crate::explore::compute::FrameData;
 use crate::explore::format::{num3, qty, qty3};
 use ratatui::style::{Color, Style};
@@ -139,13 +139,49 @@ pub fn status_line(app: &StatusView, width: u16) -> Line<'static> {
 #[derive(Debug, Clone, Copy)]
 pub struct MessageView<'a> {
     /// Path being typed after `o`.
-    pub open: Option<&'a str>,
+    pub open: Option<&'a LineInput>,
     /// Value being typed after `e`.
-    pub input: Option<&'a String>,
+    pub input: Option<&'a LineInput>,
     /// Selected row of [`PARAMETERS`] (the one `e` sets).
     pub selected: usize,
     /// Last status message.
     pub message: Option<&'a (String, Tone)>,
+}
+
+/// Appends spans to a line.
+trait PatchSpans {
+    fn patch_spans(self, spans: Vec<Span<'static>>) -> Self;
+}
+
+impl PatchSpans for Line<'static> {
+    fn patch_spans(mut self, spans: Vec<Span<'static>>) -> Self {
+        self.spans.extend(spans);
+        self
+    }
+}
+
+/// An input's text with its cursor, then the hint. A pre-fill that typing replaces is shown
+/// highlighted, and the hint says so.
+fn input_spans(input: &LineInput, hint: &str) -> Vec<Span<'static>> {
+    let cursor = Span::styled("▏", Style::new().fg(Color::Yellow));
+    let hint_style = Style::new().fg(Color::Gray);
+    if input.fresh && !input.text.is_empty() {
+        return vec![
+            Span::styled(
+                input.text.clone(),
+                Style::new().fg(Color::Black).bg(Color::Gray),
+            ),
+            cursor,
+            Span::styled(format!("  typing replaces ·{hint}"), hint_style),
+        ];
+    }
+    let (before, after) = input.split();
+    vec![
+        Span::raw(before),
+        cursor,
+        Span::raw(after),
+        Span::styled(format!("{hint} · ←→ Home End"), hint_style),
+    ]
 }
 
 /// The message / input line.
@@ -156,13 +192,12 @@ pub fn message_line(app: &MessageView) -> Line<'static> {
                 " open scene file: ",
                 Style::new().fg(Color::Black).bg(Color::Yellow),
             ),
-            Span::raw(format!(" {text}")),
-            Span::styled("▏", Style::new().fg(Color::Yellow)),
-            Span::styled(
-                "  Enter load · Esc cancel · Ctrl-U clear",
-                Style::new().fg(Color::Gray),
-            ),
-        ]);
+            Span::raw(" "),
+        ])
+        .patch_spans(input_spans(
+            text,
+            "  Enter load · Esc cancel · Ctrl-U clear",
+        ));
     }
     if let Some(text) = app.input {
         let p = PARAMETERS.get(app.selected);
@@ -178,13 +213,12 @@ pub fn message_line(app: &MessageView) -> Line<'static> {
                 format!(" set {label}{unit}: "),
                 Style::new().fg(Color::Black).bg(Color::Yellow),
             ),
-            Span::raw(format!(" {text}")),
-            Span::styled("▏", Style::new().fg(Color::Yellow)),
-            Span::styled(
-                "  Enter apply · Esc cancel · units ok (2 um, 1 kPa s)",
-                Style::new().fg(Color::Gray),
-            ),
-        ]);
+            Span::raw(" "),
+        ])
+        .patch_spans(input_spans(
+            text,
+            "  Enter apply · Esc cancel · Ctrl-U clear · units ok (2 um, 1 kPa s)",
+        ));
     }
     match app.message {
         Some((text, Tone::Error)) => Line::from(Span::styled(

@@ -8,18 +8,16 @@ use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Paragraph, Widget, Wrap};
 use rime_core::StickClass;
+use rime_core::explorer::palette;
 
-/// Colour of each stick-map class (all distinct).
+/// Colour of each stick-map class (the one palette, [`palette::class`]).
 pub fn class_color(c: StickClass) -> Color {
-    match c {
-        StickClass::Rolling => Color::Green,
-        StickClass::Sliding => Color::Blue,
-        StickClass::RollingStop => Color::Yellow,
-        StickClass::SlidingGap => Color::Magenta,
-        StickClass::Aggregation => Color::Red,
-        StickClass::NormalStickOnly => Color::Cyan,
-        StickClass::Undefined => Color::DarkGray,
-    }
+    super::rgb(palette::class(c))
+}
+
+/// The letter colour on a class's cell (black or white, whichever reads better).
+fn class_ink(c: StickClass) -> Color {
+    super::rgb(palette::class(c).text_on())
 }
 
 /// Legend name of a class (the JSON name with spaces).
@@ -118,7 +116,7 @@ pub fn map(
             };
             if let Some(cell) = buf.cell_mut((px + c, py + r)) {
                 cell.set_char(class.letter())
-                    .set_fg(Color::Black)
+                    .set_fg(class_ink(class))
                     .set_bg(class_color(class));
             }
         }
@@ -146,7 +144,7 @@ pub fn map(
                 lx,
                 y,
                 format!("{}", c.letter()),
-                Style::new().fg(Color::Black).bg(class_color(*c)),
+                Style::new().fg(class_ink(*c)).bg(class_color(*c)),
             );
             buf.set_stringn(
                 lx + 2,

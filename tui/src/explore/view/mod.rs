@@ -17,30 +17,39 @@ use ratatui::layout::{Alignment, Rect};
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Wrap};
+use rime_core::explorer::palette;
 
 /// Replaces spaces by non-breaking ones (a value and its unit stay on one line).
 pub(super) fn nb(s: String) -> String {
     s.replace(' ', "\u{a0}")
 }
 
-pub(super) const FAMILY_COLORS: [Color; 5] = [
-    Color::Blue,
-    Color::Cyan,
-    Color::Green,
-    Color::LightMagenta,
-    Color::LightBlue,
+/// A palette colour ([`palette`], the one palette of every surface) as a terminal colour.
+pub const fn rgb(c: palette::Rgb) -> Color {
+    Color::Rgb(c.r, c.g, c.b)
+}
+
+/// The family of curves, in order.
+const FAMILY_COLORS: [Color; 4] = [
+    rgb(palette::FAMILY[0]),
+    rgb(palette::FAMILY[1]),
+    rgb(palette::FAMILY[2]),
+    rgb(palette::FAMILY[3]),
 ];
-pub(super) const CURRENT: Color = Color::Yellow;
-pub(super) const CLEAN: Color = Color::Gray;
-pub(super) const GS_LAYER: Color = Color::Red;
-pub(super) const GS_ADHESION: Color = Color::LightRed;
-/// The Bridges et al. (1984) law: a dim line beneath the model's curves.
-pub(super) const BRIDGES: Color = Color::DarkGray;
+/// This scene's curve.
+const CURRENT: Color = rgb(palette::SCENE);
+/// The clean-surface curve.
+const CLEAN: Color = rgb(palette::CLEAN);
+/// The critical-speed markers (the colour of this scene's curve).
+const GS_LAYER: Color = rgb(palette::CRITICAL);
+const GS_ADHESION: Color = rgb(palette::CRITICAL);
+/// The Bridges et al. (1984) law: a line beneath the model's curves.
+const BRIDGES: Color = rgb(palette::EXPERIMENT);
 /// The microgravity experiments' boxes (Heißelmann et al. 2010, Hill et al. 2015).
-pub(super) const BAND_COLORS: [Color; 2] = [Color::Magenta, Color::Indexed(208)];
+const BAND_COLORS: [Color; 2] = [rgb(palette::EXPERIMENT), rgb(palette::EXPERIMENT)];
 /// Short legend names of the bands, in the order of `experiments::bands`.
-pub(super) const BAND_SHORT: [&str; 2] = ["Heißelmann'10", "Hill'15"];
-pub(super) const BAND_TINY: [&str; 2] = ["H10", "H15"];
+const BAND_SHORT: [&str; 2] = ["Heißelmann'10", "Hill'15"];
+const BAND_TINY: [&str; 2] = ["H10", "H15"];
 
 /// Draws the whole screen: the one place that reads the whole [`App`] and hands each view its data.
 pub fn render(app: &App, frame: &mut Frame) {
@@ -91,7 +100,7 @@ pub fn render(app: &App, frame: &mut Frame) {
         cursor: app.cursor,
     };
     let message = lines::message_line(&lines::MessageView {
-        open: app.open.as_deref(),
+        open: app.open.as_ref(),
         input: app.input.as_ref(),
         selected: app.selected,
         message: app.message.as_ref(),
