@@ -118,7 +118,7 @@ fn main_screen_shows_every_parameter_and_class() {
             "missing class {c:?}"
         );
     }
-    assert!(s.contains("10 m/s"));
+    assert!(s.contains("g_N m/s"), "the speed axis names its unit");
     assert!(s.contains("g_s layer 6.6"), "critical velocity marker");
     assert!(!s.contains("NaN") && !s.contains("inf"));
 }
@@ -613,4 +613,89 @@ fn typing_after_e_replaces_the_prefill() {
     assert_eq!(number(&app, "bulk.damping.time"), 15e-3);
     let s = text(&screen(&app, 100, 30));
     assert!(!s.contains("999999"), "{s}");
+}
+
+/// Issue 12, item 2: the ε_N chart's decade labels sat up to 0.4 decade from their values (ratatui
+/// spreads labels evenly), so the 6.6 µm/s marker read like 3–4 µm/s. The marker (drawn by the
+/// canvas) must fall between the labels where its value says, within one cell, at every width.
+#[test]
+fn chart_x_labels_sit_at_their_values() {
+    let app = app_on(Preset::IceFrost.scene());
+    let g_s = app
+        .data
+        .as_ref()
+        .and_then(|d| d.contact)
+        .and_then(|c| c.layer)
+        .map(|l| l.critical_velocity)
+        .expect("g_s of the layer");
+    assert!((g_s - 6.6e-6).abs() < 0.1e-6, "{g_s}");
+    let marker = super::view::rgb(rime_core::explorer::palette::CRITICAL);
+    let decade = |s: &str| -> Option<f64> {
+        match s {
+            "0.01" => Some(-2.0),
+            "0.1" => Some(-1.0),
+            "1" => Some(0.0),
+            "10" => Some(1.0),
+            "100" => Some(2.0),
+            _ => s.strip_prefix("1e").and_then(|e| e.parse().ok()),
+        }
+    };
+    for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
+        let t = screen(&app, w, h);
+        let buf = t.backend().buffer();
+        let chart = super::layout::layout(w, h).expect("layout").chart;
+        let (corner, axis_row) = (chart.y..chart.bottom())
+            .flat_map(|y| (chart.x..chart.right()).map(move |x| (x, y)))
+            .find(|&(x, y)| buf[(x, y)].symbol() == "└")
+            .expect("x axis");
+        // The labels: runs of text on the row below the axis, each centred on its column.
+        let mut labels: Vec<(f64, f64)> = Vec::new();
+        let mut run = String::new();
+        for x in chart.x..=chart.right() {
+            let sym = if x < chart.right() {
+                buf[(x, axis_row + 1)].symbol().to_string()
+            } else {
+                " ".to_string()
+            };
+            if sym.trim().is_empty() {
+                if !run.is_empty() {
+                    let n = run.chars().count() as u16;
+                    let start = x - n;
+                    let k = decade(&run).unwrap_or_else(|| panic!("label {run} at {w}×{h}"));
+                    labels.push((k, f64::from(start + n / 2)));
+                    // Each label stands on a major tick.
+                    let tick = buf[(start + n / 2, axis_row)].symbol();
+                    assert_eq!(tick, "┼", "{run} at {w}×{h}");
+                    run.clear();
+                }
+            } else {
+                run.push_str(&sym);
+            }
+        }
+        assert!(labels.len() >= 3, "{w}×{h}: {labels:?}");
+        // Labels evenly spaced per decade (they are log positions), within one cell.
+        let (k0, c0) = labels[0];
+        let (k1, c1) = labels[labels.len() - 1];
+        let per_decade = (c1 - c0) / (k1 - k0);
+        for (k, c) in &labels {
+            let expected = c0 + (k - k0) * per_decade;
+            assert!(
+                (c - expected).abs() <= 1.0,
+                "{w}×{h}: label {k} at {c}, not {expected}"
+            );
+        }
+        // The marker: the column with the most cells in the marker colour.
+        let marker_col = (corner + 1..chart.right())
+            .max_by_key(|&x| {
+                (chart.y..axis_row)
+                    .filter(|&y| buf[(x, y)].fg == marker && buf[(x, y)].symbol() != " ")
+                    .count()
+            })
+            .expect("marker column");
+        let expected = c0 + (g_s.log10() - k0) * per_decade;
+        assert!(
+            (f64::from(marker_col) - expected).abs() <= 1.0,
+            "{w}×{h}: 6.6 µm/s marker at column {marker_col}, the labels put it at {expected:.1}"
+        );
+    }
 }

@@ -332,23 +332,29 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
         Style::new().fg(CURRENT).add_modifier(Modifier::BOLD),
     ));
     let axis_style = Style::new().fg(Color::Gray);
+    let y_labels = labels(y_lo, y_hi, y_step, "");
     let chart = Chart::new(datasets)
         .x_axis(
             Axis::default()
-                .title("g_N")
+                .title("g_N m/s")
                 .style(axis_style)
                 .bounds([f64::from(x_lo), f64::from(x_hi)])
-                .labels(labels(x_lo, x_hi, x_step, " m/s")),
+                // Placeholders that reserve the label row; `log_ticks` writes the labels at their
+                // values (ratatui spreads labels evenly, which puts them up to 0.4 decade off).
+                .labels(vec![Span::raw(""), Span::raw("")]),
         )
         .y_axis(
             Axis::default()
                 .title("ε_N")
                 .style(axis_style)
                 .bounds([y_lo_f, f64::from(y_hi)])
-                .labels(labels(y_lo, y_hi, y_step, "")),
+                .labels(y_labels.clone()),
         )
         .legend_position(None);
+    let y_label_w = y_labels.iter().map(|l| l.width() as u16).max().unwrap_or(0);
     frame.render_widget(chart, plot);
+    let axis = LogAxis::under(plot, y_label_w, f64::from(x_lo), f64::from(x_hi));
+    log_ticks(frame.buffer_mut(), &axis, x_step, axis_style);
     if current_pts.is_empty() {
         let msg = match data.current.iter().flatten().next().map(|n| n.status) {
             Some(Status::Overdamped) => "overdamped everywhere: ε_N below the plotted range",
@@ -431,4 +437,103 @@ fn chart_readout(data: Option<&FrameData>, cursor: usize) -> Line<'static> {
         None => spans.push(Span::raw("ε_N — ")),
     }
     Line::from(spans)
+}
+
+/// A log x axis as ratatui's chart lays it out: the graph's columns and the axis and label rows.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LogAxis {
+    /// First column of the graph.
+    pub x: u16,
+    /// Width of the graph in cells.
+    pub width: u16,
+    /// Row of the axis line.
+    pub axis_row: u16,
+    /// Row of the labels.
+    pub label_row: u16,
+    /// Left end of the column span the labels may use (the y labels' column).
+    pub left: u16,
+    /// log10 of the axis ends.
+    pub lo: f64,
+    /// log10 of the axis ends.
+    pub hi: f64,
+}
+
+impl LogAxis {
+    /// The axis of a chart drawn in `plot` with y labels `y_label_w` cells wide (ratatui's
+    /// `Chart::layout` with x labels of zero width: labels on the last row, the axis above).
+    pub fn under(plot: Rect, y_label_w: u16, lo: f64, hi: f64) -> LogAxis {
+        let x = plot.x + y_label_w.min(plot.width / 3) + 1;
+        LogAxis {
+            x,
+            width: plot.right().saturating_sub(x),
+            axis_row: plot.bottom().saturating_sub(2),
+            label_row: plot.bottom().saturating_sub(1),
+            left: plot.x,
+            lo,
+            hi,
+        }
+    }
+
+    /// The column where log10 value `t` is drawn (ratatui's Braille grid: two dots per cell).
+    pub fn column(&self, t: f64) -> Option<u16> {
+        if self.width == 0 || !(self.hi > self.lo) || t < self.lo || t > self.hi {
+            return None;
+        }
+        let dots = f64::from(self.width) * 2.0 - 1.0;
+        let dot = ((t - self.lo) * dots / (self.hi - self.lo)).round() as u16;
+        Some(self.x + dot / 2)
+    }
+}
+
+/// Major ticks and labels at every `step`-th decade, minor ticks at 2…9 × 10^k (at 2 and 5 when a
+/// decade is narrow, none when it is very narrow), each where its value is drawn.
+fn log_ticks(buf: &mut ratatui::buffer::Buffer, axis: &LogAxis, step: i32, style: Style) {
+    let (lo, hi) = (axis.lo.round() as i32, axis.hi.round() as i32);
+    let decade_w = f64::from(axis.width) / f64::from((hi - lo).max(1));
+    let minors: &[f64] = if decade_w >= 12.0 {
+        &[2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]
+    } else if decade_w >= 5.0 {
+        &[2.0, 5.0]
+    } else {
+        &[]
+    };
+    let right = axis.x + axis.width;
+    let mut majors = Vec::new();
+    for k in lo..=hi {
+        if let Some(c) = axis.column(f64::from(k)) {
+            majors.push(c);
+            if let Some(cell) = buf.cell_mut((c, axis.axis_row)) {
+                cell.set_symbol("┼").set_style(style);
+            }
+        }
+        for m in minors {
+            let Some(c) = axis.column(f64::from(k) + m.log10()) else {
+                continue;
+            };
+            if !majors.contains(&c)
+                && let Some(cell) = buf.cell_mut((c, axis.axis_row))
+            {
+                cell.set_symbol("┴").set_style(style.fg(Color::DarkGray));
+            }
+        }
+    }
+    // Labels centred on their ticks, left to right, never overlapping; every decade where a
+    // label fits in one.
+    let step = (1..step)
+        .find(|s| decade_w * f64::from(*s) >= 6.0)
+        .unwrap_or(step);
+    let mut free_from = axis.left;
+    let mut k = hi - (hi - lo) / step * step;
+    while k <= hi {
+        let text = decade(k);
+        let w = text.chars().count() as u16;
+        if let Some(c) = axis.column(f64::from(k)) {
+            let start = c.saturating_sub(w / 2);
+            if start >= free_from && start + w <= right {
+                buf.set_string(start, axis.label_row, &text, style);
+                free_from = start + w + 1;
+            }
+        }
+        k += step;
+    }
 }
