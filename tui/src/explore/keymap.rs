@@ -33,7 +33,8 @@ pub enum Key {
 }
 
 impl Key {
-    /// The terminal event this key arrives as.
+    /// The terminal event this key arrives as (tests press every key of the table with it).
+    #[cfg(test)]
     pub fn event(self) -> KeyEvent {
         let plain = |code| KeyEvent::new(code, KeyModifiers::NONE);
         match self {
@@ -288,6 +289,7 @@ pub fn action(event: KeyEvent) -> Option<Action> {
 }
 
 /// The README's key list (one Markdown bullet per row), kept equal to the table by a test.
+#[cfg(test)]
 pub fn readme_list() -> String {
     let mut out = String::new();
     for row in KEYMAP {

@@ -476,7 +476,8 @@ impl LogAxis {
 
     /// The column where log10 value `t` is drawn (ratatui's Braille grid: two dots per cell).
     pub fn column(&self, t: f64) -> Option<u16> {
-        if self.width == 0 || !(self.hi > self.lo) || t < self.lo || t > self.hi {
+        let span = self.hi - self.lo;
+        if self.width == 0 || span.is_nan() || span <= 0.0 || t < self.lo || t > self.hi {
             return None;
         }
         let dots = f64::from(self.width) * 2.0 - 1.0;
