@@ -78,8 +78,7 @@ pub fn qty_sig(v: f64, unit: &str, digits: i32) -> String {
     } else {
         (v, unit)
     };
-    let prefixable = matches!(unit, "m" | "s" | "m/s" | "Pa" | "Pa s" | "g" | "J" | "N");
-    if !prefixable || v == 0.0 {
+    if !prefixable(unit) || v == 0.0 {
         return join(sig(v, digits), unit);
     }
     let a = v.abs();
@@ -104,8 +103,18 @@ fn join(n: String, unit: &str) -> String {
 
 /// The value a user edits: 12 significant digits with an SI prefix, so that float noise
 /// (`0.000199999999999999982`) reads `200 µs` and typing it back gives the same number to 1e-12.
+/// Units without SI prefixes (`kg/m³`, `J/m²`) are left off: the parameter's unit is implied.
 pub fn editable(v: f64, unit: &str) -> String {
-    qty_sig(v, unit, 12)
+    if prefixable(unit) {
+        qty_sig(v, unit, 12)
+    } else {
+        sig(v, 12)
+    }
+}
+
+/// Whether [`qty`] writes `unit` with an SI prefix.
+fn prefixable(unit: &str) -> bool {
+    matches!(unit, "m" | "s" | "m/s" | "Pa" | "Pa s" | "g" | "kg" | "J" | "N")
 }
 
 /// The shortest text that reads back as exactly `v` (`0.0002`, `1e-7`, `6.6e-6`), plain between
@@ -170,6 +179,7 @@ mod tests {
         assert_eq!(editable(noisy, "s"), "200 µs");
         assert_eq!(editable(1.0 / 3.0, ""), "0.333333333333");
         assert_eq!(editable(2000.0, "Pa s"), "2 kPa s");
+        assert_eq!(editable(900.0, "kg/m³"), "900");
         for (v, unit) in [(noisy, "s"), (6.62e-6, "m/s"), (9.1e9, "Pa")] {
             let text = editable(v, unit);
             let back = crate::units::parse_quantity("x", &text, unit).unwrap();
