@@ -8,6 +8,7 @@
 use crate::accuracy::Accuracy;
 use crate::contact::Contact;
 use crate::error::Result;
+use crate::explorer::palette;
 use crate::scene::Scene;
 use crate::sweep;
 use crate::tangential::StickClass;
@@ -129,29 +130,26 @@ impl Figure {
     }
 }
 
-/// Line colours (RGB), colour-blind-safe (Okabe–Ito) first.
-pub const PALETTE: [(u8, u8, u8); 8] = [
-    (0, 114, 178),
-    (213, 94, 0),
-    (0, 158, 115),
-    (204, 121, 167),
-    (230, 159, 0),
-    (86, 180, 233),
-    (0, 0, 0),
-    (120, 120, 120),
-];
+/// Line colours (RGB) by [`Series::color`] index: the one palette of
+/// [`crate::explorer::palette::SERIES`] (Okabe–Ito; the family first, then this scene, blue, the
+/// clean surface and the experiments).
+pub const PALETTE: [(u8, u8, u8); 8] = {
+    let s = palette::SERIES;
+    [
+        s[0].tuple(),
+        s[1].tuple(),
+        s[2].tuple(),
+        s[3].tuple(),
+        s[4].tuple(),
+        s[5].tuple(),
+        s[6].tuple(),
+        s[7].tuple(),
+    ]
+};
 
-/// Colour of a stick-map class (RGB).
+/// Colour of a stick-map class (RGB), from [`crate::explorer::palette::class`].
 pub fn class_color(c: StickClass) -> (u8, u8, u8) {
-    match c {
-        StickClass::Rolling => (86, 180, 233),
-        StickClass::Sliding => (240, 228, 66),
-        StickClass::RollingStop => (0, 114, 178),
-        StickClass::SlidingGap => (230, 159, 0),
-        StickClass::Aggregation => (0, 0, 0),
-        StickClass::NormalStickOnly => (204, 121, 167),
-        StickClass::Undefined => (255, 255, 255),
-    }
+    palette::class(c).tuple()
 }
 
 /// Formats a speed with an SI prefix (`6.63 µm/s`).
@@ -218,20 +216,20 @@ pub mod experiments {
 
     /// Microgravity ice experiments: Heißelmann et al. (2010), Icarus 206, 424 (1.5 cm spheres,
     /// 6–22 cm/s, ε 0.06–0.84) and Hill et al. (2015), A&A 575, A6 (5–11 mm, 0.27–0.51 m/s,
-    /// ε 0.08–0.65).
-    pub fn bands(first_color: usize) -> Vec<Band> {
+    /// ε 0.08–0.65), both in palette colour `color` (the experiments' one colour).
+    pub fn bands(color: usize) -> Vec<Band> {
         vec![
             Band {
                 x: (0.06, 0.22),
                 y: (0.06, 0.84),
                 label: "Heißelmann et al. 2010 (1.5 cm ice, µg)".to_string(),
-                color: first_color,
+                color,
             },
             Band {
                 x: (0.27, 0.51),
                 y: (0.08, 0.65),
                 label: "Hill et al. 2015 (5–11 mm ice, µg)".to_string(),
-                color: first_color + 1,
+                color,
             },
         ]
     }
@@ -310,10 +308,10 @@ pub mod paper {
             clean,
             accuracy,
             "clean surfaces".to_string(),
-            6,
+            palette::SERIES_CLEAN,
             true,
         )?);
-        series.push(experiments::bridges(1e-4, TO, 7));
+        series.push(experiments::bridges(1e-4, TO, palette::SERIES_EXPERIMENT));
         Ok(Figure {
             name,
             title: title.to_string(),
@@ -322,7 +320,7 @@ pub mod paper {
             y,
             series,
             markers,
-            bands: experiments::bands(4),
+            bands: experiments::bands(palette::SERIES_EXPERIMENT),
             map: None,
         })
     }

@@ -44,7 +44,6 @@ pub mod atlas;
 pub mod batch;
 pub mod contact;
 pub mod error;
-#[cfg(feature = "explorer")]
 pub mod explorer;
 #[cfg(feature = "alloc")]
 pub mod figure;

@@ -2,7 +2,17 @@
 //!
 //! Limits, ranges and their notes are defined here once, so that the terminal explorer, the web page
 //! and the subcommands cannot drift apart. Pure functions: no I/O, no clocks.
+//!
+//! The palette ([`palette`]) needs nothing and number formatting ([`format`]) needs `alloc`, so
+//! that figures and command-line output can use them without the `explorer` feature; the limits
+//! and range policy come with `explorer`.
 
+#[cfg(feature = "alloc")]
+pub mod format;
+#[cfg(feature = "explorer")]
 pub mod frame;
+#[cfg(feature = "explorer")]
 pub mod limits;
+pub mod palette;
+#[cfg(feature = "explorer")]
 pub mod range;

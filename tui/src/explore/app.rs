@@ -2,7 +2,8 @@
 //! from the files that `x` and `w` write).
 
 use super::compute::{CURVE_POINTS, FrameData, MAP_POINTS, Request, SWEEPS, Sweep};
-use super::export;
+use super::frame_export;
+use super::keymap::{self, Action};
 use crate::scene_io;
 use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseEvent, MouseEventKind};
 use rime_core::params::{Kind, PARAMETERS, Value};
@@ -58,8 +59,8 @@ pub struct App {
     pub focus: Focus,
     /// Index into [`SWEEPS`].
     pub sweep: usize,
-    /// Text being typed after `e` (None when not editing).
-    pub input: Option<String>,
+    /// Value being typed after `e` (None when not editing).
+    pub input: Option<LineInput>,
     /// Whether the help overlay is shown.
     pub help: bool,
     /// Last status message.
@@ -92,7 +93,7 @@ pub struct App {
     /// Planet distance of the tidal calculator as a multiple of the paper's (Encke division).
     pub tidal_factor: f64,
     /// Path being typed after `o` (None when not opening a scene file).
-    pub open: Option<String>,
+    pub open: Option<LineInput>,
 }
 
 /// Default file that `o` offers (the one `w` writes).
@@ -287,17 +288,19 @@ impl App {
         }
     }
 
+    /// Opens the value input on the selected parameter, pre-filled with its value without float
+    /// noise ([`super::format::editable`]); the first typed character replaces the pre-fill.
     fn start_input(&mut self) {
         let current = match PARAMETERS
             .get(self.selected)
             .map(|p| (p, self.scene.get(p.path)))
         {
-            Some((_, Ok(Value::Number(v)))) => format!("{v}"),
+            Some((p, Ok(Value::Number(v)))) => super::format::editable(v, p.unit),
             Some((_, Ok(Value::Choice(c)))) => c.to_string(),
             Some((_, Ok(Value::Enabled(b)))) => (if b { "on" } else { "off" }).to_string(),
             _ => String::new(),
         };
-        self.input = Some(current);
+        self.input = Some(LineInput::prefilled(current));
     }
 
     fn cycle_preset(&mut self) {
@@ -326,10 +329,10 @@ impl App {
     }
 
     fn handle_input_key(&mut self, key: KeyEvent) {
-        let Some(text) = self.input.as_mut() else {
+        let Some(input) = self.input.as_mut() else {
             return;
         };
-        match edit_line(text, key) {
+        match input.key(key) {
             LineEdit::Editing => {}
             LineEdit::Quit => self.quit = true,
             LineEdit::Cancel => {
@@ -348,10 +351,10 @@ impl App {
     }
 
     fn handle_open_key(&mut self, key: KeyEvent) {
-        let Some(text) = self.open.as_mut() else {
+        let Some(input) = self.open.as_mut() else {
             return;
         };
-        match edit_line(text, key) {
+        match input.key(key) {
             LineEdit::Editing => {}
             LineEdit::Quit => self.quit = true,
             LineEdit::Cancel => {
@@ -398,7 +401,7 @@ impl App {
             self.info("still computing — press x again in a moment");
             return;
         };
-        match export::export(&self.out_dir, data) {
+        match frame_export::export(&self.out_dir, data) {
             Ok(dir) => self.info(format!(
                 "exported scene.json, CSV tables, SVG + PNG figures to {}/",
                 dir.display()
@@ -429,32 +432,35 @@ impl App {
             self.handle_open_key(key);
             return;
         }
-        let shift = key.modifiers.contains(KeyModifiers::SHIFT);
-        if key.modifiers.contains(KeyModifiers::CONTROL) {
-            if key.code == KeyCode::Char('c') {
-                self.quit = true;
-            }
-            return;
-        }
-        if self.help {
+        let action = keymap::action(key);
+        if self.help && !key.modifiers.contains(KeyModifiers::CONTROL) {
             // Any key closes the help; q still quits.
             self.help = false;
-            if matches!(key.code, KeyCode::Char('q')) {
+            if action == Some(Action::Quit) {
                 self.quit = true;
             }
             return;
         }
+        let Some(action) = action else {
+            return;
+        };
+        let shift = key.modifiers.contains(KeyModifiers::SHIFT);
+        self.perform(action, shift);
+    }
+
+    /// Does what the keymap says `action` does, on the focused pane.
+    fn perform(&mut self, action: Action, shift: bool) {
         let n = PARAMETERS.len();
         let map_step = (MAP_POINTS / 20).max(1) as i64;
         let map_step = if shift { 1 } else { map_step };
-        match (key.code, self.focus) {
-            (KeyCode::Esc, _) if self.tidal => {
+        match (action, self.focus) {
+            (Action::Back, _) if self.tidal => {
                 self.tidal = false;
                 self.info("tidal appendix closed (Esc again quits)");
             }
-            (KeyCode::Char('q') | KeyCode::Esc, _) => self.quit = true,
-            (KeyCode::Char('?'), _) => self.help = true,
-            (KeyCode::Tab, _) => {
+            (Action::Quit | Action::Back, _) => self.quit = true,
+            (Action::Help, _) => self.help = true,
+            (Action::FocusNext, _) => {
                 self.focus = match self.focus {
                     Focus::Panel => Focus::Chart,
                     Focus::Chart => Focus::Map,
@@ -466,54 +472,48 @@ impl App {
                     Focus::Map => "focus: stick map (arrows move the map cursor)",
                 });
             }
-            (KeyCode::BackTab, _) => {
+            (Action::FocusPrev, _) => {
                 self.focus = match self.focus {
                     Focus::Panel => Focus::Map,
                     Focus::Chart => Focus::Panel,
                     Focus::Map => Focus::Chart,
                 };
             }
-            (KeyCode::Up | KeyCode::Char('k'), Focus::Panel) => {
-                self.selected = (self.selected + n - 1) % n;
-            }
-            (KeyCode::Down | KeyCode::Char('j'), Focus::Panel) => {
-                self.selected = (self.selected + 1) % n;
-            }
-            (KeyCode::Right | KeyCode::Char('l'), Focus::Panel) => self.step(1.0, shift),
-            (KeyCode::Left | KeyCode::Char('h'), Focus::Panel) => self.step(-1.0, shift),
-            (KeyCode::Char('L'), Focus::Panel) => self.step(1.0, true),
-            (KeyCode::Char('H'), Focus::Panel) => self.step(-1.0, true),
-            (KeyCode::Right | KeyCode::Char('l'), Focus::Chart) => {
-                self.move_cursor(if shift { 1 } else { 5 })
-            }
-            (KeyCode::Left | KeyCode::Char('h'), Focus::Chart) => {
-                self.move_cursor(if shift { -1 } else { -5 })
-            }
-            (KeyCode::Char('L'), Focus::Chart) => self.move_cursor(1),
-            (KeyCode::Char('H'), Focus::Chart) => self.move_cursor(-1),
-            (KeyCode::Up | KeyCode::Char('k'), Focus::Map) => self.move_map(map_step, 0),
-            (KeyCode::Down | KeyCode::Char('j'), Focus::Map) => self.move_map(-map_step, 0),
-            (KeyCode::Right | KeyCode::Char('l'), Focus::Map) => self.move_map(0, map_step),
-            (KeyCode::Left | KeyCode::Char('h'), Focus::Map) => self.move_map(0, -map_step),
-            (KeyCode::Up | KeyCode::Down | KeyCode::Char('k' | 'j'), Focus::Chart) => {
+            (Action::Up, Focus::Panel) => self.selected = (self.selected + n - 1) % n,
+            (Action::Down, Focus::Panel) => self.selected = (self.selected + 1) % n,
+            (Action::Right, Focus::Panel) => self.step(1.0, shift),
+            (Action::Left, Focus::Panel) => self.step(-1.0, shift),
+            (Action::FineRight, Focus::Panel) => self.step(1.0, true),
+            (Action::FineLeft, Focus::Panel) => self.step(-1.0, true),
+            (Action::Right, Focus::Chart) => self.move_cursor(5),
+            (Action::Left, Focus::Chart) => self.move_cursor(-5),
+            (Action::FineRight, Focus::Chart) => self.move_cursor(1),
+            (Action::FineLeft, Focus::Chart) => self.move_cursor(-1),
+            (Action::Up, Focus::Map) => self.move_map(map_step, 0),
+            (Action::Down, Focus::Map) => self.move_map(-map_step, 0),
+            (Action::Right, Focus::Map) => self.move_map(0, map_step),
+            (Action::Left, Focus::Map) => self.move_map(0, -map_step),
+            (Action::FineRight, Focus::Map) => self.move_map(0, 1),
+            (Action::FineLeft, Focus::Map) => self.move_map(0, -1),
+            (Action::Up | Action::Down, Focus::Chart) => {
                 self.focus = Focus::Panel;
-                self.handle_key(key);
+                self.perform(action, shift);
             }
-            (KeyCode::Enter | KeyCode::Char(' '), _) => {
+            (Action::Activate, _) => {
                 self.focus = Focus::Panel;
                 self.activate();
             }
-            (KeyCode::Char('e'), _) => {
+            (Action::Edit, _) => {
                 self.focus = Focus::Panel;
                 self.start_input();
             }
-            (KeyCode::Char('p'), _) => self.cycle_preset(),
-            (KeyCode::Char('a'), _) => {
+            (Action::Preset, _) => self.cycle_preset(),
+            (Action::Accuracy, _) => {
                 self.accuracy = self.accuracy.next();
                 self.info(format!("accuracy: {}", self.accuracy.name()));
                 self.request();
             }
-            (KeyCode::Char('s'), _) => {
+            (Action::Sweep, _) => {
                 let k = SWEEPS.len();
                 for d in 1..=k {
                     let i = (self.sweep + d) % k;
@@ -526,14 +526,14 @@ impl App {
                 self.info(format!("family of curves: {} ({})", s.symbol, s.path));
                 self.request();
             }
-            (KeyCode::Char(']'), _) => self.move_cursor(1),
-            (KeyCode::Char('['), _) => self.move_cursor(-1),
-            (KeyCode::Char('}'), _) => self.move_cursor(10),
-            (KeyCode::Char('{'), _) => self.move_cursor(-10),
-            (KeyCode::Char('+' | '='), _) | (KeyCode::Char('-'), _) => {
+            (Action::Cursor(d), _) => self.move_cursor(i64::from(d)),
+            (Action::MapWider | Action::MapNarrower, _) => {
                 let shown = self.data.as_ref().map_or(1.0, |d| d.map_max);
-                let zoom_out = key.code != KeyCode::Char('-');
-                let next = if zoom_out { shown * 2.0 } else { shown / 2.0 };
+                let next = if action == Action::MapWider {
+                    shown * 2.0
+                } else {
+                    shown / 2.0
+                };
                 self.map_max = Some(next.clamp(1e-9, 1e6));
                 self.info(format!(
                     "stick map range 0 … {}",
@@ -541,12 +541,12 @@ impl App {
                 ));
                 self.request();
             }
-            (KeyCode::Char('0'), _) => {
+            (Action::MapAuto, _) => {
                 self.map_max = None;
                 self.info("stick map range: automatic");
                 self.request();
             }
-            (KeyCode::Char('b'), _) => {
+            (Action::Experiments, _) => {
                 self.experiments = !self.experiments;
                 self.info(if self.experiments {
                     "experiments shown on the ε_N chart: Bridges et al. 1984, Heißelmann et al. 2010, Hill et al. 2015"
@@ -554,7 +554,7 @@ impl App {
                     "experiments hidden (b shows them)"
                 });
             }
-            (KeyCode::Char('t'), _) => {
+            (Action::Tidal, _) => {
                 self.tidal = !self.tidal;
                 self.info(if self.tidal {
                     "tidal appendix for this scene's grains · < > planet distance · t closes"
@@ -562,31 +562,31 @@ impl App {
                     "tidal appendix closed"
                 });
             }
-            (KeyCode::Char('<'), _) if self.tidal => {
-                self.tidal_factor = (self.tidal_factor / TIDAL_STEP).clamp(1e-3, 1e3);
+            (Action::TidalNearer | Action::TidalFarther, _) if self.tidal => {
+                let f = if action == Action::TidalFarther {
+                    TIDAL_STEP
+                } else {
+                    1.0 / TIDAL_STEP
+                };
+                self.tidal_factor = (self.tidal_factor * f).clamp(1e-3, 1e3);
                 self.info(format!(
                     "tidal: planet distance ×{} of the paper's",
                     super::format::sig(self.tidal_factor, 4)
                 ));
             }
-            (KeyCode::Char('>'), _) if self.tidal => {
-                self.tidal_factor = (self.tidal_factor * TIDAL_STEP).clamp(1e-3, 1e3);
-                self.info(format!(
-                    "tidal: planet distance ×{} of the paper's",
-                    super::format::sig(self.tidal_factor, 4)
-                ));
+            (Action::TidalNearer | Action::TidalFarther, _) => {
+                self.info("< > change the tidal appendix's planet distance: press t first");
             }
-            (KeyCode::Char('o'), _) => {
-                self.open = Some(SCENE_FILE.to_string());
+            (Action::Open, _) => {
+                self.open = Some(LineInput::prefilled(SCENE_FILE));
             }
-            (KeyCode::Char('x'), _) => self.export(),
-            (KeyCode::Char('w'), _) => self.save(),
-            _ => {}
+            (Action::Export, _) => self.export(),
+            (Action::Save, _) => self.save(),
         }
     }
 
     fn handle_mouse(&mut self, m: MouseEvent) {
-        let layout = super::render::layout(self.size.0, self.size.1);
+        let layout = super::layout::layout(self.size.0, self.size.1);
         let Some(layout) = layout else { return };
         let inside = |r: ratatui::layout::Rect| {
             m.column >= r.x && m.column < r.x + r.width && m.row >= r.y && m.row < r.y + r.height
@@ -632,25 +632,87 @@ enum LineEdit {
     Quit,
 }
 
-/// The shared line editor of the `e` (value) and `o` (open) inputs.
-fn edit_line(text: &mut String, key: KeyEvent) -> LineEdit {
-    let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
-    match key.code {
-        KeyCode::Esc => LineEdit::Cancel,
-        KeyCode::Enter => LineEdit::Submit(std::mem::take(text)),
-        KeyCode::Char('c') if ctrl => LineEdit::Quit,
-        KeyCode::Char('u') if ctrl => {
-            text.clear();
-            LineEdit::Editing
+/// A one-line input (`e` values, `o` file names): the text, a cursor, and whether the text is
+/// still the pre-fill, which the first typed character replaces.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct LineInput {
+    /// The text.
+    pub text: String,
+    /// Cursor position in characters (0 … length).
+    pub cursor: usize,
+    /// True until the user edits: the text is the pre-fill and a typed character replaces it.
+    pub fresh: bool,
+}
+
+impl LineInput {
+    /// An input pre-filled with `text` (cursor at the end; the first typed character replaces it).
+    pub fn prefilled(text: impl Into<String>) -> LineInput {
+        let text = text.into();
+        LineInput {
+            cursor: text.chars().count(),
+            text,
+            fresh: true,
         }
-        KeyCode::Backspace => {
-            text.pop();
-            LineEdit::Editing
+    }
+
+    /// The text before and after the cursor.
+    pub fn split(&self) -> (String, String) {
+        let before: String = self.text.chars().take(self.cursor).collect();
+        let after: String = self.text.chars().skip(self.cursor).collect();
+        (before, after)
+    }
+
+    fn byte(&self, chars: usize) -> usize {
+        self.text
+            .char_indices()
+            .nth(chars)
+            .map_or(self.text.len(), |(i, _)| i)
+    }
+
+    /// Applies one key: characters insert at the cursor (replacing a fresh pre-fill), Backspace and
+    /// Delete remove, ←/→/Home/End (and Ctrl-A/E) move, Ctrl-U clears.
+    fn key(&mut self, key: KeyEvent) -> LineEdit {
+        let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
+        let len = self.text.chars().count();
+        let was_fresh = std::mem::replace(&mut self.fresh, false);
+        match key.code {
+            KeyCode::Esc => return LineEdit::Cancel,
+            KeyCode::Enter => return LineEdit::Submit(std::mem::take(&mut self.text)),
+            KeyCode::Char('c') if ctrl => return LineEdit::Quit,
+            KeyCode::Char('u') if ctrl => {
+                self.text.clear();
+                self.cursor = 0;
+            }
+            KeyCode::Char('a') if ctrl => self.cursor = 0,
+            KeyCode::Char('e') if ctrl => self.cursor = len,
+            KeyCode::Home => self.cursor = 0,
+            KeyCode::End => self.cursor = len,
+            KeyCode::Left => self.cursor = self.cursor.saturating_sub(1),
+            KeyCode::Right => self.cursor = (self.cursor + 1).min(len),
+            KeyCode::Backspace if was_fresh => {
+                self.text.clear();
+                self.cursor = 0;
+            }
+            KeyCode::Backspace if self.cursor > 0 => {
+                let at = self.byte(self.cursor - 1);
+                self.text.remove(at);
+                self.cursor -= 1;
+            }
+            KeyCode::Delete if self.cursor < len => {
+                let at = self.byte(self.cursor);
+                self.text.remove(at);
+            }
+            KeyCode::Char(c) if !ctrl => {
+                if was_fresh {
+                    self.text.clear();
+                    self.cursor = 0;
+                }
+                let at = self.byte(self.cursor);
+                self.text.insert(at, c);
+                self.cursor += 1;
+            }
+            _ => self.fresh = was_fresh,
         }
-        KeyCode::Char(c) => {
-            text.push(c);
-            LineEdit::Editing
-        }
-        _ => LineEdit::Editing,
+        LineEdit::Editing
     }
 }

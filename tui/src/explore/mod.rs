@@ -1,19 +1,21 @@
 //! The interactive terminal explorer (ARCHITECTURE.md).
 //!
 //! Elm-like: [`app::App`] is the state, [`app::update`] applies one [`app::Event`], and
-//! [`render::render`] draws the state without side effects. One channel carries every event: keys,
+//! [`view::render`] draws the state without side effects. One channel carries every event: keys,
 //! mouse and resizes from a reader thread, finished frames from a worker thread. The worker always
 //! computes the newest request: it drains older ones, and abandons a computation (between curves and
 //! every few points) as soon as a newer generation is requested, so the UI never waits for it.
 
 pub mod app;
 pub mod compute;
-pub mod export;
 pub mod format;
-pub mod render;
+pub mod frame_export;
+pub mod keymap;
+pub mod layout;
 #[cfg(test)]
 mod tests;
 pub mod tidal;
+pub mod view;
 
 use app::{App, Event, update};
 use compute::{Request, compute};
@@ -103,7 +105,7 @@ fn event_loop(
             // The worker lives as long as we do; a failed send means it is gone.
             request_tx.send(req)?;
         }
-        terminal.draw(|f| render::render(&app, f))?;
+        terminal.draw(|f| view::render(&app, f))?;
         // Wait for one event, then take everything already queued before drawing again, so that
         // a held-down key never builds a backlog of frames.
         let first = match event_rx.recv_timeout(Duration::from_millis(250)) {

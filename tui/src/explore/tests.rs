@@ -2,7 +2,7 @@
 
 use super::app::{App, Event, Focus, Tone, update};
 use super::compute::{SWEEPS, compute};
-use super::render::render;
+use super::view::render;
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
@@ -118,7 +118,7 @@ fn main_screen_shows_every_parameter_and_class() {
             "missing class {c:?}"
         );
     }
-    assert!(s.contains("10 m/s"));
+    assert!(s.contains("g_N m/s"), "the speed axis names its unit");
     assert!(s.contains("g_s layer 6.6"), "critical velocity marker");
     assert!(!s.contains("NaN") && !s.contains("inf"));
 }
@@ -169,7 +169,6 @@ fn typed_value_with_units_is_applied() {
     select(&mut app, "layer.thickness");
     update(&mut app, ch('e'));
     assert!(app.input.is_some());
-    app.input = Some(String::new());
     for c in "2 um".chars() {
         update(&mut app, ch(c));
     }
@@ -184,7 +183,9 @@ fn typed_bad_value_keeps_scene_and_names_the_field() {
     let before = app.scene;
     select(&mut app, "grains.density");
     update(&mut app, ch('e'));
-    app.input = Some("-5".into());
+    for c in "-5".chars() {
+        update(&mut app, ch(c));
+    }
     update(&mut app, key(KeyCode::Enter));
     assert_eq!(app.scene, before);
     let (msg, tone) = app.message.clone().expect("a message");
@@ -195,7 +196,9 @@ fn typed_bad_value_keeps_scene_and_names_the_field() {
     // Wrong unit.
     select(&mut app, "layer.thickness");
     update(&mut app, ch('e'));
-    app.input = Some("1 Pa".into());
+    for c in "1 Pa".chars() {
+        update(&mut app, ch(c));
+    }
     update(&mut app, key(KeyCode::Enter));
     assert_eq!(app.scene, before);
     assert!(
@@ -343,12 +346,12 @@ fn paper_inconsistent_options_are_flagged() {
     app.scene
         .set("friction.sliding_law", "walton")
         .expect("set");
-    let opts = super::render::paper_options(&app);
+    let opts = super::view::lines::paper_options(&app.scene);
     assert_eq!(opts, vec!["layer.reading=literal"]);
     app.scene
         .set("adhesion.modulus", "consistent")
         .expect("set");
-    assert_eq!(super::render::paper_options(&app).len(), 1);
+    assert_eq!(super::view::lines::paper_options(&app.scene).len(), 1);
 }
 
 #[test]
@@ -383,7 +386,7 @@ fn tidal_panel_snapshot() {
     // The scene's adhesion supplies γ.
     update(&mut app, ch('<'));
     app.scene = Preset::IceSticky.scene();
-    let view = super::tidal::view(&app);
+    let view = super::tidal::view(&app.scene, app.tidal_factor);
     assert!(!view.gamma_from_paper);
     assert_eq!(
         view.input.surface_energy,
@@ -412,7 +415,10 @@ fn tmp_dir(name: &str) -> std::path::PathBuf {
 
 fn type_open(app: &mut App, path: &str) {
     update(app, ch('o'));
-    assert_eq!(app.open.as_deref(), Some(super::app::SCENE_FILE));
+    assert_eq!(
+        app.open.as_ref().map(|i| i.text.as_str()),
+        Some(super::app::SCENE_FILE)
+    );
     update(
         app,
         Event::Key(KeyEvent::new(KeyCode::Char('u'), KeyModifiers::CONTROL)),
@@ -519,4 +525,177 @@ fn help_names_new_keys_and_sources() {
     // Still whole at 80×24.
     let s = text(&screen(&app, 80, 24));
     assert!(s.contains("any key closes") && s.contains("Hill"), "{s}");
+}
+
+#[test]
+fn readme_key_list_is_the_keymap_table() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../README.md"))
+        .expect("README.md");
+    let start = readme
+        .find("<!-- keys: generated from tui/src/explore/keymap.rs -->\n")
+        .expect("README key list start marker");
+    let rest = &readme[start..];
+    let body_start = rest.find('\n').expect("marker line") + 1;
+    let end = rest
+        .find("<!-- /keys -->")
+        .expect("README key list end marker");
+    assert_eq!(
+        &rest[body_start..end],
+        super::keymap::readme_list(),
+        "README.md's key list differs from tui/src/explore/keymap.rs: paste readme_list()"
+    );
+}
+
+#[test]
+fn every_key_in_the_keymap_is_handled() {
+    use super::keymap::{KEYMAP, Key};
+    let dir = tmp_dir("keymap");
+    let mut seen = Vec::new();
+    for row in KEYMAP {
+        for (k, action) in row.bindings {
+            assert!(!seen.contains(k), "{k:?} bound twice");
+            seen.push(*k);
+            assert_eq!(super::keymap::action(k.event()), Some(*action), "{k:?}");
+            // Every key changes something visible in some pane (the tidal keys with the panel open).
+            let mut changed = false;
+            for focus in [Focus::Panel, Focus::Chart, Focus::Map] {
+                let mut app = app_on(Preset::IceFrost.scene());
+                app.out_dir = dir.clone();
+                app.focus = focus;
+                app.message = None;
+                select(&mut app, "layer.viscosity");
+                app.focus = focus;
+                if matches!(k, Key::Char('<' | '>')) {
+                    app.tidal = true;
+                }
+                let before = format!("{app:?}");
+                update(&mut app, Event::Key(k.event()));
+                changed |= format!("{app:?}") != before;
+            }
+            assert!(changed, "{k:?} ({}) does nothing", row.keys);
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 12, item 1: `e` pre-filled "0.000199999999999999982" and typing appended to it.
+#[test]
+fn typing_after_e_replaces_the_prefill() {
+    let mut app = app_on(Scene::default());
+    select(&mut app, "bulk.damping.time");
+    // A damping time with float noise, as viscosities give it.
+    let noisy = 2e-4 * (1.0 - f64::EPSILON);
+    app.scene
+        .set_number("bulk.damping.time", noisy)
+        .expect("set");
+    update(&mut app, ch('e'));
+    let input = app.input.clone().expect("input open");
+    assert_eq!(input.text, "200 µs", "pre-fill without float noise");
+    let s = text(&screen(&app, 100, 30));
+    assert!(s.contains("200 µs") && s.contains("typing replaces"), "{s}");
+    for c in "2 ms".chars() {
+        update(&mut app, ch(c));
+    }
+    update(&mut app, key(KeyCode::Enter));
+    assert_eq!(number(&app, "bulk.damping.time"), 2e-3);
+    // Editing keys keep the pre-fill: End, ←, Backspace, then a digit.
+    update(&mut app, ch('e'));
+    assert_eq!(app.input.as_ref().map(|i| i.text.as_str()), Some("2 ms"));
+    for k in [KeyCode::End, KeyCode::Left, KeyCode::Left, KeyCode::Left] {
+        update(&mut app, key(k));
+    }
+    update(&mut app, key(KeyCode::Backspace));
+    update(&mut app, ch('5'));
+    assert_eq!(app.input.as_ref().map(|i| i.text.as_str()), Some("5 ms"));
+    update(&mut app, key(KeyCode::Home));
+    update(&mut app, ch('1'));
+    update(&mut app, key(KeyCode::Enter));
+    assert_eq!(number(&app, "bulk.damping.time"), 15e-3);
+    let s = text(&screen(&app, 100, 30));
+    assert!(!s.contains("999999"), "{s}");
+}
+
+/// Issue 12, item 2: the ε_N chart's decade labels sat up to 0.4 decade from their values (ratatui
+/// spreads labels evenly), so the 6.6 µm/s marker read like 3–4 µm/s. The marker (drawn by the
+/// canvas) must fall between the labels where its value says, within one cell, at every width.
+#[test]
+fn chart_x_labels_sit_at_their_values() {
+    let app = app_on(Preset::IceFrost.scene());
+    let g_s = app
+        .data
+        .as_ref()
+        .and_then(|d| d.contact)
+        .and_then(|c| c.layer)
+        .map(|l| l.critical_velocity)
+        .expect("g_s of the layer");
+    assert!((g_s - 6.6e-6).abs() < 0.1e-6, "{g_s}");
+    let marker = super::view::rgb(rime_core::explorer::palette::CRITICAL);
+    let decade = |s: &str| -> Option<f64> {
+        match s {
+            "0.01" => Some(-2.0),
+            "0.1" => Some(-1.0),
+            "1" => Some(0.0),
+            "10" => Some(1.0),
+            "100" => Some(2.0),
+            _ => s.strip_prefix("1e").and_then(|e| e.parse().ok()),
+        }
+    };
+    for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
+        let t = screen(&app, w, h);
+        let buf = t.backend().buffer();
+        let chart = super::layout::layout(w, h).expect("layout").chart;
+        let (corner, axis_row) = (chart.y..chart.bottom())
+            .flat_map(|y| (chart.x..chart.right()).map(move |x| (x, y)))
+            .find(|&(x, y)| buf[(x, y)].symbol() == "└")
+            .expect("x axis");
+        // The labels: runs of text on the row below the axis, each centred on its column.
+        let mut labels: Vec<(f64, f64)> = Vec::new();
+        let mut run = String::new();
+        for x in chart.x..=chart.right() {
+            let sym = if x < chart.right() {
+                buf[(x, axis_row + 1)].symbol().to_string()
+            } else {
+                " ".to_string()
+            };
+            if sym.trim().is_empty() {
+                if !run.is_empty() {
+                    let n = run.chars().count() as u16;
+                    let start = x - n;
+                    let k = decade(&run).unwrap_or_else(|| panic!("label {run} at {w}×{h}"));
+                    labels.push((k, f64::from(start + n / 2)));
+                    // Each label stands on a major tick.
+                    let tick = buf[(start + n / 2, axis_row)].symbol();
+                    assert_eq!(tick, "┼", "{run} at {w}×{h}");
+                    run.clear();
+                }
+            } else {
+                run.push_str(&sym);
+            }
+        }
+        assert!(labels.len() >= 3, "{w}×{h}: {labels:?}");
+        // Labels evenly spaced per decade (they are log positions), within one cell.
+        let (k0, c0) = labels[0];
+        let (k1, c1) = labels[labels.len() - 1];
+        let per_decade = (c1 - c0) / (k1 - k0);
+        for (k, c) in &labels {
+            let expected = c0 + (k - k0) * per_decade;
+            assert!(
+                (c - expected).abs() <= 1.0,
+                "{w}×{h}: label {k} at {c}, not {expected}"
+            );
+        }
+        // The marker: the column with the most cells in the marker colour.
+        let marker_col = (corner + 1..chart.right())
+            .max_by_key(|&x| {
+                (chart.y..axis_row)
+                    .filter(|&y| buf[(x, y)].fg == marker && buf[(x, y)].symbol() != " ")
+                    .count()
+            })
+            .expect("marker column");
+        let expected = c0 + (g_s.log10() - k0) * per_decade;
+        assert!(
+            (f64::from(marker_col) - expected).abs() <= 1.0,
+            "{w}×{h}: 6.6 µm/s marker at column {marker_col}, the labels put it at {expected:.1}"
+        );
+    }
 }

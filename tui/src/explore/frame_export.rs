@@ -5,6 +5,7 @@ use super::compute::{FrameData, SWEEPS};
 use super::format;
 use crate::output::num;
 use crate::scene_io::{CliError, CliResult, scene_json, write_atomic};
+use rime_core::explorer::palette;
 use rime_core::figure::{Axis, Figure, Marker, Series, speed_label};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -86,7 +87,7 @@ pub fn figures(data: &FrameData) -> Vec<Figure> {
         .map(|(k, m)| Series {
             name: format!("{symbol} = {}", num(m.value)),
             points: pts(&|i| m.eps.get(i).copied().unwrap_or(f64::NAN)),
-            color: k,
+            color: k % palette::FAMILY.len(),
             dashed: false,
         })
         .collect();
@@ -99,14 +100,14 @@ pub fn figures(data: &FrameData) -> Vec<Figure> {
                 .flatten()
                 .map_or(f64::NAN, |n| n.eps)
         }),
-        color: 6,
+        color: palette::SERIES_SCENE,
         dashed: false,
     });
     if let Some(clean) = &data.clean {
         series.push(Series {
             name: "clean surfaces".to_string(),
             points: pts(&|i| clean.get(i).copied().unwrap_or(f64::NAN)),
-            color: 7,
+            color: palette::SERIES_CLEAN,
             dashed: true,
         });
     }
@@ -116,14 +117,14 @@ pub fn figures(data: &FrameData) -> Vec<Figure> {
             markers.push(Marker {
                 x: l.critical_velocity,
                 label: format!("g_s (layer) = {}", speed_label(l.critical_velocity)),
-                color: 1,
+                color: palette::SERIES_SCENE,
             });
         }
         if let Some(a) = c.adhesion {
             markers.push(Marker {
                 x: a.critical_velocity,
                 label: format!("g_s (adhesion) = {}", speed_label(a.critical_velocity)),
-                color: 2,
+                color: palette::SERIES_SCENE,
             });
         }
     }

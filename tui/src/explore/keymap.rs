@@ -1,0 +1,303 @@
+//! The one keymap: the key handler ([`super::app`]), the `?` overlay ([`super::view::help`]) and
+//! the README's key list ([`readme_list`], checked by a test) all read [`KEYMAP`].
+
+use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+
+/// A key as the table names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Key {
+    /// A printable character (Shift is part of the character: `L`, `{`).
+    Char(char),
+    /// ↑.
+    Up,
+    /// ↓.
+    Down,
+    /// ←.
+    Left,
+    /// →.
+    Right,
+    /// Shift+←.
+    ShiftLeft,
+    /// Shift+→.
+    ShiftRight,
+    /// Enter.
+    Enter,
+    /// Tab.
+    Tab,
+    /// Shift+Tab.
+    BackTab,
+    /// Esc.
+    Esc,
+    /// Ctrl-C.
+    CtrlC,
+}
+
+impl Key {
+    /// The terminal event this key arrives as (tests press every key of the table with it).
+    #[cfg(test)]
+    pub fn event(self) -> KeyEvent {
+        let plain = |code| KeyEvent::new(code, KeyModifiers::NONE);
+        match self {
+            Key::Char(c) => plain(KeyCode::Char(c)),
+            Key::Up => plain(KeyCode::Up),
+            Key::Down => plain(KeyCode::Down),
+            Key::Left => plain(KeyCode::Left),
+            Key::Right => plain(KeyCode::Right),
+            Key::ShiftLeft => KeyEvent::new(KeyCode::Left, KeyModifiers::SHIFT),
+            Key::ShiftRight => KeyEvent::new(KeyCode::Right, KeyModifiers::SHIFT),
+            Key::Enter => plain(KeyCode::Enter),
+            Key::Tab => plain(KeyCode::Tab),
+            Key::BackTab => KeyEvent::new(KeyCode::BackTab, KeyModifiers::SHIFT),
+            Key::Esc => plain(KeyCode::Esc),
+            Key::CtrlC => KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL),
+        }
+    }
+
+    /// The table's name of a terminal key event, if the table has one.
+    pub fn of(event: KeyEvent) -> Option<Key> {
+        let shift = event.modifiers.contains(KeyModifiers::SHIFT);
+        if event.modifiers.contains(KeyModifiers::CONTROL) {
+            return (event.code == KeyCode::Char('c')).then_some(Key::CtrlC);
+        }
+        Some(match event.code {
+            KeyCode::Char(c) => Key::Char(c),
+            KeyCode::Up => Key::Up,
+            KeyCode::Down => Key::Down,
+            KeyCode::Left if shift => Key::ShiftLeft,
+            KeyCode::Right if shift => Key::ShiftRight,
+            KeyCode::Left => Key::Left,
+            KeyCode::Right => Key::Right,
+            KeyCode::Enter => Key::Enter,
+            KeyCode::Tab => Key::Tab,
+            KeyCode::BackTab => Key::BackTab,
+            KeyCode::Esc => Key::Esc,
+            _ => return None,
+        })
+    }
+}
+
+/// What a key does; arrows act on the focused pane (parameters, chart cursor, map cursor).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Action {
+    /// Previous parameter; map: cursor up.
+    Up,
+    /// Next parameter; map: cursor down.
+    Down,
+    /// Decrease the parameter; chart/map: cursor left.
+    Left,
+    /// Increase the parameter; chart/map: cursor right.
+    Right,
+    /// Finely decrease; chart/map: one step left.
+    FineLeft,
+    /// Finely increase; chart/map: one step right.
+    FineRight,
+    /// Cycle a choice, switch an effect, edit a number.
+    Activate,
+    /// Type a value.
+    Edit,
+    /// Next preset.
+    Preset,
+    /// Next accuracy level.
+    Accuracy,
+    /// Next swept parameter.
+    Sweep,
+    /// Move the g_N cursor by this many points.
+    Cursor(i8),
+    /// Next pane.
+    FocusNext,
+    /// Previous pane.
+    FocusPrev,
+    /// Stick-map range ×2.
+    MapWider,
+    /// Stick-map range ÷2.
+    MapNarrower,
+    /// Automatic stick-map range.
+    MapAuto,
+    /// Experiments on/off.
+    Experiments,
+    /// Tidal appendix on/off.
+    Tidal,
+    /// Tidal planet distance ÷1.05.
+    TidalNearer,
+    /// Tidal planet distance ×1.05.
+    TidalFarther,
+    /// Export the frame.
+    Export,
+    /// Save the scene.
+    Save,
+    /// Open a scene.
+    Open,
+    /// Show the help.
+    Help,
+    /// Close the tidal appendix, else quit.
+    Back,
+    /// Quit.
+    Quit,
+}
+
+/// One row of the table: how the help names the keys, what they do, and the keys themselves.
+#[derive(Debug, Clone, Copy)]
+pub struct Row {
+    /// The keys as the help shows them.
+    pub keys: &'static str,
+    /// What they do.
+    pub does: &'static str,
+    /// Every key of the row with its action (empty for rows that only explain other rows' keys).
+    pub bindings: &'static [(Key, Action)],
+}
+
+/// Every key of the explorer.
+pub const KEYMAP: &[Row] = &[
+    Row {
+        keys: "↑/↓  j/k",
+        does: "select parameter",
+        bindings: &[
+            (Key::Up, Action::Up),
+            (Key::Char('k'), Action::Up),
+            (Key::Down, Action::Down),
+            (Key::Char('j'), Action::Down),
+        ],
+    },
+    Row {
+        keys: "←/→  h/l",
+        does: "change: ×/÷1.25 (log) or ±5% of range",
+        bindings: &[
+            (Key::Left, Action::Left),
+            (Key::Char('h'), Action::Left),
+            (Key::Right, Action::Right),
+            (Key::Char('l'), Action::Right),
+        ],
+    },
+    Row {
+        keys: "Shift+←/→  H/L",
+        does: "fine change: ×/÷1.02 or ±1%",
+        bindings: &[
+            (Key::ShiftLeft, Action::FineLeft),
+            (Key::Char('H'), Action::FineLeft),
+            (Key::ShiftRight, Action::FineRight),
+            (Key::Char('L'), Action::FineRight),
+        ],
+    },
+    Row {
+        keys: "Enter/space",
+        does: "cycle a choice, switch an effect on/off",
+        bindings: &[
+            (Key::Enter, Action::Activate),
+            (Key::Char(' '), Action::Activate),
+        ],
+    },
+    Row {
+        keys: "e",
+        does: "type an exact value with units (2 um)",
+        bindings: &[(Key::Char('e'), Action::Edit)],
+    },
+    Row {
+        keys: "p",
+        does: "next preset",
+        bindings: &[(Key::Char('p'), Action::Preset)],
+    },
+    Row {
+        keys: "a",
+        does: "next accuracy (fast/balanced/precise)",
+        bindings: &[(Key::Char('a'), Action::Accuracy)],
+    },
+    Row {
+        keys: "s",
+        does: "next swept parameter (family of curves)",
+        bindings: &[(Key::Char('s'), Action::Sweep)],
+    },
+    Row {
+        keys: "[ ] { }  wheel",
+        does: "move the g_N cursor (fine, coarse)",
+        bindings: &[
+            (Key::Char('['), Action::Cursor(-1)),
+            (Key::Char(']'), Action::Cursor(1)),
+            (Key::Char('{'), Action::Cursor(-10)),
+            (Key::Char('}'), Action::Cursor(10)),
+        ],
+    },
+    Row {
+        keys: "Tab",
+        does: "focus: parameters → chart → stick map",
+        bindings: &[
+            (Key::Tab, Action::FocusNext),
+            (Key::BackTab, Action::FocusPrev),
+        ],
+    },
+    Row {
+        keys: "arrows (map focus)",
+        does: "move the map cursor",
+        bindings: &[],
+    },
+    Row {
+        keys: "+ / - / 0",
+        does: "stick map range ×2, ÷2, automatic",
+        bindings: &[
+            (Key::Char('+'), Action::MapWider),
+            (Key::Char('='), Action::MapWider),
+            (Key::Char('-'), Action::MapNarrower),
+            (Key::Char('0'), Action::MapAuto),
+        ],
+    },
+    Row {
+        keys: "b",
+        does: "experiments on the ε_N chart on/off (sources below)",
+        bindings: &[(Key::Char('b'), Action::Experiments)],
+    },
+    Row {
+        keys: "t  (then < >)",
+        does: "tidal appendix A.1–A.7 (planet distance ÷/×1.05)",
+        bindings: &[
+            (Key::Char('t'), Action::Tidal),
+            (Key::Char('<'), Action::TidalNearer),
+            (Key::Char('>'), Action::TidalFarther),
+        ],
+    },
+    Row {
+        keys: "x",
+        does: "export CSV, SVG, PNG + scene JSON to rime-export-*/",
+        bindings: &[(Key::Char('x'), Action::Export)],
+    },
+    Row {
+        keys: "w / o",
+        does: "save / open a scene JSON (rime-scene.json)",
+        bindings: &[
+            (Key::Char('w'), Action::Save),
+            (Key::Char('o'), Action::Open),
+        ],
+    },
+    Row {
+        keys: "?  /  q Esc Ctrl-C",
+        does: "this help (any key closes) / quit",
+        bindings: &[
+            (Key::Char('?'), Action::Help),
+            (Key::Char('q'), Action::Quit),
+            (Key::Esc, Action::Back),
+            (Key::CtrlC, Action::Quit),
+        ],
+    },
+];
+
+/// The action the table gives a key event, if any.
+pub fn action(event: KeyEvent) -> Option<Action> {
+    let key = Key::of(event)?;
+    KEYMAP
+        .iter()
+        .flat_map(|r| r.bindings)
+        .find(|(k, _)| *k == key)
+        .map(|(_, a)| *a)
+}
+
+/// The README's key list (one Markdown bullet per row), kept equal to the table by a test.
+#[cfg(test)]
+pub fn readme_list() -> String {
+    let mut out = String::new();
+    for row in KEYMAP {
+        out.push_str(&format!(
+            "- `{}` {}\n",
+            row.keys.replace("  ", " "),
+            row.does
+        ));
+    }
+    out
+}

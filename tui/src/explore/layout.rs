@@ -1,0 +1,56 @@
+//! Where each part of the screen goes: shared by the views (drawing) and by `app` (mouse hits), so
+//! neither depends on the other.
+
+use ratatui::layout::Rect;
+
+/// Smallest usable terminal.
+pub const MIN_SIZE: (u16, u16) = (60, 20);
+
+/// Where each part of the screen goes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Layout {
+    /// Parameter panel.
+    pub panel: Rect,
+    /// ε_N chart (with its title and readout rows).
+    pub chart: Rect,
+    /// Stick map (with its title and readout rows).
+    pub map: Rect,
+    /// Derived quantities line.
+    pub derived: Rect,
+    /// Status line (accuracy, compute time, warnings).
+    pub status: Rect,
+    /// Message / input line (None on short terminals: the message joins the status line).
+    pub message: Option<Rect>,
+}
+
+impl Layout {
+    /// The area of the tidal calculator: the chart and the stick map together.
+    pub fn views(&self) -> Rect {
+        Rect::new(
+            self.chart.x,
+            self.chart.y,
+            self.chart.width,
+            self.chart.height + self.map.height,
+        )
+    }
+}
+
+/// Splits a `w × h` screen, or `None` if it is below [`MIN_SIZE`].
+pub fn layout(w: u16, h: u16) -> Option<Layout> {
+    if w < MIN_SIZE.0 || h < MIN_SIZE.1 {
+        return None;
+    }
+    let bottom = if h >= 24 { 3 } else { 2 };
+    let main_h = h - bottom;
+    let panel_w = (w * 3 / 8).clamp(26, 40);
+    let right_w = w - panel_w;
+    let chart_h = main_h * 11 / 20;
+    Some(Layout {
+        panel: Rect::new(0, 0, panel_w, main_h),
+        chart: Rect::new(panel_w, 0, right_w, chart_h),
+        map: Rect::new(panel_w, chart_h, right_w, main_h - chart_h),
+        derived: Rect::new(0, main_h, w, 1),
+        status: Rect::new(0, main_h + 1, w, 1),
+        message: (bottom == 3).then(|| Rect::new(0, main_h + 2, w, 1)),
+    })
+}

@@ -1,0 +1,540 @@
+//! The ε_N chart: this scene's curve, the family over a swept parameter, the clean surface, the
+//! critical speeds, the experimental context and the cursor, on log–log axes.
+
+use super::{
+    BAND_COLORS, BAND_SHORT, BAND_TINY, BRIDGES, CLEAN, CURRENT, FAMILY_COLORS, GS_ADHESION,
+    GS_LAYER, nb,
+};
+use crate::explore::compute::{FrameData, Sweep};
+use crate::explore::format::{decade, num3, qty, qty3};
+use ratatui::Frame;
+use ratatui::layout::Rect;
+use ratatui::style::{Color, Modifier, Style};
+use ratatui::symbols::Marker;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Axis, Block, Borders, Chart, Dataset, GraphType, Paragraph, Wrap};
+use rime_core::Status;
+
+/// Integer axis bounds `lo..hi` widened so that at most `max_labels` decade labels divide it evenly.
+fn decade_axis(lo: i32, hi: i32, max_labels: i32) -> (i32, i32, i32) {
+    let span = (hi - lo).max(1);
+    let mut step = 1;
+    while span.div_euclid(step) + 1 > max_labels.max(2) {
+        step += 1;
+    }
+    let span = (span + step - 1) / step * step;
+    (hi - span, hi, step)
+}
+
+fn labels(lo: i32, hi: i32, step: i32, unit: &str) -> Vec<Span<'static>> {
+    let mut out = Vec::new();
+    let mut k = lo;
+    while k <= hi {
+        let mut s = decade(k);
+        if k == hi && !unit.is_empty() {
+            s.push_str(unit);
+        }
+        out.push(Span::raw(s));
+        k += step;
+    }
+    out
+}
+
+fn log_points(g: &[f64], eps: impl Iterator<Item = f64>, y_lo: f64) -> Vec<(f64, f64)> {
+    g.iter()
+        .zip(eps)
+        .filter(|(_, e)| e.is_finite() && *e > 0.0 && e.log10() >= y_lo)
+        .map(|(g, e)| (g.log10(), e.log10()))
+        .collect()
+}
+
+/// Describes ε_N at one point for readouts: `0.3602 rebound`, `0 stuck in layer`.
+pub fn status_text(s: Status) -> &'static str {
+    match s {
+        Status::Rebound => "rebound",
+        Status::StuckInLayer => "stuck in layer",
+        Status::StuckByAdhesion => "stuck by adhesion",
+        Status::Overdamped => "overdamped",
+    }
+}
+
+/// What the ε_N chart shows.
+#[derive(Debug, Clone, Copy)]
+pub struct ChartView<'a> {
+    /// The latest frame (None before the first one).
+    pub data: Option<&'a FrameData>,
+    /// The swept parameter of the family of curves.
+    pub sweep: Sweep,
+    /// Cursor: index into the curve speeds.
+    pub cursor: usize,
+    /// Whether the experimental context is drawn.
+    pub experiments: bool,
+    /// Whether the chart has the focus.
+    pub focused: bool,
+}
+
+/// Draws the ε_N chart: legend, curves, markers, experiments, cursor and readout.
+pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
+    let sweep = app.sweep;
+    let focus = app.focused;
+    let title_name = Span::styled(
+        " ε_N(g_N) ",
+        Style::new().add_modifier(Modifier::BOLD).fg(if focus {
+            Color::White
+        } else {
+            Color::Gray
+        }),
+    );
+    let title = Line::from(vec![
+        title_name.clone(),
+        Span::styled(
+            format!("normal restitution · family over {} ", sweep.symbol),
+            Style::new().fg(Color::Gray),
+        ),
+    ]);
+    let block = Block::new()
+        .borders(Borders::TOP | Borders::BOTTOM)
+        .border_style(Style::new().fg(if focus { Color::White } else { Color::DarkGray }))
+        .title_bottom(chart_readout(app.data, app.cursor));
+    let inner = block.inner(area);
+    let Some(data) = app.data else {
+        frame.render_widget(block.title(title), area);
+        frame.render_widget(Paragraph::new("computing…"), inner);
+        return;
+    };
+    if inner.height < 4 {
+        return;
+    }
+    // Legend line.
+    let mut legend: Vec<Span> = Vec::new();
+    let this = if sweep.available(&data.scene) {
+        nb(format!(
+            "━ this scene ({} {})",
+            sweep.symbol,
+            qty3(sweep.current(&data.scene), sweep.unit)
+        ))
+    } else {
+        nb("━ this scene".to_string())
+    };
+    legend.push(Span::styled(this + " ", Style::new().fg(CURRENT)));
+    if data.clean.is_some() {
+        legend.push(Span::styled(
+            "━\u{a0}clean\u{a0}surface ",
+            Style::new().fg(CLEAN),
+        ));
+    }
+    if !data.family.is_empty() {
+        legend.push(Span::raw(format!("{}:", sweep.symbol)));
+        for (k, m) in data.family.iter().enumerate() {
+            legend.push(Span::styled(
+                format!(" {}", qty(m.value, sweep.unit).replace(' ', "\u{a0}")),
+                Style::new().fg(FAMILY_COLORS[k % FAMILY_COLORS.len()]),
+            ));
+        }
+        legend.push(Span::raw(" "));
+    }
+    if let Some(c) = &data.contact {
+        if let Some(l) = c.layer {
+            legend.push(Span::styled(
+                format!(
+                    "┊\u{a0}g_s\u{a0}layer\u{a0}{} ",
+                    nb(qty(l.critical_velocity, "m/s"))
+                ),
+                Style::new().fg(GS_LAYER),
+            ));
+        }
+        if let Some(a) = c.adhesion {
+            legend.push(Span::styled(
+                format!(
+                    "┊\u{a0}g_s\u{a0}adhesion\u{a0}{} ",
+                    nb(qty(a.critical_velocity, "m/s"))
+                ),
+                Style::new().fg(GS_ADHESION),
+            ));
+        }
+    }
+    let bands = rime_core::figure::experiments::bands(0);
+    // The experiments' legend: long names where two legend rows hold them, else short ones (the
+    // help names them), else in the chart's title.
+    let mut experiments_in_title = false;
+    if app.experiments {
+        let used: usize = legend.iter().map(|s| s.content.chars().count()).sum();
+        // Word wrapping wastes a few cells per row.
+        let room = (2 * inner.width as usize).saturating_sub(8);
+        let long = used + 40 <= room;
+        if long || used + 16 <= room {
+            legend.extend(experiment_legend(long));
+        } else {
+            experiments_in_title = true;
+        }
+    }
+    if experiments_in_title {
+        let mut spans = vec![
+            title_name,
+            Span::styled(
+                format!("· over {} ", sweep.symbol),
+                Style::new().fg(Color::Gray),
+            ),
+        ];
+        spans.extend(experiment_legend(false));
+        frame.render_widget(block.title(Line::from(spans)), area);
+    } else {
+        frame.render_widget(block.title(title), area);
+    }
+    let legend_w: usize = legend.iter().map(|s| s.content.chars().count()).sum();
+    let legend_h = if legend_w > inner.width as usize && inner.height >= 8 {
+        2
+    } else {
+        1
+    };
+    frame.render_widget(
+        Paragraph::new(Line::from(legend)).wrap(Wrap { trim: true }),
+        Rect::new(inner.x, inner.y, inner.width, legend_h),
+    );
+    let plot = Rect::new(
+        inner.x,
+        inner.y + legend_h,
+        inner.width,
+        inner.height - legend_h,
+    );
+    if let Some(e) = &data.error
+        && data.contact.is_none()
+    {
+        frame.render_widget(
+            Paragraph::new(format!("cannot evaluate this scene: {e}"))
+                .style(Style::new().fg(Color::Red))
+                .wrap(Wrap { trim: true }),
+            plot,
+        );
+        return;
+    }
+    // Axis ranges (log10).
+    let (Some(g0), Some(g1)) = (data.g.first(), data.g.last()) else {
+        return;
+    };
+    let (x_lo, x_hi, x_step) = decade_axis(
+        g0.log10().floor() as i32,
+        g1.log10().ceil() as i32,
+        if plot.width >= 36 { 5 } else { 4 },
+    );
+    let mut min_eps = f64::INFINITY;
+    let all = data
+        .current
+        .iter()
+        .map(|n| n.map_or(f64::NAN, |n| n.eps))
+        .chain(data.clean.iter().flatten().copied())
+        .chain(data.family.iter().flat_map(|m| m.eps.iter().copied()));
+    for e in all {
+        if e.is_finite() && e > 0.0 {
+            min_eps = min_eps.min(e);
+        }
+    }
+    if app.experiments {
+        // Keep the experiments' boxes whole on the ε axis.
+        for b in &bands {
+            min_eps = min_eps.min(b.y.0);
+        }
+    }
+    let y_floor = if min_eps.is_finite() {
+        (min_eps.log10().floor() as i32).clamp(-12, -1)
+    } else {
+        -1
+    };
+    let (y_lo, y_hi, y_step) = decade_axis(y_floor, 0, if plot.height >= 12 { 5 } else { 3 });
+    let y_lo_f = f64::from(y_lo);
+    let current_pts = log_points(
+        &data.g,
+        data.current.iter().map(|n| n.map_or(f64::NAN, |n| n.eps)),
+        y_lo_f,
+    );
+    let clean_pts = data
+        .clean
+        .as_ref()
+        .map(|c| log_points(&data.g, c.iter().copied(), y_lo_f));
+    let family_pts: Vec<Vec<(f64, f64)>> = data
+        .family
+        .iter()
+        .map(|m| log_points(&data.g, m.eps.iter().copied(), y_lo_f))
+        .collect();
+    let vline = |x: f64| vec![(x, y_lo_f), (x, f64::from(y_hi))];
+    let markers: Vec<(Vec<(f64, f64)>, Color)> = data
+        .contact
+        .iter()
+        .flat_map(|c| {
+            [
+                c.layer.map(|l| (l.critical_velocity, GS_LAYER)),
+                c.adhesion.map(|a| (a.critical_velocity, GS_ADHESION)),
+            ]
+        })
+        .flatten()
+        .filter(|(g, _)| g.is_finite() && *g > 0.0)
+        .map(|(g, c)| (vline(g.log10()), c))
+        .collect();
+    let cursor_pts = data.g.get(app.cursor).map(|g| vline(g.log10()));
+    let y_hi_f = f64::from(y_hi);
+    let clip_y = |e: f64| e.log10().clamp(y_lo_f, y_hi_f);
+    let bridges_pts: Vec<(f64, f64)> = if app.experiments {
+        data.g
+            .iter()
+            .map(|&g| {
+                let e = rime_core::fit::BRIDGES_1984.eval(g).min(1.0);
+                (g.log10(), e.log10())
+            })
+            .filter(|(_, e)| e.is_finite() && *e >= y_lo_f)
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let band_pts: Vec<(Vec<(f64, f64)>, Color)> = if app.experiments {
+        bands
+            .iter()
+            .enumerate()
+            .map(|(k, b)| {
+                let (x0, x1) = (b.x.0.log10(), b.x.1.log10());
+                let (y0, y1) = (clip_y(b.y.0), clip_y(b.y.1));
+                (
+                    vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)],
+                    BAND_COLORS[k % 2],
+                )
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
+    // Every chart line is a Braille polyline in one style; draw order is what differs.
+    fn line(pts: &[(f64, f64)], style: Style) -> Dataset<'_> {
+        Dataset::default()
+            .marker(Marker::Braille)
+            .graph_type(GraphType::Line)
+            .style(style)
+            .data(pts)
+    }
+    let fg = |c: Color| Style::new().fg(c);
+    let mut datasets = Vec::new();
+    for (k, pts) in family_pts.iter().enumerate() {
+        datasets.push(line(pts, fg(FAMILY_COLORS[k % FAMILY_COLORS.len()])));
+    }
+    if let Some(pts) = &clean_pts {
+        datasets.push(line(pts, fg(CLEAN)));
+    }
+    // The experiments above the family (else the curves hide them), below this scene's curve.
+    if !bridges_pts.is_empty() {
+        datasets.push(line(&bridges_pts, fg(BRIDGES)));
+    }
+    for (pts, color) in band_pts.iter().chain(&markers) {
+        datasets.push(line(pts, fg(*color)));
+    }
+    if let Some(pts) = &cursor_pts {
+        datasets.push(line(pts, fg(Color::White)));
+    }
+    datasets.push(line(
+        &current_pts,
+        Style::new().fg(CURRENT).add_modifier(Modifier::BOLD),
+    ));
+    let axis_style = Style::new().fg(Color::Gray);
+    let y_labels = labels(y_lo, y_hi, y_step, "");
+    let chart = Chart::new(datasets)
+        .x_axis(
+            Axis::default()
+                .title("g_N m/s")
+                .style(axis_style)
+                .bounds([f64::from(x_lo), f64::from(x_hi)])
+                // Placeholders that reserve the label row; `log_ticks` writes the labels at their
+                // values (ratatui spreads labels evenly, which puts them up to 0.4 decade off).
+                .labels(vec![Span::raw(""), Span::raw("")]),
+        )
+        .y_axis(
+            Axis::default()
+                .title("ε_N")
+                .style(axis_style)
+                .bounds([y_lo_f, f64::from(y_hi)])
+                .labels(y_labels.clone()),
+        )
+        .legend_position(None);
+    let y_label_w = y_labels.iter().map(|l| l.width() as u16).max().unwrap_or(0);
+    frame.render_widget(chart, plot);
+    let axis = LogAxis::under(plot, y_label_w, f64::from(x_lo), f64::from(x_hi));
+    log_ticks(frame.buffer_mut(), &axis, x_step, axis_style);
+    if current_pts.is_empty() {
+        let msg = match data.current.iter().flatten().next().map(|n| n.status) {
+            Some(Status::Overdamped) => "overdamped everywhere: ε_N below the plotted range",
+            Some(Status::StuckInLayer | Status::StuckByAdhesion) => "stuck at every speed shown",
+            _ => "no rebound to plot",
+        };
+        let w = (msg.chars().count() as u16).min(plot.width);
+        frame.render_widget(
+            Paragraph::new(msg).style(Style::new().fg(Color::Red)),
+            Rect::new(
+                plot.x + plot.width.saturating_sub(w) / 2,
+                plot.y + plot.height / 3,
+                w,
+                1,
+            ),
+        );
+    }
+}
+
+/// Legend entries of the Bridges law and the experiments' boxes (long or short names).
+fn experiment_legend(long: bool) -> Vec<Span<'static>> {
+    let mut out = vec![Span::styled(
+        if long {
+            "┄\u{a0}Bridges'84 "
+        } else {
+            "┄B84 "
+        },
+        // The swatch is the drawn colour (it was grey over a dark-grey line).
+        Style::new().fg(BRIDGES),
+    )];
+    for k in 0..2 {
+        let name = if long { BAND_SHORT[k] } else { BAND_TINY[k] };
+        let gap = if long { "\u{a0}" } else { "" };
+        out.push(Span::styled(
+            format!("▭{gap}{name} "),
+            Style::new().fg(BAND_COLORS[k]),
+        ));
+    }
+    out
+}
+
+/// The chart's readout at the cursor: speed, ε_N, status, contact time and δ.
+fn chart_readout(data: Option<&FrameData>, cursor: usize) -> Line<'static> {
+    let Some(data) = data else {
+        return Line::default();
+    };
+    let Some(g) = data.g.get(cursor).copied() else {
+        return Line::default();
+    };
+    let mut spans = vec![
+        Span::styled(" ▸ ", Style::new().fg(Color::White)),
+        Span::raw(format!("{}  ", qty3(g, "m/s"))),
+    ];
+    match data.current.get(cursor).copied().flatten() {
+        Some(n) => {
+            let eps = match n.status {
+                Status::StuckInLayer | Status::StuckByAdhesion => "0".to_string(),
+                _ => num3(n.eps),
+            };
+            spans.push(Span::styled(
+                format!("ε_N {eps} "),
+                Style::new().fg(CURRENT).add_modifier(Modifier::BOLD),
+            ));
+            let st_color = match n.status {
+                Status::Rebound => Color::Green,
+                _ => Color::Red,
+            };
+            spans.push(Span::styled(
+                status_text(n.status),
+                Style::new().fg(st_color),
+            ));
+            let t_c = if n.t_c.is_finite() {
+                qty3(n.t_c, "s")
+            } else {
+                "— (stuck)".into()
+            };
+            let delta = data.contact.map_or("—".to_string(), |c| num3(c.delta(g)));
+            spans.push(Span::raw(format!("  t_c {t_c}  δ {delta} ")));
+        }
+        None => spans.push(Span::raw("ε_N — ")),
+    }
+    Line::from(spans)
+}
+
+/// A log x axis as ratatui's chart lays it out: the graph's columns and the axis and label rows.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LogAxis {
+    /// First column of the graph.
+    pub x: u16,
+    /// Width of the graph in cells.
+    pub width: u16,
+    /// Row of the axis line.
+    pub axis_row: u16,
+    /// Row of the labels.
+    pub label_row: u16,
+    /// Left end of the column span the labels may use (the y labels' column).
+    pub left: u16,
+    /// log10 of the axis ends.
+    pub lo: f64,
+    /// log10 of the axis ends.
+    pub hi: f64,
+}
+
+impl LogAxis {
+    /// The axis of a chart drawn in `plot` with y labels `y_label_w` cells wide (ratatui's
+    /// `Chart::layout` with x labels of zero width: labels on the last row, the axis above).
+    pub fn under(plot: Rect, y_label_w: u16, lo: f64, hi: f64) -> LogAxis {
+        let x = plot.x + y_label_w.min(plot.width / 3) + 1;
+        LogAxis {
+            x,
+            width: plot.right().saturating_sub(x),
+            axis_row: plot.bottom().saturating_sub(2),
+            label_row: plot.bottom().saturating_sub(1),
+            left: plot.x,
+            lo,
+            hi,
+        }
+    }
+
+    /// The column where log10 value `t` is drawn (ratatui's Braille grid: two dots per cell).
+    pub fn column(&self, t: f64) -> Option<u16> {
+        let span = self.hi - self.lo;
+        if self.width == 0 || span.is_nan() || span <= 0.0 || t < self.lo || t > self.hi {
+            return None;
+        }
+        let dots = f64::from(self.width) * 2.0 - 1.0;
+        let dot = ((t - self.lo) * dots / (self.hi - self.lo)).round() as u16;
+        Some(self.x + dot / 2)
+    }
+}
+
+/// Major ticks and labels at every `step`-th decade, minor ticks at 2…9 × 10^k (at 2 and 5 when a
+/// decade is narrow, none when it is very narrow), each where its value is drawn.
+fn log_ticks(buf: &mut ratatui::buffer::Buffer, axis: &LogAxis, step: i32, style: Style) {
+    let (lo, hi) = (axis.lo.round() as i32, axis.hi.round() as i32);
+    let decade_w = f64::from(axis.width) / f64::from((hi - lo).max(1));
+    let minors: &[f64] = if decade_w >= 12.0 {
+        &[2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]
+    } else if decade_w >= 5.0 {
+        &[2.0, 5.0]
+    } else {
+        &[]
+    };
+    let right = axis.x + axis.width;
+    let mut majors = Vec::new();
+    for k in lo..=hi {
+        if let Some(c) = axis.column(f64::from(k)) {
+            majors.push(c);
+            if let Some(cell) = buf.cell_mut((c, axis.axis_row)) {
+                cell.set_symbol("┼").set_style(style);
+            }
+        }
+        for m in minors {
+            let Some(c) = axis.column(f64::from(k) + m.log10()) else {
+                continue;
+            };
+            if !majors.contains(&c)
+                && let Some(cell) = buf.cell_mut((c, axis.axis_row))
+            {
+                cell.set_symbol("┴").set_style(style.fg(Color::DarkGray));
+            }
+        }
+    }
+    // Labels centred on their ticks, left to right, never overlapping; every decade where a
+    // label fits in one.
+    let step = (1..step)
+        .find(|s| decade_w * f64::from(*s) >= 6.0)
+        .unwrap_or(step);
+    let mut free_from = axis.left;
+    let mut k = hi - (hi - lo) / step * step;
+    while k <= hi {
+        let text = decade(k);
+        let w = text.chars().count() as u16;
+        if let Some(c) = axis.column(f64::from(k)) {
+            let start = c.saturating_sub(w / 2);
+            if start >= free_from && start + w <= right {
+                buf.set_string(start, axis.label_row, &text, style);
+                free_from = start + w + 1;
+            }
+        }
+        k += step;
+    }
+}

@@ -1,0 +1,231 @@
+//! The one-line views: derived quantities, status (accuracy, timing, warnings), message or input.
+
+use crate::explore::app::{LineInput, Tone};
+use crate::explore::compute::FrameData;
+use crate::explore::format::{num3, qty, qty3};
+use ratatui::style::{Color, Style};
+use ratatui::text::{Line, Span};
+use rime_core::params::PARAMETERS;
+use rime_core::scene::{ContactEnd, Damping, DampingFormula, LayerReading};
+use rime_core::{Accuracy, Scene, Status};
+use std::time::Duration;
+
+/// The derived quantities of the frame's contact (δ at the chart cursor when there is room).
+pub fn derived_line(data: Option<&FrameData>, cursor: usize, width: u16) -> Line<'static> {
+    let Some(data) = data else {
+        return Line::from("computing…");
+    };
+    let Some(c) = data.contact.as_ref() else {
+        return Line::from(Span::styled(
+            data.error.clone().unwrap_or_default(),
+            Style::new().fg(Color::Red),
+        ));
+    };
+    let dim = Style::new().fg(Color::Gray);
+    let g = data.g.get(cursor).copied().unwrap_or(f64::NAN);
+    let delta = if g.is_finite() {
+        num3(c.delta(g))
+    } else {
+        "—".into()
+    };
+    let tan = c.friction.map_or("—".to_string(), |f| {
+        num3(rime_core::tangential::tan_psi0(&f))
+    });
+    let mut items = vec![
+        ("R_eff", qty3(c.r_eff, "m")),
+        ("m_eff", qty3(c.m_eff, "kg")),
+        ("A", qty3(c.damping_time, "s")),
+    ];
+    if let Some(l) = c.layer {
+        items.push(("g_s(layer)", qty3(l.critical_velocity, "m/s")));
+    }
+    if let Some(a) = c.adhesion {
+        items.push(("g_s(adh.)", qty3(a.critical_velocity, "m/s")));
+    }
+    items.push(("tan ψ₀", tan));
+    // δ at the cursor is also in the chart's readout; keep it here when there is room.
+    let used: usize = items
+        .iter()
+        .map(|(n, v)| n.chars().count() + v.chars().count() + 3)
+        .sum();
+    if used + 6 + delta.chars().count() <= width as usize {
+        items.push(("δ(g)", delta));
+    }
+    let mut spans = Vec::new();
+    for (k, (name, value)) in items.into_iter().enumerate() {
+        if k > 0 {
+            spans.push(Span::raw("  "));
+        }
+        spans.push(Span::styled(format!("{name} "), dim));
+        spans.push(Span::raw(value));
+    }
+    Line::from(spans)
+}
+
+/// Options in use that deviate from a physically consistent reading of the paper.
+pub fn paper_options(s: &Scene) -> Vec<&'static str> {
+    let mut out = Vec::new();
+    if s.layer.is_some_and(|l| l.reading == LayerReading::Literal) {
+        out.push("layer.reading=literal");
+    }
+    if s.contact_end == ContactEnd::ZeroOverlap {
+        out.push("contact_end=zero_overlap");
+    }
+    if matches!(s.bulk.damping, Damping::Viscosities(v) if v.formula == DampingFormula::AsPrinted) {
+        out.push("A formula as_printed");
+    }
+    out
+}
+
+/// What the status line shows.
+#[derive(Debug, Clone, Copy)]
+pub struct StatusView<'a> {
+    /// The scene being explored (its paper-inconsistent options are flagged).
+    pub scene: &'a Scene,
+    /// Accuracy level.
+    pub accuracy: Accuracy,
+    /// The latest frame.
+    pub data: Option<&'a FrameData>,
+    /// Compute time to show instead of the measured one.
+    pub elapsed: Option<Duration>,
+    /// Whether a newer frame is being computed.
+    pub computing: bool,
+    /// Chart cursor (index into the curve speeds).
+    pub cursor: usize,
+}
+
+/// Accuracy, compute time and warnings.
+pub fn status_line(app: &StatusView, width: u16) -> Line<'static> {
+    let mut spans = vec![Span::styled(
+        format!(" {} ", app.accuracy.name()),
+        Style::new().fg(Color::Black).bg(Color::Cyan),
+    )];
+    if let Some(d) = app.data {
+        let t = app.elapsed.unwrap_or(d.elapsed);
+        spans.push(Span::raw(format!(" {} ", qty(t.as_secs_f64(), "s"))));
+    }
+    if app.computing {
+        spans.push(Span::styled(" computing… ", Style::new().fg(Color::Yellow)));
+    }
+    let warn = Style::new().fg(Color::LightRed);
+    if let Some(d) = app.data {
+        if let Some(Some(n)) = d.current.get(app.cursor)
+            && n.status == Status::Overdamped
+        {
+            spans.push(Span::styled("│ ⚠ overdamped at cursor ", warn));
+        }
+        if let (Some(e), Some(_)) = (&d.error, &d.contact) {
+            spans.push(Span::styled(format!("│ ⚠ {e} "), warn));
+        }
+        for note in &d.notes {
+            spans.push(Span::styled(format!("│ {note} "), warn));
+        }
+    }
+    let opts = paper_options(app.scene);
+    if !opts.is_empty() {
+        let used: usize = spans.iter().map(|s| s.content.chars().count()).sum();
+        let long = format!("│ ⚠ paper-inconsistent option in use: {}", opts.join(", "));
+        let text = if used + long.chars().count() <= width as usize {
+            long
+        } else {
+            format!("│ ⚠ paper-inconsistent: {}", opts.join(", "))
+        };
+        spans.push(Span::styled(text, Style::new().fg(Color::Yellow)));
+    }
+    Line::from(spans)
+}
+
+/// What the message line shows: an input being typed, else the last message.
+#[derive(Debug, Clone, Copy)]
+pub struct MessageView<'a> {
+    /// Path being typed after `o`.
+    pub open: Option<&'a LineInput>,
+    /// Value being typed after `e`.
+    pub input: Option<&'a LineInput>,
+    /// Selected row of [`PARAMETERS`] (the one `e` sets).
+    pub selected: usize,
+    /// Last status message.
+    pub message: Option<&'a (String, Tone)>,
+}
+
+/// Appends spans to a line.
+trait PatchSpans {
+    fn patch_spans(self, spans: Vec<Span<'static>>) -> Self;
+}
+
+impl PatchSpans for Line<'static> {
+    fn patch_spans(mut self, spans: Vec<Span<'static>>) -> Self {
+        self.spans.extend(spans);
+        self
+    }
+}
+
+/// An input's text with its cursor, then the hint. A pre-fill that typing replaces is shown
+/// highlighted, and the hint says so.
+fn input_spans(input: &LineInput, hint: &str) -> Vec<Span<'static>> {
+    let cursor = Span::styled("▏", Style::new().fg(Color::Yellow));
+    let hint_style = Style::new().fg(Color::Gray);
+    if input.fresh && !input.text.is_empty() {
+        return vec![
+            Span::styled(
+                input.text.clone(),
+                Style::new().fg(Color::Black).bg(Color::Gray),
+            ),
+            cursor,
+            Span::styled(format!("  typing replaces ·{hint}"), hint_style),
+        ];
+    }
+    let (before, after) = input.split();
+    vec![
+        Span::raw(before),
+        cursor,
+        Span::raw(after),
+        Span::styled(format!("{hint} · ←→ Home End"), hint_style),
+    ]
+}
+
+/// The message / input line.
+pub fn message_line(app: &MessageView) -> Line<'static> {
+    if let Some(text) = app.open {
+        return Line::from(vec![
+            Span::styled(
+                " open scene file: ",
+                Style::new().fg(Color::Black).bg(Color::Yellow),
+            ),
+            Span::raw(" "),
+        ])
+        .patch_spans(input_spans(
+            text,
+            "  Enter load · Esc cancel · Ctrl-U clear",
+        ));
+    }
+    if let Some(text) = app.input {
+        let p = PARAMETERS.get(app.selected);
+        let label = p.map_or("", |p| p.label);
+        let unit = p.map_or("", |p| p.unit);
+        let unit = if unit.is_empty() {
+            String::new()
+        } else {
+            format!(" [{unit}]")
+        };
+        return Line::from(vec![
+            Span::styled(
+                format!(" set {label}{unit}: "),
+                Style::new().fg(Color::Black).bg(Color::Yellow),
+            ),
+            Span::raw(" "),
+        ])
+        .patch_spans(input_spans(
+            text,
+            "  Enter apply · Esc cancel · Ctrl-U clear · units ok (2 um, 1 kPa s)",
+        ));
+    }
+    match app.message {
+        Some((text, Tone::Error)) => Line::from(Span::styled(
+            format!(" ✗ {text}"),
+            Style::new().fg(Color::LightRed),
+        )),
+        Some((text, Tone::Info)) => Line::from(Span::raw(format!(" {text}"))),
+        None => Line::default(),
+    }
+}

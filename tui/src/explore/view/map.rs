@@ -1,0 +1,198 @@
+//! The stick map: one terminal cell per grid cell, the class letter on the class colour.
+
+use crate::explore::compute::FrameData;
+use crate::explore::format::{num3, qty3};
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::{Color, Modifier, Style};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Borders, Paragraph, Widget, Wrap};
+use rime_core::StickClass;
+use rime_core::explorer::palette;
+
+/// Colour of each stick-map class (the one palette, [`palette::class`]).
+pub fn class_color(c: StickClass) -> Color {
+    super::rgb(palette::class(c))
+}
+
+/// The letter colour on a class's cell (black or white, whichever reads better).
+fn class_ink(c: StickClass) -> Color {
+    super::rgb(palette::class(c).text_on())
+}
+
+/// Legend name of a class (the JSON name with spaces).
+pub fn class_label(c: StickClass) -> String {
+    c.name().replace('_', " ")
+}
+
+/// Draws the stick map of `data` with the cursor at grid cell `cursor` = (i for g_N, j for g_T).
+pub fn map(
+    buf: &mut Buffer,
+    area: Rect,
+    data: Option<&FrameData>,
+    cursor: (usize, usize),
+    focused: bool,
+) {
+    let focus = focused;
+    let title = Line::from(vec![
+        Span::styled(
+            " stick map ",
+            Style::new().add_modifier(Modifier::BOLD).fg(if focus {
+                Color::White
+            } else {
+                Color::Gray
+            }),
+        ),
+        Span::styled("classes over (g_N ↑, g_T →) ", Style::new().fg(Color::Gray)),
+    ]);
+    let block = Block::new()
+        .borders(Borders::TOP | Borders::BOTTOM)
+        .border_style(Style::new().fg(if focus { Color::White } else { Color::DarkGray }))
+        .title(title)
+        .title_bottom(map_readout(data, cursor));
+    let inner = block.inner(area);
+    block.render(area, buf);
+    let Some(data) = data else {
+        return;
+    };
+    let Some(m) = data.map.as_ref() else {
+        let text = if data.scene.friction.is_none() {
+            "friction is off: no tangential restitution (select 'friction', press Enter)"
+        } else {
+            "no stick map"
+        };
+        Paragraph::new(text)
+            .style(Style::new().fg(Color::Gray))
+            .wrap(Wrap { trim: true })
+            .render(inner, buf);
+        return;
+    };
+    let n = m.n();
+    if n < 2 || inner.height < 3 || inner.width < 20 {
+        return;
+    }
+    let legend_w: u16 = 20;
+    let max_label = qty3(data.map_max, "m/s");
+    let axis_w: u16 = (max_label.chars().count() as u16 + 1).max(6);
+    let show_legend = inner.width >= axis_w + legend_w + 12;
+    let plot_w = inner.width - axis_w - if show_legend { legend_w + 1 } else { 0 };
+    let plot_h = inner.height - 1;
+    let px = inner.x + axis_w;
+    let py = inner.y;
+    // Y axis labels.
+    let put = |buf: &mut Buffer, x: u16, y: u16, s: &str, w: u16| {
+        buf.set_stringn(x, y, s, w as usize, Style::new().fg(Color::Gray));
+    };
+    put(buf, inner.x, py, &max_label, axis_w - 1);
+    if plot_h >= 3 {
+        put(buf, inner.x, py + plot_h / 2, "g_N ↑", axis_w - 1);
+    }
+    put(buf, inner.x, py + plot_h - 1, "0", axis_w - 1);
+    // X axis labels.
+    let ly = py + plot_h;
+    put(buf, px, ly, "0", plot_w);
+    let mid = "g_T →";
+    if plot_w > 16 {
+        put(buf, px + plot_w / 2 - 3, ly, mid, 6);
+    }
+    let mw = max_label.chars().count() as u16;
+    if plot_w > mw + 2 {
+        put(buf, px + plot_w - mw, ly, &max_label, mw);
+    }
+    // One cell per terminal cell: the class letter on the class colour (readable without colour).
+    let index = |k: u16, len: u16| -> usize {
+        if len <= 1 {
+            0
+        } else {
+            ((f64::from(k) * (n - 1) as f64 / f64::from(len - 1)).round() as usize).min(n - 1)
+        }
+    };
+    for r in 0..plot_h {
+        let i = index(plot_h - 1 - r, plot_h);
+        for c in 0..plot_w {
+            let j = index(c, plot_w);
+            let Some(class) = m.class.get(i * n + j).copied() else {
+                continue;
+            };
+            if let Some(cell) = buf.cell_mut((px + c, py + r)) {
+                cell.set_char(class.letter())
+                    .set_fg(class_ink(class))
+                    .set_bg(class_color(class));
+            }
+        }
+    }
+    // Cursor.
+    let (ci, cj) = cursor;
+    let to_cell = |k: usize, len: u16| -> u16 {
+        ((k as f64 * f64::from(len - 1) / (n - 1) as f64).round() as u16).min(len - 1)
+    };
+    let cc = to_cell(cj, plot_w);
+    let cr = plot_h - 1 - to_cell(ci, plot_h);
+    if let Some(cell) = buf.cell_mut((px + cc, py + cr)) {
+        cell.set_symbol("┼")
+            .set_style(Style::new().fg(Color::Black).bg(Color::White));
+    }
+    // Legend.
+    if show_legend {
+        let lx = px + plot_w + 1;
+        for (k, c) in StickClass::ALL.iter().enumerate() {
+            let y = py + k as u16;
+            if y >= inner.y + inner.height {
+                break;
+            }
+            buf.set_string(
+                lx,
+                y,
+                format!("{}", c.letter()),
+                Style::new().fg(class_ink(*c)).bg(class_color(*c)),
+            );
+            buf.set_stringn(
+                lx + 2,
+                y,
+                class_label(*c),
+                (legend_w - 3) as usize,
+                Style::new().fg(Color::Gray),
+            );
+        }
+        // The convention behind "stuck" (docs/physics.md#decision-7).
+        let y = py + StickClass::ALL.len() as u16;
+        if y < inner.y + inner.height {
+            buf.set_stringn(
+                lx,
+                y,
+                "ε_N<1e-9 = rebound",
+                legend_w as usize,
+                Style::new().fg(Color::DarkGray),
+            );
+        }
+    }
+}
+
+/// The map's readout at the cursor: speeds, ε_T and the class.
+fn map_readout(data: Option<&FrameData>, cursor: (usize, usize)) -> Line<'static> {
+    let Some(m) = data.and_then(|d| d.map.as_ref()) else {
+        return Line::default();
+    };
+    let n = m.n();
+    let (i, j) = cursor;
+    let (Some(gn), Some(gt)) = (m.g.get(i), m.g.get(j)) else {
+        return Line::default();
+    };
+    let k = i * n + j;
+    let (Some(class), Some(eps_t)) = (m.class.get(k), m.eps_t.get(k)) else {
+        return Line::default();
+    };
+    Line::from(vec![
+        Span::styled(" ▸ ", Style::new().fg(Color::White)),
+        Span::raw(format!(
+            "g_N {}  g_T {}  ε_T {} ",
+            qty3(*gn, "m/s"),
+            qty3(*gt, "m/s"),
+            num3(*eps_t)
+        )),
+        Span::styled(
+            format!("{} ", class_label(*class)),
+            Style::new().fg(class_color(*class)),
+        ),
+    ])
+}

@@ -1,0 +1,155 @@
+//! Drawing: [`render`] composes the screen from views, each a pure function of the data it shows
+//! (not of the whole [`App`]): [`panel`] the parameters, [`chart`] the ε_N chart, [`map`] the stick
+//! map, [`lines`] the derived, status and message lines, [`help`] the `?` overlay and [`tidal`] the
+//! appendix calculator. Where each goes is [`super::layout`].
+
+pub mod chart;
+pub mod help;
+pub mod lines;
+pub mod map;
+pub mod panel;
+pub mod tidal;
+
+use super::app::{App, Focus};
+use super::layout::{MIN_SIZE, layout};
+use ratatui::Frame;
+use ratatui::layout::{Alignment, Rect};
+use ratatui::style::{Color, Modifier, Style};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Paragraph, Wrap};
+use rime_core::explorer::palette;
+
+/// Replaces spaces by non-breaking ones (a value and its unit stay on one line).
+pub(super) fn nb(s: String) -> String {
+    s.replace(' ', "\u{a0}")
+}
+
+/// A palette colour ([`palette`], the one palette of every surface) as a terminal colour.
+pub const fn rgb(c: palette::Rgb) -> Color {
+    Color::Rgb(c.r, c.g, c.b)
+}
+
+/// The family of curves, in order.
+const FAMILY_COLORS: [Color; 4] = [
+    rgb(palette::FAMILY[0]),
+    rgb(palette::FAMILY[1]),
+    rgb(palette::FAMILY[2]),
+    rgb(palette::FAMILY[3]),
+];
+/// This scene's curve.
+const CURRENT: Color = rgb(palette::SCENE);
+/// The clean-surface curve.
+const CLEAN: Color = rgb(palette::CLEAN);
+/// The critical-speed markers (the colour of this scene's curve).
+const GS_LAYER: Color = rgb(palette::CRITICAL);
+const GS_ADHESION: Color = rgb(palette::CRITICAL);
+/// The Bridges et al. (1984) law: a line beneath the model's curves.
+const BRIDGES: Color = rgb(palette::EXPERIMENT);
+/// The microgravity experiments' boxes (Heißelmann et al. 2010, Hill et al. 2015).
+const BAND_COLORS: [Color; 2] = [rgb(palette::EXPERIMENT), rgb(palette::EXPERIMENT)];
+/// Short legend names of the bands, in the order of `experiments::bands`.
+const BAND_SHORT: [&str; 2] = ["Heißelmann'10", "Hill'15"];
+const BAND_TINY: [&str; 2] = ["H10", "H15"];
+
+/// Draws the whole screen: the one place that reads the whole [`App`] and hands each view its data.
+pub fn render(app: &App, frame: &mut Frame) {
+    let area = frame.area();
+    let Some(l) = layout(area.width, area.height) else {
+        too_small(frame, area);
+        return;
+    };
+    panel::panel(
+        frame,
+        l.panel,
+        &panel::PanelView {
+            scene: &app.scene,
+            preset: app.preset,
+            selected: app.selected,
+            focused: app.focus == Focus::Panel,
+        },
+    );
+    let data = app.data.as_ref();
+    chart::chart(
+        frame,
+        l.chart,
+        &chart::ChartView {
+            data,
+            sweep: app.sweep_def(),
+            cursor: app.cursor,
+            experiments: app.experiments,
+            focused: app.focus == Focus::Chart,
+        },
+    );
+    map::map(
+        frame.buffer_mut(),
+        l.map,
+        data,
+        app.map_cursor,
+        app.focus == Focus::Map,
+    );
+    frame.render_widget(
+        Paragraph::new(lines::derived_line(data, app.cursor, l.derived.width)),
+        l.derived,
+    );
+    let status = lines::StatusView {
+        scene: &app.scene,
+        accuracy: app.accuracy,
+        data,
+        elapsed: app.fixed_elapsed,
+        computing: app.computing(),
+        cursor: app.cursor,
+    };
+    let message = lines::message_line(&lines::MessageView {
+        open: app.open.as_ref(),
+        input: app.input.as_ref(),
+        selected: app.selected,
+        message: app.message.as_ref(),
+    });
+    match l.message {
+        Some(r) => {
+            frame.render_widget(
+                Paragraph::new(lines::status_line(&status, l.status.width)),
+                l.status,
+            );
+            frame.render_widget(Paragraph::new(message), r);
+        }
+        None => {
+            let mut line = if app.input.is_some() || app.open.is_some() {
+                Line::default()
+            } else {
+                lines::status_line(&status, l.status.width)
+            };
+            if !line.spans.is_empty() {
+                line.spans.push(Span::raw(" │ "));
+            }
+            line.spans.extend(message.spans);
+            frame.render_widget(Paragraph::new(line), l.status);
+        }
+    }
+    if app.tidal {
+        let view = super::tidal::view(&app.scene, app.tidal_factor);
+        tidal::render(frame, l.views(), &view);
+    }
+    if app.help {
+        help::help(frame, area);
+    }
+}
+
+fn too_small(frame: &mut Frame, area: Rect) {
+    let text = vec![
+        Line::from(Span::styled(
+            format!("terminal too small (need {}×{})", MIN_SIZE.0, MIN_SIZE.1),
+            Style::new().add_modifier(Modifier::BOLD),
+        )),
+        Line::from(format!("now {}×{}", area.width, area.height)),
+        Line::from("enlarge the window, or q to quit"),
+    ];
+    let h = (text.len() as u16).min(area.height);
+    let y = area.y + area.height.saturating_sub(h) / 2;
+    frame.render_widget(
+        Paragraph::new(text)
+            .alignment(Alignment::Center)
+            .wrap(Wrap { trim: true }),
+        Rect::new(area.x, y, area.width, h),
+    );
+}
