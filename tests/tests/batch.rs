@@ -195,7 +195,7 @@ fn g_file_equals_eps_with_the_same_speeds() {
     let (code, csv, _) = rime(&["eps", "--g-file", file.to_str().unwrap(), "--format", "csv"]);
     assert_eq!(code, 0);
     let mut lines = csv.lines();
-    assert_eq!(lines.next(), Some("g_n,eps_n,status"));
+    assert_eq!(lines.next(), Some("g_n [m/s],eps_n,status"));
     let (code, table, _) = rime(&[
         "eps",
         "--g-file",

@@ -83,11 +83,10 @@ pub(crate) fn number(flag: &str, text: &str) -> CliResult<f64> {
 /// [`rime_core::units::parse_quantity`] like `--set`.
 pub(crate) fn speed(flag: &str, text: &str, allow_zero: bool) -> CliResult<f64> {
     // The core names the field in front of its message; the flag goes there instead.
-    let v = rime_core::units::parse_quantity("", text, "m/s")
-        .map_err(|e| {
-            let shown: String = text.trim().chars().take(40).collect();
-            CliError(format!("{flag} {shown}{e}"))
-        })?;
+    let v = rime_core::units::parse_quantity("", text, "m/s").map_err(|e| {
+        let shown: String = text.trim().chars().take(40).collect();
+        CliError(format!("{flag} {shown}{e}"))
+    })?;
     let ok = if allow_zero { v >= 0.0 } else { v > 0.0 };
     if !ok || v > 1e6 {
         let range = if allow_zero { "[0, 1e6]" } else { "(0, 1e6]" };
@@ -145,7 +144,11 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
     let mut rest = args;
     let mut name = "";
     if let Some(first) = args.first().filter(|a| !a.starts_with('-')) {
-        name = if first == "explore" { "" } else { first.as_str() };
+        name = if first == "explore" {
+            ""
+        } else {
+            first.as_str()
+        };
         rest = &args[1..];
     }
     let Some(sub) = spec::find(name) else {

@@ -122,9 +122,17 @@ pub const SUBS: &[Sub] = &[
         usage: "curve --from G --to G [--points N] [OPTIONS]",
         about: "The records of eps on N log-spaced speeds, both ends included; powers of ten are exact.",
         flags: &[
-            f("--from", "G", "lowest speed; units allowed (1e-6, \"1 um/s\")"),
+            f(
+                "--from",
+                "G",
+                "lowest speed; units allowed (1e-6, \"1 um/s\")",
+            ),
             f("--to", "G", "highest speed; units allowed"),
-            f("--points", "N", "number of speeds, 1 to 100000 (default 400)"),
+            f(
+                "--points",
+                "N",
+                "number of speeds, 1 to 100000 (default 400)",
+            ),
         ],
         scene: true,
         formats: ALL_FORMATS,
@@ -135,8 +143,16 @@ pub const SUBS: &[Sub] = &[
         usage: "tangential --gn LIST --gt LIST [OPTIONS]",
         about: "ε_T and the stick class for every (g_N, g_T) combination, g_N outer.",
         flags: &[
-            f("--gn", "LIST", "normal speeds, comma-separated; units allowed"),
-            f("--gt", "LIST", "tangential speeds, comma-separated; units allowed"),
+            f(
+                "--gn",
+                "LIST",
+                "normal speeds, comma-separated; units allowed",
+            ),
+            f(
+                "--gt",
+                "LIST",
+                "tangential speeds, comma-separated; units allowed",
+            ),
         ],
         scene: true,
         formats: ALL_FORMATS,
@@ -147,7 +163,11 @@ pub const SUBS: &[Sub] = &[
         usage: "map --max G [--n N] [OPTIONS]",
         about: "Stick-map classes and ε_T on an N×N grid of (g_N, g_T) from 0 to G.",
         flags: &[
-            f("--max", "G", "largest speed of the grid; units allowed (5cm/s)"),
+            f(
+                "--max",
+                "G",
+                "largest speed of the grid; units allowed (5cm/s)",
+            ),
             f("--n", "N", "grid points per axis, 2 to 2000 (default 200)"),
         ],
         scene: true,
@@ -160,9 +180,17 @@ pub const SUBS: &[Sub] = &[
         about: "The appendix's tidal estimate (Eq. (A.1)–(A.7)): forces, Roche distance, largest grain.",
         flags: &[
             f("--planet-mass", "M", "planet mass, kg (default Saturn)"),
-            f("--distance", "D", "distance from the planet; units allowed (m, km…)"),
+            f(
+                "--distance",
+                "D",
+                "distance from the planet; units allowed (m, km…)",
+            ),
             f("--radius", "R", "grain radius; units allowed (m, cm…)"),
-            f("--density", "RHO", "grain density; units allowed (kg/m^3, g/cm^3)"),
+            f(
+                "--density",
+                "RHO",
+                "grain density; units allowed (kg/m^3, g/cm^3)",
+            ),
             f(
                 "--surface-energy",
                 "G",
@@ -178,7 +206,11 @@ pub const SUBS: &[Sub] = &[
         usage: "scene [--out FILE] [OPTIONS]",
         about: "Print the scene JSON (after --scene/--preset/--set), or write it atomically with --out. \
                 JSON only.",
-        flags: &[f("--out", "FILE", "write the scene to FILE instead of stdout")],
+        flags: &[f(
+            "--out",
+            "FILE",
+            "write the scene to FILE instead of stdout",
+        )],
         scene: true,
         formats: &["json"],
         example: "scene --preset ice-frost --set layer.viscosity=\"2 kPa s\" --out my.json",
@@ -191,9 +223,21 @@ pub const SUBS: &[Sub] = &[
                 handler with its Python recipe into DIR.",
         flags: &[
             f("--out", "DIR", "directory to write into (required)"),
-            f("--from", "G", "lowest tabulated speed (default 1e-6 m/s); units allowed"),
-            f("--to", "G", "highest tabulated speed (default 1 m/s); units allowed"),
-            f("--points", "N", "tabulated speeds, 8 to 100000 (default 200)"),
+            f(
+                "--from",
+                "G",
+                "lowest tabulated speed (default 1e-6 m/s); units allowed",
+            ),
+            f(
+                "--to",
+                "G",
+                "highest tabulated speed (default 1 m/s); units allowed",
+            ),
+            f(
+                "--points",
+                "N",
+                "tabulated speeds, 8 to 100000 (default 200)",
+            ),
             switch(
                 "--runtime-params",
                 "A, radii, layer and γ become arguments of the exported functions",
@@ -209,10 +253,26 @@ pub const SUBS: &[Sub] = &[
         about: "Fit scene parameters (default bulk.damping.time) to measured (g [m/s], ε[, σ]) points or an \
                 atlas law, with standard errors and correlations.",
         flags: &[
-            f("--data", "FILE", "measured points: g [m/s], ε[, σ] per line"),
-            f("--law", "ID", "fit to an atlas law instead (rime data lists them)"),
-            f("--radius", "R", "reduced radius in m, for laws that need it"),
-            f("--param", "LIST", "parameters to fit, comma-separated dotted paths"),
+            f(
+                "--data",
+                "FILE",
+                "measured points: g [m/s], ε[, σ] per line",
+            ),
+            f(
+                "--law",
+                "ID",
+                "fit to an atlas law instead (rime data lists them)",
+            ),
+            f(
+                "--radius",
+                "R",
+                "reduced radius in m, for laws that need it",
+            ),
+            f(
+                "--param",
+                "LIST",
+                "parameters to fit, comma-separated dotted paths",
+            ),
         ],
         scene: true,
         formats: &["json", "table"],
@@ -225,7 +285,11 @@ pub const SUBS: &[Sub] = &[
         flags: &[
             f("--law", "ID", "evaluate this law"),
             f("--g", "LIST", "speeds, comma-separated; units allowed"),
-            f("--radius", "R", "reduced radius in m, for laws that need it"),
+            f(
+                "--radius",
+                "R",
+                "reduced radius in m, for laws that need it",
+            ),
         ],
         scene: true,
         formats: ALL_FORMATS,
@@ -248,7 +312,11 @@ pub const SUBS: &[Sub] = &[
                 "READING",
                 "surface (γ is a surface energy, default) or adhesion (work of adhesion)",
             ),
-            f("--out", "DIR", "also write stick_table.csv and rime_v_stick.c"),
+            f(
+                "--out",
+                "DIR",
+                "also write stick_table.csv and rime_v_stick.c",
+            ),
         ],
         scene: true,
         formats: ALL_FORMATS,
@@ -276,7 +344,11 @@ pub const SUBS: &[Sub] = &[
         usage: "compare (--models LIST --g LIST | --list | --bench) [OPTIONS]",
         about: "ε_N of several models side by side and their characteristic speeds (g_cr, v_yield, …).",
         flags: &[
-            f("--models", "LIST", "models, comma-separated (default: all that apply)"),
+            f(
+                "--models",
+                "LIST",
+                "models, comma-separated (default: all that apply)",
+            ),
             f("--g", "LIST", "speeds, comma-separated; units allowed"),
             switch("--list", "name every model with its citation"),
             switch("--bench", "cost per ε_N of each model at each level"),
@@ -291,8 +363,15 @@ pub const SUBS: &[Sub] = &[
         about: "Speed and accuracy of every model and level; writes DIR/bench.json and \
                 DIR/work-precision.svg (its scenes are fixed).",
         flags: &[
-            f("--out", "DIR", "directory to write into (default target/bench)"),
-            switch("--quick", "short timing samples (seconds instead of half a minute)"),
+            f(
+                "--out",
+                "DIR",
+                "directory to write into (default target/bench)",
+            ),
+            switch(
+                "--quick",
+                "short timing samples (seconds instead of half a minute)",
+            ),
         ],
         scene: false,
         formats: &[],
@@ -507,7 +586,9 @@ pub fn completions(shell: &str) -> Option<String> {
                     zsh_quote(sub.summary())
                 ));
             }
-            s.push_str("    )\n    _describe 'subcommand' subs\n    return\n  fi\n  case $words[2] in\n");
+            s.push_str(
+                "    )\n    _describe 'subcommand' subs\n    return\n  fi\n  case $words[2] in\n",
+            );
             for sub in SUBS.iter().filter(|s| !s.name.is_empty()) {
                 s.push_str(&format!("    {})\n      _arguments \\\n", sub.name));
                 for fl in all_flags(sub) {
@@ -537,7 +618,9 @@ pub fn completions(shell: &str) -> Option<String> {
             s
         }
         "fish" => {
-            let mut s = String::from("# fish completion for rime (rime completions fish)\ncomplete -c rime -f\n");
+            let mut s = String::from(
+                "# fish completion for rime (rime completions fish)\ncomplete -c rime -f\n",
+            );
             for sub in SUBS.iter().filter(|s| !s.name.is_empty()) {
                 s.push_str(&format!(
                     "complete -c rime -n __fish_use_subcommand -a {} -d '{}'\n",
@@ -631,7 +714,10 @@ pub fn man_page() -> String {
 }
 
 fn man_flag(fl: &Flag) -> String {
-    let value = fl.value.map(|v| format!(" \\fI{}\\fR", roff(v))).unwrap_or_default();
+    let value = fl
+        .value
+        .map(|v| format!(" \\fI{}\\fR", roff(v)))
+        .unwrap_or_default();
     format!(".TP\n\\fB{}\\fR{value}\n{}\n", roff(fl.name), roff(fl.help))
 }
 
