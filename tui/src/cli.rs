@@ -156,11 +156,11 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
     };
     // Positional arguments of `help` and `completions`.
     let mut positional: Option<&str> = None;
-    if matches!(sub.name, "help" | "completions") {
-        if let Some(p) = rest.first().filter(|a| !a.starts_with('-')) {
-            positional = Some(p.as_str());
-            rest = &rest[1..];
-        }
+    if matches!(sub.name, "help" | "completions")
+        && let Some(p) = rest.first().filter(|a| !a.starts_with('-'))
+    {
+        positional = Some(p.as_str());
+        rest = &rest[1..];
     }
     let accepted = sub.accepted();
     let mut scene_file: Option<PathBuf> = None;
