@@ -195,7 +195,7 @@ fn g_file_equals_eps_with_the_same_speeds() {
     let (code, csv, _) = rime(&["eps", "--g-file", file.to_str().unwrap(), "--format", "csv"]);
     assert_eq!(code, 0);
     let mut lines = csv.lines();
-    assert_eq!(lines.next(), Some("g_n,eps_n,status"));
+    assert_eq!(lines.next(), Some("g_n [m/s],eps_n,status"));
     let (code, table, _) = rime(&[
         "eps",
         "--g-file",
@@ -207,7 +207,7 @@ fn g_file_equals_eps_with_the_same_speeds() {
     let mut rows = table.lines();
     assert_eq!(
         rows.next().unwrap().split_whitespace().collect::<Vec<_>>(),
-        ["g_n", "eps_n", "status"]
+        ["g_n", "[m/s]", "eps_n", "status"]
     );
     let c = Contact::new(&Scene::default()).unwrap();
     for ((line, row), &gi) in lines.zip(rows).zip(&g) {

@@ -72,7 +72,7 @@ fn curve_is_log_spaced_with_both_ends_and_csv_matches_json() {
     let mut lines = csv.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "g_n,eps_n,status,t_c,xi_max,error_estimate"
+        "g_n [m/s],eps_n,status,t_c [s],xi_max [m],error_estimate"
     );
     for (line, row) in lines.zip(v.as_array().unwrap()) {
         let eps: f64 = line.split(',').nth(1).unwrap().parse().unwrap();

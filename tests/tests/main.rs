@@ -3,6 +3,7 @@
 mod bad_input;
 mod batch;
 mod cli;
+mod cli_usability;
 mod cost;
 mod explorer_model;
 mod exported;

@@ -86,13 +86,17 @@ pub fn run(out_dir: &Path, quick: bool) -> CliResult<(Vec<Row>, String)> {
     let levels = [Accuracy::Fast, Accuracy::Balanced, Accuracy::Precise];
     let g = speeds();
     let mut rows = Vec::new();
-    for (model, scene) in models() {
+    let all = models();
+    let mut progress =
+        crate::progress::Progress::new("bench", all.len() * levels.len() + levels.len() + 1);
+    for (model, scene) in all {
         let contact = Contact::new(&scene)?;
         let truth: Vec<f64> = g
             .iter()
             .map(|&gi| contact.normal(gi, reference).map(|n| n.eps))
             .collect::<Result<_, _>>()?;
         for level in levels {
+            progress.step(&format!("{model} at {}", level.name()));
             let mut worst = 0.0f64;
             for (&gi, &t) in g.iter().zip(&truth) {
                 let e = contact.normal(gi, level)?.eps;
@@ -138,6 +142,7 @@ pub fn run(out_dir: &Path, quick: bool) -> CliResult<(Vec<Row>, String)> {
     let mut frame = Vec::new();
     let contact = Contact::new(&Preset::IceFrost.scene())?;
     for level in levels {
+        progress.step(&format!("explorer frame at {}", level.name()));
         let t = time_it(
             || {
                 for _ in 0..4 {
@@ -151,6 +156,7 @@ pub fn run(out_dir: &Path, quick: bool) -> CliResult<(Vec<Row>, String)> {
         frame.push((level.name(), t * 1e3));
     }
     let mut text = render(&rows, &frame);
+    progress.step("scipy comparison");
     text.push_str(&scipy_comparison(min_sample)?);
     std::fs::create_dir_all(out_dir)
         .map_err(|e| CliError(format!("--out {}: {e}", out_dir.display())))?;

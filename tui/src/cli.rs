@@ -1,6 +1,7 @@
 //! The non-interactive subcommands (docs/cli.md): machine-readable output for scripts.
 
 use crate::scene_io::{CliError, CliResult, apply_set, err, load_scene, preset, scene_json};
+use crate::spec::{self, Sub};
 use rime_core::{Accuracy, Contact, Scene};
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -60,58 +61,15 @@ pub enum Command {
     Compare(Common, crate::commands::compare::Args),
     /// `rime bench [--out DIR] [--quick]`.
     Bench(PathBuf, bool),
-    /// `rime help` or `--help`.
-    Help,
+    /// `rime help [SUB]`, `rime SUB --help`: the overview or one subcommand's help.
+    Help(Option<&'static crate::spec::Sub>),
+    /// `rime completions bash|zsh|fish`.
+    Completions(String),
+    /// `rime man`.
+    Man,
     /// `rime --version`.
     Version,
 }
-
-/// Usage text.
-pub const USAGE: &str = "\
-rime — slow collisions of icy grains (Hertzsch 2002)
-
-USAGE:
-  rime [OPTIONS]                                 start the terminal explorer
-  rime eps --g LIST [OPTIONS]                    ε_N at impact speeds (m/s, comma-separated)
-  rime eps --g-file FILE [OPTIONS]               ε_N, status for a file of speeds (one per line,
-                                                 # comments), streamed through the batch path
-  rime curve --from G --to G --points N          ε_N on N log-spaced speeds, both ends included
-  rime tangential --gn LIST --gt LIST            ε_T for every (g_N, g_T) combination
-  rime map --max G --n N                         stick-map classes on an N×N grid from 0 to G
-  rime tidal [--planet-mass KG] [--distance M] [--radius M] [--density KG/M3] [--surface-energy J/M2]
-  rime scene [--preset NAME] [--out FILE]        print (or atomically write) the scene JSON
-  rime export --out DIR [--from G --to G --points N] [--runtime-params true]
-                                                 ε_N table (CSV, JSON), fitted Eq. (27) and power
-                                                 laws; C99 + no_std Rust ε_N, ε_T and collision
-                                                 kinematics (fast: 1e-6, precise: 1e-10 at every
-                                                 speed), a REBOUND collision handler + Python recipe;
-                                                 --runtime-params: A, radii, layer, γ as arguments
-  rime fit (--data FILE.csv | --law ID [--radius R]) [--param P1,P2]
-                                                 fit parameters (default bulk.damping.time) to
-                                                 measured (g [m/s], ε[, σ]) points or an atlas law,
-                                                 with standard errors and correlations
-  rime data [--law ID --g LIST [--radius R]]     the atlas of measured ice, or one law evaluated
-  rime stick --radius LIST [--temperature LIST] [--gamma surface|adhesion] [--out DIR]
-                                                 sticking thresholds v_stick(r, T), γ(T) of Musiolik
-                                                 & Wurm 2019; --out writes a table and a C function
-  rime figures [--out DIR]                       the paper's Figs. 2–4 from the model, SVG + PNG
-  rime compare --models LIST --g LIST            ε_N of several models side by side and their
-                                                 characteristic speeds (g_cr, v_yield, …);
-                                                 --list names every model, --bench its cost
-  rime bench [--out DIR] [--quick true]          speed/accuracy of every model and level (writes
-                                                 DIR/bench.json and DIR/work-precision.svg)
-
-OPTIONS:
-  --scene FILE.json        scene file (default: the `ice` preset)
-  --preset NAME            start from a preset: ice, ice-frost, ice-sticky, ice-paper-viscosities
-  --set PATH=VALUE         override a parameter, repeatable (e.g. --set layer.viscosity=2000,
-                           --set layer.thickness=\"2 um\", --set adhesion=off)
-  --accuracy LEVEL         fast | balanced | precise | a relative tolerance like 1e-8
-  --format FORMAT          json | csv | table (table on a terminal, json otherwise)
-  -h, --help               this text
-  -V, --version            version
-
-Errors are one line naming the field, with exit code 2.";
 
 pub(crate) fn number(flag: &str, text: &str) -> CliResult<f64> {
     match text.trim().parse::<f64>() {
@@ -121,8 +79,14 @@ pub(crate) fn number(flag: &str, text: &str) -> CliResult<f64> {
     }
 }
 
+/// A speed in m/s, with an optional unit (`0.01`, `"2 mm/s"`, `5cm/s`), parsed by
+/// [`rime_core::units::parse_quantity`] like `--set`.
 pub(crate) fn speed(flag: &str, text: &str, allow_zero: bool) -> CliResult<f64> {
-    let v = number(flag, text)?;
+    // The core names the field in front of its message; the flag goes there instead.
+    let v = rime_core::units::parse_quantity("", text, "m/s").map_err(|e| {
+        let shown: String = text.trim().chars().take(40).collect();
+        CliError(format!("{flag} {shown}{e}"))
+    })?;
     let ok = if allow_zero { v >= 0.0 } else { v > 0.0 };
     if !ok || v > 1e6 {
         let range = if allow_zero { "[0, 1e6]" } else { "(0, 1e6]" };
@@ -142,14 +106,6 @@ pub(crate) fn speed_list(flag: &str, text: &str, allow_zero: bool) -> CliResult<
     items.iter().map(|s| speed(flag, s, allow_zero)).collect()
 }
 
-fn flag_bool(flag: &str, value: Option<&str>) -> CliResult<bool> {
-    match value {
-        None | Some("false") => Ok(false),
-        Some("true") => Ok(true),
-        Some(other) => err(format!("{flag} {other}: expected true or false")),
-    }
-}
-
 fn count(flag: &str, text: &str, min: usize, max: usize) -> CliResult<usize> {
     match text.trim().parse::<usize>() {
         Ok(n) if (min..=max).contains(&n) => Ok(n),
@@ -159,51 +115,110 @@ fn count(flag: &str, text: &str, min: usize, max: usize) -> CliResult<usize> {
     }
 }
 
-/// Parses the command line (without the program name).
+fn format_of(sub: &Sub, value: &str) -> CliResult<Format> {
+    let name = sub.command();
+    if sub.formats.is_empty() {
+        return err(format!(
+            "--format: not an option of `{name}`, which prints no table (see {name} --help)"
+        ));
+    }
+    if !sub.formats.contains(&value) {
+        if !["json", "csv", "table"].contains(&value) {
+            return err(format!("--format {value}: expected json, csv or table"));
+        }
+        return err(format!(
+            "--format {value}: `{name}` writes {} only",
+            sub.formats.join(" or ")
+        ));
+    }
+    Ok(match value {
+        "csv" => Format::Csv,
+        "table" => Format::Table,
+        _ => Format::Json,
+    })
+}
+
+/// Parses the command line (without the program name); the accepted flags come from
+/// [`crate::spec::SUBS`].
 pub fn parse(args: &[String]) -> CliResult<Command> {
-    let mut sub: Option<&str> = None;
     let mut rest = args;
+    let mut name = "";
     if let Some(first) = args.first().filter(|a| !a.starts_with('-')) {
-        sub = Some(first.as_str());
+        name = if first == "explore" {
+            ""
+        } else {
+            first.as_str()
+        };
         rest = &args[1..];
     }
+    let Some(sub) = spec::find(name) else {
+        return err(format!("{name}: unknown subcommand (see rime --help)"));
+    };
+    // Positional arguments of `help` and `completions`.
+    let mut positional: Option<&str> = None;
+    if matches!(sub.name, "help" | "completions")
+        && let Some(p) = rest.first().filter(|a| !a.starts_with('-'))
+    {
+        positional = Some(p.as_str());
+        rest = &rest[1..];
+    }
+    let accepted = sub.accepted();
     let mut scene_file: Option<PathBuf> = None;
     let mut preset_name: Option<String> = None;
     let mut sets: Vec<String> = Vec::new();
     let mut accuracy = Accuracy::Balanced;
     let mut format: Option<Format> = None;
-    let mut flags: Vec<(String, String)> = Vec::new();
+    let mut flags: Vec<(&'static str, String)> = Vec::new();
     let mut i = 0;
     while i < rest.len() {
         let raw = rest[i].as_str();
         match raw {
-            "-h" | "--help" => return Ok(Command::Help),
+            "-h" | "--help" => return Ok(Command::Help(Some(sub))),
             "-V" | "--version" => return Ok(Command::Version),
-            "--list" | "--bench" if sub == Some("compare") => {
-                flags.push((raw.to_string(), "true".into()));
-                i += 1;
-                continue;
-            }
             _ => {}
         }
         if !raw.starts_with("--") {
-            return err(format!("{raw}: unexpected argument (see rime --help)"));
+            return err(format!(
+                "{raw}: unexpected argument (see {} --help)",
+                sub.command()
+            ));
         }
-        let (flag, inline) = match raw.split_once('=') {
+        let (given, inline) = match raw.split_once('=') {
             Some((f, v)) => (f, Some(v.to_string())),
             None => (raw, None),
         };
-        let value = match inline {
-            Some(v) => v,
-            None => {
+        let Some(flag) = accepted.iter().find(|f| f.name == given) else {
+            if given == "--format" {
+                format_of(sub, "")?;
+            }
+            return err(format!(
+                "{given}: not an option of `{}` (see {} --help)",
+                sub.command(),
+                sub.command()
+            ));
+        };
+        let value = match (flag.value, inline) {
+            (_, Some(v)) => v,
+            // A bare switch; `true`/`false` after it is still accepted (older scripts).
+            (None, None) => match rest.get(i + 1).map(String::as_str) {
+                Some(v @ ("true" | "false")) => {
+                    i += 1;
+                    v.to_string()
+                }
+                _ => "true".to_string(),
+            },
+            (Some(_), None) => {
                 i += 1;
                 match rest.get(i) {
                     Some(v) => v.clone(),
-                    None => return err(format!("{flag}: missing value")),
+                    None => return err(format!("{given}: missing value")),
                 }
             }
         };
-        match flag {
+        if flag.value.is_none() && !matches!(value.as_str(), "true" | "false") {
+            return err(format!("{given} {value}: expected true or false"));
+        }
+        match flag.name {
             "--scene" => scene_file = Some(PathBuf::from(value)),
             "--preset" => preset_name = Some(value),
             "--set" => sets.push(value),
@@ -211,17 +226,30 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
                 accuracy = Accuracy::parse(&value)
                     .map_err(|e| CliError(format!("--accuracy {value}: {e}")))?
             }
-            "--format" => {
-                format = Some(match value.as_str() {
-                    "json" => Format::Json,
-                    "csv" => Format::Csv,
-                    "table" => Format::Table,
-                    other => return err(format!("--format {other}: expected json, csv or table")),
-                })
-            }
-            _ => flags.push((flag.to_string(), value)),
+            "--format" => format = Some(format_of(sub, &value)?),
+            _ => flags.push((flag.name, value)),
         }
         i += 1;
+    }
+    match sub.name {
+        "help" => {
+            return match positional {
+                None => Ok(Command::Help(None)),
+                Some(p) => match spec::find(p).filter(|s| !s.name.is_empty()) {
+                    Some(s) => Ok(Command::Help(Some(s))),
+                    None => err(format!("help {p}: unknown subcommand (see rime --help)")),
+                },
+            };
+        }
+        "completions" => {
+            return match positional {
+                Some(sh @ ("bash" | "zsh" | "fish")) => Ok(Command::Completions(sh.to_string())),
+                Some(other) => err(format!("completions {other}: expected bash, zsh or fish")),
+                None => err("completions: which shell? bash, zsh or fish"),
+            };
+        }
+        "man" => return Ok(Command::Man),
+        _ => {}
     }
     let mut scene = match (&scene_file, &preset_name) {
         (Some(_), Some(_)) => return err("--preset: cannot be combined with --scene"),
@@ -232,61 +260,37 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
     for s in &sets {
         apply_set(&mut scene, s)?;
     }
-    let format = format.unwrap_or(if std::io::stdout().is_terminal() {
+    let terminal_default = if std::io::stdout().is_terminal() {
         Format::Table
     } else {
         Format::Json
+    };
+    let format = format.unwrap_or(match sub.formats {
+        [] => terminal_default,
+        [only] => format_of(sub, only)?,
+        _ => terminal_default,
     });
     let common = Common {
         scene,
         accuracy,
         format,
     };
-    let allowed: &[&str] = match sub {
-        None | Some("explore") => &[],
-        Some("scene") => &["--out"],
-        Some("bench") => &["--out", "--quick"],
-        Some("export") => &["--from", "--to", "--points", "--out", "--runtime-params"],
-        Some("fit") => &["--data", "--param", "--law", "--radius"],
-        Some("data") => &["--law", "--g", "--radius"],
-        Some("stick") => &["--radius", "--temperature", "--gamma", "--out"],
-        Some("figures") => &["--out"],
-        Some("eps") => &["--g", "--g-file"],
-        Some("compare") => &["--models", "--g", "--list", "--bench"],
-        Some("curve") => &["--from", "--to", "--points"],
-        Some("tangential") => &["--gn", "--gt"],
-        Some("map") => &["--max", "--n"],
-        Some("tidal") => &[
-            "--planet-mass",
-            "--distance",
-            "--radius",
-            "--density",
-            "--surface-energy",
-        ],
-        Some("help") => return Ok(Command::Help),
-        Some(other) => return err(format!("{other}: unknown subcommand (see rime --help)")),
-    };
-    for (f, _) in &flags {
-        if !allowed.contains(&f.as_str()) {
-            let name = sub.unwrap_or("rime");
-            return err(format!("{f}: not an option of `{name}` (see rime --help)"));
-        }
-    }
     let get = |name: &str| -> Option<&str> {
         flags
             .iter()
             .rev()
-            .find(|(f, _)| f == name)
+            .find(|(f, _)| *f == name)
             .map(|(_, v)| v.as_str())
     };
     let owned = |name: &str| get(name).map(str::to_string);
+    let switch = |name: &str| get(name) == Some("true");
     let require = |name: &str| -> CliResult<&str> {
         get(name).ok_or_else(|| CliError(format!("{name}: required")))
     };
-    Ok(match sub {
-        None | Some("explore") => Command::Explore(common),
-        Some("scene") => Command::Scene(common, get("--out").map(PathBuf::from)),
-        Some("export") => {
+    Ok(match sub.name {
+        "" => Command::Explore(common),
+        "scene" => Command::Scene(common, get("--out").map(PathBuf::from)),
+        "export" => {
             let from = speed("--from", get("--from").unwrap_or("1e-6"), false)?;
             let to = speed("--to", get("--to").unwrap_or("1"), false)?;
             if to <= from {
@@ -294,21 +298,17 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             }
             let n = count("--points", get("--points").unwrap_or("200"), 8, 100_000)?;
             let out = PathBuf::from(require("--out")?);
-            let runtime = flag_bool("--runtime-params", get("--runtime-params"))?;
-            Command::Export(common, from, to, n, out, runtime)
+            Command::Export(common, from, to, n, out, switch("--runtime-params"))
         }
-        Some("figures") => {
-            Command::Figures(common, PathBuf::from(get("--out").unwrap_or("figures")))
-        }
-        Some("fit") => Command::Fit(common, crate::commands::fit::parse(&owned)?),
-        Some("data") => Command::Data(common, crate::commands::data::parse(&owned)?),
-        Some("stick") => Command::Stick(common, crate::commands::stick::parse(&owned)?),
-        Some("bench") => {
-            let quick = flag_bool("--quick", get("--quick"))?;
+        "figures" => Command::Figures(common, PathBuf::from(get("--out").unwrap_or("figures"))),
+        "fit" => Command::Fit(common, crate::commands::fit::parse(&owned)?),
+        "data" => Command::Data(common, crate::commands::data::parse(&owned)?),
+        "stick" => Command::Stick(common, crate::commands::stick::parse(&owned)?),
+        "bench" => {
             let out = PathBuf::from(get("--out").unwrap_or("target/bench"));
-            Command::Bench(out, quick)
+            Command::Bench(out, switch("--quick"))
         }
-        Some("compare") => Command::Compare(
+        "compare" => Command::Compare(
             common,
             crate::commands::compare::Args {
                 models: match get("--models") {
@@ -319,11 +319,11 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
                     Some(g) => speed_list("--g", g, false)?,
                     None => Vec::new(),
                 },
-                list: get("--list").is_some(),
-                bench: get("--bench").is_some(),
+                list: switch("--list"),
+                bench: switch("--bench"),
             },
         ),
-        Some("eps") => match (get("--g"), get("--g-file")) {
+        "eps" => match (get("--g"), get("--g-file")) {
             (Some(_), Some(_)) => return err("--g-file: cannot be combined with --g"),
             (None, Some(file)) => Command::EpsFile(common, PathBuf::from(file)),
             _ => {
@@ -331,7 +331,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
                 Command::Eps(common, g)
             }
         },
-        Some("curve") => {
+        "curve" => {
             let from = speed("--from", require("--from")?, false)?;
             let to = speed("--to", require("--to")?, false)?;
             if to < from {
@@ -340,7 +340,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             let n = count("--points", get("--points").unwrap_or("400"), 1, 100_000)?;
             Command::Curve(common, from, to, n)
         }
-        Some("tangential") => {
+        "tangential" => {
             let gn = speed_list("--gn", require("--gn")?, true)?;
             let gt = speed_list("--gt", require("--gt")?, true)?;
             if gn.len().saturating_mul(gt.len()) > 1_000_000 {
@@ -348,27 +348,27 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             }
             Command::Tangential(common, gn, gt)
         }
-        Some("map") => {
+        "map" => {
             let max = speed("--max", require("--max")?, false)?;
             let n = count("--n", get("--n").unwrap_or("200"), 2, 2000)?;
             Command::Map(common, max, n)
         }
-        Some("tidal") => {
+        "tidal" => {
             let mut input = rime_core::tidal::TidalInput::default();
-            for (name, slot) in [
-                ("--planet-mass", &mut input.planet_mass),
-                ("--distance", &mut input.distance),
-                ("--radius", &mut input.radius),
-                ("--density", &mut input.density),
-                ("--surface-energy", &mut input.surface_energy),
+            for (name, unit, slot) in [
+                ("--planet-mass", "kg", &mut input.planet_mass),
+                ("--distance", "m", &mut input.distance),
+                ("--radius", "m", &mut input.radius),
+                ("--density", "kg/m³", &mut input.density),
+                ("--surface-energy", "J/m²", &mut input.surface_energy),
             ] {
                 if let Some(v) = get(name) {
-                    *slot = number(name, v)?;
+                    *slot = rime_core::units::parse_quantity(name, v, unit)?;
                 }
             }
             Command::Tidal(common, input)
         }
-        Some(_) => Command::Help,
+        _ => Command::Help(Some(sub)),
     })
 }
 

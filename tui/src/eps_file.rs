@@ -72,8 +72,12 @@ impl<W: Write> Sink<W> {
     fn header(&mut self) -> CliResult<Flow> {
         io(match self.format {
             Format::Json => self.out.write_all(b"["),
-            Format::Csv => self.out.write_all(b"g_n,eps_n,status\n"),
-            Format::Table => writeln!(self.out, "{:>24}  {:>24}  {:>17}", "g_n", "eps_n", "status"),
+            Format::Csv => self.out.write_all(b"g_n [m/s],eps_n,status\n"),
+            Format::Table => writeln!(
+                self.out,
+                "{:>24}  {:>24}  {:>17}",
+                "g_n [m/s]", "eps_n", "status"
+            ),
         })
     }
 

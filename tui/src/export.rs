@@ -4,7 +4,7 @@ use crate::codegen::Law;
 use crate::output::num;
 use crate::scene_io::{CliError, CliResult, write_atomic};
 use rime_core::fit::{Eq27, PowerLaw, fit_eq27, fit_power_law};
-use rime_core::{Accuracy, Contact, Scene, sweep};
+use rime_core::{Accuracy, Contact, Scene};
 use std::path::Path;
 
 /// The exported curve and the laws fitted to it.
@@ -30,7 +30,12 @@ pub fn compute(
     accuracy: Accuracy,
 ) -> CliResult<Export> {
     let contact = Contact::new(scene)?;
-    let (g, normals) = sweep::curve(&contact, from, to, n, accuracy)?;
+    // Decades exact, like `rime curve`.
+    let g = crate::commands::curve::log_space(from, to, n);
+    let normals = g
+        .iter()
+        .map(|&gi| contact.normal(gi, accuracy))
+        .collect::<Result<Vec<_>, _>>()?;
     let eps: Vec<f64> = normals.iter().map(|n| n.eps).collect();
     let status = normals.iter().map(|n| n.status.name()).collect();
     Ok(Export {

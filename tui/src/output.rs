@@ -62,14 +62,23 @@ pub struct MapRecord {
     pub eps_n: Vec<f64>,
 }
 
-/// Formats a number for CSV and tables: shortest round-trip form, `null`/empty never NaN.
+/// Formats a number for CSV and tables: the shortest form that reads back to the same double
+/// (`0`, `0.01`, `1`, `1e-5`, `2.5e-12`; never `0e0`), plain between 1e-3 and 1e6 and in scientific
+/// notation outside; empty (never NaN) for a non-finite value.
 pub fn num(v: f64) -> String {
-    if v.is_finite() {
-        format!("{v:e}")
-    } else {
+    if !v.is_finite() {
         String::new()
+    } else if v == 0.0 {
+        "0".into()
+    } else if (1e-3..1e6).contains(&v.abs()) {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
     }
 }
+
+/// CSV header of `rime map` (units in brackets; the JSON names are the contract).
+pub const MAP_CSV_HEADER: [&str; 4] = ["g_n [m/s]", "g_t [m/s]", "eps_t", "class"];
 
 fn opt(v: Option<f64>) -> String {
     v.map(num).unwrap_or_default()
@@ -77,7 +86,7 @@ fn opt(v: Option<f64>) -> String {
 
 /// Prints records in the chosen format.
 pub trait Rows {
-    /// Column names.
+    /// Column names of CSV and tables: the JSON names, with units in brackets.
     fn header() -> &'static [&'static str];
     /// Cells of one row.
     fn cells(&self) -> Vec<String>;
@@ -85,7 +94,14 @@ pub trait Rows {
 
 impl Rows for EpsRecord {
     fn header() -> &'static [&'static str] {
-        &["g_n", "eps_n", "status", "t_c", "xi_max", "error_estimate"]
+        &[
+            "g_n [m/s]",
+            "eps_n",
+            "status",
+            "t_c [s]",
+            "xi_max [m]",
+            "error_estimate",
+        ]
     }
     fn cells(&self) -> Vec<String> {
         vec![
@@ -101,7 +117,7 @@ impl Rows for EpsRecord {
 
 impl Rows for TangentialRecord {
     fn header() -> &'static [&'static str] {
-        &["g_n", "g_t", "eps_t", "eps_n", "class"]
+        &["g_n [m/s]", "g_t [m/s]", "eps_t", "eps_n", "class"]
     }
     fn cells(&self) -> Vec<String> {
         vec![

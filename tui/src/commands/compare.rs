@@ -153,7 +153,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
             "characteristic_speeds": speeds,
         }))?,
         Format::Csv => {
-            let mut s = String::from("model,g_n,eps_n,status\n");
+            let mut s = String::from("model,g_n [m/s],eps_n,status\n");
             for r in &records {
                 s.push_str(&format!(
                     "{},{},{},{}\n",
@@ -163,7 +163,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                     r.status
                 ));
             }
-            s.push_str("\nmodel,name,value\n");
+            s.push_str("\nmodel,name,value [m/s]\n");
             for c in &speeds {
                 s.push_str(&format!("{},{},{}\n", c.model, c.name, num(c.value)));
             }
@@ -171,7 +171,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         }
         Format::Table => {
             let mut s = table(
-                &["model", "g_n", "eps_n", "status"],
+                &["model", "g_n [m/s]", "eps_n", "status"],
                 &records
                     .iter()
                     .map(|r| vec![r.model.into(), num(r.g_n), num(r.eps_n), r.status.into()])

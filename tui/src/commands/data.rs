@@ -156,14 +156,14 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
             serde_json::to_string_pretty(&v).map_err(|e| CliError(e.to_string()))? + "\n"
         }
         Format::Csv => {
-            let mut s = String::from("g_n,eps_n,extrapolated\n");
+            let mut s = String::from("g_n [m/s],eps_n,extrapolated\n");
             for e in &rows {
                 s.push_str(&format!("{},{},{}\n", num(e.g), num(e.eps), e.extrapolated));
             }
             s
         }
         Format::Table => table(
-            &["g_n", "eps_n", "extrapolated"],
+            &["g_n [m/s]", "eps_n", "extrapolated"],
             &rows
                 .iter()
                 .map(|e| vec![num(e.g), num(e.eps), e.extrapolated.to_string()])

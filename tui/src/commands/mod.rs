@@ -1,6 +1,18 @@
-//! Subcommands with their own files: argument parsing and rendering (docs/cli.md).
+//! One file per subcommand: its body (argument checks beyond crate::cli, computation, rendering);
+//! crate::main only parses and dispatches. The contract is docs/cli.md.
 
+pub mod bench;
 pub mod compare;
+pub mod curve;
 pub mod data;
+pub mod eps;
+pub mod explore;
+pub mod export;
+pub mod figures;
 pub mod fit;
+pub mod help;
+pub mod map;
+pub mod scene;
 pub mod stick;
+pub mod tangential;
+pub mod tidal;

@@ -1,0 +1,84 @@
+//! `rime map --max G --n N`: the stick map on an N×N grid of (g_N, g_T).
+
+use crate::cli::{self, Common, Format};
+use crate::output::{self, MapRecord};
+use crate::scene_io::{CliError, CliResult};
+use rime_core::sweep;
+use std::io::IsTerminal;
+
+/// Grids at least this large announce themselves on a terminal's stderr.
+const BIG: usize = 400;
+
+/// The map in the chosen format; JSON is pretty-printed on a terminal and compact when piped.
+pub fn run(common: &Common, max: f64, n: usize) -> CliResult<String> {
+    let contact = cli::contact(common)?;
+    if contact.friction.is_none() {
+        return Err(CliError(
+            "friction: is off in this scene; the stick map needs it (--set friction=on)".into(),
+        ));
+    }
+    let map = {
+        let mut progress = crate::progress::Progress::new("map", 1);
+        if n >= BIG {
+            progress.step(&format!("{n}×{n} grid"));
+        }
+        sweep::StickMap::new(&contact, max, n, common.accuracy)?
+    };
+    let rows = |f: &dyn Fn(usize) -> f64| -> Vec<Vec<f64>> {
+        (0..n)
+            .map(|i| (0..n).map(|j| f(i * n + j)).collect())
+            .collect()
+    };
+    Ok(match common.format {
+        Format::Json => {
+            let record = MapRecord {
+                g: map.g.clone(),
+                class: (0..n)
+                    .map(|i| (0..n).map(|j| map.class[i * n + j].name()).collect())
+                    .collect(),
+                eps_t: rows(&|k| map.eps_t[k]),
+                eps_n: map.eps_n.clone(),
+            };
+            let text = if std::io::stdout().is_terminal() {
+                serde_json::to_string_pretty(&record)
+            } else {
+                serde_json::to_string(&record)
+            };
+            text.map_err(|e| CliError(e.to_string()))? + "\n"
+        }
+        Format::Csv => {
+            let mut s = format!("{}\n", output::MAP_CSV_HEADER.join(","));
+            for i in 0..n {
+                for j in 0..n {
+                    s.push_str(&format!(
+                        "{},{},{},{}\n",
+                        output::num(map.g[i]),
+                        output::num(map.g[j]),
+                        output::num(map.eps_t[i * n + j]),
+                        map.class[i * n + j].name()
+                    ));
+                }
+            }
+            s
+        }
+        Format::Table => {
+            // One letter per cell, g_T to the right, g_N upwards, with a legend.
+            use rime_core::tangential::StickClass;
+            let mut s = format!(
+                "g_N ↑ (0 … {} m/s), g_T → (0 … {} m/s)\n",
+                output::num(max),
+                output::num(max)
+            );
+            for i in (0..n).rev() {
+                for j in 0..n {
+                    s.push(map.class[i * n + j].letter());
+                }
+                s.push('\n');
+            }
+            for c in StickClass::ALL {
+                s.push_str(&format!("  {}  {}\n", c.letter(), c.name()));
+            }
+            s
+        }
+    })
+}

@@ -1,0 +1,32 @@
+//! `rime tangential --gn LIST --gt LIST`: ε_T and the stick class for every combination.
+
+use crate::cli::{self, Common};
+use crate::output::{TangentialRecord, render};
+use crate::scene_io::{CliError, CliResult};
+
+/// Every (g_N, g_T) combination, g_N outer.
+pub fn run(common: &Common, gn: &[f64], gt: &[f64]) -> CliResult<String> {
+    let contact = cli::contact(common)?;
+    if contact.friction.is_none() {
+        return Err(CliError(
+            "friction: is off in this scene; tangential restitution needs it (--set friction=on)"
+                .into(),
+        ));
+    }
+    let mut records = Vec::with_capacity(gn.len() * gt.len());
+    for &n in gn {
+        for &t in gt {
+            let r = contact
+                .tangential(n, t, common.accuracy)
+                .map_err(|e| CliError(format!("g_n = {n}, g_t = {t}: {e}")))?;
+            records.push(TangentialRecord {
+                g_n: n,
+                g_t: t,
+                eps_t: r.eps_t,
+                eps_n: r.eps_n,
+                class: r.class.name(),
+            });
+        }
+    }
+    render(&records, common.format).map_err(CliError)
+}

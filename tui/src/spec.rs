@@ -1,0 +1,751 @@
+//! The one table of subcommands and flags: the parser's accepted flags (crate::cli), the global
+//! and per-subcommand help, the shell completions (`rime completions bash|zsh|fish`) and the man page
+//! (`rime man`) are all generated from it, so they cannot drift apart.
+
+/// One flag.
+#[derive(Debug, Clone, Copy)]
+pub struct Flag {
+    /// `--name`.
+    pub name: &'static str,
+    /// Placeholder of the value (`LIST`, `FILE`…); `None` for a bare switch (`--quick`), which also
+    /// accepts `true`/`false` after it.
+    pub value: Option<&'static str>,
+    /// One line of help.
+    pub help: &'static str,
+}
+
+/// One subcommand.
+#[derive(Debug, Clone, Copy)]
+pub struct Sub {
+    /// Name (`eps`); `""` for the explorer (`rime` without a subcommand).
+    pub name: &'static str,
+    /// Usage line after `rime `.
+    pub usage: &'static str,
+    /// What it does, a few lines.
+    pub about: &'static str,
+    /// Its own flags.
+    pub flags: &'static [Flag],
+    /// Whether it reads the scene options (`--scene`, `--preset`, `--set`, `--accuracy`).
+    pub scene: bool,
+    /// The `--format` values it honours (empty: `--format` is refused).
+    pub formats: &'static [&'static str],
+    /// One example command line (after `rime `).
+    pub example: &'static str,
+}
+
+const fn f(name: &'static str, value: &'static str, help: &'static str) -> Flag {
+    Flag {
+        name,
+        value: Some(value),
+        help,
+    }
+}
+
+const fn switch(name: &'static str, help: &'static str) -> Flag {
+    Flag {
+        name,
+        value: None,
+        help,
+    }
+}
+
+/// The scene options (taken by every subcommand with `scene: true`).
+pub const SCENE_FLAGS: &[Flag] = &[
+    f(
+        "--scene",
+        "FILE",
+        "scene file, JSON (default: the `ice` preset)",
+    ),
+    f(
+        "--preset",
+        "NAME",
+        "start from a preset: ice, ice-frost, ice-sticky, ice-paper-viscosities",
+    ),
+    f(
+        "--set",
+        "PATH=VALUE",
+        "override a parameter, repeatable; units allowed (--set layer.thickness=\"2 um\", --set adhesion=off)",
+    ),
+    f(
+        "--accuracy",
+        "LEVEL",
+        "fast | balanced | precise | a relative tolerance like 1e-8",
+    ),
+];
+
+/// `--format` (taken by subcommands with a non-empty `formats`).
+pub const FORMAT_FLAG: Flag = f(
+    "--format",
+    "FORMAT",
+    "json | csv | table (table on a terminal, json otherwise)",
+);
+
+/// Flags every command takes.
+pub const GLOBAL_FLAGS: &[Flag] = &[
+    switch("--help", "this subcommand's help (also -h, rime help SUB)"),
+    switch("--version", "print the version (also -V)"),
+];
+
+const ALL_FORMATS: &[&str] = &["json", "csv", "table"];
+
+/// Every subcommand, the explorer first.
+pub const SUBS: &[Sub] = &[
+    Sub {
+        name: "",
+        usage: "[OPTIONS]",
+        about: "The terminal explorer: ε_N and the stick map of one scene, edited live. Needs a terminal; \
+                scripts use the subcommands.",
+        flags: &[],
+        scene: true,
+        formats: &[],
+        example: "--preset ice-frost",
+    },
+    Sub {
+        name: "eps",
+        usage: "eps (--g LIST | --g-file FILE) [OPTIONS]",
+        about: "ε_N, status, contact time and maximum compression at impact speeds, in the order given. \
+                --g-file streams a file of speeds (one per line, # comments) through the batch path.",
+        flags: &[
+            f(
+                "--g",
+                "LIST",
+                "impact speeds, comma-separated; units allowed (0.01, \"2 mm/s\")",
+            ),
+            f("--g-file", "FILE", "a file of speeds in m/s, one per line"),
+        ],
+        scene: true,
+        formats: ALL_FORMATS,
+        example: "eps --g \"1 mm/s,1 cm/s\" --preset ice-frost",
+    },
+    Sub {
+        name: "curve",
+        usage: "curve --from G --to G [--points N] [OPTIONS]",
+        about: "The records of eps on N log-spaced speeds, both ends included; powers of ten are exact.",
+        flags: &[
+            f(
+                "--from",
+                "G",
+                "lowest speed; units allowed (1e-6, \"1 um/s\")",
+            ),
+            f("--to", "G", "highest speed; units allowed"),
+            f(
+                "--points",
+                "N",
+                "number of speeds, 1 to 100000 (default 400)",
+            ),
+        ],
+        scene: true,
+        formats: ALL_FORMATS,
+        example: "curve --from 1e-6 --to 1 --points 7",
+    },
+    Sub {
+        name: "tangential",
+        usage: "tangential --gn LIST --gt LIST [OPTIONS]",
+        about: "ε_T and the stick class for every (g_N, g_T) combination, g_N outer.",
+        flags: &[
+            f(
+                "--gn",
+                "LIST",
+                "normal speeds, comma-separated; units allowed",
+            ),
+            f(
+                "--gt",
+                "LIST",
+                "tangential speeds, comma-separated; units allowed",
+            ),
+        ],
+        scene: true,
+        formats: ALL_FORMATS,
+        example: "tangential --gn 1cm/s --gt 1mm/s,5cm/s",
+    },
+    Sub {
+        name: "map",
+        usage: "map --max G [--n N] [OPTIONS]",
+        about: "Stick-map classes and ε_T on an N×N grid of (g_N, g_T) from 0 to G.",
+        flags: &[
+            f(
+                "--max",
+                "G",
+                "largest speed of the grid; units allowed (5cm/s)",
+            ),
+            f("--n", "N", "grid points per axis, 2 to 2000 (default 200)"),
+        ],
+        scene: true,
+        formats: ALL_FORMATS,
+        example: "map --max 5cm/s --n 40 --format csv",
+    },
+    Sub {
+        name: "tidal",
+        usage: "tidal [--planet-mass M] [--distance D] [--radius R] [--density RHO] [--surface-energy G] [OPTIONS]",
+        about: "The appendix's tidal estimate (Eq. (A.1)–(A.7)): forces, Roche distance, largest grain.",
+        flags: &[
+            f("--planet-mass", "M", "planet mass, kg (default Saturn)"),
+            f(
+                "--distance",
+                "D",
+                "distance from the planet; units allowed (m, km…)",
+            ),
+            f("--radius", "R", "grain radius; units allowed (m, cm…)"),
+            f(
+                "--density",
+                "RHO",
+                "grain density; units allowed (kg/m^3, g/cm^3)",
+            ),
+            f(
+                "--surface-energy",
+                "G",
+                "surface energy; units allowed (J/m^2, mJ/m^2)",
+            ),
+        ],
+        scene: false,
+        formats: ALL_FORMATS,
+        example: "tidal --distance 1.2e8 --radius \"1 cm\"",
+    },
+    Sub {
+        name: "scene",
+        usage: "scene [--out FILE] [OPTIONS]",
+        about: "Print the scene JSON (after --scene/--preset/--set), or write it atomically with --out. \
+                JSON only.",
+        flags: &[f(
+            "--out",
+            "FILE",
+            "write the scene to FILE instead of stdout",
+        )],
+        scene: true,
+        formats: &["json"],
+        example: "scene --preset ice-frost --set layer.viscosity=\"2 kPa s\" --out my.json",
+    },
+    Sub {
+        name: "export",
+        usage: "export --out DIR [--from G --to G --points N] [--runtime-params] [OPTIONS]",
+        about: "Write ε_N tables (CSV, JSON), fitted Eq. (27) and power laws, C99 and no_std Rust ε_N, ε_T and \
+                collision kinematics (fast: 1e-6, precise: 1e-10 at every speed), and a REBOUND collision \
+                handler with its Python recipe into DIR.",
+        flags: &[
+            f("--out", "DIR", "directory to write into (required)"),
+            f(
+                "--from",
+                "G",
+                "lowest tabulated speed (default 1e-6 m/s); units allowed",
+            ),
+            f(
+                "--to",
+                "G",
+                "highest tabulated speed (default 1 m/s); units allowed",
+            ),
+            f(
+                "--points",
+                "N",
+                "tabulated speeds, 8 to 100000 (default 200)",
+            ),
+            switch(
+                "--runtime-params",
+                "A, radii, layer and γ become arguments of the exported functions",
+            ),
+        ],
+        scene: true,
+        formats: &[],
+        example: "export --preset ice-frost --out my-laws --accuracy precise",
+    },
+    Sub {
+        name: "fit",
+        usage: "fit (--data FILE.csv | --law ID [--radius R]) [--param P1,P2] [OPTIONS]",
+        about: "Fit scene parameters (default bulk.damping.time) to measured (g [m/s], ε[, σ]) points or an \
+                atlas law, with standard errors and correlations.",
+        flags: &[
+            f(
+                "--data",
+                "FILE",
+                "measured points: g [m/s], ε[, σ] per line",
+            ),
+            f(
+                "--law",
+                "ID",
+                "fit to an atlas law instead (rime data lists them)",
+            ),
+            f(
+                "--radius",
+                "R",
+                "reduced radius in m, for laws that need it",
+            ),
+            f(
+                "--param",
+                "LIST",
+                "parameters to fit, comma-separated dotted paths",
+            ),
+        ],
+        scene: true,
+        formats: &["json", "table"],
+        example: "fit --law bridges1984 --param bulk.damping.time",
+    },
+    Sub {
+        name: "data",
+        usage: "data [--law ID --g LIST [--radius R]] [OPTIONS]",
+        about: "The atlas of measured ice, or one law evaluated at speeds.",
+        flags: &[
+            f("--law", "ID", "evaluate this law"),
+            f("--g", "LIST", "speeds, comma-separated; units allowed"),
+            f(
+                "--radius",
+                "R",
+                "reduced radius in m, for laws that need it",
+            ),
+        ],
+        scene: true,
+        formats: ALL_FORMATS,
+        example: "data --law bridges1984 --g 1e-4,1e-3,1cm/s",
+    },
+    Sub {
+        name: "stick",
+        usage: "stick --radius LIST [--temperature LIST] [--gamma surface|adhesion] [--out DIR] [OPTIONS]",
+        about: "Sticking thresholds v_stick(r, T) with γ(T) of Musiolik & Wurm 2019; --out also writes a \
+                table and a standalone C function.",
+        flags: &[
+            f("--radius", "LIST", "grain radii in m, comma-separated"),
+            f(
+                "--temperature",
+                "LIST",
+                "temperatures in K (default 150,180,190,200)",
+            ),
+            f(
+                "--gamma",
+                "READING",
+                "surface (γ is a surface energy, default) or adhesion (work of adhesion)",
+            ),
+            f(
+                "--out",
+                "DIR",
+                "also write stick_table.csv and rime_v_stick.c",
+            ),
+        ],
+        scene: true,
+        formats: ALL_FORMATS,
+        example: "stick --radius 1e-6,1e-4 --temperature 150,200",
+    },
+    Sub {
+        name: "figures",
+        usage: "figures [--out DIR] [--accuracy LEVEL]",
+        about: "The paper's Figs. 2–4 rebuilt from the model, SVG + PNG (their scenes are the paper's; \
+                only --accuracy applies).",
+        flags: &[
+            f("--out", "DIR", "directory to write into (default figures)"),
+            f(
+                "--accuracy",
+                "LEVEL",
+                "fast | balanced | precise | a relative tolerance like 1e-8",
+            ),
+        ],
+        scene: false,
+        formats: &[],
+        example: "figures --out figures",
+    },
+    Sub {
+        name: "compare",
+        usage: "compare (--models LIST --g LIST | --list | --bench) [OPTIONS]",
+        about: "ε_N of several models side by side and their characteristic speeds (g_cr, v_yield, …).",
+        flags: &[
+            f(
+                "--models",
+                "LIST",
+                "models, comma-separated (default: all that apply)",
+            ),
+            f("--g", "LIST", "speeds, comma-separated; units allowed"),
+            switch("--list", "name every model with its citation"),
+            switch("--bench", "cost per ε_N of each model at each level"),
+        ],
+        scene: true,
+        formats: ALL_FORMATS,
+        example: "compare --models hertzsch2002,brilliantov2007 --g 1mm/s,1cm/s",
+    },
+    Sub {
+        name: "bench",
+        usage: "bench [--out DIR] [--quick]",
+        about: "Speed and accuracy of every model and level; writes DIR/bench.json and \
+                DIR/work-precision.svg (its scenes are fixed).",
+        flags: &[
+            f(
+                "--out",
+                "DIR",
+                "directory to write into (default target/bench)",
+            ),
+            switch(
+                "--quick",
+                "short timing samples (seconds instead of half a minute)",
+            ),
+        ],
+        scene: false,
+        formats: &[],
+        example: "bench --quick --out target/bench",
+    },
+    Sub {
+        name: "completions",
+        usage: "completions bash|zsh|fish",
+        about: "Print a shell completion script, e.g. `rime completions bash > ~/.local/share/bash-completion/completions/rime`.",
+        flags: &[],
+        scene: false,
+        formats: &[],
+        example: "completions fish > ~/.config/fish/completions/rime.fish",
+    },
+    Sub {
+        name: "man",
+        usage: "man",
+        about: "Print the manual page (roff), e.g. `rime man | man -l -`.",
+        flags: &[],
+        scene: false,
+        formats: &[],
+        example: "man > rime.1",
+    },
+    Sub {
+        name: "help",
+        usage: "help [SUBCOMMAND]",
+        about: "The overview, or one subcommand's help.",
+        flags: &[],
+        scene: false,
+        formats: &[],
+        example: "help eps",
+    },
+];
+
+/// The subcommand called `name` (`""`: the explorer).
+pub fn find(name: &str) -> Option<&'static Sub> {
+    SUBS.iter().find(|s| s.name == name)
+}
+
+impl Sub {
+    /// Every flag this subcommand accepts, in help order (without --help/--version).
+    pub fn accepted(&self) -> Vec<Flag> {
+        let mut v: Vec<Flag> = self.flags.to_vec();
+        if self.scene {
+            v.extend(SCENE_FLAGS.iter().copied());
+        }
+        if !self.formats.is_empty() {
+            v.push(FORMAT_FLAG);
+        }
+        v
+    }
+
+    /// `rime eps` (or `rime` for the explorer).
+    pub fn command(&self) -> String {
+        if self.name.is_empty() {
+            "rime".into()
+        } else {
+            format!("rime {}", self.name)
+        }
+    }
+}
+
+fn flag_line(fl: &Flag) -> String {
+    let left = match fl.value {
+        Some(v) => format!("{} {v}", fl.name),
+        None => fl.name.to_string(),
+    };
+    wrap(&format!("  {left:<24} "), fl.help, 27) + "\n"
+}
+
+/// Wraps `text` after the verbatim `prefix` at 96 columns, continuation lines indented by
+/// `indent` spaces.
+fn wrap(prefix: &str, text: &str, indent: usize) -> String {
+    let mut out = prefix.to_string();
+    let mut width = prefix.chars().count();
+    for (k, word) in text.split_whitespace().enumerate() {
+        let n = word.chars().count();
+        if k > 0 && width + 1 + n > 96 {
+            out.push('\n');
+            out.push_str(&" ".repeat(indent));
+            width = indent;
+        } else if k > 0 {
+            out.push(' ');
+            width += 1;
+        }
+        out.push_str(word);
+        width += n;
+    }
+    out
+}
+
+impl Sub {
+    /// The first sentence of `about` (a period followed by a capital ends it), without the period.
+    pub fn summary(&self) -> &'static str {
+        let a = self.about;
+        let end = a
+            .match_indices(". ")
+            .find(|(i, _)| a[i + 2..].starts_with(|c: char| c.is_uppercase()))
+            .map_or(a.len(), |(i, _)| i);
+        a[..end].trim_end_matches('.')
+    }
+}
+
+/// `rime <sub> --help`.
+pub fn sub_help(sub: &Sub) -> String {
+    let mut s = format!(
+        "{}\n\nUSAGE:\n  rime {}\n\n",
+        wrap(&format!("{} — ", sub.command()), sub.about, 2),
+        sub.usage
+    );
+    s.push_str("OPTIONS:\n");
+    for fl in sub.accepted().iter().chain(GLOBAL_FLAGS) {
+        s.push_str(&flag_line(fl));
+    }
+    if !sub.formats.is_empty() && sub.formats.len() < ALL_FORMATS.len() {
+        s.push_str(&format!(
+            "  (--format: {} only)\n",
+            sub.formats.join(" or ")
+        ));
+    }
+    s.push_str(&format!("\nEXAMPLE:\n  rime {}\n", sub.example));
+    s.push_str("\nErrors are one line naming the flag, with exit code 2 (docs/cli.md).\n");
+    s
+}
+
+/// `rime --help`: the overview.
+pub fn usage() -> String {
+    let mut s = String::from("rime — slow collisions of icy grains (Hertzsch 2002)\n\nUSAGE:\n");
+    for sub in SUBS {
+        s.push_str(&format!("  rime {}\n", sub.usage));
+    }
+    s.push_str("\nSUBCOMMANDS:\n");
+    for sub in SUBS.iter().filter(|s| !s.name.is_empty()) {
+        s.push_str(&wrap(&format!("  {:<12} ", sub.name), sub.summary(), 15));
+        s.push('\n');
+    }
+    s.push_str("\nOPTIONS (of the subcommands that read a scene or print a table):\n");
+    for fl in SCENE_FLAGS
+        .iter()
+        .chain(std::iter::once(&FORMAT_FLAG))
+        .chain(GLOBAL_FLAGS)
+    {
+        s.push_str(&flag_line(fl));
+    }
+    s.push_str(
+        "\nrime help SUB (or rime SUB --help) shows a subcommand's flags and an example.\n\
+         Errors are one line naming the flag, with exit code 2.\n",
+    );
+    s
+}
+
+fn sub_names() -> Vec<&'static str> {
+    SUBS.iter()
+        .map(|s| s.name)
+        .filter(|n| !n.is_empty())
+        .collect()
+}
+
+fn all_flags(sub: &Sub) -> Vec<Flag> {
+    let mut v = sub.accepted();
+    v.extend(GLOBAL_FLAGS.iter().copied());
+    v
+}
+
+/// `rime completions bash|zsh|fish`.
+pub fn completions(shell: &str) -> Option<String> {
+    let names = sub_names();
+    Some(match shell {
+        "bash" => {
+            let mut s = String::from(
+                "# bash completion for rime (rime completions bash)\n_rime() {\n  local cur sub\n  \
+                 cur=\"${COMP_WORDS[COMP_CWORD]}\"\n  sub=\"${COMP_WORDS[1]}\"\n  \
+                 if [ \"$COMP_CWORD\" -eq 1 ] && [[ \"$cur\" != -* ]]; then\n",
+            );
+            s.push_str(&format!(
+                "    COMPREPLY=($(compgen -W \"{}\" -- \"$cur\"))\n    return\n  fi\n  case \"$sub\" in\n",
+                names.join(" ")
+            ));
+            for sub in SUBS.iter().filter(|s| !s.name.is_empty()) {
+                let flags: Vec<&str> = all_flags(sub).iter().map(|f| f.name).collect();
+                let words = if sub.name == "completions" {
+                    "bash zsh fish".to_string()
+                } else if sub.name == "help" {
+                    names.join(" ")
+                } else {
+                    flags.join(" ")
+                };
+                s.push_str(&format!(
+                    "    {}) COMPREPLY=($(compgen -W \"{words}\" -- \"$cur\")) ;;\n",
+                    sub.name
+                ));
+            }
+            let explorer: Vec<&str> = SUBS
+                .first()
+                .map(|e| all_flags(e).iter().map(|f| f.name).collect())
+                .unwrap_or_default();
+            s.push_str(&format!(
+                "    *) COMPREPLY=($(compgen -W \"{}\" -- \"$cur\")) ;;\n  esac\n}}\ncomplete -o default -F _rime rime\n",
+                explorer.join(" ")
+            ));
+            s
+        }
+        "zsh" => {
+            let mut s = String::from(
+                "#compdef rime\n# zsh completion for rime (rime completions zsh)\n_rime() {\n  \
+                 if (( CURRENT == 2 )); then\n    local -a subs\n    subs=(\n",
+            );
+            for sub in SUBS.iter().filter(|s| !s.name.is_empty()) {
+                s.push_str(&format!(
+                    "      '{}:{}'\n",
+                    sub.name,
+                    zsh_quote(sub.summary())
+                ));
+            }
+            s.push_str(
+                "    )\n    _describe 'subcommand' subs\n    return\n  fi\n  case $words[2] in\n",
+            );
+            for sub in SUBS.iter().filter(|s| !s.name.is_empty()) {
+                s.push_str(&format!("    {})\n      _arguments \\\n", sub.name));
+                for fl in all_flags(sub) {
+                    let action = match fl.value {
+                        Some("FILE") | Some("DIR") => ":file:_files",
+                        Some(v) => {
+                            if v == "FORMAT" {
+                                ":format:(json csv table)"
+                            } else {
+                                ":value: "
+                            }
+                        }
+                        None => "",
+                    };
+                    s.push_str(&format!(
+                        "        '{}[{}]{action}' \\\n",
+                        fl.name,
+                        zsh_quote(fl.help)
+                    ));
+                }
+                if sub.name == "completions" {
+                    s.push_str("        ':shell:(bash zsh fish)' \\\n");
+                }
+                s.push_str("        && return 0 ;;\n");
+            }
+            s.push_str("  esac\n}\n_rime \"$@\"\n");
+            s
+        }
+        "fish" => {
+            let mut s = String::from(
+                "# fish completion for rime (rime completions fish)\ncomplete -c rime -f\n",
+            );
+            for sub in SUBS.iter().filter(|s| !s.name.is_empty()) {
+                s.push_str(&format!(
+                    "complete -c rime -n __fish_use_subcommand -a {} -d '{}'\n",
+                    sub.name,
+                    fish_quote(sub.summary())
+                ));
+            }
+            for sub in SUBS {
+                let cond = if sub.name.is_empty() {
+                    "__fish_use_subcommand".to_string()
+                } else {
+                    format!("'__fish_seen_subcommand_from {}'", sub.name)
+                };
+                for fl in all_flags(sub) {
+                    let req = match fl.value {
+                        Some("FILE") | Some("DIR") => " -r -F",
+                        Some("FORMAT") => " -x -a 'json csv table'",
+                        Some(_) => " -x",
+                        None => "",
+                    };
+                    s.push_str(&format!(
+                        "complete -c rime -n {cond} -l {}{req} -d '{}'\n",
+                        fl.name.trim_start_matches("--"),
+                        fish_quote(fl.help)
+                    ));
+                }
+            }
+            s.push_str(
+                "complete -c rime -n '__fish_seen_subcommand_from completions' -a 'bash zsh fish'\n",
+            );
+            s
+        }
+        _ => return None,
+    })
+}
+
+fn zsh_quote(s: &str) -> String {
+    s.replace('\'', "'\\''")
+        .replace('[', "(")
+        .replace(']', ")")
+        .replace(':', " -")
+}
+
+fn fish_quote(s: &str) -> String {
+    s.replace('\\', "\\\\").replace('\'', "\\'")
+}
+
+fn roff(s: &str) -> String {
+    s.replace('\\', "\\e").replace('-', "\\-")
+}
+
+/// `rime man`: the manual page in roff.
+pub fn man_page() -> String {
+    let mut s = format!(
+        ".TH RIME 1 \"\" \"rime {}\" \"User Commands\"\n.SH NAME\nrime \\- slow collisions of icy grains (Hertzsch 2002)\n.SH SYNOPSIS\n",
+        env!("CARGO_PKG_VERSION")
+    );
+    for sub in SUBS {
+        s.push_str(&format!(".B rime\n{}\n.br\n", roff(sub.usage)));
+    }
+    s.push_str(
+        ".SH DESCRIPTION\nThe terminal explorer and scriptable subcommands of rime. JSON field names, \
+         status and class names are a contract (docs/cli.md). Errors are one line naming the flag, \
+         with exit status 2.\n.SH SUBCOMMANDS\n",
+    );
+    for sub in SUBS {
+        let title = if sub.name.is_empty() {
+            "rime (no subcommand)".to_string()
+        } else {
+            format!("rime {}", sub.name)
+        };
+        s.push_str(&format!(".SS {}\n{}\n", roff(&title), roff(sub.about)));
+        for fl in sub.flags {
+            s.push_str(&man_flag(fl));
+        }
+        s.push_str(&format!(
+            ".PP\nExample:\n.RS\n.nf\nrime {}\n.fi\n.RE\n",
+            roff(sub.example)
+        ));
+    }
+    s.push_str(".SH OPTIONS\nTaken by every subcommand that reads a scene or prints a table:\n");
+    for fl in SCENE_FLAGS
+        .iter()
+        .chain(std::iter::once(&FORMAT_FLAG))
+        .chain(GLOBAL_FLAGS)
+    {
+        s.push_str(&man_flag(fl));
+    }
+    s.push_str(".SH EXIT STATUS\n0 on success, 1 when a computation fails, 2 on bad input.\n");
+    s
+}
+
+fn man_flag(fl: &Flag) -> String {
+    let value = fl
+        .value
+        .map(|v| format!(" \\fI{}\\fR", roff(v)))
+        .unwrap_or_default();
+    format!(".TP\n\\fB{}\\fR{value}\n{}\n", roff(fl.name), roff(fl.help))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_accepted_flag_is_in_help_completions_and_man() {
+        let man = man_page();
+        let shells: Vec<String> = ["bash", "zsh", "fish"]
+            .iter()
+            .map(|sh| completions(sh).unwrap())
+            .collect();
+        for sub in SUBS {
+            let help = sub_help(sub);
+            for fl in all_flags(sub) {
+                assert!(help.contains(fl.name), "{}: {}", sub.name, fl.name);
+                assert!(man.contains(&roff(fl.name)), "man: {}", fl.name);
+                for (sh, text) in ["bash", "zsh", "fish"].iter().zip(&shells) {
+                    let needle = if *sh == "fish" {
+                        format!("-l {}", fl.name.trim_start_matches("--"))
+                    } else {
+                        fl.name.to_string()
+                    };
+                    assert!(text.contains(&needle), "{sh}: {}", fl.name);
+                }
+            }
+        }
+    }
+}
