@@ -3,6 +3,7 @@
 mod bad_input;
 mod batch;
 mod cli;
+mod collision;
 mod cost;
 mod exported;
 mod extremes;
