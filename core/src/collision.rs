@@ -136,7 +136,11 @@ const GAUSS: [(f64, f64); 5] = [
 
 fn gauss(lo: f64, hi: f64, f: impl Fn(f64) -> f64) -> f64 {
     let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
-    GAUSS.iter().map(|&(x, w)| w * f(mid + half * x)).sum::<f64>() * half
+    GAUSS
+        .iter()
+        .map(|&(x, w)| w * f(mid + half * x))
+        .sum::<f64>()
+        * half
 }
 
 /// Collects the dense output of an integration.
@@ -222,11 +226,7 @@ impl Piece {
     fn span(&self) -> (f64, f64) {
         match *self {
             Piece::Step {
-                map,
-                c0,
-                c1,
-                scale,
-                ..
+                map, c0, c1, scale, ..
             } => (
                 scale.t_offset + scale.tau * map.s(c0),
                 scale.t_offset + scale.tau * map.s(c1),
@@ -253,11 +253,7 @@ impl Piece {
                     Kind::Layer => unit * 1.5 * scale.lambda * sqrt(x) * v,
                     Kind::Coast => 0.0,
                 };
-                (
-                    scale.xi_offset + scale.xi_star * x,
-                    scale.g * v,
-                    f,
-                )
+                (scale.xi_offset + scale.xi_star * x, scale.g * v, f)
             }
             Piece::Layer {
                 a,
@@ -318,7 +314,9 @@ fn layer_time(a: f64, b: f64, x0: f64, x: f64) -> f64 {
 /// m_eff g²: ∫ (3/2) λ √x |x'| dx = ∫ 3 λ w² (a + b w³) dw over w = √x (a polynomial: exact).
 fn layer_work(a: f64, b: f64, lambda: f64, x0: f64, x1: f64) -> f64 {
     let (lo, hi) = if x0 < x1 { (x0, x1) } else { (x1, x0) };
-    gauss(sqrt(lo), sqrt(hi), |w| 3.0 * lambda * w * w * (a + b * w * w * w))
+    gauss(sqrt(lo), sqrt(hi), |w| {
+        3.0 * lambda * w * w * (a + b * w * w * w)
+    })
 }
 
 impl Contact {
@@ -432,7 +430,16 @@ impl Contact {
                 }
             }
         }
-        self.finish(g, points, accuracy, normal, phases, pieces, resolved, rhs_evaluations)
+        self.finish(
+            g,
+            points,
+            accuracy,
+            normal,
+            phases,
+            pieces,
+            resolved,
+            rhs_evaluations,
+        )
     }
 
     /// The bulk collision of Eq. (4) at the reference speed of `sc`, integrated live.
@@ -522,7 +529,10 @@ impl Contact {
                 pieces.append(&mut collector.pieces);
                 let t0 = sc.tau * s;
                 let s_d = s + u / -v;
-                phases.push(Phase { name: "coast", t: t0 });
+                phases.push(Phase {
+                    name: "coast",
+                    t: t0,
+                });
                 pieces.push(Piece::Coast {
                     t0,
                     t1: sc.tau * s_d,
@@ -748,4 +758,83 @@ fn bisect(mut lo: f64, mut hi: f64, f: impl Fn(f64) -> f64) -> f64 {
         }
     }
     0.5 * (lo + hi)
+}
+
+/// The tangential side of an oblique impact (Eq. (1), (2), (26)) for two solid spheres.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Oblique {
+    /// ε_T of Eq. (26).
+    pub eps_t: f64,
+    /// The stick-map class (docs/physics.md#decision-7).
+    pub class: crate::tangential::StickClass,
+    /// ½ m_t g_T² before \[J\], m_t = κ m_eff (Eq. (22)).
+    pub energy_before: f64,
+    /// ½ m_t (ε_T g_T)² after \[J\].
+    pub energy_after: f64,
+    /// Work of the tangential (friction) impulse J_T on the relative surface motion,
+    /// J_T · (g_T + g'_T)/2 \[J\] (< 0: taken from the grains).
+    pub friction_work: f64,
+    /// Change of each grain's spin about the axis n × t \[rad/s\].
+    pub spin_change: [f64; 2],
+    /// Total momentum after minus before \[kg m/s\] (a check: 0 to rounding).
+    pub momentum_change: f64,
+    /// Kinetic energy (translation and spin of both grains) before and after \[J\].
+    pub kinetic_before: f64,
+    /// See `kinetic_before`.
+    pub kinetic_after: f64,
+}
+
+impl Contact {
+    /// An oblique impact of two solid spheres of radii `radius_1`, `radius_2` \[m\] at normal and
+    /// tangential speeds `g_n`, `g_t` \[m/s\], without spin before: ε_N and ε_T from the scene,
+    /// applied by the core's kinematics ([`crate::kinematics::collide`], Eq. (2)).
+    pub fn oblique(
+        &self,
+        radius_1: f64,
+        radius_2: f64,
+        g_n: f64,
+        g_t: f64,
+        accuracy: Accuracy,
+    ) -> Result<Oblique> {
+        use crate::kinematics::{
+            GrainState, Vector3, collide, effective_tangential_mass, relative_surface_velocity,
+        };
+        let tangential = self.tangential(g_n, g_t, accuracy)?;
+        let (m1, m2) = (self.mass_1, self.mass_2);
+        let total = m1 + m2;
+        // Centre-of-mass frame; n from grain 2 to grain 1, grain 1 moves along −n: g = (g_t, 0, −g_n).
+        let n = Vector3::new(0.0, 0.0, 1.0);
+        let zero = Vector3::zeros();
+        let mut a = GrainState::solid_sphere(
+            m1,
+            radius_1,
+            Vector3::new(g_t * m2 / total, 0.0, -g_n * m2 / total),
+            zero,
+        );
+        let mut b = GrainState::solid_sphere(
+            m2,
+            radius_2,
+            Vector3::new(-g_t * m1 / total, 0.0, g_n * m1 / total),
+            zero,
+        );
+        let before = (a, b);
+        let g_before = relative_surface_velocity(&a, &b, &n);
+        collide(&mut a, &mut b, &n, tangential.eps_n, tangential.eps_t)?;
+        let g_after = relative_surface_velocity(&a, &b, &n);
+        let m_t = effective_tangential_mass(&a, &b);
+        // J_T on grain 1, from its change of momentum along the tangent.
+        let impulse_t = m1 * (a.velocity.x - before.0.velocity.x);
+        let momentum = (a.velocity * m1 + b.velocity * m2).norm();
+        Ok(Oblique {
+            eps_t: tangential.eps_t,
+            class: tangential.class,
+            energy_before: 0.5 * m_t * g_before.x * g_before.x,
+            energy_after: 0.5 * m_t * g_after.x * g_after.x,
+            friction_work: impulse_t * 0.5 * (g_before.x + g_after.x),
+            spin_change: [a.spin.y - before.0.spin.y, b.spin.y - before.1.spin.y],
+            momentum_change: momentum,
+            kinetic_before: before.0.kinetic_energy() + before.1.kinetic_energy(),
+            kinetic_after: a.kinetic_energy() + b.kinetic_energy(),
+        })
+    }
 }

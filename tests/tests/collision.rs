@@ -44,7 +44,11 @@ fn elastic_collision_has_hertz_duration_compression_and_a_loop_of_zero_area() {
     let tr = c.collision(g, 20_001, Accuracy::Precise).unwrap();
     let (xi_star, tau) = (c.length_scale(g), c.time_scale(g));
     // Hertz: t_c = 3.21806545971904 τ, ξ_max = (5/4)^(2/5) ξ*.
-    assert!((tr.t_c / (3.21806545971904 * tau) - 1.0).abs() < 1e-10, "{}", tr.t_c / tau);
+    assert!(
+        (tr.t_c / (3.21806545971904 * tau) - 1.0).abs() < 1e-10,
+        "{}",
+        tr.t_c / tau
+    );
     let hertz_xi_max = 1.25f64.powf(0.4) * xi_star;
     assert!((tr.xi_max / hertz_xi_max - 1.0).abs() < 1e-10);
     // The sampled maximum (the phase instant is a sample) agrees too.
@@ -56,7 +60,10 @@ fn elastic_collision_has_hertz_duration_compression_and_a_loop_of_zero_area() {
         .map(|i| 0.5 * (tr.force[i] + tr.force[i - 1]) * (tr.xi[i] - tr.xi[i - 1]))
         .sum();
     let peak = 0.4 * c.rho_h * hertz_xi_max.powf(2.5);
-    assert!(area.abs() < 1e-6 * peak, "loop area {area:e} vs peak work {peak:e}");
+    assert!(
+        area.abs() < 1e-6 * peak,
+        "loop area {area:e} vs peak work {peak:e}"
+    );
     assert!((tr.eps_n - 1.0).abs() < 1e-12);
     assert!(tr.ledger.closure.abs() < 1e-12 && tr.ledger.dissipated_bulk.abs() < 1e-20);
 }
@@ -85,9 +92,17 @@ fn ledger_closes_at_precise_for_every_model() {
                 l.elastic_retained / l.kinetic_in,
                 l.adhesion / l.kinetic_in
             );
-            let bound = if accuracy == Accuracy::Precise { 1e-9 } else { 1e-5 };
+            let bound = if accuracy == Accuracy::Precise {
+                1e-9
+            } else {
+                1e-5
+            };
             if tr.resolved {
-                assert!(l.closure.abs() <= bound, "{name} {accuracy:?}: {}", l.closure);
+                assert!(
+                    l.closure.abs() <= bound,
+                    "{name} {accuracy:?}: {}",
+                    l.closure
+                );
                 if accuracy == Accuracy::Precise {
                     worst = worst.max(l.closure.abs());
                 }
@@ -111,7 +126,10 @@ fn offset_layer_dissipates_what_eq_9_takes_off_the_impact_speed() {
             0.5 * c.m_eff * g * g
         };
         let got = tr.ledger.dissipated_layer;
-        assert!((got / expected - 1.0).abs() < 1e-12, "g = {g}: {got:e} vs {expected:e}");
+        assert!(
+            (got / expected - 1.0).abs() < 1e-12,
+            "g = {g}: {got:e} vs {expected:e}"
+        );
     }
 }
 
@@ -121,7 +139,10 @@ fn adhesion_takes_w_s_off_the_rebound_energy_of_the_model_without_it() {
         let with = scene(preset, &[("adhesion", "on")]);
         let mut without = with.clone();
         without.set("adhesion", "off").unwrap();
-        let (cw, co) = (Contact::new(&with).unwrap(), Contact::new(&without).unwrap());
+        let (cw, co) = (
+            Contact::new(&with).unwrap(),
+            Contact::new(&without).unwrap(),
+        );
         let w_s = cw.adhesion.unwrap().separation_energy;
         for g in [0.003, 0.01, 0.05] {
             let a = cw.collision(g, 50, Accuracy::Precise).unwrap();
@@ -152,10 +173,180 @@ fn trajectory_ends_where_the_table_says_and_samples_scale_with_points() {
     let f_peak = many.force.iter().cloned().fold(0.0, f64::max);
     assert!(many.force.last().unwrap().abs() < 1e-8 * f_peak);
     let rebound = -many.xi_dot.last().unwrap() / g;
-    assert!((rebound / many.eps_n - 1.0).abs() < 1e-9, "{rebound} vs {}", many.eps_n);
+    assert!(
+        (rebound / many.eps_n - 1.0).abs() < 1e-9,
+        "{rebound} vs {}",
+        many.eps_n
+    );
     let names: Vec<&str> = many.phases.iter().map(|p| p.name).collect();
     assert_eq!(
         names,
-        ["bulk_loading", "maximum_compression", "unloading", "end_of_contact"]
+        [
+            "bulk_loading",
+            "maximum_compression",
+            "unloading",
+            "end_of_contact"
+        ]
     );
+}
+
+#[test]
+fn oblique_impact_conserves_momentum_and_the_energy_identity_with_kappa_holds() {
+    // Eq. (22): the tangential mass is κ m_eff, κ = 2/7 for two solid spheres, so the kinetic
+    // energy falls by ½ m_eff (1 − ε_N²) g_N² + ½ κ m_eff (1 − ε_T²) g_T².
+    let s = Preset::Ice.scene();
+    let c = Contact::new(&s).unwrap();
+    let (r1, r2) = (s.grains.radius_1, s.grains.radius_2);
+    for (g_n, g_t) in [(0.01, 0.001), (0.01, 0.005), (0.01, 0.05), (0.001, 0.0)] {
+        let o = c.oblique(r1, r2, g_n, g_t, Accuracy::Precise).unwrap();
+        let eps_n = c.normal(g_n, Accuracy::Precise).unwrap().eps;
+        let kappa = 2.0 / 7.0;
+        let expected_loss = 0.5 * c.m_eff * (1.0 - eps_n * eps_n) * g_n * g_n
+            + 0.5 * kappa * c.m_eff * (1.0 - o.eps_t * o.eps_t) * g_t * g_t;
+        let loss = o.kinetic_before - o.kinetic_after;
+        assert!(
+            (loss - expected_loss).abs() < 1e-12 * o.kinetic_before,
+            "{g_n} {g_t}"
+        );
+        let p_scale = c.mass_1 * (g_n + g_t);
+        assert!(o.momentum_change < 1e-14 * p_scale);
+        assert!(
+            (o.energy_before - 0.5 * kappa * c.m_eff * g_t * g_t).abs() < 1e-14 * o.kinetic_before
+        );
+        // The friction impulse's work is the change of the tangential energy.
+        assert!(
+            (o.friction_work - (o.energy_after - o.energy_before)).abs() < 1e-12 * o.kinetic_before
+        );
+        // The spin change follows from the tangential impulse: Δω = a J_T/I for each grain,
+        // J_T = m_t (ε_T − 1) g_T; opposite torques on the two grains.
+        let m_t = kappa * c.m_eff;
+        let j_t = m_t * (o.eps_t - 1.0) * g_t;
+        let i1 = 0.4 * c.mass_1 * r1 * r1;
+        assert!(
+            (o.spin_change[0].abs() - r1 * j_t.abs() / i1).abs()
+                <= 1e-12 * (1.0 + o.spin_change[0].abs())
+        );
+    }
+}
+
+mod cli {
+    use rime_tests::rime_binary;
+    use std::process::Command;
+
+    fn rime(args: &[&str]) -> (i32, String, String) {
+        let out = Command::new(rime_binary()).args(args).output().unwrap();
+        (
+            out.status.code().unwrap_or(-1),
+            String::from_utf8_lossy(&out.stdout).to_string(),
+            String::from_utf8_lossy(&out.stderr).to_string(),
+        )
+    }
+
+    #[test]
+    fn collision_json_follows_the_contract_and_agrees_with_rime_eps() {
+        for (preset, level) in [
+            ("ice", "precise"),
+            ("ice-frost", "fast"),
+            ("ice-sticky", "balanced"),
+        ] {
+            let (code, out, e) = rime(&[
+                "collision",
+                "--g",
+                "0.01",
+                "--gt",
+                "0.005",
+                "--points",
+                "50",
+                "--preset",
+                preset,
+                "--accuracy",
+                level,
+                "--format",
+                "json",
+            ]);
+            assert_eq!(code, 0, "{e}");
+            let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+            for key in ["t", "xi", "xi_dot", "force"] {
+                assert!(v[key].as_array().unwrap().len() >= 50, "{key}");
+            }
+            for key in [
+                "t_c",
+                "xi_max",
+                "eps_n",
+                "status",
+                "phases",
+                "ledger",
+                "tangential",
+            ] {
+                assert!(v.get(key).is_some(), "missing {key}");
+            }
+            for key in [
+                "kinetic_in",
+                "kinetic_out",
+                "dissipated_bulk",
+                "dissipated_layer",
+                "adhesion",
+                "closure",
+            ] {
+                assert!(v["ledger"][key].is_number(), "ledger.{key}");
+            }
+            for key in [
+                "eps_t",
+                "class",
+                "energy_before",
+                "energy_after",
+                "friction_work",
+                "spin_change",
+            ] {
+                assert!(v["tangential"].get(key).is_some(), "tangential.{key}");
+            }
+            assert!(v["phases"][0]["name"].is_string() && v["phases"][0]["t"].is_number());
+            let (code, eps, _) = rime(&[
+                "eps",
+                "--g",
+                "0.01",
+                "--preset",
+                preset,
+                "--accuracy",
+                level,
+                "--format",
+                "json",
+            ]);
+            assert_eq!(code, 0);
+            let eps: serde_json::Value = serde_json::from_str(&eps).unwrap();
+            assert_eq!(v["eps_n"], eps[0]["eps_n"], "{preset}");
+            assert_eq!(v["t_c"], eps[0]["t_c"], "{preset}");
+        }
+    }
+
+    #[test]
+    fn collision_csv_has_units_and_the_ledger_as_comments_and_bad_input_names_the_flag() {
+        let (code, out, _) = rime(&[
+            "collision",
+            "--g",
+            "0.01",
+            "--points",
+            "5",
+            "--format",
+            "csv",
+        ]);
+        assert_eq!(code, 0);
+        let mut lines = out.lines();
+        assert_eq!(lines.next(), Some("t [s],xi [m],xi_dot [m/s],force [N]"));
+        assert!(out.lines().any(|l| l.starts_with("# ledger.closure,")));
+        for (args, flag) in [
+            (vec!["collision"], "--g"),
+            (vec!["collision", "--g", "-1"], "--g"),
+            (
+                vec!["collision", "--g", "0.01", "--points", "1"],
+                "--points",
+            ),
+            (vec!["collision", "--g", "0.01", "--gt", "x"], "--gt"),
+        ] {
+            let (code, _, e) = rime(&args);
+            assert_eq!(code, 2, "{args:?}");
+            assert_eq!(e.trim().lines().count(), 1, "{e}");
+            assert!(e.contains(flag), "{e}");
+        }
+    }
 }

@@ -54,6 +54,8 @@ pub enum Command {
     Data(Common, crate::commands::data::Args),
     /// `rime stick --radius LIST [--temperature LIST] [--gamma surface|adhesion] [--out DIR]`.
     Stick(Common, crate::commands::stick::Args),
+    /// `rime collision --g G [--gt G] [--points N]`.
+    Collision(Common, crate::commands::collision::Args),
     /// `rime figures --out DIR`.
     Figures(Common, PathBuf),
     /// `rime compare --models LIST --g LIST | --list | --bench`.
@@ -94,6 +96,8 @@ USAGE:
   rime stick --radius LIST [--temperature LIST] [--gamma surface|adhesion] [--out DIR]
                                                  sticking thresholds v_stick(r, T), γ(T) of Musiolik
                                                  & Wurm 2019; --out writes a table and a C function
+  rime collision --g G [--gt G] [--points N]     one collision: ξ(t), ξ'(t), F(t), phases, energy
+                                                 ledger; --gt adds the tangential side
   rime figures [--out DIR]                       the paper's Figs. 2–4 from the model, SVG + PNG
   rime compare --models LIST --g LIST            ε_N of several models side by side and their
                                                  characteristic speeds (g_cr, v_yield, …);
@@ -251,6 +255,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
         Some("data") => &["--law", "--g", "--radius"],
         Some("stick") => &["--radius", "--temperature", "--gamma", "--out"],
         Some("figures") => &["--out"],
+        Some("collision") => &["--g", "--gt", "--points"],
         Some("eps") => &["--g", "--g-file"],
         Some("compare") => &["--models", "--g", "--list", "--bench"],
         Some("curve") => &["--from", "--to", "--points"],
@@ -303,6 +308,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
         Some("fit") => Command::Fit(common, crate::commands::fit::parse(&owned)?),
         Some("data") => Command::Data(common, crate::commands::data::parse(&owned)?),
         Some("stick") => Command::Stick(common, crate::commands::stick::parse(&owned)?),
+        Some("collision") => Command::Collision(common, crate::commands::collision::parse(&owned)?),
         Some("bench") => {
             let quick = flag_bool("--quick", get("--quick"))?;
             let out = PathBuf::from(get("--out").unwrap_or("target/bench"));

@@ -221,6 +221,7 @@ fn run(command: Command) -> CliResult<Option<String>> {
         Command::Fit(c, a) => commands::fit::run(&c, &a)?,
         Command::Data(c, a) => commands::data::run(&c, &a)?,
         Command::Stick(c, a) => commands::stick::run(&c, &a)?,
+        Command::Collision(c, a) => commands::collision::run(&c, &a)?,
         Command::Figures(c, out) => {
             std::fs::create_dir_all(&out)
                 .map_err(|e| CliError(format!("--out {}: {e}", out.display())))?;

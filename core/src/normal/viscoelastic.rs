@@ -197,7 +197,15 @@ pub fn dimensionless_through_creep(
     rtol: f64,
     max_steps: usize,
 ) -> Result<Dimensionless> {
-    integrate(delta, end, rtol, max_steps, f64::INFINITY, 0.0, &mut Nothing)
+    integrate(
+        delta,
+        end,
+        rtol,
+        max_steps,
+        f64::INFINITY,
+        0.0,
+        &mut Nothing,
+    )
 }
 
 fn integrate(
