@@ -200,10 +200,10 @@ impl Collector {
             Piece::Step { map, c0, .. } => map.s(*c0) < s_end,
             _ => true,
         });
-        if let Some(Piece::Step { map, c1, .. }) = self.pieces.last_mut() {
-            if map.s(*c1) > s_end {
-                *c1 = map.clock(s_end);
-            }
+        if let Some(Piece::Step { map, c1, .. }) = self.pieces.last_mut()
+            && map.s(*c1) > s_end
+        {
+            *c1 = map.clock(s_end);
         }
     }
 }

@@ -137,7 +137,7 @@ fn offset_layer_dissipates_what_eq_9_takes_off_the_impact_speed() {
 fn adhesion_takes_w_s_off_the_rebound_energy_of_the_model_without_it() {
     for preset in [Preset::IceSticky, Preset::IceFrost] {
         let with = scene(preset, &[("adhesion", "on")]);
-        let mut without = with.clone();
+        let mut without = with;
         without.set("adhesion", "off").unwrap();
         let (cw, co) = (
             Contact::new(&with).unwrap(),
