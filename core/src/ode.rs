@@ -138,7 +138,7 @@ fn dp5_stages<const N: usize, const M: usize, S: OdeSystem<N, M>>(
     (y_new, k)
 }
 
-/// The dense output of one accepted step ([2], `dopri5` CONTD5): a quartic in θ = (t − t0)/h,
+/// The dense output of one accepted step (\[2\], `dopri5` CONTD5): a quartic in θ = (t − t0)/h,
 /// valid on `[t0, t0 + h]`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DenseStep<const N: usize> {
