@@ -42,6 +42,8 @@ pub mod accuracy;
 pub mod analytic;
 pub mod atlas;
 pub mod batch;
+#[cfg(feature = "alloc")]
+pub mod collision;
 pub mod contact;
 pub mod error;
 pub mod explorer;

@@ -138,6 +138,37 @@ fn dp5_stages<const N: usize, const M: usize, S: OdeSystem<N, M>>(
     (y_new, k)
 }
 
+/// The dense output of one accepted step (\[2\], `dopri5` CONTD5): a quartic in θ = (t − t0)/h,
+/// valid on `[t0, t0 + h]`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DenseStep<const N: usize> {
+    /// Start of the step.
+    pub t0: f64,
+    /// Length of the step (0 before the first step).
+    pub h: f64,
+    /// The five coefficient vectors of the interpolant.
+    pub cont: [[f64; N]; 5],
+}
+
+impl<const N: usize> DenseStep<N> {
+    /// The interpolated state at `t`.
+    pub fn eval(&self, t: f64) -> [f64; N] {
+        let theta = if self.h == 0.0 {
+            1.0
+        } else {
+            (t - self.t0) / self.h
+        };
+        let theta1 = 1.0 - theta;
+        let c = &self.cont;
+        let mut out = [0.0; N];
+        for i in 0..N {
+            out[i] = c[0][i]
+                + theta * (c[1][i] + theta1 * (c[2][i] + theta * (c[3][i] + theta1 * c[4][i])));
+        }
+        out
+    }
+}
+
 /// Tolerances and limits of a [`Dopri5`] run.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Tolerances<const N: usize> {
@@ -283,19 +314,18 @@ impl<const N: usize, const M: usize> Dopri5<N, M> {
 
     /// Dense output inside the last accepted step, `t ∈ [t_old, t_old + h_old]`.
     pub fn dense(&self, t: f64) -> [f64; N] {
-        let theta = if self.h_old == 0.0 {
-            1.0
-        } else {
-            (t - self.t_old) / self.h_old
-        };
-        let theta1 = 1.0 - theta;
-        let c = &self.cont;
-        let mut out = [0.0; N];
-        for i in 0..N {
-            out[i] = c[0][i]
-                + theta * (c[1][i] + theta1 * (c[2][i] + theta * (c[3][i] + theta1 * c[4][i])));
+        self.dense_step().eval(t)
+    }
+
+    /// The dense output of the last accepted step as a value that outlives the stepper: a caller
+    /// that keeps these can sample the whole solution afterwards at any times it likes (the
+    /// collision trajectory does), at a cost proportional to the samples.
+    pub fn dense_step(&self) -> DenseStep<N> {
+        DenseStep {
+            t0: self.t_old,
+            h: self.h_old,
+            cont: self.cont,
         }
-        out
     }
 
     /// The state at `t` inside the last accepted step, computed by a fresh Dormand–Prince step from

@@ -333,6 +333,7 @@ fn rime_within_20_s(args: &[&str]) -> (Option<i32>, String) {
         std::thread::sleep(std::time::Duration::from_millis(20));
     }
     child.kill().unwrap();
+    child.wait().unwrap();
     (None, String::from("timed out"))
 }
 

@@ -4,6 +4,7 @@ mod bad_input;
 mod batch;
 mod cli;
 mod cli_usability;
+mod collision;
 mod cost;
 mod explorer_model;
 mod exported;

@@ -55,6 +55,8 @@ pub enum Command {
     Data(Common, crate::commands::data::Args),
     /// `rime stick --radius LIST [--temperature LIST] [--gamma surface|adhesion] [--out DIR]`.
     Stick(Common, crate::commands::stick::Args),
+    /// `rime collision --g G [--gt G] [--points N]`.
+    Collision(Common, crate::commands::collision::Args),
     /// `rime figures --out DIR`.
     Figures(Common, PathBuf),
     /// `rime compare --models LIST --g LIST | --list | --bench`.
@@ -304,6 +306,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
         "fit" => Command::Fit(common, crate::commands::fit::parse(&owned)?),
         "data" => Command::Data(common, crate::commands::data::parse(&owned)?),
         "stick" => Command::Stick(common, crate::commands::stick::parse(&owned)?),
+        "collision" => Command::Collision(common, crate::commands::collision::parse(&owned)?),
         "bench" => {
             let out = PathBuf::from(get("--out").unwrap_or("target/bench"));
             Command::Bench(out, switch("--quick"))

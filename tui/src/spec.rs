@@ -323,6 +323,24 @@ pub const SUBS: &[Sub] = &[
         example: "stick --radius 1e-6,1e-4 --temperature 150,200",
     },
     Sub {
+        name: "collision",
+        usage: "collision --g G [--gt G] [--points N] [OPTIONS]",
+        about: "One collision from the inside: ξ(t), ξ'(t), the normal force F(t), its phases and the \
+                energy ledger (each term a quadrature of its own force); --gt adds the tangential side.",
+        flags: &[
+            f("--g", "G", "normal impact speed (m/s, units allowed)"),
+            f(
+                "--gt",
+                "G",
+                "tangential speed (m/s): adds ε_T, friction work and the spin change",
+            ),
+            f("--points", "N", "samples in time (default 400)"),
+        ],
+        scene: true,
+        formats: ALL_FORMATS,
+        example: "collision --g 0.01 --gt 0.005 --points 50 --format json",
+    },
+    Sub {
         name: "figures",
         usage: "figures [--out DIR] [--accuracy LEVEL]",
         about: "The paper's Figs. 2–4 rebuilt from the model, SVG + PNG (their scenes are the paper's; \

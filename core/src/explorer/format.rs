@@ -114,7 +114,10 @@ pub fn editable(v: f64, unit: &str) -> String {
 
 /// Whether [`qty`] writes `unit` with an SI prefix.
 fn prefixable(unit: &str) -> bool {
-    matches!(unit, "m" | "s" | "m/s" | "Pa" | "Pa s" | "g" | "kg" | "J" | "N")
+    matches!(
+        unit,
+        "m" | "s" | "m/s" | "Pa" | "Pa s" | "g" | "kg" | "J" | "N"
+    )
 }
 
 /// The shortest text that reads back as exactly `v` (`0.0002`, `1e-7`, `6.6e-6`), plain between

@@ -1,5 +1,6 @@
 //! Soft surface layers: Eq. (6)–(10), in the two readings of docs/physics.md#decision-4.
 
+use super::trace::{Kind, Nothing, Recorder, StateMap, Tail};
 use crate::error::Result;
 use crate::math::{cbrt, ln, powf, sqrt};
 use crate::ode::{Direction, Dopri5, OdeSystem, StepOutcome, Tolerances};
@@ -307,6 +308,19 @@ pub fn literal(
     end: ContactEnd,
     rtol: f64,
 ) -> Result<LiteralOutcome> {
+    literal_recorded(delta, lambda, d, end, rtol, &mut Nothing)
+}
+
+/// [`literal`], handing every accepted step and the closed-form tail to `recorder` (the collision
+/// trajectory).
+pub(crate) fn literal_recorded(
+    delta: f64,
+    lambda: f64,
+    d: f64,
+    end: ContactEnd,
+    rtol: f64,
+    recorder: &mut dyn Recorder,
+) -> Result<LiteralOutcome> {
     let g_s = lambda * d * sqrt(d); // Eq. (10) in units of the impact speed
     if g_s >= 1.0 {
         // Eq. (9): the layer stops the grains on the way in at x = λ^(-2/3).
@@ -363,7 +377,22 @@ pub fn literal(
     let mut x_max = 0.0;
     let mut s_offset = 0.0;
     loop {
-        match stepper.step(&sys)? {
+        let outcome = stepper.step(&sys)?;
+        recorder.step(
+            &stepper.dense_step(),
+            &StateMap {
+                sigma_clock: sys.sigma_clock,
+                s_offset,
+                x_offset: d,
+                force_k: sys.carries_force().then(|| sys.k()),
+                kind: match sys.phase {
+                    Phase::Layer => Kind::Layer,
+                    Phase::Bulk => Kind::Bulk,
+                    Phase::Coast => Kind::Coast,
+                },
+            },
+        );
+        match outcome {
             StepOutcome::Step => {}
             StepOutcome::Done => {
                 return Err(crate::Error::StepBudgetExceeded {
@@ -381,6 +410,7 @@ pub fn literal(
                     // zero cannot be located: finish with the creep's closed form instead.
                     if sys.phase == Phase::Bulk && d > 0.0 && k * k * sqrt(x_max) * tol.rtol > 1e3 {
                         let t_max = if sys.sigma_clock { t * t } else { s_offset + t };
+                        recorder.tail(Tail::Unresolved);
                         return Ok(overdamped_exit(
                             d,
                             g_s,
@@ -407,14 +437,24 @@ pub fn literal(
                     let v = sys.velocity(&y);
                     // Leaving the bulk through the layer: Eq. (9) integrated once more gives the exit
                     // speed v_d + λ d^(3/2); if that is not negative, the layer holds the grains.
+                    let s_bulk = if sys.sigma_clock { t * t } else { s_offset + t };
                     if v + g_s >= 0.0 {
+                        recorder.tail(Tail::LayerExit {
+                            s: s_bulk,
+                            v,
+                            eps: 0.0,
+                        });
                         return Ok(LiteralOutcome::stuck(x_max, stepper.rhs_evaluations()));
                     }
                     // Eq. (9) once more: the layer takes exactly λ d^(3/2) off the way out, and
                     // the time to cross it has a closed form too ([`exit_time`]). Integrating that
                     // crossing would not end near the threshold, where it lasts ~ ε^(−1/3).
                     let eps = -(v + g_s);
-                    let s_bulk = if sys.sigma_clock { t * t } else { s_offset + t };
+                    recorder.tail(Tail::LayerExit {
+                        s: s_bulk,
+                        v,
+                        eps: eps.clamp(0.0, 1.0),
+                    });
                     return Ok(LiteralOutcome {
                         eps: eps.clamp(0.0, 1.0),
                         stuck: false,
@@ -431,6 +471,12 @@ pub fn literal(
                         // at −v (a coast from deep in the bulk can take a time of order δ).
                         let s_coast = s_offset + t + y[0] / -v;
                         let eps = -(v + g_s);
+                        recorder.tail(Tail::Coast {
+                            s: s_offset + t,
+                            u: y[0],
+                            v,
+                            eps: if eps > 0.0 { eps.min(1.0) } else { 0.0 },
+                        });
                         return Ok(if eps > 0.0 {
                             LiteralOutcome {
                                 eps: eps.min(1.0),
@@ -453,6 +499,7 @@ pub fn literal(
                     {
                         // The creep to x = d follows its slow manifold to 1e-12: closed form.
                         let s_fz = s_offset + t;
+                        recorder.tail(Tail::Unresolved);
                         return Ok(overdamped_exit(
                             d,
                             g_s,
@@ -470,16 +517,21 @@ pub fn literal(
                         // separation speed only falls, so the grains reach x = d slower than −v,
                         // which the layer takes off entirely: they stick. Following that creep
                         // would cost stiffness-limited steps over a time of order δ.
+                        recorder.tail(Tail::Unresolved);
                         return Ok(LiteralOutcome::stuck(x_max, stepper.rhs_evaluations()));
                     }
                 }
                 CREEP_STICK if sys.creeping => {
                     // The separation speed only falls from here, so the grains reach x = d
                     // slower than the layer's g_s: they stick (see the force-zero case above).
+                    recorder.tail(Tail::Unresolved);
                     return Ok(LiteralOutcome::stuck(x_max, stepper.rhs_evaluations()));
                 }
                 EXIT if sys.phase != Phase::Bulk || d == 0.0 => {
                     let y = stepper.exact_state(&sys, t);
+                    recorder.tail(Tail::End {
+                        s: if sys.sigma_clock { t * t } else { s_offset + t },
+                    });
                     return Ok(LiteralOutcome {
                         // Layer drag and bulk damping only dissipate and the bulk force depends
                         // on ξ alone: the exact ε lies in [0, 1]; clamping removes integration

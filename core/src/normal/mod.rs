@@ -3,6 +3,7 @@
 
 pub mod adhesion;
 pub mod layer;
+pub(crate) mod trace;
 pub mod viscoelastic;
 
 use crate::accuracy::Accuracy;

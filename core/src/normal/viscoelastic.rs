@@ -5,6 +5,7 @@
 //! so ε_N depends on δ alone. The start is singular (√x is not Lipschitz at 0); we integrate in
 //! `σ = √s`, in which the solution `x = σ² − (2/5)δσ⁵ − (4/35)σ⁷ + …` is analytic.
 
+use super::trace::{Kind, Nothing, Recorder, StateMap};
 use crate::error::{Error, Result};
 use crate::math::{powf, sqrt};
 use crate::ode::{Direction, Dopri5, OdeSystem, StepOutcome, Tolerances};
@@ -159,7 +160,33 @@ pub fn dimensionless_with_budget(
     max_steps: usize,
     creep_delta_limit: f64,
 ) -> Result<Dimensionless> {
-    integrate(delta, end, rtol, max_steps, creep_delta_limit, CREEP_FLOOR)
+    integrate(
+        delta,
+        end,
+        rtol,
+        max_steps,
+        creep_delta_limit,
+        CREEP_FLOOR,
+        &mut Nothing,
+    )
+}
+
+/// [`dimensionless`], handing every accepted step to `recorder` (the collision trajectory).
+pub(crate) fn dimensionless_recorded(
+    delta: f64,
+    end: ContactEnd,
+    rtol: f64,
+    recorder: &mut dyn Recorder,
+) -> Result<Dimensionless> {
+    integrate(
+        delta,
+        end,
+        rtol,
+        MAX_STEPS,
+        CREEP_DELTA_LIMIT,
+        CREEP_FLOOR,
+        recorder,
+    )
 }
 
 /// A zero-overlap contact followed through its whole creep, however slow (for building the tables,
@@ -170,7 +197,15 @@ pub fn dimensionless_through_creep(
     rtol: f64,
     max_steps: usize,
 ) -> Result<Dimensionless> {
-    integrate(delta, end, rtol, max_steps, f64::INFINITY, 0.0)
+    integrate(
+        delta,
+        end,
+        rtol,
+        max_steps,
+        f64::INFINITY,
+        0.0,
+        &mut Nothing,
+    )
 }
 
 fn integrate(
@@ -180,6 +215,7 @@ fn integrate(
     max_steps: usize,
     creep_delta_limit: f64,
     creep_floor: f64,
+    recorder: &mut dyn Recorder,
 ) -> Result<Dimensionless> {
     if !(delta.is_finite() && delta >= 0.0) {
         return Err(Error::OutOfRange {
@@ -225,6 +261,13 @@ fn integrate(
         tol,
         "viscoelastic contact",
     );
+    let map = StateMap {
+        sigma_clock: true,
+        s_offset: 0.0,
+        x_offset: 0.0,
+        force_k: sys.force_form.then_some(sys.k),
+        kind: Kind::Bulk,
+    };
     let mut x_max = 0.0;
     let mut creeping = false;
     let done = |eps: f64, s_c: f64, x_max: f64, evals: usize| Dimensionless {
@@ -245,6 +288,7 @@ fn integrate(
             }
             other => other?,
         };
+        recorder.step(&stepper.dense_step(), &map);
         match outcome {
             StepOutcome::Step => {}
             StepOutcome::Event { t, y, which } => {

@@ -2,6 +2,7 @@
 //! crate::main only parses and dispatches. The contract is docs/cli.md.
 
 pub mod bench;
+pub mod collision;
 pub mod compare;
 pub mod curve;
 pub mod data;

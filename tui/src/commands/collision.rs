@@ -1,0 +1,173 @@
+//! `rime collision`: one collision's time course, phases and energy ledger (docs/cli.md,
+//! docs/physics.md#collision).
+
+use crate::cli::{Common, Format, number, speed};
+use crate::output::{num, table};
+use crate::scene_io::{CliError, CliResult, err};
+use serde_json::{Value, json};
+
+/// Arguments of `rime collision`.
+#[derive(Debug, Clone)]
+pub struct Args {
+    /// Normal impact speed \[m/s\].
+    pub g: f64,
+    /// Tangential speed \[m/s\], for an oblique impact.
+    pub gt: Option<f64>,
+    /// Evenly spaced samples over the contact.
+    pub points: usize,
+}
+
+/// Parses the flags of `rime collision`.
+pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
+    let g = speed(
+        "--g",
+        &get("--g").ok_or_else(|| CliError("--g: required (m/s)".into()))?,
+        false,
+    )?;
+    let gt = get("--gt").map(|t| speed("--gt", &t, true)).transpose()?;
+    let points = match get("--points") {
+        None => 400,
+        Some(p) => {
+            let n = number("--points", &p)?;
+            if !(n.fract() == 0.0 && (2.0..=1e6).contains(&n)) {
+                return err(format!("--points: {p} must be an integer in [2, 1000000]"));
+            }
+            n as usize
+        }
+    };
+    Ok(Args { g, gt, points })
+}
+
+fn finite_or_null(v: f64) -> Value {
+    if v.is_finite() { json!(v) } else { Value::Null }
+}
+
+/// Runs `rime collision`.
+pub fn run(common: &Common, args: &Args) -> CliResult<String> {
+    let contact = crate::cli::contact(common)?;
+    let tr = contact
+        .collision(args.g, args.points, common.accuracy)
+        .map_err(|e| CliError(format!("--g {}: {e}", args.g)))?;
+    let oblique = match args.gt {
+        None => None,
+        Some(gt) => {
+            if contact.friction.is_none() {
+                return err("--gt: the scene has no friction (--set friction=on)");
+            }
+            let grains = &common.scene.grains;
+            Some(
+                contact
+                    .oblique(
+                        grains.radius_1,
+                        grains.radius_2,
+                        args.g,
+                        gt,
+                        common.accuracy,
+                    )
+                    .map_err(|e| CliError(format!("--gt {gt}: {e}")))?,
+            )
+        }
+    };
+    let l = &tr.ledger;
+    let ledger = [
+        ("kinetic_in", l.kinetic_in, "J"),
+        ("kinetic_out", l.kinetic_out, "J"),
+        ("dissipated_bulk", l.dissipated_bulk, "J"),
+        ("dissipated_layer", l.dissipated_layer, "J"),
+        ("elastic_retained", l.elastic_retained, "J"),
+        ("adhesion", l.adhesion, "J"),
+        ("closure", l.closure, "1"),
+    ];
+    let tangential = oblique.map(|o| {
+        [
+            ("eps_t", o.eps_t),
+            ("energy_before", o.energy_before),
+            ("energy_after", o.energy_after),
+            ("friction_work", o.friction_work),
+            ("spin_change_1", o.spin_change[0]),
+            ("spin_change_2", o.spin_change[1]),
+        ]
+    });
+    Ok(match common.format {
+        Format::Json => {
+            let mut v = json!({
+                "g": args.g,
+                "t": tr.t, "xi": tr.xi, "xi_dot": tr.xi_dot, "force": tr.force,
+                "phases": tr.phases.iter().map(|p| json!({"name": p.name, "t": p.t})).collect::<Vec<_>>(),
+                "t_c": finite_or_null(tr.t_c),
+                "xi_max": tr.xi_max,
+                "eps_n": tr.eps_n,
+                "status": tr.status.name(),
+                "resolved": tr.resolved,
+                "ledger": ledger.iter().map(|(k, v, _)| ((*k).to_string(), json!(v))).collect::<serde_json::Map<_, _>>(),
+            });
+            if let Some(o) = oblique {
+                v["tangential"] = json!({
+                    "eps_t": o.eps_t,
+                    "class": o.class.name(),
+                    "energy_before": o.energy_before,
+                    "energy_after": o.energy_after,
+                    "friction_work": o.friction_work,
+                    "spin_change": o.spin_change,
+                });
+            }
+            serde_json::to_string(&v).map_err(|e| CliError(e.to_string()))? + "\n"
+        }
+        Format::Csv => {
+            let mut s = String::from("t [s],xi [m],xi_dot [m/s],force [N]\n");
+            for i in 0..tr.t.len() {
+                s.push_str(&format!(
+                    "{},{},{},{}\n",
+                    num(tr.t[i]),
+                    num(tr.xi[i]),
+                    num(tr.xi_dot[i]),
+                    num(tr.force[i])
+                ));
+            }
+            // The rest as `# name,value,unit` comment lines after the series.
+            s.push_str(&format!("# status,{},\n", tr.status.name()));
+            s.push_str(&format!("# eps_n,{},1\n", num(tr.eps_n)));
+            s.push_str(&format!("# t_c,{},s\n", num(tr.t_c)));
+            s.push_str(&format!("# xi_max,{},m\n", num(tr.xi_max)));
+            for p in &tr.phases {
+                s.push_str(&format!("# phase.{},{},s\n", p.name, num(p.t)));
+            }
+            for (k, v, u) in ledger {
+                s.push_str(&format!("# ledger.{k},{},{u}\n", num(v)));
+            }
+            if let (Some(t), Some(o)) = (tangential, oblique) {
+                s.push_str(&format!("# tangential.class,{},\n", o.class.name()));
+                for (k, v) in t {
+                    s.push_str(&format!("# tangential.{k},{},\n", num(v)));
+                }
+            }
+            s
+        }
+        Format::Table => {
+            let mut rows: Vec<Vec<String>> = vec![
+                vec!["status".into(), tr.status.name().into(), String::new()],
+                vec!["eps_n".into(), num(tr.eps_n), String::new()],
+                vec!["t_c".into(), num(tr.t_c), "s".into()],
+                vec!["xi_max".into(), num(tr.xi_max), "m".into()],
+            ];
+            rows.extend(
+                tr.phases
+                    .iter()
+                    .map(|p| vec![p.name.to_string(), num(p.t), "s".into()]),
+            );
+            rows.extend(
+                ledger
+                    .iter()
+                    .map(|(k, v, u)| vec![k.to_string(), num(*v), u.to_string()]),
+            );
+            if let (Some(t), Some(o)) = (tangential, oblique) {
+                rows.push(vec!["class".into(), o.class.name().into(), String::new()]);
+                rows.extend(
+                    t.iter()
+                        .map(|(k, v)| vec![k.to_string(), num(*v), String::new()]),
+                );
+            }
+            table(&["quantity", "value", "unit"], &rows)
+        }
+    })
+}
