@@ -62,11 +62,12 @@ impl core::fmt::Display for ParseError {
     }
 }
 
+/// A header has no number in it and starts with a name (`g_n [m/s],eps_n`, as `rime curve` writes).
 fn is_header(cells: &[&str]) -> bool {
-    !cells.is_empty()
-        && cells.iter().all(|c| {
-            c.parse::<f64>().is_err() && c.chars().next().is_some_and(|ch| ch.is_alphabetic())
-        })
+    cells
+        .first()
+        .is_some_and(|c| c.chars().next().is_some_and(|ch| ch.is_alphabetic()))
+        && cells.iter().all(|c| c.parse::<f64>().is_err())
 }
 
 /// Parses (g, ε[, σ]) points: cells separated by commas, semicolons, tabs or spaces; `#` comments
@@ -542,6 +543,13 @@ pub fn fit(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_header_with_units_as_rime_curve_writes_it_is_a_header() {
+        let p = parse_points("g_n [m/s],eps_n\n0.01,0.3\n0.02,0.28\n").unwrap();
+        assert_eq!(p.header.as_deref(), Some("g_n [m/s],eps_n"));
+        assert!(parse_points("0.01 [m/s],0.3\n0.02,0.28\n").is_err());
+    }
 
     #[test]
     fn a_header_is_accepted_only_when_it_is_recognisably_one() {

@@ -1,5 +1,5 @@
 //! The one keymap: the key handler ([`super::app`]), the `?` overlay ([`super::view::help`]) and
-//! the README's key list ([`readme_list`], checked by a test) all read [`KEYMAP`].
+//! the README's key list (`readme_list`, checked by a test) all read [`KEYMAP`].
 
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 

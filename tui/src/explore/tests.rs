@@ -321,7 +321,10 @@ fn export_writes_csvs_and_scene() {
         .path();
     let curves = std::fs::read_to_string(export.join("eps_curves.csv")).expect("curves");
     let header = curves.lines().next().expect("header");
-    assert!(header.starts_with("g_n,eps_n,status,eps_n_clean,eps_n[layer.viscosity=5e2]"));
+    assert!(
+        header.starts_with("g_n,eps_n,status,eps_n_clean,eps_n[layer.viscosity=500]"),
+        "{header}"
+    );
     assert_eq!(curves.lines().count(), 1 + super::compute::CURVE_POINTS);
     let map = std::fs::read_to_string(export.join("stick_map.csv")).expect("map");
     assert!(map.starts_with("g_n,g_t,eps_t,class\n"));
