@@ -215,7 +215,7 @@ pub mod experiments {
     }
 
     /// Microgravity ice experiments: Heißelmann et al. (2010), Icarus 206, 424 (1.5 cm spheres,
-    /// 6–22 cm/s, ε 0.06–0.84) and Hill et al. (2015), A&A 575, A6 (5–11 mm, 0.27–0.51 m/s,
+    /// 6–22 cm/s, ε 0.06–0.84) and Hill et al. (2015), A&A 573, A49 (5–11 mm, 0.27–0.51 m/s,
     /// ε 0.08–0.65), both in palette colour `color` (the experiments' one colour).
     pub fn bands(color: usize) -> Vec<Band> {
         vec![
