@@ -90,6 +90,11 @@ pub struct App {
     pub experiments: bool,
     /// Whether the tidal-appendix calculator is shown (`t`).
     pub tidal: bool,
+    /// The collision panel (`i`): the cursor speed and its trajectory (or why there is none),
+    /// recomputed whenever the scene, level or cursor changes.
+    pub inside: Option<(f64, Result<rime_core::collision::Trajectory, String>)>,
+    /// The scene and level the panel's trajectory belongs to.
+    pub inside_key: Option<(Scene, Accuracy)>,
     /// Planet distance of the tidal calculator as a multiple of the paper's (Encke division).
     pub tidal_factor: f64,
     /// Path being typed after `o` (None when not opening a scene file).
@@ -129,6 +134,8 @@ impl App {
             fixed_elapsed: None,
             experiments: true,
             tidal: false,
+            inside: None,
+            inside_key: None,
             tidal_factor: 1.0,
             open: None,
         };
@@ -546,6 +553,18 @@ impl App {
                 self.info("stick map range: automatic");
                 self.request();
             }
+            (Action::Inside, _) => {
+                if self.inside.is_some() {
+                    self.inside = None;
+                    self.info("collision panel closed");
+                } else {
+                    self.inside = Some((0.0, Err(String::from("computing…"))));
+                    self.refresh_inside();
+                    self.info(
+                        "inside one collision at the ε_N cursor ([ ] { } move it) · i closes",
+                    );
+                }
+            }
             (Action::Experiments, _) => {
                 self.experiments = !self.experiments;
                 self.info(if self.experiments {
@@ -617,6 +636,31 @@ pub fn update(app: &mut App, event: Event) {
                 app.data = Some(*data);
             }
         }
+    }
+    app.refresh_inside();
+}
+
+impl App {
+    /// Recomputes the collision panel's trajectory when its speed, scene or level changed (one live
+    /// integration of a few hundred steps: cheap enough for the event loop).
+    fn refresh_inside(&mut self) {
+        let Some((g_shown, _)) = &self.inside else {
+            return;
+        };
+        let Some(data) = self.data.as_ref().filter(|d| d.scene == self.scene) else {
+            return;
+        };
+        let Some(&g) = data.g.get(self.cursor) else {
+            return;
+        };
+        if *g_shown == g && self.inside_key == Some((self.scene, self.accuracy)) {
+            return;
+        }
+        let result = rime_core::Contact::new(&self.scene)
+            .and_then(|c| c.collision(g, 200, self.accuracy))
+            .map_err(|e| e.to_string());
+        self.inside = Some((g, result));
+        self.inside_key = Some((self.scene, self.accuracy));
     }
 }
 

@@ -117,6 +117,8 @@ pub enum Action {
     Experiments,
     /// Tidal appendix on/off.
     Tidal,
+    /// The collision panel (inside one collision at the cursor) on/off.
+    Inside,
     /// Tidal planet distance ÷1.05.
     TidalNearer,
     /// Tidal planet distance ×1.05.
@@ -252,6 +254,11 @@ pub const KEYMAP: &[Row] = &[
             (Key::Char('<'), Action::TidalNearer),
             (Key::Char('>'), Action::TidalFarther),
         ],
+    },
+    Row {
+        keys: "i",
+        does: "inside one collision: ξ(t), F(ξ), energy ledger",
+        bindings: &[(Key::Char('i'), Action::Inside)],
     },
     Row {
         keys: "x",

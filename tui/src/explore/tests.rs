@@ -702,3 +702,33 @@ fn chart_x_labels_sit_at_their_values() {
         );
     }
 }
+
+#[test]
+fn collision_panel_follows_the_cursor_and_its_ledger_closes_issue_13() {
+    let mut app = app_on(Preset::IceSticky.scene());
+    update(&mut app, ch('i'));
+    let (g, first) = app.inside.clone().expect("panel open");
+    let t = first.expect("trajectory");
+    let c = rime_core::Contact::new(&app.scene).expect("contact");
+    let n = c.normal(g, app.accuracy).expect("normal");
+    // The panel shows the collision the ε_N chart's cursor points at, as the core computes it.
+    assert_eq!(g, app.data.as_ref().expect("data").g[app.cursor]);
+    assert_eq!((t.eps_n, t.t_c), (n.eps, n.t_c));
+    assert!(t.ledger.closure.abs() < 1e-6, "{:?}", t.ledger);
+    let s = text(&screen(&app, 80, 24));
+    for needle in [
+        "inside one collision",
+        "kinetic out",
+        "bulk, Eq. (4)",
+        "closure",
+        "i closes",
+    ] {
+        assert!(s.contains(needle), "missing {needle}\n{s}");
+    }
+    // Moving the cursor recomputes it; `i` closes it.
+    update(&mut app, ch('{'));
+    let (g2, _) = app.inside.clone().expect("still open");
+    assert!(g2 < g, "{g2} vs {g}");
+    update(&mut app, ch('i'));
+    assert!(app.inside.is_none());
+}

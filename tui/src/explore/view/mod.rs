@@ -4,6 +4,7 @@
 //! appendix calculator. Where each goes is [`super::layout`].
 
 pub mod chart;
+pub mod collision;
 pub mod help;
 pub mod lines;
 pub mod map;
@@ -129,6 +130,13 @@ pub fn render(app: &App, frame: &mut Frame) {
     if app.tidal {
         let view = super::tidal::view(&app.scene, app.tidal_factor);
         tidal::render(frame, l.views(), &view);
+    }
+    if let Some((g, result)) = &app.inside {
+        let view = collision::CollisionView {
+            g: *g,
+            trajectory: result.as_ref().map_err(String::as_str),
+        };
+        collision::render(frame, l.views(), &view);
     }
     if app.help {
         help::help(frame, area);
