@@ -95,6 +95,8 @@ pub struct App {
     pub inside: Option<(f64, Result<rime_core::collision::Trajectory, String>)>,
     /// The scene and level the panel's trajectory belongs to.
     pub inside_key: Option<(Scene, Accuracy)>,
+    /// With adhesion, the dynamic JKR model's (ξ, F) loop at the same speed (issue 16).
+    pub inside_dynamic: Vec<(f64, f64)>,
     /// Planet distance of the tidal calculator as a multiple of the paper's (Encke division).
     pub tidal_factor: f64,
     /// Path being typed after `o` (None when not opening a scene file).
@@ -136,6 +138,7 @@ impl App {
             tidal: false,
             inside: None,
             inside_key: None,
+            inside_dynamic: Vec::new(),
             tidal_factor: 1.0,
             open: None,
         };
@@ -656,9 +659,22 @@ impl App {
         if *g_shown == g && self.inside_key == Some((self.scene, self.accuracy)) {
             return;
         }
-        let result = rime_core::Contact::new(&self.scene)
-            .and_then(|c| c.collision(g, 200, self.accuracy))
-            .map_err(|e| e.to_string());
+        let contact = rime_core::Contact::new(&self.scene);
+        let result = contact.as_ref().map_err(|e| e.to_string()).and_then(|c| {
+            c.collision(g, 200, self.accuracy)
+                .map_err(|e| e.to_string())
+        });
+        // With adhesion, the dynamic model of the same grains beside the paper's energy balance:
+        // its loop shows the neck (ξ < 0) and the jump at pull-off.
+        self.inside_dynamic = match (&contact, self.scene.adhesion) {
+            (Ok(c), Some(a)) => {
+                rime_core::models::brilliantov2007::Dynamic::new(c, a.surface_energy)
+                    .and_then(|d| d.force_loop(g, 1e-9))
+                    .map(|points| points.iter().map(|p| (p.xi, p.force)).collect())
+                    .unwrap_or_default()
+            }
+            _ => Vec::new(),
+        };
         self.inside = Some((g, result));
         self.inside_key = Some((self.scene, self.accuracy));
     }

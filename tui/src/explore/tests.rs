@@ -715,6 +715,14 @@ fn collision_panel_follows_the_cursor_and_its_ledger_closes_issue_13() {
     assert_eq!(g, app.data.as_ref().expect("data").g[app.cursor]);
     assert_eq!((t.eps_n, t.t_c), (n.eps, n.t_c));
     assert!(t.ledger.closure.abs() < 1e-6, "{:?}", t.ledger);
+    // With adhesion the dynamic JKR model's loop is drawn beside it, neck (ξ < 0, tensile) included.
+    assert!(
+        app.inside_dynamic
+            .iter()
+            .any(|&(xi, f)| xi < 0.0 && f < 0.0),
+        "no neck in {} points",
+        app.inside_dynamic.len()
+    );
     let s = text(&screen(&app, 80, 24));
     for needle in [
         "inside one collision",

@@ -17,6 +17,9 @@ pub struct CollisionView<'a> {
     pub g: f64,
     /// The trajectory, or the error that prevented it.
     pub trajectory: Result<&'a Trajectory, &'a str>,
+    /// With adhesion: the dynamic JKR model's force–overlap loop (brilliantov2007, docs/physics.md
+    /// #models) as (ξ, F) points, with its neck (ξ < 0) and pull-off jump.
+    pub dynamic_loop: &'a [(f64, f64)],
 }
 
 fn bounds(v: &[f64]) -> [f64; 2] {
@@ -143,38 +146,74 @@ pub fn render(frame: &mut Frame, area: Rect, view: &CollisionView) {
     let loop_: Vec<(f64, f64)> = t.xi.iter().zip(&t.force).map(|(a, b)| (*a, *b)).collect();
     fn chart<'a>(
         data: &'a [(f64, f64)],
+        second: &'a [(f64, f64)],
         x: [f64; 2],
         y: [f64; 2],
         xl: &str,
         yl: &str,
     ) -> Chart<'a> {
         let orange = Style::new().fg(Color::Rgb(0xE6, 0x9F, 0x00));
-        Chart::new(vec![
+        let purple = Style::new().fg(Color::Rgb(0xCC, 0x79, 0xA7));
+        let mut sets = vec![
             Dataset::default()
                 .marker(Marker::Braille)
                 .graph_type(GraphType::Line)
                 .style(orange)
                 .data(data),
-        ])
-        .x_axis(
-            Axis::default()
-                .title(xl.to_string())
-                .bounds(x)
-                .labels(vec![Span::raw(sig(x[0], 2)), Span::raw(sig(x[1], 2))]),
-        )
-        .y_axis(
-            Axis::default()
-                .title(yl.to_string())
-                .bounds(y)
-                .labels(vec![Span::raw(sig(y[0], 2)), Span::raw(sig(y[1], 2))]),
-        )
+        ];
+        if !second.is_empty() {
+            sets.push(
+                Dataset::default()
+                    .marker(Marker::Braille)
+                    .graph_type(GraphType::Line)
+                    .style(purple)
+                    .data(second),
+            );
+        }
+        Chart::new(sets)
+            .x_axis(
+                Axis::default()
+                    .title(xl.to_string())
+                    .bounds(x)
+                    .labels(vec![Span::raw(sig(x[0], 2)), Span::raw(sig(x[1], 2))]),
+            )
+            .y_axis(
+                Axis::default()
+                    .title(yl.to_string())
+                    .bounds(y)
+                    .labels(vec![Span::raw(sig(y[0], 2)), Span::raw(sig(y[1], 2))]),
+            )
     }
     frame.render_widget(
-        chart(&xi_t, bounds(&t.t), bounds(&t.xi), "t [s]", "ξ [m]"),
+        chart(&xi_t, &[], bounds(&t.t), bounds(&t.xi), "t [s]", "ξ [m]"),
         left,
     );
+    // With adhesion the dynamic JKR model's loop (pink) beside the paper's (orange).
+    let all_xi: Vec<f64> =
+        t.xi.iter()
+            .copied()
+            .chain(view.dynamic_loop.iter().map(|p| p.0))
+            .collect();
+    let all_f: Vec<f64> = t
+        .force
+        .iter()
+        .copied()
+        .chain(view.dynamic_loop.iter().map(|p| p.1))
+        .collect();
+    let title = if view.dynamic_loop.is_empty() {
+        "F [N]"
+    } else {
+        "F [N] (pink: brilliantov2007)"
+    };
     frame.render_widget(
-        chart(&loop_, bounds(&t.xi), bounds(&t.force), "ξ [m]", "F [N]"),
+        chart(
+            &loop_,
+            view.dynamic_loop,
+            bounds(&all_xi),
+            bounds(&all_f),
+            "ξ [m]",
+            title,
+        ),
         right,
     );
     frame.render_widget(Paragraph::new(ledger_lines(t, ledger.width)), ledger);

@@ -135,6 +135,7 @@ pub fn render(app: &App, frame: &mut Frame) {
         let view = collision::CollisionView {
             g: *g,
             trajectory: result.as_ref().map_err(String::as_str),
+            dynamic_loop: &app.inside_dynamic,
         };
         collision::render(frame, l.views(), &view);
     }
