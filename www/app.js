@@ -4,6 +4,7 @@
 // the console gets the error; controls and the link always show the scene actually drawn.
 import init, { Explorer } from './pkg/rime_wasm.js';
 import { Computer } from './compute.js';
+import { CollisionView } from './collision.js';
 import {
   CLASS_COLORS, SERIES_COLORS, CanvasPainter, SvgPainter, drawChart, drawMap, fmtNum, fmtSpeed, prefixFor,
 } from './plot.js';
@@ -371,6 +372,7 @@ function onFrame(msg, req) {
   app.res = res;
   app.drawn = { scene: req.scene, view: req.page.view };
   draw();
+  replayCollision();
   showWarnings(res);
   showTidal(res);
   showBanner(res.errors);
@@ -776,6 +778,24 @@ function mapHover(ev) {
   drawMapCanvas();
 }
 
+/** One collision of the drawn scene at `app.collisionG` (main thread: one live integration). */
+function replayCollision() {
+  if (!app.drawn || !app.collisionView) return;
+  probe(app.collisionG, 'fast'); // points hoverEx at the drawn scene
+  try {
+    const d = JSON.parse(app.hoverEx.collision(app.collisionG, 300, app.drawn.view.accuracy));
+    app.collisionView.show(d);
+    window.rimeState.collision = {
+      g: d.g, eps_n: d.eps_n, t_c: d.t_c, status: d.status, closure: d.ledger.closure,
+      n: d.t.length, dynamic: d.dynamic !== null, animating: app.collisionView.animating,
+      reduced: app.collisionView.reduced,
+    };
+  } catch (e) {
+    console.error(`rime: collision: ${errText(e)}`);
+    app.collisionView.fail(errText(e));
+  }
+}
+
 /** The normal result at `g` for the drawn scene (main thread; hover readouts and tests). */
 function probe(g, accuracy) {
   if (!app.drawn) throw new Error('nothing drawn yet');
@@ -1016,10 +1036,24 @@ function wireView() {
   $('banner-close').addEventListener('click', () => { app.bannerDismissed = app.bannerKey; $('banner').hidden = true; });
   const chart = $('chart');
   chart.addEventListener('pointermove', chartHover);
+  chart.addEventListener('click', (ev) => {
+    if (!app.chartGeom) return;
+    const x = ev.clientX - chart.getBoundingClientRect().left;
+    const { box, inv } = app.chartGeom;
+    if (x < box.l || x > box.r) return;
+    app.collisionG = inv(x);
+    replayCollision();
+  });
   chart.addEventListener('pointerdown', chartHover);
   chart.addEventListener('pointerleave', () => { app.hover.chart = null; if (app.res) drawChartCanvas(); });
   const map = $('map');
   map.addEventListener('pointermove', mapHover);
+  map.addEventListener('click', () => {
+    const m = app.res && app.res.map;
+    if (!m || !app.hover.map || m.g[app.hover.map.i] <= 0) return;
+    app.collisionG = m.g[app.hover.map.i];
+    replayCollision();
+  });
   map.addEventListener('pointerdown', mapHover);
   map.addEventListener('pointerleave', () => { app.hover.map = null; if (app.res) drawMapCanvas(); });
   let resizeQueued = false;
@@ -1042,6 +1076,8 @@ async function main() {
   await init({ module_or_path: module });
   app.ex = counted(new Explorer());
   app.hoverEx = new Explorer();
+  app.collisionG = 0.01;
+  app.collisionView = new CollisionView();
   app.params = JSON.parse(Explorer.parameters());
   app.classes = JSON.parse(Explorer.classes());
   app.statusNames = JSON.parse(Explorer.statusNames());

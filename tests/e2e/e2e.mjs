@@ -488,6 +488,44 @@ try {
     return `law over ${lo.toExponential(2)}…${hi.toExponential(2)} m/s, score ${law.score.toFixed(4)}; brilliantov2007 g_cr ${model.speeds.find((x) => x.name === 'g_cr').value.toExponential(3)} m/s`;
   });
 
+  await check('inside one collision: clicking the chart replays that collision; t_c and ε_N as `rime collision`, ledger closed, reduced motion respected (issue 13)', async () => {
+    await pf.selectOption('#accuracy', 'precise');
+    await pf.waitForFunction(() => window.rimeState.view.accuracy === 'precise', null, { timeout: 20000 });
+    const before = await pf.evaluate(() => window.rimeState.collision && window.rimeState.collision.g);
+    const box = await pf.locator('#chart').boundingBox();
+    await pf.locator('#chart').click({ position: { x: box.width * 0.62, y: box.height * 0.5 } });
+    await pf.waitForFunction((g) => window.rimeState.collision && window.rimeState.collision.g !== g, before, { timeout: 10000 });
+    const c = await pf.evaluate(() => window.rimeState.collision);
+    const scene = await pf.evaluate(() => window.rimeState.sceneJson);
+    const sceneFile = path.join(os.tmpdir(), `rime-e2e-collision-${process.pid}.json`);
+    fs.writeFileSync(sceneFile, scene);
+    const cli = JSON.parse(execFileSync(rime, ['collision', '--g', String(c.g), '--scene', sceneFile, '--accuracy', 'precise', '--points', '20', '--format', 'json'], { encoding: 'utf8' }));
+    // wasm and native libm may differ in the last bits (the page's ε_N check allows 1e-12 too).
+    const near = (a, b) => (a === null && b === null) || Math.abs(a - b) <= 1e-12 * Math.abs(b);
+    assert(near(c.eps_n, cli.eps_n) && near(c.t_c, cli.t_c), `page ${c.eps_n}, ${c.t_c} vs rime collision ${cli.eps_n}, ${cli.t_c}`);
+    assert(Math.abs(c.closure) < 1e-6 && c.n >= 300, `closure ${c.closure}, ${c.n} samples`);
+    const inked = await pf.evaluate(() => {
+      const cv = document.getElementById('collision-loop');
+      const d = cv.getContext('2d').getImageData(0, 0, cv.width, cv.height).data;
+      let n = 0; for (let k = 3; k < d.length; k += 4) if (d[k] > 0) n++;
+      return n;
+    });
+    assert(inked > 500, `force loop canvas nearly empty (${inked} px)`);
+    const ledger = await pf.locator('#collision-ledger').innerText();
+    assert(/dissipated in the bulk/.test(ledger) && /closure/.test(ledger), `ledger: "${ledger}"`);
+    // Reduced motion: no animation, the replay shown at its end.
+    const pr = watch(await context.newPage(), 'reduced-motion');
+    await pr.emulateMedia({ reducedMotion: 'reduce' });
+    await pr.goto(url);
+    await pr.waitForFunction(() => window.rimeState.collision, null, { timeout: 30000 });
+    const r = await pr.evaluate(() => window.rimeState.collision);
+    assert(r.reduced && !r.animating, `reduced motion: ${JSON.stringify(r)}`);
+    await pr.screenshot({ path: path.join(root, 'target', 'www-collision-375.png'), fullPage: false }).catch(() => {});
+    await pr.close();
+    await pf.locator('#collision-card').screenshot({ path: path.join(root, 'target', 'www-collision.png') });
+    return `g ${c.g.toExponential(3)} m/s: ε_N ${c.eps_n}, t_c ${c.t_c} s (equal to rime collision), closure ${c.closure.toExponential(1)}`;
+  });
+
   await check('calls across the wasm boundary per update (one frame call)', async () => {
     const s = await pf.evaluate(() => window.rimeState);
     const last = s.callsPerUpdate.slice(-5);

@@ -174,6 +174,19 @@ impl Explorer {
         Ok(out)
     }
 
+    /// One collision from the inside at `g` for the current scene, as JSON (see the host-side
+    /// `Explorer::collision`).
+    pub fn collision(&self, g: f64, points: f64, accuracy: &str) -> Result<String, JsError> {
+        let points = if points.is_finite() && points >= 0.0 && points.fract() == 0.0 {
+            points as usize
+        } else {
+            return Err(JsError::new(&format!(
+                "points: {points} is not a whole number"
+            )));
+        };
+        self.inner.collision(g, points, accuracy).map_err(js)
+    }
+
     /// The tangential result at one point as JSON text.
     pub fn tangential(&self, g_n: f64, g_t: f64, accuracy: &str) -> Result<String, JsError> {
         self.inner.tangential(g_n, g_t, accuracy).map_err(js)

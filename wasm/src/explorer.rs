@@ -233,6 +233,54 @@ impl Explorer {
         .to_string())
     }
 
+    /// One collision from the inside at impact speed `g` (docs/physics.md#collision), as JSON:
+    /// `t`, `xi`, `xi_dot`, `force` (SI arrays of `points` samples plus the phase instants),
+    /// `phases` (`{name, t}`), `t_c` (`null` when unresolved), `xi_max`, `eps_n`, `status`,
+    /// `ledger` (joules and `closure`), `resolved`, the grains' radii, and with adhesion the dynamic
+    /// JKR model's loop `dynamic` (`{xi, force}`).
+    pub fn collision(&self, g: f64, points: usize, accuracy: &str) -> Result<String, String> {
+        let g = check_speed("g_n", g)?;
+        let points = check_count("points", points, 2, MAX_CURVE_POINTS)?;
+        let contact = Contact::new(&self.scene).map_err(core_err)?;
+        let t = contact
+            .collision(g, points, parse_accuracy(accuracy)?)
+            .map_err(core_err)?;
+        let l = t.ledger;
+        let finite = |v: f64| {
+            if v.is_finite() {
+                Json::from(v)
+            } else {
+                Json::Null
+            }
+        };
+        let phases: Vec<Json> = t
+            .phases
+            .iter()
+            .map(|p| json!({"name": p.name, "t": p.t}))
+            .collect();
+        let dynamic = self.scene.adhesion.and_then(|a| {
+            rime_core::models::brilliantov2007::Dynamic::new(&contact, a.surface_energy)
+                .and_then(|d| d.force_loop(g, 1e-9))
+                .ok()
+                .map(|p| {
+                    json!({"xi": p.iter().map(|q| q.xi).collect::<Vec<_>>(),
+                           "force": p.iter().map(|q| q.force).collect::<Vec<_>>()})
+                })
+        });
+        Ok(json!({
+            "g": g, "t": t.t, "xi": t.xi, "xi_dot": t.xi_dot, "force": t.force, "phases": phases,
+            "t_c": finite(t.t_c), "xi_max": t.xi_max, "eps_n": t.eps_n, "status": t.status.name(),
+            "resolved": t.resolved,
+            "ledger": {"kinetic_in": l.kinetic_in, "kinetic_out": l.kinetic_out,
+                       "dissipated_bulk": l.dissipated_bulk, "dissipated_layer": l.dissipated_layer,
+                       "elastic_retained": l.elastic_retained, "adhesion": l.adhesion,
+                       "closure": l.closure},
+            "radius_1": self.scene.grains.radius_1, "radius_2": self.scene.grains.radius_2,
+            "dynamic": dynamic,
+        })
+        .to_string())
+    }
+
     /// Tangential restitution at one point, as JSON (`g_n`, `g_t`, `eps_t`, `eps_n`, `class`).
     pub fn tangential(&self, g_n: f64, g_t: f64, accuracy: &str) -> Result<String, String> {
         let (g_n, g_t) = (check_map_speed("g_n", g_n)?, check_map_speed("g_t", g_t)?);
@@ -429,5 +477,30 @@ mod tests {
         assert!(t["result"]["d_roche"].as_f64().unwrap() > 1e8);
         let n: Json = serde_json::from_str(&Explorer::new().normal(0.01, "fast").unwrap()).unwrap();
         assert_eq!(n["status"], "rebound");
+    }
+
+    #[test]
+    fn one_collision_as_the_core_computes_it_issue_13() {
+        let mut e = Explorer::new();
+        e.load_preset("ice-sticky").unwrap();
+        let c: Json = serde_json::from_str(&e.collision(1e-3, 50, "precise").unwrap()).unwrap();
+        let contact = Contact::new(&e.scene).unwrap();
+        let n = contact.normal(1e-3, Accuracy::Precise).unwrap();
+        assert_eq!(c["eps_n"].as_f64().unwrap(), n.eps);
+        assert_eq!(c["t_c"].as_f64().unwrap(), n.t_c);
+        assert!(
+            c["ledger"]["closure"].as_f64().unwrap().abs() < 1e-9,
+            "{}",
+            c["ledger"]
+        );
+        assert!(c["t"].as_array().unwrap().len() >= 50);
+        assert!(c["dynamic"]["xi"].as_array().unwrap().len() > 10);
+        let err = e.collision(-1.0, 50, "fast").unwrap_err();
+        assert!(err.starts_with("g_n"), "{err}");
+        assert!(
+            e.collision(0.01, 1, "fast")
+                .unwrap_err()
+                .starts_with("points")
+        );
     }
 }

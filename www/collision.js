@@ -1,0 +1,212 @@
+// The "inside one collision" card: two grains approach, deform (the overlap exaggerated so that it
+// can be seen), separate or stick, while the force–overlap loop traces along; a scrub slider and a
+// replay button; the energy ledger as bars. Draws what the core computed (Explorer.collision) and
+// holds no physics of its own. Respects prefers-reduced-motion: no animation, the slider instead.
+import { fmtNum, fmtSpeed } from './plot.js';
+
+const $ = (id) => document.getElementById(id);
+const ORANGE = '#e69f00';
+const PINK = '#cc79a7';
+const GREY = '#999999';
+// Animation stages as fractions of the replay: approach, contact, departure.
+const APPROACH = 0.2;
+const CONTACT = 0.6;
+const DURATION_MS = 3000;
+
+export class CollisionView {
+  constructor() {
+    this.data = null;
+    this.u = 1; // where the replay stands, 0…1
+    this.anim = null;
+    this.reduced = window.matchMedia('(prefers-reduced-motion: reduce)').matches;
+    $('collision-play').addEventListener('click', () => this.play());
+    $('collision-scrub').addEventListener('input', () => {
+      this.stop();
+      this.u = Number($('collision-scrub').value) / 1000;
+      this.draw();
+    });
+  }
+
+  get animating() { return this.anim !== null; }
+
+  /** Shows a new collision (JSON of Explorer.collision) and replays it unless motion is reduced. */
+  show(data) {
+    this.data = data;
+    this.error = null;
+    this.ledger();
+    if (this.reduced) { this.stop(); this.u = 1; this.draw(); } else this.play();
+  }
+
+  fail(message) {
+    this.stop();
+    this.data = null;
+    $('collision-title').textContent = `— ${message}`;
+    $('collision-ledger').replaceChildren();
+    this.draw();
+  }
+
+  play() {
+    if (!this.data) return;
+    this.stop();
+    if (this.reduced) { this.u = 1; this.draw(); return; }
+    const t0 = performance.now();
+    const step = (now) => {
+      this.u = Math.min(1, (now - t0) / DURATION_MS);
+      this.draw();
+      this.anim = this.u < 1 ? requestAnimationFrame(step) : null;
+    };
+    this.anim = requestAnimationFrame(step);
+  }
+
+  stop() {
+    if (this.anim !== null) cancelAnimationFrame(this.anim);
+    this.anim = null;
+  }
+
+  /** The sample index and the gap between the grains (in radii) at replay position u. */
+  state() {
+    const d = this.data;
+    const n = d.t.length;
+    const u = this.u;
+    if (u < APPROACH) return { i: -1, gap: 0.5 * (APPROACH - u) / APPROACH };
+    if (u <= APPROACH + CONTACT) return { i: Math.round(((u - APPROACH) / CONTACT) * (n - 1)), gap: 0 };
+    const stuck = d.status.startsWith('stuck');
+    const away = (u - APPROACH - CONTACT) / (1 - APPROACH - CONTACT);
+    return { i: n - 1, gap: stuck ? 0 : 0.5 * away * Math.max(d.eps_n, 0.02), after: true };
+  }
+
+  ledger() {
+    const d = this.data;
+    const l = d.ledger;
+    const rows = [
+      ['kinetic energy out', l.kinetic_out, '#009e73'],
+      ['dissipated in the bulk, Eq. (4)', l.dissipated_bulk, ORANGE],
+      ['dissipated in the layer, Eq. (8)', l.dissipated_layer, '#56b4e9'],
+      ['adhesion W_s, Eq. (12)', l.adhesion, PINK],
+      ['left in the bulk (force-zero end)', l.elastic_retained, GREY],
+    ];
+    $('collision-ledger').replaceChildren(...rows.map(([name, v, color]) => {
+      const pct = l.kinetic_in > 0 ? (100 * v) / l.kinetic_in : 0;
+      const li = document.createElement('li');
+      const bar = document.createElement('span');
+      bar.className = 'bar';
+      bar.style.width = `${Math.max(0, Math.min(100, pct)).toFixed(1)}%`;
+      bar.style.background = color;
+      li.append(`${name}: ${pct.toFixed(1)} %`, bar);
+      return li;
+    }), Object.assign(document.createElement('li'), {
+      className: 'hint',
+      textContent: `kinetic energy in ${fmtNum(l.kinetic_in, 3)} J · closure ${l.closure.toExponential(1)}${d.resolved ? '' : ' (the slow end of the contact is not sampled)'}`,
+    }));
+    $('collision-title').textContent = `at g_N = ${fmtSpeed(d.g, 4)}: ε_N = ${fmtNum(d.eps_n, 5)}, ${d.status}` +
+      (d.t_c === null ? '' : `, t_c = ${fmtNum(d.t_c, 3)} s`) + `, ξ_max = ${fmtNum(d.xi_max, 3)} m`;
+  }
+
+  draw() {
+    drawGrains($('collision-grains'), this.data, this.data ? this.state() : null);
+    drawLoop($('collision-loop'), this.data, this.data ? this.state() : null);
+    if (this.data) {
+      $('collision-scrub').value = String(Math.round(this.u * 1000));
+      const s = this.state();
+      $('collision-time').textContent = s.i < 0 ? 'approaching' : s.after && this.u > APPROACH + CONTACT
+        ? (this.data.status.startsWith('stuck') ? 'stuck together' : 'separating')
+        : `t = ${fmtNum(this.data.t[s.i], 3)} s`;
+    }
+  }
+}
+
+function sized(canvas) {
+  const w = Math.max(150, Math.floor(canvas.parentElement.clientWidth / (window.innerWidth < 600 ? 1 : 2) - 8));
+  const h = Math.round(w * 0.6);
+  const dpr = window.devicePixelRatio || 1;
+  canvas.width = Math.round(w * dpr);
+  canvas.height = Math.round(h * dpr);
+  canvas.style.width = `${w}px`;
+  canvas.style.height = `${h}px`;
+  const ctx = canvas.getContext('2d');
+  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+  ctx.clearRect(0, 0, w, h);
+  return { ctx, w, h };
+}
+
+/** Two grains side by side; their overlap drawn as a flattened contact (exaggerated). */
+function drawGrains(canvas, d, s) {
+  const { ctx, w, h } = sized(canvas);
+  if (!d) return;
+  const rMax = Math.max(d.radius_1, d.radius_2);
+  const r1 = (0.32 * h * d.radius_1) / rMax;
+  const r2 = (0.32 * h * d.radius_2) / rMax;
+  // ξ_max is drawn as 35 % of the smaller radius, whatever its true size (said in the caption).
+  const scale = (0.35 * Math.min(r1, r2)) / (d.xi_max || 1);
+  const xi = s.i < 0 ? 0 : d.xi[s.i];
+  const overlap = xi * scale - s.gap * Math.min(r1, r2);
+  const cy = h / 2;
+  const c1 = w / 2 - r1 + overlap / 2;
+  const c2 = w / 2 + r2 - overlap / 2;
+  const plane = (c1 + r1 + c2 - r2) / 2; // the flattened contact lies midway in the overlap
+  for (const [c, r, side, color] of [[c1, r1, -1, '#56b4e9'], [c2, r2, 1, '#0072b2']]) {
+    ctx.save();
+    ctx.beginPath();
+    if (overlap > 0) ctx.rect(side < 0 ? 0 : plane, 0, side < 0 ? plane : w - plane, h);
+    else ctx.rect(0, 0, w, h);
+    ctx.clip();
+    ctx.beginPath();
+    ctx.arc(c, cy, r, 0, 2 * Math.PI);
+    ctx.fillStyle = color;
+    ctx.fill();
+    ctx.restore();
+  }
+  ctx.fillStyle = '#333';
+  ctx.font = '12px sans-serif';
+  ctx.fillText(`overlap exaggerated (true ξ_max/R = ${fmtNum(d.xi_max / Math.min(d.radius_1, d.radius_2), 2)})`, 6, h - 8);
+}
+
+/** The normal force against the overlap, traced up to the current sample; phase instants marked. */
+function drawLoop(canvas, d, s) {
+  const { ctx, w, h } = sized(canvas);
+  if (!d) return;
+  const xs = [...d.xi, ...(d.dynamic ? d.dynamic.xi : [])];
+  const fs = [...d.force, ...(d.dynamic ? d.dynamic.force : [])];
+  const x0 = Math.min(0, ...xs), x1 = Math.max(...xs) || 1;
+  const f0 = Math.min(0, ...fs), f1 = Math.max(...fs) || 1;
+  const box = { l: 44, r: w - 8, t: 10, b: h - 28 };
+  const X = (x) => box.l + ((x - x0) / (x1 - x0)) * (box.r - box.l);
+  const Y = (f) => box.b - ((f - f0) / (f1 - f0)) * (box.b - box.t);
+  ctx.strokeStyle = '#777';
+  ctx.strokeRect(box.l, box.t, box.r - box.l, box.b - box.t);
+  ctx.fillStyle = '#333';
+  ctx.font = '11px sans-serif';
+  ctx.fillText('overlap ξ [m]', box.r - 80, h - 6);
+  ctx.fillText(`F [N] (max ${fmtNum(f1, 2)})`, box.l + 4, box.t + 12);
+  const path = (xa, fa, upto, color, width) => {
+    ctx.beginPath();
+    for (let k = 0; k <= upto && k < xa.length; k++) {
+      const px = X(xa[k]), py = Y(fa[k]);
+      if (k === 0) ctx.moveTo(px, py); else ctx.lineTo(px, py);
+    }
+    ctx.strokeStyle = color;
+    ctx.lineWidth = width;
+    ctx.stroke();
+  };
+  if (d.dynamic) {
+    path(d.dynamic.xi, d.dynamic.force, d.dynamic.xi.length, PINK, 1.2);
+    ctx.fillStyle = PINK;
+    ctx.fillText('brilliantov2007 (dynamic JKR)', box.l + 4, box.t + 26);
+  }
+  path(d.xi, d.force, d.xi.length, GREY, 1);
+  const upto = s.i < 0 ? -1 : s.i;
+  if (upto >= 0) {
+    path(d.xi, d.force, upto, ORANGE, 2.2);
+    ctx.beginPath();
+    ctx.arc(X(d.xi[upto]), Y(d.force[upto]), 4, 0, 2 * Math.PI);
+    ctx.fillStyle = ORANGE;
+    ctx.fill();
+  }
+  // Phase instants: a tick at the sample nearest to each.
+  ctx.fillStyle = '#333';
+  for (const p of d.phases) {
+    let k = 0;
+    while (k < d.t.length - 1 && d.t[k] < p.t) k++;
+    ctx.fillRect(X(d.xi[k]) - 1, Y(d.force[k]) - 6, 2, 12);
+  }
+}
