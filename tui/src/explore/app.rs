@@ -653,7 +653,15 @@ impl App {
         let Some(data) = self.data.as_ref().filter(|d| d.scene == self.scene) else {
             return;
         };
-        let Some(&g) = data.g.get(self.cursor) else {
+        // The collision at the focused cursor: the stick map's g_N when the map has the focus,
+        // else the ε_N chart's.
+        let on_map = data
+            .map
+            .as_ref()
+            .filter(|_| self.focus == Focus::Map)
+            .and_then(|m| m.g.get(self.map_cursor.0).copied())
+            .filter(|g| *g > 0.0);
+        let Some(g) = on_map.or_else(|| data.g.get(self.cursor).copied()) else {
             return;
         };
         if *g_shown == g && self.inside_key == Some((self.scene, self.accuracy)) {

@@ -737,6 +737,15 @@ fn collision_panel_follows_the_cursor_and_its_ledger_closes_issue_13() {
     update(&mut app, ch('{'));
     let (g2, _) = app.inside.clone().expect("still open");
     assert!(g2 < g, "{g2} vs {g}");
+    // With the stick map focused, the panel follows the map cursor's g_N.
+    app.focus = Focus::Map;
+    update(
+        &mut app,
+        Event::Key(KeyEvent::new(KeyCode::Up, KeyModifiers::NONE)),
+    );
+    let (g3, _) = app.inside.clone().expect("still open");
+    let map = app.data.as_ref().and_then(|d| d.map.as_ref()).expect("map");
+    assert_eq!(g3, map.g[app.map_cursor.0]);
     update(&mut app, ch('i'));
     assert!(app.inside.is_none());
 }
