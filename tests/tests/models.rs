@@ -373,3 +373,59 @@ fn compare_rejects_unknown_models_and_missing_sections() {
     assert_eq!(code, 2);
     assert!(err.contains("--g"), "{err}");
 }
+
+#[test]
+fn compare_sets_the_atlas_laws_beside_the_models_issue_16() {
+    // `--models` takes the atlas's empirical laws as `atlas:ID`: the same values as `rime data
+    // --law ID` (the atlas's own evaluation), `measured` inside the measured speeds and
+    // `extrapolated` outside, and the measured range as characteristic speeds.
+    let run = |args: &[&str]| -> serde_json::Value {
+        let out = Command::new(rime_tests::rime_binary())
+            .args(args)
+            .args(["--format", "json"])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice(&out.stdout).unwrap()
+    };
+    let g = "1e-4,1e-3,0.01,0.1";
+    let both = run(&[
+        "compare",
+        "--models",
+        "hertzsch2002,atlas:bridges1984",
+        "--g",
+        g,
+    ]);
+    let data = run(&["data", "--law", "bridges1984", "--g", g]);
+    let entry = rime_core::atlas::find("bridges1984").unwrap();
+    let laws: Vec<&serde_json::Value> = both["records"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|r| r["model"] == "bridges1984")
+        .collect();
+    assert_eq!(laws.len(), 4);
+    for (r, d) in laws.iter().zip(data.as_array().unwrap()) {
+        assert_eq!(r["eps_n"], d["eps_n"]);
+        let g = r["g_n"].as_f64().unwrap();
+        let inside = (entry.valid_speed[0]..=entry.valid_speed[1]).contains(&g);
+        assert_eq!(
+            r["status"],
+            if inside { "measured" } else { "extrapolated" }
+        );
+    }
+    let speeds = both["characteristic_speeds"].as_array().unwrap();
+    assert!(speeds.iter().any(|s| s["model"] == "bridges1984"
+        && s["name"] == "valid_from"
+        && s["value"].as_f64() == Some(entry.valid_speed[0])));
+    let out = Command::new(rime_tests::rime_binary())
+        .args(["compare", "--models", "atlas:nope", "--g", "0.01"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--models"));
+}

@@ -311,21 +311,22 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             let out = PathBuf::from(get("--out").unwrap_or("target/bench"));
             Command::Bench(out, switch("--quick"))
         }
-        "compare" => Command::Compare(
-            common,
+        "compare" => Command::Compare(common, {
+            let (models, laws) = match get("--models") {
+                Some(m) => crate::commands::compare::parse_models(m)?,
+                None => (Vec::new(), Vec::new()),
+            };
             crate::commands::compare::Args {
-                models: match get("--models") {
-                    Some(m) => crate::commands::compare::parse_models(m)?,
-                    None => Vec::new(),
-                },
+                models,
+                laws,
                 g: match get("--g") {
                     Some(g) => speed_list("--g", g, false)?,
                     None => Vec::new(),
                 },
                 list: switch("--list"),
                 bench: switch("--bench"),
-            },
-        ),
+            }
+        }),
         "eps" => match (get("--g"), get("--g-file")) {
             (Some(_), Some(_)) => return err("--g-file: cannot be combined with --g"),
             (None, Some(file)) => Command::EpsFile(common, PathBuf::from(file)),

@@ -7,11 +7,24 @@ use rime_core::Accuracy;
 use rime_core::models::{Evaluator, Model};
 use serde::Serialize;
 
+/// What `--models` may name: a collision model, or a measured law of the data atlas
+/// (`atlas:ID`, docs/physics.md#data-atlas), evaluated with the scene's reduced radius where the law
+/// needs one.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Subject {
+    /// A collision model on the scene's grains.
+    Model(Model),
+    /// An empirical law of the atlas.
+    Law(&'static rime_core::atlas::Entry),
+}
+
 /// The options of `rime compare`.
 #[derive(Debug, Clone, Default)]
 pub struct Args {
     /// `--models`; empty: every model the scene supports.
     pub models: Vec<Model>,
+    /// The atlas laws named in `--models` (`atlas:ID`).
+    pub laws: Vec<&'static rime_core::atlas::Entry>,
     /// `--g`.
     pub g: Vec<f64>,
     /// `--list`: name every model with its citation.
@@ -20,19 +33,31 @@ pub struct Args {
     pub bench: bool,
 }
 
-/// Parses `--models a,b,…`; an unknown name is an error naming `--models` and the valid names.
-pub fn parse_models(text: &str) -> CliResult<Vec<Model>> {
+fn law_ids() -> impl Iterator<Item = &'static rime_core::atlas::Entry> {
+    rime_core::atlas::ENTRIES
+        .iter()
+        .filter(|e| e.kind == rime_core::atlas::Kind::Law)
+}
+
+/// Parses `--models a,b,…` (model names, or `atlas:ID` for a measured law); an unknown name is an
+/// error naming `--models` and the valid names.
+pub fn parse_subjects(text: &str) -> CliResult<Vec<Subject>> {
     let names = || {
         Model::ALL
             .iter()
-            .map(|m| m.name())
+            .map(|m| m.name().to_string())
+            .chain(law_ids().map(|e| format!("atlas:{}", e.id)))
             .collect::<Vec<_>>()
             .join(", ")
     };
     let mut out = Vec::new();
     for name in text.split(',').map(str::trim) {
-        match Model::from_name(name) {
-            Some(m) if !out.contains(&m) => out.push(m),
+        let subject = match name.strip_prefix("atlas:") {
+            Some(id) => law_ids().find(|e| e.id == id).map(Subject::Law),
+            None => Model::from_name(name).map(Subject::Model),
+        };
+        match subject {
+            Some(s) if !out.contains(&s) => out.push(s),
             Some(_) => {}
             None => {
                 return err(format!(
@@ -43,6 +68,19 @@ pub fn parse_models(text: &str) -> CliResult<Vec<Model>> {
         }
     }
     Ok(out)
+}
+
+/// [`parse_subjects`] split into models and atlas laws.
+pub fn parse_models(text: &str) -> CliResult<(Vec<Model>, Vec<&'static rime_core::atlas::Entry>)> {
+    let mut models = Vec::new();
+    let mut laws = Vec::new();
+    for s in parse_subjects(text)? {
+        match s {
+            Subject::Model(m) => models.push(m),
+            Subject::Law(e) => laws.push(e),
+        }
+    }
+    Ok((models, laws))
 }
 
 #[derive(Serialize)]
@@ -63,7 +101,7 @@ struct Speed {
 #[derive(Serialize)]
 struct Listing {
     model: &'static str,
-    citation: &'static str,
+    citation: String,
 }
 
 fn evaluators(common: &Common, args: &Args) -> CliResult<Vec<Evaluator>> {
@@ -85,13 +123,25 @@ fn evaluators(common: &Common, args: &Args) -> CliResult<Vec<Evaluator>> {
 /// Runs `rime compare`.
 pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     if args.list {
-        let rows: Vec<Listing> = Model::ALL
+        let mut rows: Vec<Listing> = Model::ALL
             .iter()
             .map(|m| Listing {
                 model: m.name(),
-                citation: m.citation(),
+                citation: m.citation().to_string(),
             })
             .collect();
+        rows.extend(law_ids().map(|e| Listing {
+            model: e.id,
+            citation: format!(
+                "{} ({}), {} {}: measured law {} (use as atlas:{})",
+                e.citation.authors,
+                e.citation.year,
+                e.citation.journal,
+                e.citation.volume,
+                e.formula,
+                e.id
+            ),
+        }));
         return Ok(match common.format {
             Format::Json => to_json(&rows)?,
             Format::Csv => {
@@ -109,12 +159,16 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                 &["model", "citation"],
                 &rows
                     .iter()
-                    .map(|r| vec![r.model.to_string(), r.citation.to_string()])
+                    .map(|r| vec![r.model.to_string(), r.citation.clone()])
                     .collect::<Vec<_>>(),
             ),
         });
     }
-    let evaluators = evaluators(common, args)?;
+    let evaluators = if args.models.is_empty() && !args.laws.is_empty() {
+        Vec::new()
+    } else {
+        evaluators(common, args)?
+    };
     if args.bench {
         return bench(common, &evaluators, &args.g);
     }
@@ -144,6 +198,37 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                 model: name,
                 name: s.name,
                 value: s.value,
+            });
+        }
+    }
+    // The empirical laws: evaluated at the same speeds (status `measured`, or `extrapolated` outside
+    // the speeds they were measured at), with their measured range as characteristic speeds.
+    let r_eff = rime_core::Contact::new(&common.scene)?.r_eff;
+    for law in &args.laws {
+        let radius = law.needs_radius().then_some(r_eff);
+        for &g in &args.g {
+            let v = law
+                .eval(g, radius)
+                .map_err(|x| CliError(format!("atlas:{}, g_n = {g}: {x}", law.id)))?;
+            records.push(Record {
+                model: law.id,
+                g_n: g,
+                eps_n: v.eps,
+                status: if v.extrapolated {
+                    "extrapolated"
+                } else {
+                    "measured"
+                },
+            });
+        }
+        for (name, value) in [
+            ("valid_from", law.valid_speed[0]),
+            ("valid_to", law.valid_speed[1]),
+        ] {
+            speeds.push(Speed {
+                model: law.id,
+                name,
+                value,
             });
         }
     }
