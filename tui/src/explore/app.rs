@@ -93,6 +93,8 @@ pub struct App {
     /// The collision panel (`i`): the cursor speed and its trajectory (or why there is none),
     /// recomputed whenever the scene, level or cursor changes.
     pub inside: Option<(f64, Result<rime_core::collision::Trajectory, String>)>,
+    /// What is drawn over the ε_N chart (`c`): index into the compute module's `OVERLAY_SETS`.
+    pub overlay_set: usize,
     /// The scene and level the panel's trajectory belongs to.
     pub inside_key: Option<(Scene, Accuracy)>,
     /// With adhesion, the dynamic JKR model's (ξ, F) loop at the same speed (issue 16).
@@ -138,6 +140,7 @@ impl App {
             tidal: false,
             inside: None,
             inside_key: None,
+            overlay_set: 0,
             inside_dynamic: Vec::new(),
             tidal_factor: 1.0,
             open: None,
@@ -155,6 +158,7 @@ impl App {
             accuracy: self.accuracy,
             sweep: self.sweep,
             map_max: self.map_max,
+            overlay_set: self.overlay_set,
         });
     }
 
@@ -555,6 +559,15 @@ impl App {
                 self.map_max = None;
                 self.info("stick map range: automatic");
                 self.request();
+            }
+            (Action::Compare, _) => {
+                let sets = super::compute::OVERLAY_SETS;
+                self.overlay_set = (self.overlay_set + 1) % sets.len();
+                self.request();
+                self.info(format!(
+                    "ε_N chart compared with: {} (c cycles)",
+                    sets[self.overlay_set].0
+                ));
             }
             (Action::Inside, _) => {
                 if self.inside.is_some() {

@@ -25,7 +25,34 @@ pub struct Request {
     pub sweep: usize,
     /// Upper end of both stick-map axes \[m/s\], or `None` for automatic.
     pub map_max: Option<f64>,
+    /// What is drawn over the chart beside the scene (`c` cycles): index into [`OVERLAY_SETS`].
+    pub overlay_set: usize,
 }
+
+/// The overlay sets the explorer's `c` cycles through: nothing, the measured laws and ranges of the
+/// data atlas (each only over the speeds it was measured at, with the scene's rms score), the other
+/// collision models on the same grains (with their characteristic speeds).
+pub const OVERLAY_SETS: [(&str, &[&str]); 3] = [
+    ("no comparison", &[]),
+    (
+        "measured ice",
+        &[
+            "atlas:bridges1984",
+            "atlas:hatzes1988_frost",
+            "atlas:supulver1995",
+            "atlas:heisselmann2010",
+            "atlas:hill2015",
+        ],
+    ),
+    (
+        "other models",
+        &[
+            "model:brilliantov2007",
+            "model:muller_poschel2011",
+            "model:thornton1997",
+        ],
+    ),
+];
 
 /// One member of the family of curves.
 #[derive(Debug, Clone, PartialEq)]
@@ -65,6 +92,8 @@ pub struct FrameData {
     pub error: Option<String>,
     /// Notes to show beside the views (e.g. a range cut to the speed limit).
     pub notes: Vec<String>,
+    /// Measured laws or other models drawn over the chart (see [`OVERLAY_SETS`]).
+    pub overlays: Vec<rime_core::explorer::frame::OverlayCurve>,
     /// Wall time of the computation.
     pub elapsed: Duration,
 }
@@ -80,6 +109,21 @@ pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<FrameData>
     core_req.map_n = MAP_POINTS;
     core_req.sweep = Some(req.sweep).filter(|k| *k < SWEEPS.len());
     core_req.map_max = req.map_max;
+    core_req.overlays = OVERLAY_SETS
+        .get(req.overlay_set)
+        .map(|(_, keys)| {
+            keys.iter()
+                .filter_map(|k| frame::Overlay::parse(k).ok())
+                // thornton1997 only where the scene has the plasticity section it needs.
+                .filter(|o| {
+                    !matches!(
+                        o,
+                        frame::Overlay::Model(rime_core::models::Model::Thornton1997)
+                    ) || req.scene.plasticity.is_some()
+                })
+                .collect()
+        })
+        .unwrap_or_default();
     let f = frame::compute(&core_req, cancelled)?;
     let mut notes: Vec<String> = Vec::new();
     let mut map = None;
@@ -124,6 +168,7 @@ pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<FrameData>
         map_max,
         error,
         notes,
+        overlays: f.overlays,
         elapsed: start.elapsed(),
     })
 }

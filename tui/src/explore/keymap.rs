@@ -119,6 +119,8 @@ pub enum Action {
     Tidal,
     /// The collision panel (inside one collision at the cursor) on/off.
     Inside,
+    /// Next comparison on the ε_N chart: measured ice, other models, none.
+    Compare,
     /// Tidal planet distance ÷1.05.
     TidalNearer,
     /// Tidal planet distance ×1.05.
@@ -254,6 +256,11 @@ pub const KEYMAP: &[Row] = &[
             (Key::Char('<'), Action::TidalNearer),
             (Key::Char('>'), Action::TidalFarther),
         ],
+    },
+    Row {
+        keys: "c",
+        does: "compare: measured ice laws, other models, none",
+        bindings: &[(Key::Char('c'), Action::Compare)],
     },
     Row {
         keys: "i",

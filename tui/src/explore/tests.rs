@@ -749,3 +749,38 @@ fn collision_panel_follows_the_cursor_and_its_ledger_closes_issue_13() {
     update(&mut app, ch('i'));
     assert!(app.inside.is_none());
 }
+
+#[test]
+fn compare_key_overlays_measured_ice_then_other_models_issues_15_16() {
+    let mut app = app_on(Preset::IceSticky.scene());
+    update(&mut app, ch('c'));
+    let req = app.take_request().expect("a new request");
+    let data = compute(&req, &|| false).expect("frame");
+    let law = data
+        .overlays
+        .iter()
+        .find(|o| o.overlay.key() == "atlas:bridges1984")
+        .expect("bridges1984 drawn");
+    let entry = rime_core::atlas::find("bridges1984").expect("entry");
+    // Only over the speeds it was measured at, with the scene's score.
+    assert_eq!(law.g.first(), Some(&entry.valid_speed[0]));
+    assert_eq!(law.g.last(), Some(&entry.valid_speed[1]));
+    assert!(law.score.is_some_and(|r| r.is_finite() && r >= 0.0));
+    update(&mut app, Event::Computed(Box::new(data)));
+    let s = text(&screen(&app, 80, 24));
+    assert!(s.contains("bridges1984 rms"), "{s}");
+    update(&mut app, ch('c'));
+    let req = app.take_request().expect("a new request");
+    let data = compute(&req, &|| false).expect("frame");
+    let model = data
+        .overlays
+        .iter()
+        .find(|o| o.overlay.key() == "model:brilliantov2007")
+        .expect("brilliantov2007 drawn");
+    assert!(model.speeds.iter().any(|(n, g)| *n == "g_cr" && *g > 0.0));
+    assert_eq!(model.g, data.g);
+    // No plasticity section in the preset: thornton1997 is left out, not an error.
+    assert!(data.error.is_none(), "{:?}", data.error);
+    update(&mut app, ch('c'));
+    assert_eq!(app.overlay_set, 0);
+}

@@ -3,10 +3,10 @@
 
 use super::{
     BAND_COLORS, BAND_SHORT, BAND_TINY, BRIDGES, CLEAN, CURRENT, FAMILY_COLORS, GS_ADHESION,
-    GS_LAYER, nb,
+    GS_LAYER, OVERLAY_COLORS, nb,
 };
 use crate::explore::compute::{FrameData, Sweep};
-use crate::explore::format::{decade, num3, qty, qty3};
+use crate::explore::format::{decade, num3, qty, qty3, sig};
 use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Modifier, Style};
@@ -117,6 +117,23 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
         nb("━ this scene".to_string())
     };
     legend.push(Span::styled(this + " ", Style::new().fg(CURRENT)));
+    // The comparisons first: with them on, the legend's second row may not hold everything.
+    for (k, o) in data.overlays.iter().enumerate() {
+        let key = o.overlay.key();
+        let name = key
+            .split_once(':')
+            .map_or(key.as_str(), |(_, n)| n)
+            .to_string();
+        let score = o
+            .score
+            .map(|r| format!("\u{a0}rms\u{a0}{}", sig(r, 2)))
+            .unwrap_or_default();
+        legend.push(Span::styled(
+            format!("{}\u{a0}{name}{score} ", if o.band { "▭" } else { "┅" }),
+            Style::new().fg(OVERLAY_COLORS[k % OVERLAY_COLORS.len()]),
+        ));
+    }
+
     if data.clean.is_some() {
         legend.push(Span::styled(
             "━\u{a0}clean\u{a0}surface ",
@@ -153,11 +170,14 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
             ));
         }
     }
+    // A comparison (`c`) replaces the fixed experimental context: it holds the same sources, each
+    // over its own measured speeds, with the scene's score.
+    let experiments = app.experiments && data.overlays.is_empty();
     let bands = rime_core::figure::experiments::bands(0);
     // The experiments' legend: long names where two legend rows hold them, else short ones (the
     // help names them), else in the chart's title.
     let mut experiments_in_title = false;
-    if app.experiments {
+    if experiments {
         let used: usize = legend.iter().map(|s| s.content.chars().count()).sum();
         // Word wrapping wastes a few cells per row.
         let room = (2 * inner.width as usize).saturating_sub(8);
@@ -229,7 +249,7 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
             min_eps = min_eps.min(e);
         }
     }
-    if app.experiments {
+    if experiments {
         // Keep the experiments' boxes whole on the ε axis.
         for b in &bands {
             min_eps = min_eps.min(b.y.0);
@@ -273,7 +293,7 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
     let cursor_pts = data.g.get(app.cursor).map(|g| vline(g.log10()));
     let y_hi_f = f64::from(y_hi);
     let clip_y = |e: f64| e.log10().clamp(y_lo_f, y_hi_f);
-    let bridges_pts: Vec<(f64, f64)> = if app.experiments {
+    let bridges_pts: Vec<(f64, f64)> = if experiments {
         data.g
             .iter()
             .map(|&g| {
@@ -285,7 +305,28 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
     } else {
         Vec::new()
     };
-    let band_pts: Vec<(Vec<(f64, f64)>, Color)> = if app.experiments {
+    // The overlays: laws over their measured speeds, ranges as boxes, models over the whole axis,
+    // and the models' characteristic speeds (g_cr, v_yield) as markers in their colour.
+    let mut overlay_pts: Vec<(Vec<(f64, f64)>, Color)> = Vec::new();
+    for (k, o) in data.overlays.iter().enumerate() {
+        let color = OVERLAY_COLORS[k % OVERLAY_COLORS.len()];
+        if o.band && o.g.len() == 2 && o.eps.len() == 2 {
+            let (x0, x1) = (o.g[0].log10(), o.g[1].log10());
+            let (y0, y1) = (clip_y(o.eps[0]), clip_y(o.eps[1]));
+            overlay_pts.push((
+                vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)],
+                color,
+            ));
+        } else {
+            overlay_pts.push((log_points(&o.g, o.eps.iter().copied(), y_lo_f), color));
+        }
+        for (_, g) in &o.speeds {
+            if g.is_finite() && *g > 0.0 {
+                overlay_pts.push((vline(g.log10()), color));
+            }
+        }
+    }
+    let band_pts: Vec<(Vec<(f64, f64)>, Color)> = if experiments {
         bands
             .iter()
             .enumerate()
@@ -321,7 +362,7 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
     if !bridges_pts.is_empty() {
         datasets.push(line(&bridges_pts, fg(BRIDGES)));
     }
-    for (pts, color) in band_pts.iter().chain(&markers) {
+    for (pts, color) in band_pts.iter().chain(&overlay_pts).chain(&markers) {
         datasets.push(line(pts, fg(*color)));
     }
     if let Some(pts) = &cursor_pts {

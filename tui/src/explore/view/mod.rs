@@ -37,6 +37,14 @@ const FAMILY_COLORS: [Color; 4] = [
     rgb(palette::FAMILY[2]),
     rgb(palette::FAMILY[3]),
 ];
+/// The comparisons (`c`): measured laws and other models, in the order drawn.
+const OVERLAY_COLORS: [Color; 5] = [
+    rgb(palette::VERMILLION),
+    rgb(palette::SKY_BLUE),
+    rgb(palette::BLUISH_GREEN),
+    rgb(palette::REDDISH_PURPLE),
+    rgb(palette::YELLOW),
+];
 /// This scene's curve.
 const CURRENT: Color = rgb(palette::SCENE);
 /// The clean-surface curve.
