@@ -329,6 +329,42 @@ fn levenberg_marquardt(problem: &Problem<'_>, u: &mut [f64], cost: &mut f64) {
     }
 }
 
+/// Samples on a law's measured speeds for [`fit_to_entry`].
+pub const LAW_POINTS: usize = 40;
+
+/// Fits `paths` of `scene` to a measured law of the data atlas ("fit this scene to that entry"):
+/// [`LAW_POINTS`] log-spaced samples of the law over the speeds it was measured at (its ε clamped to
+/// \[0, 1\]; the scene's reduced radius for a law that needs one). The standard errors then measure
+/// the model's misfit to the law, not measurement noise.
+pub fn fit_to_entry(
+    scene: &Scene,
+    entry: &crate::atlas::Entry,
+    paths: &[&str],
+    accuracy: Accuracy,
+) -> core::result::Result<SceneFit, String> {
+    if entry.kind != crate::atlas::Kind::Law {
+        return Err(format!(
+            "{}: not a law (ranges and thresholds cannot be fitted to)",
+            entry.id
+        ));
+    }
+    let radius = if entry.needs_radius() {
+        Some(Contact::new(scene).map_err(|e| format!("{e}"))?.r_eff)
+    } else {
+        None
+    };
+    let mut g = vec![0.0; LAW_POINTS];
+    crate::sweep::log_space(entry.valid_speed[0], entry.valid_speed[1], &mut g);
+    let mut eps = Vec::with_capacity(LAW_POINTS);
+    for &x in &g {
+        let e = entry
+            .eval(x, radius)
+            .map_err(|e| format!("{}: {e}", entry.id))?;
+        eps.push(e.eps.clamp(0.0, 1.0));
+    }
+    fit(scene, paths, &g, &eps, None, accuracy)
+}
+
 /// Fits the numeric scene parameters `paths` to the points (σ optional, same length).
 pub fn fit(
     scene: &Scene,
@@ -543,6 +579,40 @@ pub fn fit(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn fitting_a_to_an_atlas_law_recovers_a_scene_that_made_the_law() {
+        // Fitting A to the Bridges law never leaves the scene farther from it than it started.
+        let f = fit_to_entry(
+            &crate::Preset::Ice.scene(),
+            crate::atlas::find("bridges1984").unwrap(),
+            &["bulk.damping.time"],
+            Accuracy::Fast,
+        )
+        .unwrap();
+        assert_eq!(f.params.len(), 1);
+        assert!(f.params[0].value > 0.0 && f.rms_error < 0.2, "{f:?}");
+        // The fitted scene is at least as close to the law as the starting one.
+        let start = crate::atlas::score(
+            &Contact::new(&crate::Preset::Ice.scene()).unwrap(),
+            Accuracy::Fast,
+            crate::atlas::find("bridges1984").unwrap(),
+            None,
+        )
+        .unwrap();
+        let end = crate::atlas::score(
+            &Contact::new(&f.scene).unwrap(),
+            Accuracy::Fast,
+            crate::atlas::find("bridges1984").unwrap(),
+            None,
+        )
+        .unwrap();
+        assert!(end <= start, "{end} > {start}");
+        // A measured range is not a law to fit to.
+        let range = crate::atlas::find("hill2015").unwrap();
+        let scene = crate::Preset::Ice.scene();
+        assert!(fit_to_entry(&scene, range, &["bulk.damping.time"], Accuracy::Fast).is_err());
+    }
 
     #[test]
     fn a_header_with_units_as_rime_curve_writes_it_is_a_header() {

@@ -569,6 +569,45 @@ impl App {
                     sets[self.overlay_set].0
                 ));
             }
+            (Action::FitToLaw, _) => {
+                // The first law of the comparison shown (measured ice), else Bridges et al. 1984.
+                let id = super::compute::OVERLAY_SETS[self.overlay_set]
+                    .1
+                    .iter()
+                    .filter_map(|k| k.strip_prefix("atlas:"))
+                    .find(|id| {
+                        rime_core::atlas::find(id)
+                            .is_some_and(|e| e.kind == rime_core::atlas::Kind::Law)
+                    })
+                    .unwrap_or("bridges1984");
+                let Some(entry) = rime_core::atlas::find(id) else {
+                    return;
+                };
+                match rime_core::fit_scene::fit_to_entry(
+                    &self.scene,
+                    entry,
+                    &["bulk.damping.time"],
+                    self.accuracy,
+                ) {
+                    Ok(f) => {
+                        let before = self.scene.damping_time();
+                        self.scene = f.scene;
+                        self.preset = None;
+                        self.request();
+                        let p = &f.params[0];
+                        self.info(format!(
+                            "A fitted to {id}: {} (was {}){}, rms {} over its measured speeds",
+                            super::format::qty3(p.value, "s"),
+                            super::format::qty3(before, "s"),
+                            p.standard_error
+                                .map(|e| format!(" ± {}", super::format::qty3(e, "s")))
+                                .unwrap_or_default(),
+                            super::format::sig(f.rms_error, 2)
+                        ));
+                    }
+                    Err(e) => self.error(format!("fit A to {id}: {e} (scene unchanged)")),
+                }
+            }
             (Action::Inside, _) => {
                 if self.inside.is_some() {
                     self.inside = None;

@@ -121,6 +121,8 @@ pub enum Action {
     Inside,
     /// Next comparison on the ε_N chart: measured ice, other models, none.
     Compare,
+    /// Fit the damping time A to the first measured law compared with.
+    FitToLaw,
     /// Tidal planet distance ÷1.05.
     TidalNearer,
     /// Tidal planet distance ×1.05.
@@ -258,9 +260,12 @@ pub const KEYMAP: &[Row] = &[
         ],
     },
     Row {
-        keys: "c",
-        does: "compare: measured ice laws, other models, none",
-        bindings: &[(Key::Char('c'), Action::Compare)],
+        keys: "c / f",
+        does: "compare: measured ice, other models, none / fit A to it",
+        bindings: &[
+            (Key::Char('c'), Action::Compare),
+            (Key::Char('f'), Action::FitToLaw),
+        ],
     },
     Row {
         keys: "i",

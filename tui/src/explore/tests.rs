@@ -784,3 +784,28 @@ fn compare_key_overlays_measured_ice_then_other_models_issues_15_16() {
     update(&mut app, ch('c'));
     assert_eq!(app.overlay_set, 0);
 }
+
+#[test]
+fn fit_key_fits_a_to_the_first_measured_law_issue_15() {
+    let mut app = app_on(Preset::Ice.scene());
+    update(&mut app, ch('c'));
+    update(&mut app, ch('f'));
+    let (msg, tone) = app.message.clone().expect("message");
+    assert_eq!(tone, Tone::Info, "{msg}");
+    assert!(msg.starts_with("A fitted to bridges1984"), "{msg}");
+    // The scene now has the A that fit_to_entry finds (the core's fit, not one of the explorer's).
+    let expected = rime_core::fit_scene::fit_to_entry(
+        &Preset::Ice.scene(),
+        rime_core::atlas::find("bridges1984").expect("entry"),
+        &["bulk.damping.time"],
+        app.accuracy,
+    )
+    .expect("fit");
+    assert_eq!(app.scene, expected.scene);
+    // With A from viscosities there is no A to fit: the scene stays, the error says why.
+    let mut app = app_on(Preset::IcePaperViscosities.scene());
+    let before = app.scene;
+    update(&mut app, ch('f'));
+    assert_eq!(app.scene, before);
+    assert_eq!(app.message.clone().expect("message").1, Tone::Error);
+}

@@ -8,9 +8,9 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph, Wrap};
 
 /// Sources of the experimental context and the tidal calculator, shown in the help.
-pub const SOURCES: &str = "B84 Bridges, Hatzes & Lin 1984, Nature 309: ε = 0.32 (v/1 cm/s)^−0.234 · \
-H10 Heißelmann et al. 2010, Icarus 206: 6–22 cm/s, ε 0.06–0.84 · \
-H15 Hill et al. 2015, A&A 573: 0.27–0.51 m/s, ε 0.08–0.65 · t: Hertzsch 2002, appendix";
+pub const SOURCES: &str = "B84 Bridges et al. 1984: ε = 0.32 (v/1 cm/s)^−0.234 · \
+H10 Heißelmann et al. 2010: 6–22 cm/s · H15 Hill et al. 2015: 0.27–0.51 m/s · \
+citations: docs/physics.md";
 
 /// Draws the help overlay centred in `area`.
 pub fn help(frame: &mut Frame, area: Rect) {
