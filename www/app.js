@@ -611,6 +611,29 @@ function buildOverlayChoices() {
   }));
 }
 
+/** "Fit this scene to that entry": A fitted to the first checked measured law, applied. */
+function fitToEntry() {
+  const law = app.view.overlays.find((k) => {
+    const c = app.overlayChoices.find((x) => x.key === k);
+    return c && c.kind === 'law';
+  });
+  if (!law) { $('overlay-fit-result').textContent = 'check a measured law first'; return; }
+  const id = law.slice('atlas:'.length);
+  try {
+    const r = JSON.parse(app.ex.fitToEntry(id, 'fast'));
+    app.wantScene = app.ex.toJson();
+    $('overlay-fit-result').textContent = `A = ${fmtNum(r.value, 4)} s` +
+      (r.standard_error === null ? '' : ` ± ${fmtNum(r.standard_error, 2)} s`) +
+      ` fitted to ${id} (rms ${fmtNum(r.rms_error, 2)} over its measured speeds)` +
+      (r.warnings.length ? ` — ${r.warnings.join('; ')}` : '');
+    schedule();
+  } catch (e) {
+    const msg = errText(e);
+    console.error(`rime: ${msg}`);
+    $('overlay-fit-result').textContent = `${msg} (scene unchanged)`;
+  }
+}
+
 /** The score of the scene against each measured overlay, and what failed among them. */
 function showOverlayScores(res) {
   const items = (res.overlays || []).filter((o) => o.score !== null && o.score !== undefined)
@@ -1088,6 +1111,7 @@ async function main() {
   app.experiments = JSON.parse(Explorer.experiments());
   app.overlayChoices = JSON.parse(Explorer.overlays());
   buildOverlayChoices();
+  $('overlay-fit').addEventListener('click', fitToEntry);
   buildControls();
   buildTidal();
   wireView();

@@ -482,6 +482,12 @@ try {
     assert(/rms ε_N difference against/.test(scores), `scores: "${scores}"`);
     // The choice is kept in the link.
     await pf.waitForFunction(() => decodeURIComponent(location.hash).includes('atlas:bridges1984'), null, { timeout: 5000 });
+    // "Fit this scene to that entry": A is fitted to the checked law and the fitted scene is drawn.
+    const a0 = JSON.parse(s.sceneJson).bulk.damping.time;
+    await pf.locator('#overlay-fit').click();
+    await pf.waitForFunction((a) => JSON.parse(window.rimeState.sceneJson).bulk.damping.time !== a, a0, { timeout: 20000 });
+    const fitted = await pf.locator('#overlay-fit-result').innerText();
+    assert(/fitted to bridges1984/.test(fitted), `fit result: "${fitted}"`);
     await pf.locator('#overlay-list input[value="model:brilliantov2007"]').uncheck();
     await pf.locator('#overlay-list input[value="atlas:bridges1984"]').uncheck();
     await pf.waitForFunction(() => (window.rimeState.overlays || []).length === 0, null, { timeout: 20000 });

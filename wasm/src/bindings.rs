@@ -187,6 +187,13 @@ impl Explorer {
         self.inner.collision(g, points, accuracy).map_err(js)
     }
 
+    /// Fits A to a measured law (`id`) and makes the fitted scene current; JSON (see the host-side
+    /// `Explorer::fit_to_entry`). Throws naming the cause; the scene is then unchanged.
+    #[wasm_bindgen(js_name = fitToEntry)]
+    pub fn fit_to_entry(&mut self, id: &str, accuracy: &str) -> Result<String, JsError> {
+        self.inner.fit_to_entry(id, accuracy).map_err(js)
+    }
+
     /// The tangential result at one point as JSON text.
     pub fn tangential(&self, g_n: f64, g_t: f64, accuracy: &str) -> Result<String, JsError> {
         self.inner.tangential(g_n, g_t, accuracy).map_err(js)

@@ -281,6 +281,29 @@ impl Explorer {
         .to_string())
     }
 
+    /// Fits the damping time A of the current scene to a measured law of the atlas (`id`) over the
+    /// speeds it was measured at and, on success, makes the fitted scene current. JSON: `value`,
+    /// `standard_error` (or `null`), `rms_error`, `warnings`, `scene`. On error the scene is unchanged.
+    pub fn fit_to_entry(&mut self, id: &str, accuracy: &str) -> Result<String, String> {
+        let entry =
+            rime_core::atlas::find(id).ok_or_else(|| format!("overlays: unknown entry {id:?}"))?;
+        let f = rime_core::fit_scene::fit_to_entry(
+            &self.scene,
+            entry,
+            &["bulk.damping.time"],
+            parse_accuracy(accuracy)?,
+        )
+        .map_err(|e| format!("fit A to {id}: {e}"))?;
+        self.scene = f.scene;
+        let p = &f.params[0];
+        Ok(
+            json!({"id": id, "value": p.value, "standard_error": p.standard_error,
+                  "rms_error": f.rms_error, "warnings": f.warnings,
+                  "scene": serde_json::to_string(&f.scene).map_err(|e| e.to_string())?})
+            .to_string(),
+        )
+    }
+
     /// Tangential restitution at one point, as JSON (`g_n`, `g_t`, `eps_t`, `eps_n`, `class`).
     pub fn tangential(&self, g_n: f64, g_t: f64, accuracy: &str) -> Result<String, String> {
         let (g_n, g_t) = (check_map_speed("g_n", g_n)?, check_map_speed("g_t", g_t)?);
