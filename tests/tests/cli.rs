@@ -1,24 +1,6 @@
 //! The `rime` binary's subcommands: the JSON/CSV contract of docs/cli.md and bad input.
 
-use rime_tests::{rel, rime_binary};
-use std::process::Command;
-
-fn rime(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(rime_binary()).args(args).output().unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).to_string(),
-        String::from_utf8_lossy(&out.stderr).to_string(),
-    )
-}
-
-fn json(args: &[&str]) -> serde_json::Value {
-    let mut all = args.to_vec();
-    all.extend(["--format", "json"]);
-    let (code, out, err) = rime(&all);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).unwrap()
-}
+use rime_tests::{rel, rime, rime_json as json};
 
 #[test]
 fn eps_json_has_the_contract_fields_in_order_given() {

@@ -4,22 +4,7 @@
 
 use rime_core::explorer::frame::{Request, compute};
 use rime_core::{Accuracy, Preset};
-use rime_tests::rime_binary;
-use std::process::Command;
-
-fn rime_json(args: &[&str]) -> serde_json::Value {
-    let out = Command::new(rime_binary())
-        .args(args)
-        .args(["--format", "json"])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
-}
+use rime_tests::rime_json;
 
 #[test]
 fn frame_and_command_line_give_bit_identical_numbers_issue_11() {

@@ -3,25 +3,8 @@
 
 use rime_core::fit_scene::fit;
 use rime_core::{Accuracy, Contact, Preset, Scene};
-use rime_tests::{rel, rime_binary};
+use rime_tests::{rel, rime, rime_json as json};
 use std::process::Command;
-
-fn rime(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(rime_binary()).args(args).output().unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).to_string(),
-        String::from_utf8_lossy(&out.stderr).to_string(),
-    )
-}
-
-fn json(args: &[&str]) -> serde_json::Value {
-    let mut all = args.to_vec();
-    all.extend(["--format", "json"]);
-    let (code, out, err) = rime(&all);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).unwrap()
-}
 
 fn scratch(name: &str) -> std::path::PathBuf {
     let d = std::env::temp_dir().join(format!("rime-measured-{name}-{}", std::process::id()));

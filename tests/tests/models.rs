@@ -379,19 +379,7 @@ fn compare_sets_the_atlas_laws_beside_the_models_issue_16() {
     // `--models` takes the atlas's empirical laws as `atlas:ID`: the same values as `rime data
     // --law ID` (the atlas's own evaluation), `measured` inside the measured speeds and
     // `extrapolated` outside, and the measured range as characteristic speeds.
-    let run = |args: &[&str]| -> serde_json::Value {
-        let out = Command::new(rime_tests::rime_binary())
-            .args(args)
-            .args(["--format", "json"])
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{args:?}: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        serde_json::from_slice(&out.stdout).unwrap()
-    };
+    let run = rime_tests::rime_json;
     let g = "1e-4,1e-3,0.01,0.1";
     let both = run(&[
         "compare",
