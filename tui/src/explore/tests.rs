@@ -768,7 +768,7 @@ fn compare_key_overlays_measured_ice_then_other_models_issues_15_16() {
     assert!(law.score.is_some_and(|r| r.is_finite() && r >= 0.0));
     update(&mut app, Event::Computed(Box::new(data)));
     let s = text(&screen(&app, 80, 24));
-    assert!(s.contains("bridges1984 rms"), "{s}");
+    assert!(s.contains("bridges1984 (") && s.contains(" rms "), "{s}");
     update(&mut app, ch('c'));
     let req = app.take_request().expect("a new request");
     let data = compute(&req, &|| false).expect("frame");

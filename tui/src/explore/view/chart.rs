@@ -128,8 +128,24 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
             .score
             .map(|r| format!("\u{a0}rms\u{a0}{}", sig(r, 2)))
             .unwrap_or_default();
+        // Measured data with its temperature and geometry (docs/physics.md#data-atlas).
+        let context = match o.overlay {
+            rime_core::explorer::frame::Overlay::Atlas(e) => {
+                let [lo, hi] = e.temperature;
+                let t = if lo == hi {
+                    format!("{lo}\u{a0}K")
+                } else {
+                    format!("{lo}–{hi}\u{a0}K")
+                };
+                format!("\u{a0}({t},\u{a0}{})", e.geometry.name())
+            }
+            rime_core::explorer::frame::Overlay::Model(_) => String::new(),
+        };
         legend.push(Span::styled(
-            format!("{}\u{a0}{name}{score} ", if o.band { "▭" } else { "┅" }),
+            format!(
+                "{}\u{a0}{name}{context}{score} ",
+                if o.band { "▭" } else { "┅" }
+            ),
             Style::new().fg(OVERLAY_COLORS[k % OVERLAY_COLORS.len()]),
         ));
     }

@@ -144,9 +144,20 @@ pub fn render(frame: &mut Frame, area: Rect, view: &CollisionView) {
         Layout::horizontal([Constraint::Percentage(50), Constraint::Percentage(50)]).areas(plots);
     let xi_t: Vec<(f64, f64)> = t.t.iter().zip(&t.xi).map(|(a, b)| (*a, *b)).collect();
     let loop_: Vec<(f64, f64)> = t.xi.iter().zip(&t.force).map(|(a, b)| (*a, *b)).collect();
+    // The phase instants, marked on both plots (they are among the samples).
+    let at_phase = |k: usize| t.phases.iter().any(|p| p.t == t.t[k]);
+    let marks_t: Vec<(f64, f64)> = (0..t.t.len())
+        .filter(|&k| at_phase(k))
+        .map(|k| (t.t[k], t.xi[k]))
+        .collect();
+    let marks_f: Vec<(f64, f64)> = (0..t.t.len())
+        .filter(|&k| at_phase(k))
+        .map(|k| (t.xi[k], t.force[k]))
+        .collect();
     fn chart<'a>(
         data: &'a [(f64, f64)],
         second: &'a [(f64, f64)],
+        marks: &'a [(f64, f64)],
         x: [f64; 2],
         y: [f64; 2],
         xl: &str,
@@ -170,6 +181,13 @@ pub fn render(frame: &mut Frame, area: Rect, view: &CollisionView) {
                     .data(second),
             );
         }
+        sets.push(
+            Dataset::default()
+                .marker(Marker::Block)
+                .graph_type(GraphType::Scatter)
+                .style(Style::new().fg(Color::White))
+                .data(marks),
+        );
         Chart::new(sets)
             .x_axis(
                 Axis::default()
@@ -185,7 +203,15 @@ pub fn render(frame: &mut Frame, area: Rect, view: &CollisionView) {
             )
     }
     frame.render_widget(
-        chart(&xi_t, &[], bounds(&t.t), bounds(&t.xi), "t [s]", "ξ [m]"),
+        chart(
+            &xi_t,
+            &[],
+            &marks_t,
+            bounds(&t.t),
+            bounds(&t.xi),
+            "t [s]",
+            "ξ [m]",
+        ),
         left,
     );
     // With adhesion the dynamic JKR model's loop (pink) beside the paper's (orange).
@@ -209,6 +235,7 @@ pub fn render(frame: &mut Frame, area: Rect, view: &CollisionView) {
         chart(
             &loop_,
             view.dynamic_loop,
+            &marks_f,
             bounds(&all_xi),
             bounds(&all_f),
             "ξ [m]",
