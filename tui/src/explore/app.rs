@@ -93,6 +93,8 @@ pub struct App {
     /// The collision panel (`i`): the cursor speed and its trajectory (or why there is none),
     /// recomputed whenever the scene, level or cursor changes.
     pub inside: Option<(f64, Result<rime_core::collision::Trajectory, String>)>,
+    /// The sticking-thresholds panel (`v`): the table for this scene's material, when open.
+    pub stick: Option<Vec<Vec<Result<rime_core::stick::Threshold, String>>>>,
     /// What is drawn over the ε_N chart (`c`): index into the compute module's `OVERLAY_SETS`.
     pub overlay_set: usize,
     /// The scene and level the panel's trajectory belongs to.
@@ -141,6 +143,7 @@ impl App {
             inside: None,
             inside_key: None,
             overlay_set: 0,
+            stick: None,
             inside_dynamic: Vec::new(),
             tidal_factor: 1.0,
             open: None,
@@ -606,6 +609,14 @@ impl App {
                         ));
                     }
                     Err(e) => self.error(format!("fit A to {id}: {e} (scene unchanged)")),
+                }
+            }
+            (Action::Stick, _) => {
+                if self.stick.take().is_some() {
+                    self.info("sticking thresholds closed");
+                } else {
+                    self.stick = Some(super::view::stick::table(&self.scene, Accuracy::Fast));
+                    self.info("sticking thresholds of this material, γ(T) of Musiolik & Wurm 2019 · v closes");
                 }
             }
             (Action::Inside, _) => {

@@ -123,6 +123,8 @@ pub enum Action {
     Compare,
     /// Fit the damping time A to the first measured law compared with.
     FitToLaw,
+    /// The sticking-thresholds panel on/off.
+    Stick,
     /// Tidal planet distance ÷1.05.
     TidalNearer,
     /// Tidal planet distance ×1.05.
@@ -268,9 +270,12 @@ pub const KEYMAP: &[Row] = &[
         ],
     },
     Row {
-        keys: "i",
-        does: "inside one collision: ξ(t), F(ξ), energy ledger",
-        bindings: &[(Key::Char('i'), Action::Inside)],
+        keys: "i / v",
+        does: "one collision: ξ(t), F(ξ), ledger / sticking thresholds",
+        bindings: &[
+            (Key::Char('i'), Action::Inside),
+            (Key::Char('v'), Action::Stick),
+        ],
     },
     Row {
         keys: "x",

@@ -809,3 +809,30 @@ fn fit_key_fits_a_to_the_first_measured_law_issue_15() {
     assert_eq!(app.scene, before);
     assert_eq!(app.message.clone().expect("message").1, Tone::Error);
 }
+
+#[test]
+fn stick_panel_tabulates_the_cores_thresholds_issue_15() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('v'));
+    let rows = app.stick.clone().expect("panel open");
+    let t = rime_core::stick::threshold(
+        &Scene::default(),
+        1e-6,
+        200.0,
+        rime_core::stick::Convention::SurfaceEnergy,
+        Accuracy::Fast,
+    )
+    .expect("threshold");
+    assert_eq!(rows[0][2].as_ref().expect("cell"), &t);
+    let s = text(&screen(&app, 80, 24));
+    for needle in [
+        "sticking thresholds",
+        "v_stick (model)",
+        "Eq. (15)",
+        "9.6 m/s",
+    ] {
+        assert!(s.contains(needle), "missing {needle}\n{s}");
+    }
+    update(&mut app, ch('v'));
+    assert!(app.stick.is_none());
+}

@@ -9,6 +9,7 @@ pub mod help;
 pub mod lines;
 pub mod map;
 pub mod panel;
+pub mod stick;
 pub mod tidal;
 
 use super::app::{App, Focus};
@@ -138,6 +139,9 @@ pub fn render(app: &App, frame: &mut Frame) {
     if app.tidal {
         let view = super::tidal::view(&app.scene, app.tidal_factor);
         tidal::render(frame, l.views(), &view);
+    }
+    if let Some(rows) = &app.stick {
+        stick::render(frame, l.views(), rows);
     }
     if let Some((g, result)) = &app.inside {
         let view = collision::CollisionView {
