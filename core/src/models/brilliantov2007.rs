@@ -370,15 +370,7 @@ impl Dynamic {
     }
 
     fn check_speed(g: f64) -> Result<f64> {
-        if g.is_finite() && g > 0.0 && g <= 1e6 {
-            Ok(g)
-        } else {
-            Err(Error::OutOfRange {
-                field: "g_n",
-                value: g,
-                expected: "impact speed must lie in (0, 1e6] m/s",
-            })
-        }
+        crate::normal::check_speed(g)
     }
 
     /// One collision at impact speed `g` \[m/s\], integrated at relative tolerance `rtol`.
