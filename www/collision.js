@@ -2,12 +2,16 @@
 // can be seen), separate or stick, while the force–overlap loop traces along; a scrub slider and a
 // replay button; the energy ledger as bars. Draws what the core computed (Explorer.collision) and
 // holds no physics of its own. Respects prefers-reduced-motion: no animation, the slider instead.
-import { fmtNum, fmtSpeed } from './plot.js';
+import { PALETTE, qty, sig, speed } from './core.js';
 
 const $ = (id) => document.getElementById(id);
-const ORANGE = '#e69f00';
-const PINK = '#cc79a7';
-const GREY = '#999999';
+// Roles of the core's palette: the collision in the scene's colour, the other model and the
+// energy terms in the family's hues, what stays in the bulk in the clean-surface grey.
+const C = () => ({
+  scene: PALETTE.scene, other: PALETTE.family[2], out: PALETTE.family[1], bulk: PALETTE.scene,
+  layer: PALETTE.family[0], kept: PALETTE.clean, grain1: PALETTE.family[0], grain2: PALETTE.overlay[0],
+});
+const fmtNum = (v, d) => sig(v, d);
 // Animation stages as fractions of the replay: approach, contact, departure.
 const APPROACH = 0.2;
 const CONTACT = 0.6;
@@ -79,11 +83,11 @@ export class CollisionView {
     const d = this.data;
     const l = d.ledger;
     const rows = [
-      ['kinetic energy out', l.kinetic_out, '#009e73'],
-      ['dissipated in the bulk, Eq. (4)', l.dissipated_bulk, ORANGE],
-      ['dissipated in the layer, Eq. (8)', l.dissipated_layer, '#56b4e9'],
-      ['adhesion W_s, Eq. (12)', l.adhesion, PINK],
-      ['left in the bulk (force-zero end)', l.elastic_retained, GREY],
+      ['kinetic energy out', l.kinetic_out, C().out],
+      ['dissipated in the bulk, Eq. (4)', l.dissipated_bulk, C().bulk],
+      ['dissipated in the layer, Eq. (8)', l.dissipated_layer, C().layer],
+      ['adhesion W_s, Eq. (12)', l.adhesion, C().other],
+      ['left in the bulk (force-zero end)', l.elastic_retained, C().kept],
     ];
     $('collision-ledger').replaceChildren(...rows.map(([name, v, color]) => {
       const pct = l.kinetic_in > 0 ? (100 * v) / l.kinetic_in : 0;
@@ -96,10 +100,10 @@ export class CollisionView {
       return li;
     }), Object.assign(document.createElement('li'), {
       className: 'hint',
-      textContent: `kinetic energy in ${fmtNum(l.kinetic_in, 3)} J · closure ${l.closure.toExponential(1)}${d.resolved ? '' : ' (the slow end of the contact is not sampled)'}`,
+      textContent: `kinetic energy in ${qty(l.kinetic_in, 'J', 3)} · closure ${l.closure.toExponential(1)}${d.resolved ? '' : ' (the slow end of the contact is not sampled)'}`,
     }));
-    $('collision-title').textContent = `at g_N = ${fmtSpeed(d.g, 4)}: ε_N = ${fmtNum(d.eps_n, 5)}, ${d.status}` +
-      (d.t_c === null ? '' : `, t_c = ${fmtNum(d.t_c, 3)} s`) + `, ξ_max = ${fmtNum(d.xi_max, 3)} m`;
+    $('collision-title').textContent = `at g_N = ${speed(d.g, 4)}: ε_N = ${fmtNum(d.eps_n, 5)}, ${d.status}` +
+      (d.t_c === null ? '' : `, t_c = ${qty(d.t_c, 's', 3)}`) + `, ξ_max = ${qty(d.xi_max, 'm', 3)}`;
   }
 
   draw() {
@@ -110,7 +114,7 @@ export class CollisionView {
       const s = this.state();
       $('collision-time').textContent = s.i < 0 ? 'approaching' : s.after && this.u > APPROACH + CONTACT
         ? (this.data.status.startsWith('stuck') ? 'stuck together' : 'separating')
-        : `t = ${fmtNum(this.data.t[s.i], 3)} s`;
+        : `t = ${qty(this.data.t[s.i], 's', 3)}`;
     }
   }
 }
@@ -144,7 +148,7 @@ function drawGrains(canvas, d, s) {
   const c1 = w / 2 - r1 + overlap / 2;
   const c2 = w / 2 + r2 - overlap / 2;
   const plane = (c1 + r1 + c2 - r2) / 2; // the flattened contact lies midway in the overlap
-  for (const [c, r, side, color] of [[c1, r1, -1, '#56b4e9'], [c2, r2, 1, '#0072b2']]) {
+  for (const [c, r, side, color] of [[c1, r1, -1, C().grain1], [c2, r2, 1, C().grain2]]) {
     ctx.save();
     ctx.beginPath();
     if (overlap > 0) ctx.rect(side < 0 ? 0 : plane, 0, side < 0 ? plane : w - plane, h);
@@ -177,7 +181,7 @@ function drawLoop(canvas, d, s) {
   ctx.fillStyle = '#333';
   ctx.font = '11px sans-serif';
   ctx.fillText('overlap ξ [m]', box.r - 80, h - 6);
-  ctx.fillText(`F [N] (max ${fmtNum(f1, 2)})`, box.l + 4, box.t + 12);
+  ctx.fillText(`F (max ${qty(f1, 'N', 2)})`, box.l + 4, box.t + 12);
   const path = (xa, fa, upto, color, width) => {
     ctx.beginPath();
     for (let k = 0; k <= upto && k < xa.length; k++) {
@@ -189,17 +193,17 @@ function drawLoop(canvas, d, s) {
     ctx.stroke();
   };
   if (d.dynamic) {
-    path(d.dynamic.xi, d.dynamic.force, d.dynamic.xi.length, PINK, 1.2);
-    ctx.fillStyle = PINK;
+    path(d.dynamic.xi, d.dynamic.force, d.dynamic.xi.length, C().other, 1.2);
+    ctx.fillStyle = C().other;
     ctx.fillText('brilliantov2007 (dynamic JKR)', box.l + 4, box.t + 26);
   }
-  path(d.xi, d.force, d.xi.length, GREY, 1);
+  path(d.xi, d.force, d.xi.length, C().kept, 1);
   const upto = s.i < 0 ? -1 : s.i;
   if (upto >= 0) {
-    path(d.xi, d.force, upto, ORANGE, 2.2);
+    path(d.xi, d.force, upto, C().scene, 2.2);
     ctx.beginPath();
     ctx.arc(X(d.xi[upto]), Y(d.force[upto]), 4, 0, 2 * Math.PI);
-    ctx.fillStyle = ORANGE;
+    ctx.fillStyle = C().scene;
     ctx.fill();
   }
   // Phase instants: a tick at the sample nearest to each.

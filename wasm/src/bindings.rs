@@ -47,6 +47,74 @@ pub fn compute_frame(scene: &str, view: &str) -> Result<Frame, JsError> {
     })
 }
 
+/// The one colour palette of every surface (`rime_core::explorer::palette::palette_json`).
+#[wasm_bindgen]
+pub fn palette() -> String {
+    rime_core::explorer::palette::palette_json()
+}
+
+/// The page's words: citation, glossary, parameter help, option names (see
+/// [`explorer::help_json`]).
+#[wasm_bindgen]
+pub fn help() -> String {
+    explorer::help_json()
+}
+
+/// `v` with `digits` significant digits (`rime_core::explorer::format::sig`); `—` when not finite.
+#[wasm_bindgen(js_name = fmtSig)]
+pub fn fmt_sig(v: f64, digits: i32) -> String {
+    rime_core::explorer::format::sig(v, digits.clamp(1, 17))
+}
+
+/// A quantity with its unit and an SI prefix (`rime_core::explorer::format::qty_sig`).
+#[wasm_bindgen(js_name = fmtQty)]
+pub fn fmt_qty(v: f64, unit: &str, digits: i32) -> String {
+    rime_core::explorer::format::qty_sig(v, unit, digits.clamp(1, 17))
+}
+
+/// The shortest text that reads back as `v` (`rime_core::explorer::format::shortest`).
+#[wasm_bindgen(js_name = fmtShortest)]
+pub fn fmt_shortest(v: f64) -> String {
+    rime_core::explorer::format::shortest(v)
+}
+
+/// The value a user edits (`rime_core::explorer::format::editable`).
+#[wasm_bindgen(js_name = fmtEditable)]
+pub fn fmt_editable(v: f64, unit: &str) -> String {
+    rime_core::explorer::format::editable(v, unit)
+}
+
+/// A decade label of a log axis (`rime_core::explorer::format::decade`).
+#[wasm_bindgen(js_name = fmtDecade)]
+pub fn fmt_decade(k: i32) -> String {
+    rime_core::explorer::format::decade(k)
+}
+
+/// Whether `computed` reproduces `printed` to its printed digits
+/// (`rime_core::explorer::format::agrees_to_printed`).
+#[wasm_bindgen(js_name = agreesToPrinted)]
+pub fn agrees_to_printed(computed: f64, printed: f64) -> bool {
+    rime_core::explorer::format::agrees_to_printed(computed, printed)
+}
+
+/// The significant digits a number is printed with (`rime_core::explorer::format::printed_digits`).
+#[wasm_bindgen(js_name = printedDigits)]
+pub fn printed_digits(v: f64) -> i32 {
+    rime_core::explorer::format::printed_digits(v)
+}
+
+/// A typed speed with optional units for the view field `field` (see [`explorer::parse_speed`]).
+#[wasm_bindgen(js_name = parseSpeed)]
+pub fn parse_speed(field: &str, text: &str) -> Result<f64, JsError> {
+    explorer::parse_speed(field, text).map_err(js)
+}
+
+/// A typed quantity with optional units compatible with `unit` (see [`explorer::parse_quantity`]).
+#[wasm_bindgen(js_name = parseQuantity)]
+pub fn parse_quantity(field: &str, text: &str, unit: &str) -> Result<f64, JsError> {
+    explorer::parse_quantity(field, text, unit).map_err(js)
+}
+
 /// A scene being edited: validation of typed values, presets and readouts.
 #[wasm_bindgen]
 pub struct Explorer {

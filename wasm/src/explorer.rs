@@ -439,6 +439,95 @@ pub fn experiments_json() -> String {
     .to_string()
 }
 
+/// Everything the page says in words, as JSON: the paper's citation, the repository, the glossary,
+/// per-parameter help and human option names, the stick classes' meaning (with artifacts marked)
+/// and the artifact note. From `rime_core::explorer::help`, shared with the other surfaces.
+pub fn help_json() -> String {
+    use rime_core::explorer::help::{
+        ARTIFACT_NOTE, GLOSSARY, PAPER, class_is_artifact, option_label, parameter_help,
+        slider_range,
+    };
+    let params: serde_json::Map<String, Json> = PARAMETERS
+        .iter()
+        .map(|p| {
+            let options: serde_json::Map<String, Json> = match p.kind {
+                Kind::Choice(options) => options
+                    .iter()
+                    .map(|o| {
+                        (
+                            (*o).to_string(),
+                            Json::from(option_label(p.path, o).unwrap_or(o)),
+                        )
+                    })
+                    .collect(),
+                _ => serde_json::Map::new(),
+            };
+            (
+                p.path.to_string(),
+                json!({"help": parameter_help(p.path).unwrap_or(""), "options": options,
+                       "slider": slider_range(p.path).map(|(lo, hi)| [lo, hi])}),
+            )
+        })
+        .collect();
+    let classes: Vec<Json> = StickClass::ALL
+        .iter()
+        .map(|c| json!({"name": c.name(), "artifact": class_is_artifact(*c)}))
+        .collect();
+    json!({
+        "paper": {"authors": PAPER.authors, "year": PAPER.year, "title": PAPER.title,
+                  "journal": PAPER.journal, "volume": PAPER.volume, "pages": PAPER.pages},
+        "repository": env!("CARGO_PKG_REPOSITORY"),
+        "glossary": GLOSSARY.iter().map(|(k, v)| json!({"term": k, "meaning": v})).collect::<Vec<_>>(),
+        "parameters": params,
+        "classes": classes,
+        "artifactNote": ARTIFACT_NOTE,
+        "tidalPaper": TidalInput::default(),
+        "limits": {"speedMin": rime_core::explorer::limits::SPEED_MIN,
+                   "speedMax": rime_core::explorer::limits::SPEED_MAX},
+    })
+    .to_string()
+}
+
+/// Parses a typed speed (`"1 um/s"`, `"0.02"`, `"5 cm/s"`) for the view field `field`; the value
+/// must be a speed the models accept (`(0, 1e6]` m/s). Errors name the field and show the value
+/// short (a 309-digit number reads `1e308`).
+pub fn parse_speed(field: &str, text: &str) -> Result<f64, String> {
+    let v = parse_quantity(field, text, "m/s")?;
+    if rime_core::explorer::limits::speed_is_valid(v) {
+        Ok(v)
+    } else {
+        Err(format!(
+            "{field}: must be a speed in (0, 1e6] m/s (got {})",
+            rime_core::explorer::format::sig(v, 4)
+        ))
+    }
+}
+
+/// Parses a typed quantity with optional units compatible with `unit` (the core's unit parser);
+/// errors name `field` and never carry the typed text at full length.
+pub fn parse_quantity(field: &str, text: &str, unit: &str) -> Result<f64, String> {
+    let shown: String = if text.chars().count() > 24 {
+        format!("{}…", text.chars().take(24).collect::<String>())
+    } else {
+        text.to_string()
+    };
+    let v = rime_core::units::parse_quantity("value", text, unit).map_err(|e| {
+        let msg = e.to_string();
+        let msg = msg.strip_prefix("value: ").unwrap_or(&msg).to_string();
+        let msg = if msg.chars().count() > 160 {
+            format!("{}…", msg.chars().take(160).collect::<String>())
+        } else {
+            msg
+        };
+        format!("{field}: {msg} (typed \"{shown}\")")
+    })?;
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(format!("{field}: not a finite number (typed \"{shown}\")"))
+    }
+}
+
 /// A choice parameter's current option, if active (used by the page to fill selects).
 pub fn choice_of(scene: &Scene, path: &str) -> Option<&'static str> {
     scene.get(path).ok().and_then(choice_name)
@@ -500,6 +589,44 @@ mod tests {
         assert!(t["result"]["d_roche"].as_f64().unwrap() > 1e8);
         let n: Json = serde_json::from_str(&Explorer::new().normal(0.01, "fast").unwrap()).unwrap();
         assert_eq!(n["status"], "rebound");
+    }
+
+    #[test]
+    fn typed_speeds_take_units_and_bad_ones_name_the_field_issue_12() {
+        assert_eq!(parse_speed("g from", "1 um/s").unwrap(), 1e-6);
+        assert_eq!(parse_speed("g from", "5 cm/s").unwrap(), 0.05);
+        assert_eq!(parse_speed("g to", "0.3").unwrap(), 0.3);
+        let e = parse_speed("g to", "2e6 m/s").unwrap_err();
+        assert!(e.starts_with("g to:") && e.contains("2e6"), "{e}");
+        let huge = format!("1{}", "0".repeat(308));
+        let e = parse_speed("g to", &huge).unwrap_err();
+        assert!(e.starts_with("g to:") && e.len() < 200, "{e}");
+        let e = parse_speed("g from", "fast").unwrap_err();
+        assert!(e.starts_with("g from:"), "{e}");
+        assert!(parse_speed("g from", "-1 m/s").is_err());
+        assert!(parse_speed("g from", "3 kg").is_err());
+        assert_eq!(
+            parse_quantity("tidal.distance", "1.5e5 km", "m").unwrap(),
+            1.5e8
+        );
+    }
+
+    #[test]
+    fn help_names_every_parameter_and_marks_the_artifact() {
+        let h: Json = serde_json::from_str(&help_json()).unwrap();
+        assert_eq!(h["paper"]["year"], 2002);
+        assert_eq!(
+            h["parameters"]["contact_end"]["options"]["force_zero"],
+            "when the force returns to zero"
+        );
+        let artifacts: Vec<&str> = h["classes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|c| c["artifact"] == true)
+            .map(|c| c["name"].as_str().unwrap())
+            .collect();
+        assert_eq!(artifacts, ["sliding_gap"]);
     }
 
     #[test]

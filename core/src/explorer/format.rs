@@ -143,6 +143,29 @@ pub fn decade(k: i32) -> String {
     }
 }
 
+/// The significant digits of `v` as printed in its shortest form (`3.84e-11` → 3, `1.341e8` → 4,
+/// `37.6` → 3); 1 for zero or non-finite values.
+pub fn printed_digits(v: f64) -> i32 {
+    if !v.is_finite() || v == 0.0 {
+        return 1;
+    }
+    let s = format!("{:e}", v.abs());
+    let mantissa = s.split('e').next().unwrap_or("");
+    let digits = mantissa.chars().filter(char::is_ascii_digit).count() as i32;
+    digits.max(1)
+}
+
+/// Whether `computed` reproduces a `printed` value to the digits it is printed with: rounded to
+/// [`printed_digits`] significant digits it reads the same. The one agree/disagree rule for
+/// comparisons with numbers a paper prints.
+pub fn agrees_to_printed(computed: f64, printed: f64) -> bool {
+    if !(computed.is_finite() && printed.is_finite()) {
+        return false;
+    }
+    let d = printed_digits(printed);
+    sig(computed, d).parse::<f64>().ok() == sig(printed, d).parse::<f64>().ok()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -188,6 +211,20 @@ mod tests {
             let back = crate::units::parse_quantity("x", &text, unit).unwrap();
             assert!(((back - v) / v).abs() < 1e-11, "{v} → {text} → {back}");
         }
+    }
+
+    #[test]
+    fn printed_values_compare_to_their_digits() {
+        assert_eq!(printed_digits(3.84e-11), 3);
+        assert_eq!(printed_digits(1.341e8), 4);
+        assert_eq!(printed_digits(37.6), 3);
+        assert_eq!(printed_digits(5.43e4), 3);
+        // 1.3408e8 rounds to 1.341e8; 1.3404e8 does not.
+        assert!(agrees_to_printed(1.3408e8, 1.341e8));
+        assert!(!agrees_to_printed(1.3404e8, 1.341e8));
+        assert!(!agrees_to_printed(37.72, 37.6));
+        assert!(!agrees_to_printed(3.077e5, 5.43e4));
+        assert!(!agrees_to_printed(f64::NAN, 1.0));
     }
 
     #[test]

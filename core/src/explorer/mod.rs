@@ -11,6 +11,7 @@
 pub mod format;
 #[cfg(feature = "explorer")]
 pub mod frame;
+pub mod help;
 #[cfg(feature = "explorer")]
 pub mod limits;
 pub mod palette;

@@ -105,6 +105,10 @@ pub const CLEAN: Rgb = GREY_LIGHT;
 /// The experimental context: the Bridges et al. (1984) law and the microgravity boxes.
 pub const EXPERIMENT: Rgb = VERMILLION;
 
+/// Measured laws and other models drawn over the ε_N chart, in the order chosen (dashes tell
+/// models from measurements; the colours differ from every other role of the chart).
+pub const OVERLAY: [Rgb; 3] = [BLUE, GREY_DARK, BLACK];
+
 /// Figure series colours by index ([`crate::figure::Series::color`]): the family first, then the
 /// roles at [`SERIES_SCENE`], [`SERIES_CLEAN`], [`SERIES_EXPERIMENT`].
 pub const SERIES: [Rgb; 8] = [
@@ -131,7 +135,7 @@ pub const fn class(c: StickClass) -> Rgb {
 }
 
 /// The palette as JSON for the web page: `{"scene":"#E69F00",…,"family":[…],"series":[…],
-/// "classes":{"rolling":"#56B4E9",…}}`.
+/// "overlay":[…],"classes":{"rolling":"#56B4E9",…}}`.
 #[cfg(feature = "alloc")]
 pub fn palette_json() -> alloc::string::String {
     use alloc::format;
@@ -146,13 +150,14 @@ pub fn palette_json() -> alloc::string::String {
         .map(|c| format!("\"{}\":{}", c.name(), hex(class(*c))))
         .collect();
     format!(
-        "{{\"scene\":{},\"critical\":{},\"clean\":{},\"experiment\":{},\"family\":{},\"series\":{},\"classes\":{{{}}}}}",
+        "{{\"scene\":{},\"critical\":{},\"clean\":{},\"experiment\":{},\"family\":{},\"series\":{},\"overlay\":{},\"classes\":{{{}}}}}",
         hex(SCENE),
         hex(CRITICAL),
         hex(CLEAN),
         hex(EXPERIMENT),
         list(&FAMILY),
         list(&SERIES),
+        list(&OVERLAY),
         classes.join(",")
     )
 }

@@ -1,0 +1,191 @@
+//! Words for every surface: the paper's citation, a short glossary of the symbols a newcomer meets
+//! (ε_N, g_N, g_T, "this scene"), one line of help per parameter and human names for the options
+//! of choice parameters (`force_zero` reads "force returns to zero (paper)"). Defined once here so
+//! that the terminal's help, the web page and exported captions say the same thing.
+
+/// The paper every surface cites.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Citation {
+    /// Authors as printed.
+    pub authors: &'static str,
+    /// Year of publication.
+    pub year: u16,
+    /// Title.
+    pub title: &'static str,
+    /// Journal.
+    pub journal: &'static str,
+    /// Volume.
+    pub volume: &'static str,
+    /// Pages.
+    pub pages: &'static str,
+}
+
+/// J.-M. Hertzsch (2002), the model rime implements.
+pub const PAPER: Citation = Citation {
+    authors: "J.-M. Hertzsch",
+    year: 2002,
+    title: "A model for surface effects in slow collisions of icy grains",
+    journal: "Planetary and Space Science",
+    volume: "50",
+    pages: "1387–1397",
+};
+
+/// A term of the glossary and what it means.
+pub const GLOSSARY: [(&str, &str); 9] = [
+    (
+        "ε_N",
+        "normal coefficient of restitution: the speed of separation along the line of centres \
+         divided by the impact speed (1 elastic, 0 the grains stick), Eq. (1)",
+    ),
+    (
+        "ε_T",
+        "tangential coefficient of restitution: the sliding speed of the surfaces after the \
+         collision divided by the one before (negative: the motion reverses, rolling), Eq. (1)",
+    ),
+    (
+        "g_N",
+        "impact speed: the normal component of the relative velocity of the surfaces",
+    ),
+    (
+        "g_T",
+        "tangential component of the relative surface velocity at impact, Eq. (2)",
+    ),
+    (
+        "g_s",
+        "critical speed: below it the grains stick (a soft layer, Eq. (10), or adhesion, Eq. (15)); \
+         a threshold on the impact speed",
+    ),
+    (
+        "this scene",
+        "the grains and surfaces set in the parameters: two spheres of given radii, bulk material \
+         and, optionally, a soft surface layer, adhesion and friction",
+    ),
+    (
+        "family",
+        "the scene's curve repeated with one parameter varied around its value (η* with a layer, \
+         γ with adhesion, else A); the member equal to the scene is marked",
+    ),
+    (
+        "clean surface",
+        "the same grains without a layer and without adhesion: what the bulk alone gives",
+    ),
+    (
+        "stick map",
+        "which tangential regime each impact (g_N across, g_T up) ends in, as in Fig. 4 of the paper",
+    ),
+];
+
+/// One line of help for a parameter of [`crate::params::PARAMETERS`] (by path).
+pub fn parameter_help(path: &str) -> Option<&'static str> {
+    Some(match path {
+        "grains.radius_1" => "radius of the first sphere; the contact uses R_eff = R₁R₂/(R₁+R₂)",
+        "grains.radius_2" => "radius of the second sphere (a very large radius: a flat wall)",
+        "grains.density" => "density of both grains (ice ≈ 900 kg/m³); sets their masses",
+        "bulk.youngs_modulus" => {
+            "Young's modulus Y of the bulk (ice ≈ 10 GPa): the Hertz stiffness"
+        }
+        "bulk.poisson_ratio" => "Poisson ratio ν of the bulk (ice ≈ 0.3)",
+        "bulk.damping.time" => {
+            "damping time A of the viscoelastic bulk, Eq. (4): larger A, more dissipation, lower ε_N"
+        }
+        "bulk.damping.viscosities.shear" => {
+            "shear viscosity η₁ of the bulk, from which A is derived"
+        }
+        "bulk.damping.viscosities.bulk" => "bulk viscosity η₂ of the bulk, from which A is derived",
+        "bulk.damping.viscosities.formula" => "how A follows from η₁ and η₂ (decision 1)",
+        "contact_end" => "when a collision ends: the paper's reading or the overlap (decision 2)",
+        "layer" => "a soft surface layer (frost) of thickness D and viscosity η*, Eq. (8)–(10)",
+        "layer.thickness" => "thickness D of the soft layer; g_s grows as D^(3/2), Eq. (10)",
+        "layer.viscosity" => "viscosity η* of the soft layer: how strongly it brakes, Eq. (8)",
+        "layer.reading" => "how Eq. (8) is read (decision 4)",
+        "adhesion" => "surface adhesion (JKR) with surface energy γ, Eq. (11)–(17)",
+        "adhesion.surface_energy" => {
+            "surface energy γ: the work of separation; g_s grows as γ^(5/6), Eq. (15)"
+        }
+        "adhesion.modulus" => "which elastic modulus enters Eq. (12) (decision 5)",
+        "friction" => "tangential friction: ε_T and the stick map, Eq. (18)–(26)",
+        "friction.coefficient" => {
+            "friction coefficient μ: sliding sets in above tan ψ₀ = μ/κ, Eq. (25)"
+        }
+        "friction.kappa" => {
+            "κ = q/(1+q), the reduced moment of inertia (2/7 for solid spheres), Eq. (22)"
+        }
+        "friction.sliding_law" => "ε_T on the sliding branch (decision 6)",
+        _ => return None,
+    })
+}
+
+/// The range a slider spans for a number parameter (SI units; log-spaced where the parameter is):
+/// the values a user explores, narrower than what the core accepts (typed values may go further).
+pub fn slider_range(path: &str) -> Option<(f64, f64)> {
+    Some(match path {
+        "grains.radius_1" | "grains.radius_2" => (1e-6, 1.0),
+        "grains.density" => (100.0, 1e4),
+        "bulk.youngs_modulus" => (1e6, 1e12),
+        "bulk.poisson_ratio" => (-0.99, 0.5),
+        "bulk.damping.time" => (1e-8, 1e3),
+        "bulk.damping.viscosities.shear" | "bulk.damping.viscosities.bulk" => (1.0, 1e15),
+        "layer.thickness" => (1e-9, 1e-3),
+        "layer.viscosity" => (1.0, 1e7),
+        "adhesion.surface_energy" => (1e-4, 10.0),
+        "friction.coefficient" => (0.0, 2.0),
+        "friction.kappa" => (0.01, 1.0),
+        _ => return None,
+    })
+}
+
+/// A human name for `option` of the choice parameter `path` (`None` when unknown).
+pub fn option_label(path: &str, option: &str) -> Option<&'static str> {
+    Some(match (path, option) {
+        ("bulk.damping.viscosities.formula", "brilliantov") => {
+            "Brilliantov et al. 1996 (consistent)"
+        }
+        ("bulk.damping.viscosities.formula", "as_printed") => "as printed in the paper",
+        ("contact_end", "force_zero") => "when the force returns to zero",
+        ("contact_end", "zero_overlap") => "when the overlap returns to zero",
+        ("layer.reading", "offset") => "offset layer (consistent)",
+        ("layer.reading", "literal") => "literal Eq. (8) (slow, live integration)",
+        ("adhesion.modulus", "as_printed") => "as printed in the paper",
+        ("adhesion.modulus", "consistent") => "consistent with Eq. (4)",
+        ("friction.sliding_law", "paper") => "paper's Eq. (23) (has an artifact gap)",
+        ("friction.sliding_law", "walton") => "Walton's law (no gap)",
+        _ => return None,
+    })
+}
+
+/// Whether a stick-map class is an artifact of the printed law rather than a physical regime.
+pub fn class_is_artifact(c: crate::tangential::StickClass) -> bool {
+    c == crate::tangential::StickClass::SlidingGap
+}
+
+/// What the artifact class means, for the note beside the map.
+pub const ARTIFACT_NOTE: &str = "Grey \"sliding gap\" cells are an artifact of the printed law, not \
+a regime: just above tan ψ₀ the radicand of Eq. (23) is negative, and ε_T is clamped to 0 there; \
+the paper does not mention it. Walton's sliding law has no gap.";
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::params::{Kind, PARAMETERS};
+
+    #[test]
+    fn every_parameter_has_help_and_every_option_a_name() {
+        for p in PARAMETERS {
+            assert!(parameter_help(p.path).is_some(), "{}", p.path);
+            if let Kind::Choice(options) = p.kind {
+                for o in options {
+                    let label = option_label(p.path, o).unwrap_or_else(|| panic!("{} {o}", p.path));
+                    assert!(!label.contains('_'), "{label}");
+                }
+            }
+        }
+        assert!(parameter_help("no.such").is_none());
+        for p in PARAMETERS {
+            if let Kind::Number { min, max, .. } = p.kind {
+                let (lo, hi) = slider_range(p.path).unwrap_or_else(|| panic!("{}", p.path));
+                assert!(min <= lo && lo < hi && hi <= max, "{}", p.path);
+            }
+        }
+        assert!(option_label("contact_end", "nope").is_none());
+    }
+}

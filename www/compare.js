@@ -1,0 +1,54 @@
+// "Compare": measured ice laws and other models over the ε_N chart (the core's list and scores),
+// and "fit A to the first checked measured law" (the core's fit).
+import { qty, sig, speed } from './core.js';
+import { $, el, errText } from './dom.js';
+import { app } from './state.js';
+
+let hooks = { schedule: () => {}, edit: () => false };
+
+/** One checkbox per measured law, measured range and other model (the core's list). */
+export function buildCompare(h) {
+  hooks = h;
+  const kinds = { law: 'measured law', range: 'measured range', model: 'model' };
+  $('overlay-list').replaceChildren(...app.overlayChoices.map((c) => {
+    const box = el('input', { type: 'checkbox', value: c.key });
+    box.addEventListener('change', () => {
+      app.view.overlays = [...document.querySelectorAll('#overlay-list input')].filter((b) => b.checked).map((b) => b.value);
+      hooks.schedule();
+    });
+    const t = c.temperature;
+    const where = c.valid ? ` · ${speed(c.valid[0])}–${speed(c.valid[1])}, ${t[0] === t[1] ? qty(t[0], 'K', 3) : `${sig(t[0], 3)}–${qty(t[1], 'K', 3)}`}, ${c.geometry}` : '';
+    return el('label', { class: 'overlay-choice', title: c.label }, box, ` ${c.key.split(':')[1]} (${kinds[c.kind] || c.kind}${where})`);
+  }));
+  $('overlay-fit').addEventListener('click', fitToEntry);
+}
+
+/** "Fit this scene to that entry": A fitted to the first checked measured law, applied (undoable). */
+function fitToEntry() {
+  const law = app.view.overlays.find((k) => {
+    const c = app.overlayChoices.find((x) => x.key === k);
+    return c && c.kind === 'law';
+  });
+  if (!law) { $('overlay-fit-result').textContent = 'check a measured law first'; return; }
+  const id = law.slice('atlas:'.length);
+  let r = null;
+  const ok = hooks.edit('fit', () => { r = JSON.parse(app.ex.fitToEntry(id, 'fast')); });
+  if (ok && r) {
+    $('overlay-fit-result').textContent = `A = ${qty(r.value, 's', 4)}` +
+      (r.standard_error === null ? '' : ` ± ${qty(r.standard_error, 's', 2)}`) +
+      ` fitted to ${id} (rms ${sig(r.rms_error, 2)} over its measured speeds; undo with Ctrl+Z)` +
+      (r.warnings.length ? ` — ${r.warnings.join('; ')}` : '');
+  } else {
+    $('overlay-fit-result').textContent = `fit A to ${id} failed (scene unchanged); see the console`;
+  }
+}
+
+/** The score of the scene against each measured overlay, and what failed among them. */
+export function showOverlayScores(res) {
+  const items = (res.overlays || []).filter((o) => o.score !== null && o.score !== undefined)
+    .map((o) => el('li', {}, `rms ε_N difference against ${o.label}: ${sig(o.score, 3)}`));
+  for (const e of res.errors) if (/^(atlas|model):/.test(e.part)) items.push(el('li', { class: 'err' }, `${e.part}: ${e.message}`));
+  $('overlay-scores').replaceChildren(...items);
+}
+
+export { errText };

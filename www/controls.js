@@ -1,0 +1,287 @@
+// The controls: the parameter panel (help on every control, human option names, sliders that
+// announce values, greyed and disabled when their effect is off), the toolbar (preset, accuracy,
+// undo/redo) and the view fields (speed range with units, map range, experiments). Every edit goes
+// through the core (app.ex); a value it rejects is refused at the control, naming the field.
+import { HELP, editable, parseSpeed, qty, sig } from './core.js';
+import { $, el, errText, linked } from './dom.js';
+import { START_PRESET, app, canRedo, canUndo, onHistory, redo, remember, undo } from './state.js';
+
+const SLIDER_STEPS = 1000;
+const GROUPS = [
+  ['grains', 'Grains'],
+  ['bulk', 'Bulk material (Eq. (4))'],
+  ['contact_end', 'Contact'],
+  ['layer', 'Soft layer (Eq. (8)–(10))'],
+  ['adhesion', 'Adhesion (Eq. (11)–(17))'],
+  ['friction', 'Friction (Eq. (18)–(26))'],
+];
+
+const rows = new Map();
+let hooks = { schedule: () => {}, notice: () => {} };
+
+const helpOf = (path) => (HELP.parameters[path] || {}).help || '';
+const optionName = (path, o) => ((HELP.parameters[path] || {}).options || {})[o] || o;
+const sliderRange = (p) => (HELP.parameters[p.path] || {}).slider || [p.min, p.max];
+const shown = (p, v) => (p.unit ? qty(v, p.unit, 4) : sig(v, 4));
+
+function toSlider(p, v) {
+  const [lo, hi] = sliderRange(p);
+  let f = p.log ? (Math.log10(v) - Math.log10(lo)) / (Math.log10(hi) - Math.log10(lo)) : (v - lo) / (hi - lo);
+  if (!Number.isFinite(f)) f = 0;
+  return Math.round(Math.min(1, Math.max(0, f)) * SLIDER_STEPS);
+}
+
+function fromSlider(p, pos) {
+  const [lo, hi] = sliderRange(p);
+  const f = pos / SLIDER_STEPS;
+  const v = p.log ? 10 ** (Math.log10(lo) + f * (Math.log10(hi) - Math.log10(lo))) : lo + f * (hi - lo);
+  return Number(sig(v, p.log ? 3 : 4));
+}
+
+function setErr(path, msg) {
+  const row = rows.get(path);
+  if (!row) return;
+  row.err.textContent = msg || '';
+  row.root.classList.toggle('invalid', !!msg);
+  for (const input of [row.typed, row.sel, row.cb]) if (input) { if (msg) input.setAttribute('aria-invalid', 'true'); else input.removeAttribute('aria-invalid'); }
+}
+
+/** The scene as the editor holds it changed: ask for its frame. */
+function changed() {
+  app.wantScene = app.ex.toJson();
+  hooks.schedule();
+}
+
+/** Applies one edit (`fn` on app.ex) of `key` through the core; records it for undo. A value the
+ *  core rejects is refused at the control (message naming the field, also to the console) and the
+ *  control goes back to the drawn scene. */
+export function edit(key, fn) {
+  const before = app.wantScene;
+  try {
+    fn();
+    const after = app.ex.toJson();
+    if (after !== before) remember(before, key);
+    app.wantScene = after;
+    setErr(key, '');
+    hooks.schedule();
+    return true;
+  } catch (e) {
+    let msg = errText(e);
+    if (rows.has(key) && !msg.includes(key)) msg = `${key}: ${msg}`;
+    setErr(key, msg);
+    console.error(`rime: refused: ${msg}`);
+    revertRow(key);
+    return false;
+  }
+}
+
+/** Shows the drawn scene's value in the control of `path` again. */
+function revertRow(path) {
+  const row = rows.get(path);
+  if (!row || !app.res) return;
+  const v = app.res.values[path];
+  if (row.typed) {
+    row.typed.dataset.dirty = '';
+    row.typed.value = v === null || v === undefined ? '' : editable(v, row.p.unit);
+    if (v !== null && v !== undefined) row.slider.value = toSlider(row.p, v);
+  }
+  if (row.sel) row.sel.value = v ?? '';
+  if (row.cb) row.cb.checked = v === true;
+}
+
+function helpLine(path, id) {
+  const text = helpOf(path);
+  return text ? el('p', { class: 'help', id }, ...linked(text)) : null;
+}
+
+export function buildControls(h) {
+  hooks = h;
+  const box = $('controls');
+  box.append(el('h2', { id: 'parameters-heading', tabindex: '-1' }, 'Parameters of this scene'));
+  box.append(el('p', { class: 'hint' }, 'Type a value with units (e.g. "2 kPa s", "5 µm") and press Enter, or drag the slider. Undo with Ctrl+Z.'));
+  for (const [prefix, title] of GROUPS) {
+    const head = el('h3', {}, ...linked(title));
+    box.append(head);
+    if (prefix === 'bulk') {
+      const sel = el('select', { id: 'damping-form', 'aria-describedby': 'h-damping-form' },
+        el('option', { value: 'time' }, 'A given directly'),
+        el('option', { value: 'viscosities' }, 'A from viscosities η₁, η₂'));
+      sel.addEventListener('change', () => {
+        if (sel.value === 'time') edit('bulk.damping.time', () => app.ex.set('bulk.damping.time', '1e-4'));
+        else edit('bulk.damping.viscosities.formula', () => app.ex.set('bulk.damping.viscosities.formula', 'brilliantov'));
+      });
+      box.append(el('div', { class: 'param choice' }, el('label', { class: 'name', for: 'damping-form' }, 'damping A'), sel,
+        el('p', { class: 'help', id: 'h-damping-form' }, 'give A itself, or derive it from the bulk viscosities (', ...linked('Eq. (4)'), ')')));
+    }
+    for (const p of app.params.filter((q) => q.path === prefix || q.path.startsWith(`${prefix}.`))) {
+      const id = `p-${p.path}`;
+      const hid = `h-${p.path}`;
+      if (p.kind === 'toggle') {
+        const cb = el('input', { type: 'checkbox', id, 'aria-describedby': hid });
+        cb.addEventListener('change', () => edit(p.path, () => app.ex.set(p.path, cb.checked ? 'on' : 'off')));
+        head.append(el('label', { class: 'toggle', for: id }, cb, ` ${p.label} on`));
+        const err = el('span', { class: 'err', role: 'status' });
+        const help = helpLine(p.path, hid);
+        head.after(...[help, err].filter(Boolean));
+        rows.set(p.path, { p, root: head, cb, err });
+      } else if (p.kind === 'choice') {
+        const sel = el('select', { id, 'aria-describedby': hid }, ...p.options.map((o) => el('option', { value: o }, optionName(p.path, o))));
+        sel.addEventListener('change', () => edit(p.path, () => app.ex.set(p.path, sel.value)));
+        const err = el('span', { class: 'err', role: 'status' });
+        const root = el('div', { class: 'param choice', 'data-path': p.path },
+          el('label', { class: 'name', for: id }, p.label), sel, helpLine(p.path, hid), err);
+        box.append(root);
+        rows.set(p.path, { p, root, sel, err });
+      } else {
+        const slider = el('input', { type: 'range', min: 0, max: SLIDER_STEPS, step: 1, 'aria-label': `${p.label} (slider)`, 'data-path': p.path, 'aria-describedby': hid });
+        const typed = el('input', { type: 'text', id, inputmode: 'decimal', spellcheck: 'false', 'data-path': p.path, autocomplete: 'off', 'aria-describedby': `${hid} ${id}-err` });
+        const err = el('span', { class: 'err', id: `${id}-err`, role: 'status' });
+        slider.addEventListener('input', () => {
+          const v = fromSlider(p, Number(slider.value));
+          slider.setAttribute('aria-valuetext', shown(p, v));
+          if (edit(p.path, () => app.ex.setNumber(p.path, v))) typed.value = editable(v, p.unit);
+        });
+        typed.addEventListener('change', () => {
+          const text = typed.value.trim();
+          if (text === '') return;
+          if (edit(p.path, () => app.ex.set(p.path, text))) typed.dataset.dirty = '';
+        });
+        typed.addEventListener('input', () => { typed.dataset.dirty = '1'; });
+        const root = el('div', { class: 'param', 'data-path': p.path },
+          el('label', { class: 'name', for: id }, p.label),
+          slider,
+          el('span', { class: 'typed' }, typed, el('span', { class: 'unit' }, p.unit || '–')),
+          helpLine(p.path, hid),
+          err);
+        box.append(root);
+        rows.set(p.path, { p, root, slider, typed, err });
+      }
+    }
+  }
+}
+
+/** Shows the drawn scene and view in every control (a field being typed in keeps its text). An
+ *  inactive parameter (its effect off) is greyed and disabled, its slider at the start. */
+export function syncControls() {
+  const values = app.res.values;
+  for (const [path, row] of rows) {
+    const v = values[path];
+    if (row.cb) {
+      row.cb.checked = v === true;
+    } else if (row.sel) {
+      const off = v === null;
+      row.root.classList.toggle('inactive', off);
+      row.sel.disabled = off;
+      if (!off) row.sel.value = v; else row.sel.selectedIndex = -1;
+    } else {
+      const off = v === null;
+      row.root.classList.toggle('inactive', off);
+      row.slider.disabled = off;
+      row.typed.disabled = off;
+      const typing = document.activeElement === row.typed && row.typed.dataset.dirty === '1';
+      if (off) {
+        row.typed.value = '';
+        row.typed.placeholder = 'off';
+        row.slider.value = 0;
+        row.slider.setAttribute('aria-valuetext', 'off');
+      } else {
+        row.typed.placeholder = '';
+        row.slider.value = toSlider(row.p, v);
+        row.slider.setAttribute('aria-valuetext', shown(row.p, v));
+        if (!typing) row.typed.value = editable(v, row.p.unit);
+      }
+    }
+  }
+  $('damping-form').value = values['bulk.damping.time'] === null ? 'viscosities' : 'time';
+  const view = app.drawn.view;
+  $('accuracy').value = view.accuracy;
+  const keep = (id) => document.activeElement === $(id) && $(id).dataset.dirty === '1';
+  if (!keep('view-from')) $('view-from').value = editable(view.from, 'm/s');
+  if (!keep('view-to')) $('view-to').value = editable(view.to, 'm/s');
+  $('view-experiments').checked = view.experiments;
+  for (const r of document.querySelectorAll('input[name="yscale"]')) r.checked = r.value === view.yScale;
+  for (const box of document.querySelectorAll('#overlay-list input')) box.checked = view.overlays.includes(box.value);
+  $('chart-sources').hidden = !view.experiments;
+  if (!keep('view-mapmax')) $('view-mapmax').value = view.mapMax === null ? '' : editable(view.mapMax, 'm/s');
+}
+
+/** Goes back (or forward) in the history of scene edits. */
+export function step(back) {
+  const target = back ? undo(app.wantScene) : redo(app.wantScene);
+  if (target === null) return false;
+  app.ex.setJson(target);
+  for (const path of rows.keys()) setErr(path, '');
+  changed();
+  $('history-status').textContent = back ? 'undone' : 'redone';
+  return true;
+}
+
+function historyButtons() {
+  $('undo').disabled = !canUndo();
+  $('redo').disabled = !canRedo();
+}
+
+export function wireToolbar(presets) {
+  $('preset').replaceChildren(el('option', { value: '' }, '— load a preset —'),
+    ...presets.map((p) => el('option', { value: p.name }, `${p.name}: ${p.description}`)));
+  $('preset').addEventListener('change', () => {
+    const name = $('preset').value;
+    if (!name) return;
+    // Loading a preset is an edit like any other (undoable); the menu goes back to its prompt, so
+    // that choosing the same preset again reloads it.
+    if (edit('preset', () => app.ex.loadPreset(name))) $('history-status').textContent = `loaded ${name}`;
+    $('preset').value = '';
+  });
+  $('accuracy').addEventListener('change', () => { app.view.accuracy = $('accuracy').value; hooks.schedule(); });
+  $('undo').addEventListener('click', () => step(true));
+  $('redo').addEventListener('click', () => step(false));
+  onHistory(historyButtons);
+  historyButtons();
+  document.addEventListener('keydown', (ev) => {
+    if (!(ev.ctrlKey || ev.metaKey) || ev.altKey) return;
+    const t = ev.target;
+    // Text fields keep their own undo.
+    if (t && (t.tagName === 'TEXTAREA' || (t.tagName === 'INPUT' && t.type === 'text'))) return;
+    const k = ev.key.toLowerCase();
+    if (k === 'z' || k === 'y') {
+      if (step(k === 'z' && !ev.shiftKey)) ev.preventDefault();
+    }
+  });
+}
+
+export function wireView() {
+  for (const id of ['view-from', 'view-to', 'view-mapmax']) $(id).addEventListener('input', () => { $(id).dataset.dirty = '1'; });
+  const refuse = (errId, msg) => {
+    $(errId).textContent = msg;
+    console.error(`rime: refused: ${msg}`);
+    if (app.drawn) {
+      app.view = { ...app.drawn.view };
+      for (const id of ['view-from', 'view-to', 'view-mapmax']) $(id).dataset.dirty = '';
+      syncControls();
+    }
+  };
+  const range = () => {
+    let from, to;
+    try { from = parseSpeed('g from', $('view-from').value); } catch (e) { return refuse('view-err', errText(e)); }
+    try { to = parseSpeed('g to', $('view-to').value); } catch (e) { return refuse('view-err', errText(e)); }
+    if (!(from < to)) return refuse('view-err', 'g from: must be below "to"');
+    app.view.from = from; app.view.to = to;
+    $('view-from').dataset.dirty = ''; $('view-to').dataset.dirty = '';
+    $('view-err').textContent = '';
+    hooks.schedule();
+  };
+  $('view-experiments').addEventListener('change', () => { app.view.experiments = $('view-experiments').checked; hooks.schedule(); });
+  $('view-from').addEventListener('change', range);
+  $('view-to').addEventListener('change', range);
+  $('view-mapmax').addEventListener('change', () => {
+    const t = $('view-mapmax').value.trim();
+    try {
+      app.view.mapMax = t === '' || t === 'auto' ? null : parseSpeed('map max speed', t);
+    } catch (e) { return refuse('mapmax-err', errText(e)); }
+    $('view-mapmax').dataset.dirty = '';
+    $('mapmax-err').textContent = '';
+    hooks.schedule();
+  });
+}
+
+export { START_PRESET, setErr };

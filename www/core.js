@@ -1,0 +1,102 @@
+// The page's window onto rime-core (compiled to wasm): the one palette, the one set of number
+// formatters and unit parsers, the words (citation, glossary, help). Nothing here is defined in
+// JavaScript: every colour, every formatted number and every parsed value comes from the core, so
+// the page cannot drift from the terminal and the exports. Formatted strings are memoised (a
+// redraw formats the same tick labels again), so that a redraw costs no calls across the boundary.
+import init, * as wasm from './pkg/rime_wasm.js';
+
+/** Calls across the wasm boundary on the main thread: `compute` (scene edits, probes),
+ *  `format` (formatters and parsers, after the memo). */
+export const calls = { compute: 0, format: 0 };
+
+/** The core's palette: {scene, critical, clean, experiment, family[], series[], overlay[], classes{}}. */
+export let PALETTE = null;
+/** The core's words: {paper, repository, glossary[], parameters{path: {help, options}}, classes[], artifactNote}. */
+export let HELP = null;
+export let Explorer = null;
+
+/** Loads the wasm module (compiled once, shared with the worker) and reads palette and words. */
+export async function start(module) {
+  await init({ module_or_path: module });
+  Explorer = wasm.Explorer;
+  PALETTE = JSON.parse(wasm.palette());
+  HELP = JSON.parse(wasm.help());
+  calls.format += 2;
+}
+
+const memo = new Map();
+function cached(key, fn) {
+  let v = memo.get(key);
+  if (v === undefined) {
+    calls.format++;
+    v = fn();
+    if (memo.size > 20000) memo.clear();
+    memo.set(key, v);
+  }
+  return v;
+}
+
+const num = (v) => (v === null || v === undefined ? NaN : Number(v));
+
+/** `v` with `digits` significant digits; `—` when not a finite number. */
+export const sig = (v, digits = 4) => cached(`s${digits}|${num(v)}`, () => wasm.fmtSig(num(v), digits));
+/** A quantity with its unit and an SI prefix ("6.6 µm/s"). */
+export const qty = (v, unit, digits = 4) => cached(`q${digits}|${unit}|${num(v)}`, () => wasm.fmtQty(num(v), unit, digits));
+/** A speed with an SI prefix. */
+export const speed = (v, digits = 3) => qty(v, 'm/s', digits);
+/** The shortest text that reads back as exactly `v` (files). */
+export const shortest = (v) => cached(`r|${num(v)}`, () => wasm.fmtShortest(num(v)));
+/** The value a user edits (no float noise, SI prefix where the unit takes one). */
+export const editable = (v, unit) => cached(`e|${unit}|${num(v)}`, () => wasm.fmtEditable(num(v), unit));
+/** The label of the decade 10^k on a log axis. */
+export const decade = (k) => cached(`d|${k}`, () => wasm.fmtDecade(k));
+/** The significant digits a printed number has. */
+export const printedDigits = (v) => cached(`p|${v}`, () => wasm.printedDigits(v));
+/** Whether a computed value reproduces a printed one to its printed digits. */
+export const agrees = (computed, printed) => cached(`a|${computed}|${printed}`, () => wasm.agreesToPrinted(computed, printed));
+
+/** A typed speed ("1 um/s", "0.02") for the field `field`; throws naming the field. */
+export function parseSpeed(field, text) {
+  calls.format++;
+  return wasm.parseSpeed(field, String(text));
+}
+
+/** A typed quantity with units compatible with `unit`; throws naming the field. */
+export function parseQuantity(field, text, unit) {
+  calls.format++;
+  return wasm.parseQuantity(field, String(text), unit);
+}
+
+/** Counts the calls made across the wasm boundary through `obj` (an Explorer). */
+export function counted(obj) {
+  return new Proxy(obj, {
+    get(t, k) {
+      const v = t[k];
+      if (typeof v !== 'function') return v;
+      return (...args) => { calls.compute++; return v.apply(t, args); };
+    },
+  });
+}
+
+/** The physics notes on the repository, at `anchor`. */
+export function physicsUrl(anchor = '') {
+  return `${HELP.repository}/blob/main/docs/physics.md${anchor ? `#${anchor}` : ''}`;
+}
+
+/** The anchor of the physics notes where an equation ("4", "23", "A.5") is decided. */
+export function equationAnchor(eq) {
+  if (/^A\./.test(eq)) return 'decision-8';
+  const n = Number(eq);
+  if (n === 4) return 'decision-1';
+  if (n === 5 || n === 1) return 'decision-2';
+  if (n >= 8 && n <= 10) return 'decision-4';
+  if (n >= 11 && n <= 17) return 'decision-5';
+  if (n >= 18 && n <= 26) return 'decision-6';
+  return 'equations-used';
+}
+
+/** The paper's citation as one line. */
+export function citation() {
+  const p = HELP.paper;
+  return `${p.authors} (${p.year}), ${p.title}. ${p.journal} ${p.volume}, ${p.pages}.`;
+}

@@ -1,0 +1,66 @@
+// Small DOM helpers shared by the page's modules (no state, no physics).
+import { equationAnchor, physicsUrl } from './core.js';
+
+export const $ = (id) => document.getElementById(id);
+
+export function el(tag, attrs = {}, ...children) {
+  const e = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) {
+    if (v === undefined || v === null || v === false) continue;
+    if (k === 'class') e.className = v;
+    else if (k.startsWith('on')) e.addEventListener(k.slice(2), v);
+    else e.setAttribute(k, v === true ? '' : v);
+  }
+  for (const c of children) if (c !== null && c !== undefined) e.append(c);
+  return e;
+}
+
+export const errText = (e) => String(e && e.message ? e.message : e);
+
+const EQ = /Eq\. \((A\.\d+|\d+)\)(?:–\((A\.\d+|\d+)\))?/g;
+
+/** `text` as nodes, each "Eq. (N)" (or "Eq. (N)–(M)") a link to the physics notes. */
+export function linked(text) {
+  const out = [];
+  let at = 0;
+  for (const m of String(text).matchAll(EQ)) {
+    if (m.index > at) out.push(text.slice(at, m.index));
+    out.push(el('a', { href: physicsUrl(equationAnchor(m[1])), class: 'eq', target: '_blank', rel: 'noopener' }, m[0]));
+    at = m.index + m[0].length;
+  }
+  if (at < text.length) out.push(text.slice(at));
+  return out;
+}
+
+/** Turns every "Eq. (N)" in the text under `root` into a link (not inside links, options, code). */
+export function linkify(root) {
+  const walker = document.createTreeWalker(root, NodeFilter.SHOW_TEXT, {
+    acceptNode(n) {
+      if (!/Eq\. \(/.test(n.data)) return NodeFilter.FILTER_REJECT;
+      if (n.parentElement.closest('a, option, select, script, style, textarea, canvas, button, label.raw')) return NodeFilter.FILTER_REJECT;
+      return NodeFilter.FILTER_ACCEPT;
+    },
+  });
+  const nodes = [];
+  while (walker.nextNode()) nodes.push(walker.currentNode);
+  for (const n of nodes) n.replaceWith(...linked(n.data));
+}
+
+export function median(a) {
+  if (!a.length) return NaN;
+  const s = [...a].sort((x, y) => x - y);
+  const m = s.length >> 1;
+  return s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2;
+}
+
+/** Splits `text` into lines of at most `width` characters at spaces (long words are cut). */
+export function wrapText(text, width) {
+  const lines = [];
+  let line = '';
+  for (let w of String(text).split(/\s+/)) {
+    while (w.length > width) { if (line) { lines.push(line); line = ''; } lines.push(w.slice(0, width)); w = w.slice(width); }
+    if (line && line.length + 1 + w.length > width) { lines.push(line); line = w; } else line = line ? `${line} ${w}` : w;
+  }
+  if (line) lines.push(line);
+  return lines;
+}

@@ -1,0 +1,144 @@
+// The link: the drawn scene, view and typed tidal inputs in the URL hash, written shortly after the
+// last change; read field by field, so that one bad field is named and the good ones are kept.
+import { HELP, parseSpeed } from './core.js';
+import { errText } from './dom.js';
+import { DEFAULT_VIEW, START_PRESET, app } from './state.js';
+import { TIDAL_FIELDS } from './tidal.js';
+
+let timer = null;
+
+/** Writes the link of the drawn frame (coalesced: browsers throttle replaceState at slider rates). */
+export function writeHash() {
+  if (timer !== null) return;
+  timer = setTimeout(() => { timer = null; writeHashNow(); }, 150);
+}
+
+export function writeHashNow() {
+  if (!app.drawn) return;
+  let hash = `#s=${encodeURIComponent(app.drawn.scene)}&v=${encodeURIComponent(JSON.stringify(app.drawn.view))}`;
+  if (app.drawn.tidal) hash += `&t=${encodeURIComponent(JSON.stringify(app.drawn.tidal))}`;
+  if (location.hash !== hash) history.replaceState(null, '', hash);
+}
+
+const LEVELS = ['fast', 'balanced', 'precise'];
+
+/** The view in the link, field by field; each bad field named in `problems` and left at its default. */
+function readView(text, problems) {
+  const v = { ...DEFAULT_VIEW, overlays: [] };
+  if (text === null) return v;
+  let obj;
+  try { obj = JSON.parse(text); } catch { problems.push('view: not JSON'); return v; }
+  if (obj === null || typeof obj !== 'object' || Array.isArray(obj)) { problems.push('view: not an object'); return v; }
+  const known = new Set(Object.keys(DEFAULT_VIEW));
+  for (const k of Object.keys(obj)) if (!known.has(k)) problems.push(`view.${k}: unknown field`);
+  const speedOf = (key) => {
+    if (obj[key] === undefined || obj[key] === null) return;
+    try { v[key] = parseSpeed(`view.${key}`, String(obj[key])); } catch (e) { problems.push(errText(e)); }
+  };
+  speedOf('from');
+  speedOf('to');
+  if (!(v.from < v.to)) {
+    problems.push('view.to: must be above view.from');
+    v.from = DEFAULT_VIEW.from;
+    v.to = DEFAULT_VIEW.to;
+  }
+  speedOf('mapMax');
+  if (obj.accuracy !== undefined) {
+    if (LEVELS.includes(obj.accuracy)) v.accuracy = obj.accuracy;
+    else problems.push(`view.accuracy: one of ${LEVELS.join(', ')}`);
+  }
+  if (obj.experiments !== undefined) {
+    if (typeof obj.experiments === 'boolean') v.experiments = obj.experiments;
+    else problems.push('view.experiments: true or false');
+  }
+  if (obj.yScale !== undefined) {
+    if (obj.yScale === 'log' || obj.yScale === 'lin') v.yScale = obj.yScale;
+    else problems.push('view.yScale: log or lin');
+  }
+  if (obj.overlays !== undefined) {
+    const offered = new Set(app.overlayChoices.map((c) => c.key));
+    if (!Array.isArray(obj.overlays)) problems.push('view.overlays: a list of atlas:ID or model:NAME');
+    else {
+      for (const o of obj.overlays) {
+        if (offered.has(o)) v.overlays.push(o);
+        else problems.push(`view.overlays: ${String(o).slice(0, 40)} is not offered`);
+      }
+    }
+  }
+  return v;
+}
+
+/** Sets the scene of the link on the editor: whole if valid, else field by field from the opening
+ *  preset, naming each field that could not be kept. */
+function readScene(text, problems) {
+  try { app.ex.setJson(text); return; } catch (e) { void e; }
+  app.ex.loadPreset(START_PRESET);
+  let obj;
+  try { obj = JSON.parse(text); } catch { problems.push('scene: not JSON'); return; }
+  if (obj === null || typeof obj !== 'object' || Array.isArray(obj)) { problems.push('scene: not an object'); return; }
+  const base = JSON.parse(app.ex.toJson());
+  for (const k of Object.keys(obj)) {
+    if (!(k in base)) problems.push(`scene.${k}: unknown field`);
+    else if (base[k] !== null && typeof base[k] === 'object' && obj[k] !== null && typeof obj[k] !== 'object') problems.push(`${k}: expected an object of its fields`);
+  }
+  const get = (path) => path.split('.').reduce((o, k) => (o !== null && typeof o === 'object' ? o[k] : undefined), obj);
+  const set = (path, value) => {
+    try { app.ex.set(path, value); } catch (e) {
+      const msg = errText(e);
+      problems.push(msg.includes(path) ? msg : `${path}: ${msg}`);
+    }
+  };
+  const visc = get('bulk.damping.viscosities');
+  if (visc && typeof visc === 'object') set('bulk.damping.viscosities.formula', String(visc.formula ?? 'brilliantov'));
+  for (const p of app.params) {
+    if (p.kind === 'toggle') {
+      const v = obj[p.path];
+      if (v === undefined) continue;
+      if (v === null) set(p.path, 'off');
+      else if (typeof v === 'object') set(p.path, 'on');
+      continue;
+    }
+    const v = get(p.path);
+    if (v === undefined || v === null) continue;
+    if (typeof v === 'object') { problems.push(`${p.path}: expected a value`); continue; }
+    set(p.path, String(v));
+  }
+}
+
+/** The typed tidal inputs of the link (null: follow the scene); bad fields named, kept at the
+ *  paper's example. */
+function readTidal(text, problems, validate) {
+  if (text === null) return null;
+  let obj;
+  try { obj = JSON.parse(text); } catch { problems.push('tidal: not JSON'); return null; }
+  if (obj === null || typeof obj !== 'object') { problems.push('tidal: not an object'); return null; }
+  const out = { ...HELP.tidalPaper };
+  for (const f of TIDAL_FIELDS) {
+    if (obj[f.key] === undefined) continue;
+    if (typeof obj[f.key] !== 'number' || !Number.isFinite(obj[f.key])) { problems.push(`tidal.${f.key}: not a finite number`); continue; }
+    out[f.key] = obj[f.key];
+  }
+  try { validate(out); } catch (e) { problems.push(errText(e)); return null; }
+  return out;
+}
+
+/**
+ * Applies the state in the hash; returns the problems found (empty when all was read). Fields
+ * that could not be read keep their defaults and are named.
+ */
+export function loadHash(validateTidal) {
+  const h = location.hash.slice(1);
+  if (!h) return [];
+  const problems = [];
+  const q = new URLSearchParams(h);
+  const s = q.get('s');
+  if (s === null) {
+    problems.push('no scene (s=…) in the link');
+    app.ex.loadPreset(START_PRESET);
+  } else readScene(s, problems);
+  app.view = readView(q.get('v'), problems);
+  app.tidalIn = readTidal(q.get('t'), problems, validateTidal);
+  app.wantScene = app.ex.toJson();
+  for (const p of problems) console.error(`rime: link: ${p}`);
+  return problems;
+}
