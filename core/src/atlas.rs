@@ -201,7 +201,8 @@ const HATZES_1988: Citation = Citation {
 };
 
 // The pendulum range of the Santa Cruz group as tabulated by Hill et al. (2015), Table 2.
-const PENDULUM_SPEED: [f64; 2] = [1.5e-4, 0.02];
+/// The speeds of the Bridges et al. (1984) pendulum measurements \[m/s\].
+pub const PENDULUM_SPEED: [f64; 2] = [1.5e-4, 0.02];
 
 /// Every atlas entry, in the order listed by `rime data`.
 pub const ENTRIES: &[Entry] = &[

@@ -133,18 +133,15 @@ impl Figure {
 /// Line colours (RGB) by [`Series::color`] index: the one palette of
 /// [`crate::explorer::palette::SERIES`] (Okabe–Ito; the family first, then this scene, blue, the
 /// clean surface and the experiments).
-pub const PALETTE: [(u8, u8, u8); 8] = {
+pub const PALETTE: [(u8, u8, u8); palette::SERIES.len()] = {
     let s = palette::SERIES;
-    [
-        s[0].tuple(),
-        s[1].tuple(),
-        s[2].tuple(),
-        s[3].tuple(),
-        s[4].tuple(),
-        s[5].tuple(),
-        s[6].tuple(),
-        s[7].tuple(),
-    ]
+    let mut out = [(0, 0, 0); palette::SERIES.len()];
+    let mut k = 0;
+    while k < s.len() {
+        out[k] = s[k].tuple();
+        k += 1;
+    }
+    out
 };
 
 /// Colour of a stick-map class (RGB), from [`crate::explorer::palette::class`].
@@ -212,6 +209,29 @@ pub mod experiments {
             color,
             dashed: true,
         }
+    }
+
+    /// The Bridges et al. (1984) law over the part of `from..to` where it was measured
+    /// ([`crate::atlas::PENDULUM_SPEED`], 0.15–20 mm/s), unclamped (it stays below 1 there); `None`
+    /// when the ranges do not overlap. Outside its speeds the law is an extrapolation that would
+    /// read as data (below 77 µm/s it exceeds 1), so the explorer never draws it there.
+    pub fn bridges_measured(from: f64, to: f64, color: usize) -> Option<Series> {
+        let [lo, hi] = crate::atlas::PENDULUM_SPEED;
+        let (a, b) = (from.max(lo), to.min(hi));
+        if !(a < b) {
+            return None;
+        }
+        let mut g = vec![0.0; 40];
+        sweep::log_space(a, b, &mut g);
+        Some(Series {
+            name: "Bridges et al. 1984 (measured 0.15–20 mm/s): 0.32 (v/1 cm/s)^-0.234".to_string(),
+            points: g
+                .into_iter()
+                .map(|v| (v, crate::fit::BRIDGES_1984.eval(v)))
+                .collect(),
+            color,
+            dashed: true,
+        })
     }
 
     /// Microgravity ice experiments: Heißelmann et al. (2010), Icarus 206, 424 (1.5 cm spheres,

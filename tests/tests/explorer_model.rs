@@ -77,3 +77,72 @@ fn frame_and_command_line_give_bit_identical_numbers_issue_11() {
         }
     }
 }
+
+/// Issue 11: the records the explorer exports (terminal `x`, page downloads) are byte for byte the
+/// CSV `rime curve` and `rime map` print for the same scene, speeds, grid and level. The frame's
+/// speeds are chosen by the core (range policy and log spacing) and read back from the records, so
+/// the test also checks that the printed speeds round-trip.
+#[test]
+fn explorer_records_equal_the_command_lines_csv_issue_11() {
+    use rime_core::explorer::records;
+    for (preset, level) in [
+        ("ice-frost", Accuracy::Fast),
+        ("ice-sticky", Accuracy::Precise),
+    ] {
+        let scene = Preset::ALL
+            .iter()
+            .find(|p| p.name() == preset)
+            .unwrap()
+            .scene();
+        let mut req = Request::new(scene, level);
+        req.points = 31;
+        req.map_n = 7;
+        let f = compute(&req, &|| false).unwrap();
+        let curve = records::frame_curve_csv(&f);
+        let lines: Vec<&str> = curve.lines().collect();
+        let first = lines[1].split(',').next().unwrap();
+        let last = lines[lines.len() - 1].split(',').next().unwrap();
+        let points = (lines.len() - 1).to_string();
+        let (code, out, err) = rime_tests::rime(&[
+            "curve",
+            "--preset",
+            preset,
+            "--accuracy",
+            level.name(),
+            "--from",
+            first,
+            "--to",
+            last,
+            "--points",
+            &points,
+            "--format",
+            "csv",
+        ]);
+        assert_eq!(code, 0, "{err}");
+        assert_eq!(
+            out, curve,
+            "{preset}: rime curve and the explorer's records differ"
+        );
+
+        let map = records::frame_map_csv(&f).expect("the presets have friction");
+        let max = records::cell(f.map.as_ref().unwrap().max);
+        let (code, out, err) = rime_tests::rime(&[
+            "map",
+            "--preset",
+            preset,
+            "--accuracy",
+            level.name(),
+            "--max",
+            &max,
+            "--n",
+            "7",
+            "--format",
+            "csv",
+        ]);
+        assert_eq!(code, 0, "{err}");
+        assert_eq!(
+            out, map,
+            "{preset}: rime map and the explorer's records differ"
+        );
+    }
+}

@@ -28,6 +28,26 @@ pub struct Common {
     pub format: Format,
 }
 
+/// `rime figures --explorer`: the explorer's figures and records of a scene, as the terminal's `x`
+/// and the page's downloads draw them.
+#[derive(Debug, Clone)]
+pub struct ExplorerFigures {
+    /// Chart speeds \[m/s\] (`None`: the core's range policy).
+    pub speeds: Option<(f64, f64)>,
+    /// Points per curve.
+    pub points: usize,
+    /// Stick-map side.
+    pub map_n: usize,
+    /// Stick-map range \[m/s\] (`None`: automatic).
+    pub map_max: Option<f64>,
+    /// ε_N on a log axis.
+    pub y_log: bool,
+    /// Overlays (`atlas:ID`, `model:NAME`).
+    pub overlays: Vec<String>,
+    /// Leave out the experimental context.
+    pub no_experiments: bool,
+}
+
 /// A parsed command line.
 #[derive(Debug, Clone)]
 pub enum Command {
@@ -58,7 +78,7 @@ pub enum Command {
     /// `rime collision --g G [--gt G] [--points N]`.
     Collision(Common, crate::commands::collision::Args),
     /// `rime figures --out DIR`.
-    Figures(Common, PathBuf),
+    Figures(Common, PathBuf, Option<ExplorerFigures>),
     /// `rime compare --models LIST --g LIST | --list | --bench`.
     Compare(Common, crate::commands::compare::Args),
     /// `rime bench [--out DIR] [--quick]`.
@@ -302,7 +322,59 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             let out = PathBuf::from(require("--out")?);
             Command::Export(common, from, to, n, out, switch("--runtime-params"))
         }
-        "figures" => Command::Figures(common, PathBuf::from(get("--out").unwrap_or("figures"))),
+        "figures" => {
+            let out = PathBuf::from(get("--out").unwrap_or("figures"));
+            let explorer = if switch("--explorer") {
+                let speeds = match (get("--from"), get("--to")) {
+                    (None, None) => None,
+                    (Some(a), Some(b)) => {
+                        let (from, to) = (speed("--from", a, false)?, speed("--to", b, false)?);
+                        if to <= from {
+                            return err(format!("--to: {to} must exceed --from {from}"));
+                        }
+                        Some((from, to))
+                    }
+                    (Some(_), None) => return err("--to: required with --from"),
+                    (None, Some(_)) => return err("--from: required with --to"),
+                };
+                let map_max = get("--max").map(|m| speed("--max", m, false)).transpose()?;
+                Some(ExplorerFigures {
+                    speeds,
+                    points: count("--points", get("--points").unwrap_or("241"), 2, 100_000)?,
+                    map_n: count("--n", get("--n").unwrap_or("81"), 2, 2000)?,
+                    map_max,
+                    y_log: switch("--y-log"),
+                    overlays: get("--overlays")
+                        .map(|l| l.split(',').map(|s| s.trim().to_string()).collect())
+                        .unwrap_or_default(),
+                    no_experiments: switch("--no-experiments"),
+                })
+            } else {
+                let only = [
+                    "--from",
+                    "--to",
+                    "--points",
+                    "--n",
+                    "--max",
+                    "--y-log",
+                    "--overlays",
+                    "--no-experiments",
+                ];
+                if let Some(f) = only.iter().find(|f| get(f).is_some()) {
+                    return err(format!(
+                        "{f}: only with --explorer (the paper's figures have fixed speeds)"
+                    ));
+                }
+                if scene_file.is_some() || preset_name.is_some() || !sets.is_empty() {
+                    return err(
+                        "--scene/--preset/--set: only with --explorer (the paper's figures use \
+                         the paper's scenes)",
+                    );
+                }
+                None
+            };
+            Command::Figures(common, out, explorer)
+        }
         "fit" => Command::Fit(common, crate::commands::fit::parse(&owned)?),
         "data" => Command::Data(common, crate::commands::data::parse(&owned)?),
         "stick" => Command::Stick(common, crate::commands::stick::parse(&owned)?),

@@ -40,7 +40,7 @@ fn run(command: Command) -> CliResult<Option<String>> {
         Command::Data(c, a) => data::run(&c, &a)?,
         Command::Stick(c, a) => stick::run(&c, &a)?,
         Command::Collision(c, a) => collision::run(&c, &a)?,
-        Command::Figures(c, out) => figures::run(&c, &out)?,
+        Command::Figures(c, out, explorer) => figures::run(&c, &out, explorer.as_ref())?,
         Command::Bench(out, quick) => bench::run(&out, quick)?,
         Command::Explore(c) => return explore::run(c).map(|()| None),
     }))

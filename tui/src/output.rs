@@ -62,23 +62,12 @@ pub struct MapRecord {
     pub eps_n: Vec<f64>,
 }
 
-/// Formats a number for CSV and tables: the shortest form that reads back to the same double
-/// (`0`, `0.01`, `1`, `1e-5`, `2.5e-12`; never `0e0`), plain between 1e-3 and 1e6 and in scientific
-/// notation outside; empty (never NaN) for a non-finite value.
+/// Formats a number for CSV and tables: the core's one record cell
+/// ([`rime_core::explorer::records::cell`]): shortest round-trip, never `0e0`, empty (never NaN)
+/// for a non-finite value.
 pub fn num(v: f64) -> String {
-    if !v.is_finite() {
-        String::new()
-    } else if v == 0.0 {
-        "0".into()
-    } else if (1e-3..1e6).contains(&v.abs()) {
-        format!("{v}")
-    } else {
-        format!("{v:e}")
-    }
+    rime_core::explorer::records::cell(v)
 }
-
-/// CSV header of `rime map` (units in brackets; the JSON names are the contract).
-pub const MAP_CSV_HEADER: [&str; 4] = ["g_n [m/s]", "g_t [m/s]", "eps_t", "class"];
 
 fn opt(v: Option<f64>) -> String {
     v.map(num).unwrap_or_default()
@@ -94,14 +83,7 @@ pub trait Rows {
 
 impl Rows for EpsRecord {
     fn header() -> &'static [&'static str] {
-        &[
-            "g_n [m/s]",
-            "eps_n",
-            "status",
-            "t_c [s]",
-            "xi_max [m]",
-            "error_estimate",
-        ]
+        &rime_core::explorer::records::CURVE_HEADER
     }
     fn cells(&self) -> Vec<String> {
         vec![

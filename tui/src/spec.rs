@@ -342,9 +342,10 @@ pub const SUBS: &[Sub] = &[
     },
     Sub {
         name: "figures",
-        usage: "figures [--out DIR] [--accuracy LEVEL]",
+        usage: "figures [--out DIR] [--accuracy LEVEL] | figures --explorer [scene] [OPTIONS]",
         about: "The paper's Figs. 2–4 rebuilt from the model, SVG + PNG (their scenes are the paper's; \
-                only --accuracy applies).",
+                only --accuracy applies). With --explorer: a scene's ε_N chart and stick map with \
+                their records, exactly as the explorer's x and the page's downloads draw them.",
         flags: &[
             f("--out", "DIR", "directory to write into (default figures)"),
             f(
@@ -352,10 +353,41 @@ pub const SUBS: &[Sub] = &[
                 "LEVEL",
                 "fast | balanced | precise | a relative tolerance like 1e-8",
             ),
+            switch(
+                "--explorer",
+                "the explorer's figures and records of the scene (takes --scene/--preset/--set)",
+            ),
+            f(
+                "--from",
+                "G",
+                "--explorer: lowest chart speed (default: the explorer's range)",
+            ),
+            f("--to", "G", "--explorer: highest chart speed"),
+            f(
+                "--points",
+                "N",
+                "--explorer: points per curve (default 241)",
+            ),
+            f(
+                "--max",
+                "G",
+                "--explorer: stick-map range (default: automatic)",
+            ),
+            f("--n", "N", "--explorer: stick-map side (default 81)"),
+            switch("--y-log", "--explorer: ε_N on a log axis"),
+            f(
+                "--overlays",
+                "LIST",
+                "--explorer: comparisons, e.g. atlas:bridges1984,model:thornton1997",
+            ),
+            switch(
+                "--no-experiments",
+                "--explorer: leave out the experimental context",
+            ),
         ],
-        scene: false,
+        scene: true,
         formats: &[],
-        example: "figures --out figures",
+        example: "figures --explorer --preset ice-frost --y-log --out fig",
     },
     Sub {
         name: "compare",

@@ -10,6 +10,8 @@ use crate::explorer::{
     MAX_MAP_SIDE, STATUSES, class_code, parse_accuracy, parse_scene, speeds, status_code,
 };
 use rime_core::explorer::frame::{Curve, Overlay, Request, SWEEPS, compute};
+use rime_core::explorer::{figures, records};
+use rime_core::figure::Figure;
 use rime_core::params::{PARAMETERS, Value};
 use rime_core::tidal::{PAPER_QUOTED, TidalInput, tidal};
 use rime_core::{Scene, Status};
@@ -72,6 +74,30 @@ pub struct View {
     /// Measured laws (`atlas:ID`) and other models (`model:NAME`) drawn over the chart.
     #[serde(default)]
     pub overlays: Vec<String>,
+    /// ε_N on a log axis (the figures follow the screen).
+    #[serde(default)]
+    pub y_log: bool,
+    /// Whether the experimental context is drawn (when no overlay is chosen).
+    #[serde(default = "default_true")]
+    pub experiments: bool,
+    /// A curve pinned to compare with later edits: `{label, g: [...], eps: [...]}`.
+    #[serde(default)]
+    pub pinned: Option<PinnedCurve>,
+    /// The date the records' context lines carry (the page's clock; the core has none).
+    #[serde(default)]
+    pub date: String,
+}
+
+/// A pinned curve as the page sends it.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PinnedCurve {
+    /// Legend text.
+    pub label: String,
+    /// Speeds \[m/s\].
+    pub g: Vec<f64>,
+    /// ε_N at `g` (`null` for a gap).
+    pub eps: Vec<Option<f64>>,
 }
 
 /// The parts a view can fail on purpose (`curve` fails every 40th speed, a gap; the others whole).
@@ -97,6 +123,10 @@ impl Default for View {
             tidal: None,
             fail: Vec::new(),
             overlays: Vec::new(),
+            y_log: false,
+            experiments: true,
+            pinned: None,
+            date: String::new(),
         }
     }
 }
@@ -162,6 +192,34 @@ fn curve_json(pack: &mut Pack, c: &Curve) -> Json {
         .map(|p| p.map_or(FAILED, |n| status_code(n.status)))
         .collect();
     json!({"eps": pack.f(&c.eps()), "status": pack.u(&status), "failed": c.failed()})
+}
+
+/// A figure description as JSON; each series' points go into the number array as `x`, `y`.
+fn figure_json(pack: &mut Pack, fig: &Figure) -> Json {
+    let axis = |a: &rime_core::figure::Axis| json!({"label": a.label, "log": a.log, "min": a.min, "max": a.max});
+    let series: Vec<Json> = fig
+        .series
+        .iter()
+        .map(|s| {
+            let x: Vec<f64> = s.points.iter().map(|p| p.0).collect();
+            let y: Vec<f64> = s.points.iter().map(|p| p.1).collect();
+            json!({"name": s.name, "color": s.color, "dashed": s.dashed,
+                   "x": pack.f(&x), "y": pack.f(&y)})
+        })
+        .collect();
+    let markers: Vec<Json> = fig
+        .markers
+        .iter()
+        .map(|m| json!({"x": m.x, "label": m.label, "color": m.color}))
+        .collect();
+    let bands: Vec<Json> = fig
+        .bands
+        .iter()
+        .map(|b| json!({"x": [b.x.0, b.x.1], "y": [b.y.0, b.y.1], "label": b.label, "color": b.color}))
+        .collect();
+    json!({"name": fig.name, "title": fig.title, "caption": fig.caption, "x": axis(&fig.x),
+           "y": axis(&fig.y), "series": series, "markers": markers, "bands": bands,
+           "map": fig.map.is_some()})
 }
 
 /// Every parameter's value (number, choice name, boolean, or `null` when inactive), by path.
@@ -315,6 +373,43 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
         .collect();
     out.insert("overlays".into(), Json::from(overlays));
     out.insert("friction".into(), Json::from(scene.friction.is_some()));
+    // The one CSV contract and the figure descriptions, built by the core for every surface.
+    let version = env!("CARGO_PKG_VERSION");
+    let ctx = |what: &str| records::context(&f, what, version, &view.date);
+    out.insert(
+        "records".into(),
+        json!({
+            "curve": records::frame_curve_csv(&f),
+            "family": records::family_csv(&f),
+            "map": records::frame_map_csv(&f),
+            "context": {
+                "curve": ctx("ε_N records of this scene (rime curve)"),
+                "family": ctx("every ε_N curve of the chart"),
+                "map": ctx("stick-map records (rime map)"),
+            },
+        }),
+    );
+    let pinned = match &view.pinned {
+        Some(p) if p.g.len() != p.eps.len() => {
+            return Err("view.pinned: g and eps must have the same length".into());
+        }
+        Some(p) => Some(figures::Pinned {
+            label: p.label.clone(),
+            g: p.g.clone(),
+            eps: p.eps.iter().map(|e| e.unwrap_or(f64::NAN)).collect(),
+        }),
+        None => None,
+    };
+    let fig_view = figures::View {
+        y_log: view.y_log,
+        experiments: view.experiments,
+        pinned,
+    };
+    let figs: Vec<Json> = figures::frame_figures(&f, &fig_view, version)
+        .iter()
+        .map(|fig| figure_json(&mut pack, fig))
+        .collect();
+    out.insert("figures".into(), Json::from(figs));
     out.insert(
         "tidal".into(),
         match if force("tidal") {

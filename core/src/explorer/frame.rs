@@ -635,8 +635,8 @@ pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<Frame> {
     let (from, to) = req.speeds.unwrap_or_else(|| {
         let (lo, hi) = chart_decades(contact.as_ref().ok());
         (
-            crate::math::powf(10.0, lo as f64),
-            crate::math::powf(10.0, hi as f64),
+            crate::sweep::exact_decade(lo),
+            crate::sweep::exact_decade(hi),
         )
     });
     frame.g = alloc::vec![0.0; req.points];

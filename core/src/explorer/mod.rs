@@ -7,6 +7,8 @@
 //! that figures and command-line output can use them without the `explorer` feature; the limits
 //! and range policy come with `explorer`.
 
+#[cfg(feature = "explorer")]
+pub mod figures;
 #[cfg(feature = "alloc")]
 pub mod format;
 #[cfg(feature = "explorer")]
@@ -17,3 +19,5 @@ pub mod limits;
 pub mod palette;
 #[cfg(feature = "explorer")]
 pub mod range;
+#[cfg(feature = "explorer")]
+pub mod records;

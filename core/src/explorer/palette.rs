@@ -105,14 +105,29 @@ pub const CLEAN: Rgb = GREY_LIGHT;
 /// The experimental context: the Bridges et al. (1984) law and the microgravity boxes.
 pub const EXPERIMENT: Rgb = VERMILLION;
 
-/// Measured laws and other models drawn over the ε_N chart, in the order chosen (dashes tell
-/// models from measurements; the colours differ from every other role of the chart).
-pub const OVERLAY: [Rgb; 3] = [BLUE, GREY_DARK, BLACK];
+/// The comparisons drawn over the ε_N chart (measured laws and other models), in order (repeats).
+pub const OVERLAYS: [Rgb; 5] = [VERMILLION, SKY_BLUE, BLUISH_GREEN, REDDISH_PURPLE, YELLOW];
+/// A curve pinned to compare with later edits.
+pub const PINNED: Rgb = GREY_DARK;
 
 /// Figure series colours by index ([`crate::figure::Series::color`]): the family first, then the
-/// roles at [`SERIES_SCENE`], [`SERIES_CLEAN`], [`SERIES_EXPERIMENT`].
-pub const SERIES: [Rgb; 8] = [
-    FAMILY[0], FAMILY[1], FAMILY[2], FAMILY[3], SCENE, BLUE, CLEAN, EXPERIMENT,
+/// roles at [`SERIES_SCENE`], [`SERIES_CLEAN`], [`SERIES_EXPERIMENT`], the comparisons from
+/// [`SERIES_OVERLAY`] and the pinned curve at [`SERIES_PINNED`].
+pub const SERIES: [Rgb; 14] = [
+    FAMILY[0],
+    FAMILY[1],
+    FAMILY[2],
+    FAMILY[3],
+    SCENE,
+    BLUE,
+    CLEAN,
+    EXPERIMENT,
+    OVERLAYS[0],
+    OVERLAYS[1],
+    OVERLAYS[2],
+    OVERLAYS[3],
+    OVERLAYS[4],
+    PINNED,
 ];
 /// Index of [`SCENE`] in [`SERIES`].
 pub const SERIES_SCENE: usize = 4;
@@ -120,6 +135,10 @@ pub const SERIES_SCENE: usize = 4;
 pub const SERIES_CLEAN: usize = 6;
 /// Index of [`EXPERIMENT`] in [`SERIES`].
 pub const SERIES_EXPERIMENT: usize = 7;
+/// Index of the first of [`OVERLAYS`] in [`SERIES`].
+pub const SERIES_OVERLAY: usize = 8;
+/// Index of [`PINNED`] in [`SERIES`].
+pub const SERIES_PINNED: usize = 13;
 
 /// Colour of a stick-map class.
 pub const fn class(c: StickClass) -> Rgb {
@@ -135,7 +154,7 @@ pub const fn class(c: StickClass) -> Rgb {
 }
 
 /// The palette as JSON for the web page: `{"scene":"#E69F00",…,"family":[…],"series":[…],
-/// "overlay":[…],"classes":{"rolling":"#56B4E9",…}}`.
+/// "classes":{"rolling":"#56B4E9",…}}`.
 #[cfg(feature = "alloc")]
 pub fn palette_json() -> alloc::string::String {
     use alloc::format;
@@ -150,14 +169,15 @@ pub fn palette_json() -> alloc::string::String {
         .map(|c| format!("\"{}\":{}", c.name(), hex(class(*c))))
         .collect();
     format!(
-        "{{\"scene\":{},\"critical\":{},\"clean\":{},\"experiment\":{},\"family\":{},\"series\":{},\"overlay\":{},\"classes\":{{{}}}}}",
+        "{{\"scene\":{},\"critical\":{},\"clean\":{},\"experiment\":{},\"pinned\":{},\"overlays\":{},\"family\":{},\"series\":{},\"classes\":{{{}}}}}",
         hex(SCENE),
         hex(CRITICAL),
         hex(CLEAN),
         hex(EXPERIMENT),
+        hex(PINNED),
+        list(&OVERLAYS),
         list(&FAMILY),
         list(&SERIES),
-        list(&OVERLAY),
         classes.join(",")
     )
 }

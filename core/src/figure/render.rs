@@ -75,7 +75,32 @@ fn tick_label(v: f64, log: bool) -> String {
 
 fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Result<()> {
     root.fill(&WHITE).map_err(plot_err)?;
-    let (body, caption_area) = root.split_vertically(root.dim_in_pixel().1 as i32 - 46);
+    // Caption: wrapped over at most five lines; the figure gives up the height they need.
+    let words: Vec<&str> = fig.caption.split_whitespace().collect();
+    let width_chars = (root.dim_in_pixel().0 as usize / 7).max(40);
+    let mut lines = vec![String::new()];
+    for w in words {
+        let too_long = lines
+            .last()
+            .is_some_and(|l| l.chars().count() + w.chars().count() + 1 > width_chars);
+        if too_long {
+            if lines.len() == 5 {
+                if let Some(l) = lines.last_mut() {
+                    l.push_str(" …");
+                }
+                break;
+            }
+            lines.push(String::new());
+        }
+        if let Some(l) = lines.last_mut() {
+            if !l.is_empty() {
+                l.push(' ');
+            }
+            l.push_str(w);
+        }
+    }
+    let caption_height = 14 * lines.len() as i32 + 8;
+    let (body, caption_area) = root.split_vertically(root.dim_in_pixel().1 as i32 - caption_height);
     let (x0, x1) = (
         to_axis(
             fig.x.min.max(if fig.x.log { 1e-300 } else { f64::MIN }),
@@ -243,30 +268,6 @@ fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Resul
         .draw()
         .map_err(plot_err)?;
 
-    // Caption: wrapped over two lines.
-    let words: Vec<&str> = fig.caption.split_whitespace().collect();
-    let width_chars = (caption_area.dim_in_pixel().0 as usize / 7).max(40);
-    let mut lines = vec![String::new()];
-    for w in words {
-        let too_long = lines
-            .last()
-            .is_some_and(|l| l.chars().count() + w.chars().count() + 1 > width_chars);
-        if too_long {
-            if lines.len() == 3 {
-                if let Some(l) = lines.last_mut() {
-                    l.push_str(" …");
-                }
-                break;
-            }
-            lines.push(String::new());
-        }
-        if let Some(l) = lines.last_mut() {
-            if !l.is_empty() {
-                l.push(' ');
-            }
-            l.push_str(w);
-        }
-    }
     for (k, l) in lines.iter().enumerate() {
         caption_area
             .draw(&Text::new(

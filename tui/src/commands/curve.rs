@@ -4,33 +4,11 @@ use crate::cli::{self, Common};
 use crate::output::{EpsRecord, render};
 use crate::scene_io::{CliError, CliResult};
 
-/// `n` speeds spaced evenly in log10 from `from` to `to`, both ends exact. The exponents are
-/// interpolated from the ends' decimal exponents, and a point whose exponent is a whole number k is
-/// the double nearest 10^k (parsed from `1e{k}`), so decades print exactly (`1e-5`, not
-/// `9.999999999999999e-6`).
+/// `n` speeds spaced evenly in log10 from `from` to `to`, both ends exact and decades exact: the
+/// core's one spacing ([`rime_core::sweep::log_space`]), shared with the explorer and the page.
 pub fn log_space(from: f64, to: f64, n: usize) -> Vec<f64> {
-    if n == 0 {
-        return Vec::new();
-    }
-    if n == 1 {
-        return vec![from];
-    }
-    let (a, b) = (from.log10(), to.log10());
-    let m = (n - 1) as f64;
-    let mut g: Vec<f64> = (0..n)
-        .map(|i| {
-            let i = i as f64;
-            let e = (a * (m - i) + b * i) / m;
-            let k = e.round();
-            if (e - k).abs() < 1e-12 {
-                format!("1e{k}").parse().unwrap_or_else(|_| 10f64.powf(e))
-            } else {
-                10f64.powf(e)
-            }
-        })
-        .collect();
-    g[0] = from;
-    g[n - 1] = to;
+    let mut g = vec![0.0; n];
+    rime_core::sweep::log_space(from, to, &mut g);
     g
 }
 

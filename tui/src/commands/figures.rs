@@ -1,12 +1,17 @@
-//! `rime figures --out DIR`: the paper's Figs. 2–4 from the model, SVG + PNG.
+//! `rime figures --out DIR`: the paper's Figs. 2–4 from the model, SVG + PNG; with `--explorer`,
+//! a scene's ε_N chart and stick map with their records, written by the same code as the
+//! explorer's `x` (and drawn from the same core figure descriptions as the page's downloads).
 
-use crate::cli::Common;
+use crate::cli::{Common, ExplorerFigures};
 use crate::scene_io::{self, CliError, CliResult};
 use std::path::Path;
 
 /// Writes every figure into `out` and lists them with their captions.
-pub fn run(c: &Common, out: &Path) -> CliResult<String> {
+pub fn run(c: &Common, out: &Path, explorer: Option<&ExplorerFigures>) -> CliResult<String> {
     std::fs::create_dir_all(out).map_err(|e| CliError(format!("--out {}: {e}", out.display())))?;
+    if let Some(x) = explorer {
+        return run_explorer(c, out, x);
+    }
     let mut progress = crate::progress::Progress::new("figures", 1);
     progress.step("computing the curves");
     let figures = rime_core::figure::paper::all(c.accuracy, 160)?;
@@ -26,6 +31,56 @@ pub fn run(c: &Common, out: &Path) -> CliResult<String> {
     s.push_str(&format!(
         "wrote {} figures (SVG + PNG) into {}\n",
         figures.len(),
+        out.display()
+    ));
+    Ok(s)
+}
+
+/// `--explorer`: one frame of the core's explorer model, written like the explorer's `x`.
+fn run_explorer(c: &Common, out: &Path, x: &ExplorerFigures) -> CliResult<String> {
+    use rime_core::explorer::figures::View;
+    use rime_core::explorer::frame::{Overlay, Request, compute};
+    let mut req = Request::new(c.scene, c.accuracy);
+    req.speeds = x.speeds;
+    req.points = x.points;
+    req.map_n = x.map_n;
+    req.map_max = x.map_max;
+    req.overlays = x
+        .overlays
+        .iter()
+        .map(|o| Overlay::parse(o).map_err(|e| CliError(format!("--overlays {o}: {e}"))))
+        .collect::<CliResult<_>>()?;
+    let mut progress = crate::progress::Progress::new("figures", 1);
+    progress.step("computing the frame");
+    let frame = compute(&req, &|| false).ok_or_else(|| CliError("figures: cancelled".into()))?;
+    if let Some(e) = frame
+        .errors
+        .iter()
+        .find(|e| e.part == "request" || e.part == "scene")
+    {
+        return Err(CliError(format!("{}: {}", e.part, e.message)));
+    }
+    let view = View {
+        y_log: x.y_log,
+        experiments: !x.no_experiments,
+        pinned: None,
+    };
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    let written = crate::explore::frame_export::write_frame(
+        out,
+        &frame,
+        &view,
+        &crate::explore::frame_export::date(secs),
+    )?;
+    let mut s = String::new();
+    for e in &frame.errors {
+        s.push_str(&format!("note: {}: {}\n", e.part, e.message));
+    }
+    s.push_str(&format!(
+        "wrote {} into {}\n",
+        written.join(", "),
         out.display()
     ));
     Ok(s)

@@ -46,21 +46,7 @@ pub fn run(common: &Common, max: f64, n: usize) -> CliResult<String> {
             };
             text.map_err(|e| CliError(e.to_string()))? + "\n"
         }
-        Format::Csv => {
-            let mut s = format!("{}\n", output::MAP_CSV_HEADER.join(","));
-            for i in 0..n {
-                for j in 0..n {
-                    s.push_str(&format!(
-                        "{},{},{},{}\n",
-                        output::num(map.g[i]),
-                        output::num(map.g[j]),
-                        output::num(map.eps_t[i * n + j]),
-                        map.class[i * n + j].name()
-                    ));
-                }
-            }
-            s
-        }
+        Format::Csv => rime_core::explorer::records::map_csv(&map),
         Format::Table => {
             // One letter per cell, g_T to the right, g_N upwards, with a legend.
             use rime_core::tangential::StickClass;

@@ -418,7 +418,12 @@ impl App {
             self.info("still computing — press x again in a moment");
             return;
         };
-        match frame_export::export(&self.out_dir, data) {
+        let view = rime_core::explorer::figures::View {
+            y_log: false,
+            experiments: self.experiments,
+            pinned: None,
+        };
+        match frame_export::export(&self.out_dir, data, &view) {
             Ok(dir) => self.info(format!(
                 "exported scene.json, CSV tables, SVG + PNG figures to {}/",
                 dir.display()

@@ -96,6 +96,9 @@ pub struct FrameData {
     pub overlays: Vec<rime_core::explorer::frame::OverlayCurve>,
     /// Wall time of the computation.
     pub elapsed: Duration,
+    /// The core's frame these views were adapted from: the records and figures of the `x` export
+    /// are built from it by the same core functions the page and the subcommands use.
+    pub frame: rime_core::explorer::frame::Frame,
 }
 
 /// Computes a frame with the one explorer model of the core ([`rime_core::explorer::frame`]), and
@@ -125,6 +128,7 @@ pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<FrameData>
         })
         .unwrap_or_default();
     let f = frame::compute(&core_req, cancelled)?;
+    let core_frame = f.clone();
     let mut notes: Vec<String> = Vec::new();
     let mut map = None;
     let mut map_max = req.map_max.unwrap_or(1.0);
@@ -170,5 +174,6 @@ pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<FrameData>
         notes,
         overlays: f.overlays,
         elapsed: start.elapsed(),
+        frame: core_frame,
     })
 }

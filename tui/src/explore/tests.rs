@@ -319,15 +319,29 @@ fn export_writes_csvs_and_scene() {
         .find(|e| e.file_name().to_string_lossy().starts_with("rime-export-"))
         .expect("export folder")
         .path();
-    let curves = std::fs::read_to_string(export.join("eps_curves.csv")).expect("curves");
-    let header = curves.lines().next().expect("header");
-    assert!(
-        header.starts_with("g_n,eps_n,status,eps_n_clean,eps_n[layer.viscosity=500]"),
-        "{header}"
+    let data = |name: &str| -> Vec<String> {
+        let text = std::fs::read_to_string(export.join(name)).expect(name);
+        assert!(text.starts_with("# "), "{name} starts with its context");
+        assert!(text.contains("Hertzsch (2002)"), "{name} cites the model");
+        text.lines()
+            .filter(|l| !l.starts_with('#'))
+            .map(String::from)
+            .collect()
+    };
+    let curve = data("eps_curve.csv");
+    assert_eq!(
+        curve[0],
+        "g_n [m/s],eps_n,status,t_c [s],xi_max [m],error_estimate"
     );
-    assert_eq!(curves.lines().count(), 1 + super::compute::CURVE_POINTS);
-    let map = std::fs::read_to_string(export.join("stick_map.csv")).expect("map");
-    assert!(map.starts_with("g_n,g_t,eps_t,class\n"));
+    assert_eq!(curve.len(), 1 + super::compute::CURVE_POINTS);
+    let family = data("eps_family.csv");
+    assert!(
+        family[0].starts_with("g_n [m/s],eps_n,eps_n clean surfaces,eps_n [η* = 500 Pa s]"),
+        "{}",
+        family[0]
+    );
+    let map = data("stick_map.csv");
+    assert_eq!(map[0], "g_n [m/s],g_t [m/s],eps_t,class");
     for figure in ["eps_n.svg", "eps_n.png", "stick_map.svg", "stick_map.png"] {
         let bytes = std::fs::read(export.join(figure)).expect("figure written");
         assert!(bytes.len() > 1000, "{figure} is suspiciously small");

@@ -1,0 +1,327 @@
+//! The frame as figure descriptions ([`crate::figure::Figure`]): what the ε_N chart and the stick
+//! map show, built once here for every surface — the terminal's `x` export and the page's
+//! downloads render these, `rime figures --scene` writes them, and each surface's screen follows
+//! the same [`View`] (axis mode, overlays, experiments, pinned curve), so what is exported is what
+//! is on screen.
+//!
+//! Draw order is part of the description: measured data (bands, the Bridges law, atlas laws)
+//! first, beneath the model curves; this scene's curve last, on top.
+
+use super::frame::{Frame, SWEEPS};
+use super::palette;
+use super::records::{CITATION, cell, scene_line};
+use crate::figure::{Axis, Band, Figure, Marker, Series, experiments, speed_label};
+use alloc::format;
+use alloc::string::{String, ToString};
+use alloc::vec::Vec;
+
+/// A curve the user pinned to compare with later edits.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Pinned {
+    /// Legend text (e.g. what the scene was).
+    pub label: String,
+    /// Speeds \[m/s\].
+    pub g: Vec<f64>,
+    /// ε_N at `g`.
+    pub eps: Vec<f64>,
+}
+
+/// How a surface shows the frame; exports take the same value, so they show what the screen shows.
+#[derive(Debug, Clone, PartialEq)]
+pub struct View {
+    /// ε_N on a logarithmic axis (sticking, ε_N = 0, cannot be shown there) instead of 0…1.
+    pub y_log: bool,
+    /// Whether the experimental context (Bridges et al. 1984 law over its measured speeds, the
+    /// microgravity boxes) is drawn when no comparison overlay is chosen.
+    pub experiments: bool,
+    /// A pinned curve drawn dashed beneath this scene's.
+    pub pinned: Option<Pinned>,
+}
+
+impl Default for View {
+    fn default() -> Self {
+        View {
+            y_log: false,
+            experiments: true,
+            pinned: None,
+        }
+    }
+}
+
+/// The lowest decade of a logarithmic ε_N axis: a decade below the smallest positive value drawn,
+/// between 1e-12 and 0.1 (the one rule of every surface).
+pub fn eps_log_floor<'a>(curves: impl IntoIterator<Item = &'a [f64]>) -> i32 {
+    let min = curves
+        .into_iter()
+        .flat_map(|c| c.iter().copied())
+        .filter(|e| e.is_finite() && *e > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    if min.is_finite() {
+        (libm::floor(crate::math::log10(min)) as i32).clamp(-12, -1)
+    } else {
+        -3
+    }
+}
+
+/// What the family means, for its legend: `η* varied around this scene`.
+pub fn family_meaning(frame: &Frame) -> Option<String> {
+    let s = SWEEPS.get(frame.sweep)?;
+    (!frame.family.is_empty()).then(|| format!("{} varied around this scene", s.symbol))
+}
+
+fn member_name(frame: &Frame, value: f64, is_scene: bool) -> String {
+    let s = SWEEPS.get(frame.sweep);
+    let symbol = s.map_or("p", |s| s.symbol);
+    let unit = s.map_or("", |s| s.unit);
+    let unit = if unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {unit}")
+    };
+    let mark = if is_scene { " (this scene)" } else { "" };
+    format!("{symbol} = {}{unit}{mark}", cell(value))
+}
+
+/// The caption every figure of a frame carries: level, scene, program and model — enough to
+/// reproduce the figure from itself.
+pub fn caption(frame: &Frame, version: &str) -> String {
+    format!(
+        "rime {version}, level {}. Scene: {}. Model: {CITATION}.",
+        frame.request.accuracy.name(),
+        scene_line(&frame.request.scene)
+    )
+}
+
+/// The ε_N chart of a frame, as `view` shows it.
+pub fn eps_figure(frame: &Frame, view: &View, version: &str) -> Figure {
+    let g = &frame.g;
+    let (g0, g1) = (
+        g.first().copied().unwrap_or(1e-7),
+        g.last().copied().unwrap_or(10.0),
+    );
+    let pts = |gs: &[f64], eps: &[f64]| -> Vec<(f64, f64)> {
+        gs.iter()
+            .zip(eps)
+            .map(|(&x, &y)| (x, if y.is_finite() { y } else { f64::NAN }))
+            .collect()
+    };
+    let mut series = Vec::new();
+    let mut bands = Vec::new();
+    let mut drawn: Vec<Vec<f64>> = Vec::new();
+
+    // Measured data first, beneath the model curves.
+    if view.experiments && frame.overlays.is_empty() {
+        if let Some(b) = experiments::bridges_measured(g0, g1, palette::SERIES_EXPERIMENT) {
+            series.push(b);
+        }
+        bands.extend(
+            experiments::bands(palette::SERIES_EXPERIMENT)
+                .into_iter()
+                .filter(|b| b.x.1 > g0 && b.x.0 < g1),
+        );
+    }
+    for (k, o) in frame.overlays.iter().enumerate() {
+        let color = palette::SERIES_OVERLAY + k % palette::OVERLAYS.len();
+        if o.band {
+            if let (Some(&x0), Some(&x1), Some(&y0), Some(&y1)) =
+                (o.g.first(), o.g.last(), o.eps.first(), o.eps.last())
+            {
+                bands.push(Band {
+                    x: (x0, x1),
+                    y: (y0.min(y1), y0.max(y1)),
+                    label: o.label.clone(),
+                    color,
+                });
+            }
+        } else {
+            series.push(Series {
+                name: o.label.clone(),
+                points: pts(&o.g, &o.eps),
+                color,
+                dashed: true,
+            });
+        }
+    }
+
+    // The model: family, clean surfaces, pinned, this scene on top.
+    let meaning = family_meaning(frame);
+    for (k, m) in frame.family.iter().enumerate() {
+        let Some(c) = &m.curve else { continue };
+        let eps = c.eps();
+        let mut name = member_name(frame, m.value, m.is_scene);
+        if let (0, Some(meaning)) = (k, &meaning) {
+            name = format!("{name} (family: {meaning})");
+        }
+        series.push(Series {
+            name,
+            points: pts(g, &eps),
+            color: k % palette::FAMILY.len(),
+            dashed: false,
+        });
+        drawn.push(eps);
+    }
+    if let Some(c) = &frame.clean {
+        let eps = c.eps();
+        series.push(Series {
+            name: "clean surfaces (no layer, no adhesion)".to_string(),
+            points: pts(g, &eps),
+            color: palette::SERIES_CLEAN,
+            dashed: true,
+        });
+        drawn.push(eps);
+    }
+    if let Some(p) = &view.pinned {
+        series.push(Series {
+            name: format!("pinned: {}", p.label),
+            points: pts(&p.g, &p.eps),
+            color: palette::SERIES_PINNED,
+            dashed: true,
+        });
+        drawn.push(p.eps.clone());
+    }
+    if let Some(c) = &frame.curve {
+        let eps = c.eps();
+        series.push(Series {
+            name: "this scene".to_string(),
+            points: pts(g, &eps),
+            color: palette::SERIES_SCENE,
+            dashed: false,
+        });
+        drawn.push(eps);
+    }
+
+    let markers = frame
+        .markers
+        .iter()
+        .map(|m| Marker {
+            x: m.value,
+            label: format!("{} = {}", m.label, speed_label(m.value)),
+            color: palette::SERIES_SCENE,
+        })
+        .collect();
+    let y = if view.y_log {
+        let floor = eps_log_floor(drawn.iter().map(|v| &v[..]));
+        Axis {
+            label: "normal restitution ε_N (log; sticking, ε_N = 0, not shown)".to_string(),
+            log: true,
+            min: crate::sweep::exact_decade(floor),
+            max: 1.0,
+        }
+    } else {
+        Axis {
+            label: "normal restitution ε_N".to_string(),
+            log: false,
+            min: 0.0,
+            max: 1.0,
+        }
+    };
+    Figure {
+        name: "eps_n".to_string(),
+        title: "Normal restitution ε_N over the impact speed".to_string(),
+        caption: caption(frame, version),
+        x: Axis {
+            label: "normal impact speed g_N [m/s]".to_string(),
+            log: true,
+            min: g0,
+            max: g1,
+        },
+        y,
+        series,
+        markers,
+        bands,
+        map: None,
+    }
+}
+
+/// The stick map of a frame (g_T across, g_N up), when the frame has one.
+pub fn map_figure(frame: &Frame, version: &str) -> Option<Figure> {
+    let part = frame.map.as_ref()?;
+    let map = part.map.as_ref()?;
+    Some(Figure::stick_map(
+        "stick_map".to_string(),
+        "Stick-map classes over (g_N, g_T)".to_string(),
+        caption(frame, version),
+        map.g.clone(),
+        map.class.clone(),
+        part.max,
+    ))
+}
+
+/// Every figure of a frame, as `view` shows it: the ε_N chart, then the stick map if any.
+pub fn frame_figures(frame: &Frame, view: &View, version: &str) -> Vec<Figure> {
+    let mut out = alloc::vec![eps_figure(frame, view, version)];
+    out.extend(map_figure(frame, version));
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Accuracy;
+    use crate::explorer::frame::{Request, compute};
+    use crate::scene::Preset;
+
+    fn frame(scene: crate::Scene) -> Frame {
+        let mut req = Request::new(scene, Accuracy::Fast);
+        req.points = 40;
+        req.map_n = 8;
+        compute(&req, &|| false).expect("not cancelled")
+    }
+
+    #[test]
+    fn measured_data_lie_beneath_the_model_and_only_over_their_speeds_issue_12() {
+        let f = frame(Preset::IceFrost.scene());
+        let fig = eps_figure(&f, &View::default(), "test");
+        let bridges = fig
+            .series
+            .iter()
+            .position(|s| s.name.starts_with("Bridges"))
+            .expect("Bridges law drawn");
+        let scene = fig
+            .series
+            .iter()
+            .position(|s| s.name == "this scene")
+            .expect("scene drawn");
+        assert!(
+            bridges < scene,
+            "measured law must be drawn first (beneath)"
+        );
+        let [lo, hi] = crate::atlas::PENDULUM_SPEED;
+        for &(g, e) in &fig.series[bridges].points {
+            assert!(
+                g >= lo && g <= hi,
+                "Bridges law drawn at {g} m/s outside its measured speeds"
+            );
+            assert!(e < 1.0, "no clamp needed inside the measured speeds");
+        }
+    }
+
+    #[test]
+    fn the_y_axis_follows_the_view_issue_12() {
+        let f = frame(Preset::IceSticky.scene());
+        let lin = eps_figure(&f, &View::default(), "test");
+        assert!(!lin.y.log && lin.y.min == 0.0 && lin.y.max == 1.0);
+        let view = View {
+            y_log: true,
+            ..View::default()
+        };
+        let log = eps_figure(&f, &view, "test");
+        assert!(log.y.log && log.y.min > 0.0 && log.y.max == 1.0);
+        let floor = crate::math::log10(log.y.min);
+        assert_eq!(floor, libm::round(floor), "a whole decade");
+    }
+
+    #[test]
+    fn the_family_says_what_it_varies_and_marks_this_scene_issue_12() {
+        let f = frame(Preset::IceFrost.scene());
+        let fig = eps_figure(&f, &View::default(), "test");
+        let names: Vec<&str> = fig.series.iter().map(|s| s.name.as_str()).collect();
+        assert!(
+            names.iter().any(|n| n.contains("varied around this scene")),
+            "{names:?}"
+        );
+        let scene_members = f.family.iter().filter(|m| m.is_scene).count();
+        let marked = names.iter().filter(|n| n.contains("(this scene)")).count();
+        assert_eq!(marked, scene_members, "{names:?}");
+    }
+}

@@ -1,0 +1,243 @@
+//! Records: the one CSV contract of every surface (docs/cli.md#records).
+//!
+//! `rime curve --format csv`, `rime map --format csv`, the terminal's `x` export and the web page's
+//! downloads all write these functions' output, so the same scene, speeds and level give the same
+//! bytes everywhere (an end-to-end test compares them). Numbers are [`cell`]: the shortest text
+//! that reads back to the same double; column names are the JSON field names with units in
+//! brackets. Downloads and exports put [`context`] (`# ` lines: version, level, scene, citation)
+//! before the header, so a file can be reproduced from itself; the command line leaves it out
+//! (pipes want bare CSV), and readers skip it with `comment="#"`.
+
+use super::frame::{Frame, SWEEPS};
+use crate::normal::Normal;
+use crate::params::{PARAMETERS, Value};
+use crate::sweep::StickMap;
+use alloc::format;
+use alloc::string::String;
+use core::fmt::Write as _;
+
+/// Header of ε_N records (`rime eps`, `rime curve`, the explorer's curve).
+pub const CURVE_HEADER: [&str; 6] = [
+    "g_n [m/s]",
+    "eps_n",
+    "status",
+    "t_c [s]",
+    "xi_max [m]",
+    "error_estimate",
+];
+
+/// Header of stick-map records (`rime map`, the explorer's map).
+pub const MAP_HEADER: [&str; 4] = ["g_n [m/s]", "g_t [m/s]", "eps_t", "class"];
+
+/// The paper every record comes from.
+pub const CITATION: &str = "J.-M. Hertzsch (2002), A model for surface effects in slow collisions of icy grains, Planet. Space Sci. 50, 1387";
+
+/// A number in a record: the shortest form that reads back to the same double (`0`, `0.01`, `1`,
+/// `1e-5`, `2.5e-12`; never `0e0`), plain between 1e-3 and 1e6 and scientific outside; empty for a
+/// value that is not finite (a record never holds `NaN`).
+pub fn cell(v: f64) -> String {
+    if !v.is_finite() {
+        String::new()
+    } else if v == 0.0 {
+        "0".into()
+    } else if (1e-3..1e6).contains(&v.abs()) {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
+    }
+}
+
+/// The cells of one ε_N record at speed `g`: `status` is `error` and the numbers empty where the
+/// point could not be computed. `t_c` is empty where the grains stick (they come to rest
+/// asymptotically).
+pub fn curve_cells(g: f64, normal: Option<&Normal>) -> [String; 6] {
+    match normal {
+        Some(n) => [
+            cell(g),
+            cell(n.eps),
+            n.status.name().into(),
+            cell(n.t_c),
+            cell(n.xi_max),
+            cell(n.error_estimate),
+        ],
+        None => [
+            cell(g),
+            String::new(),
+            "error".into(),
+            String::new(),
+            String::new(),
+            String::new(),
+        ],
+    }
+}
+
+fn line(s: &mut String, cells: &[String]) {
+    s.push_str(&cells.join(","));
+    s.push('\n');
+}
+
+/// ε_N records on speeds `g` (header, then one line per speed).
+pub fn curve_csv(g: &[f64], points: &[Option<Normal>]) -> String {
+    let mut s = String::new();
+    s.push_str(&CURVE_HEADER.join(","));
+    s.push('\n');
+    for (k, &gk) in g.iter().enumerate() {
+        line(
+            &mut s,
+            &curve_cells(gk, points.get(k).and_then(|p| p.as_ref())),
+        );
+    }
+    s
+}
+
+/// Stick-map records, row-major: g_N outer, g_T inner (header, then one line per cell).
+pub fn map_csv(map: &StickMap) -> String {
+    let n = map.n();
+    let mut s = String::new();
+    s.push_str(&MAP_HEADER.join(","));
+    s.push('\n');
+    for i in 0..n {
+        for j in 0..n {
+            let k = i * n + j;
+            let (Some(c), Some(e)) = (map.class.get(k), map.eps_t.get(k)) else {
+                continue;
+            };
+            let _ = writeln!(
+                s,
+                "{},{},{},{}",
+                cell(map.g[i]),
+                cell(map.g[j]),
+                cell(*e),
+                c.name()
+            );
+        }
+    }
+    s
+}
+
+/// The frame's ε_N curve as records ([`curve_csv`] on the frame's speeds).
+pub fn frame_curve_csv(frame: &Frame) -> String {
+    let none = alloc::vec![None; frame.g.len()];
+    let points = frame.curve.as_ref().map_or(&none[..], |c| &c.points[..]);
+    curve_csv(&frame.g, points)
+}
+
+/// The frame's stick map as records, or `None` without one (no friction, or the map failed).
+pub fn frame_map_csv(frame: &Frame) -> Option<String> {
+    frame.map.as_ref().and_then(|m| m.map.as_ref()).map(map_csv)
+}
+
+/// Every ε_N curve of the frame side by side: `g_n [m/s]`, `eps_n` (this scene), `eps_n clean`
+/// (without layer and adhesion, when the scene has either), one `eps_n [p=v]` column per family
+/// member (`this scene` marked) and one per overlay drawn on the frame's speeds. Empty cells where
+/// a value is missing.
+pub fn family_csv(frame: &Frame) -> String {
+    let sweep = SWEEPS.get(frame.sweep).map_or("p", |s| s.symbol);
+    let unit = SWEEPS.get(frame.sweep).map_or("", |s| s.unit);
+    let mut s = String::from("g_n [m/s],eps_n");
+    let clean = frame.clean.as_ref().map(|c| c.eps());
+    if clean.is_some() {
+        s.push_str(",eps_n clean surfaces");
+    }
+    let members: alloc::vec::Vec<_> = frame
+        .family
+        .iter()
+        .filter_map(|m| Some((m, m.curve.as_ref()?.eps())))
+        .collect();
+    for (m, _) in &members {
+        let mark = if m.is_scene { " (this scene)" } else { "" };
+        let unit = if unit.is_empty() {
+            String::new()
+        } else {
+            format!(" {unit}")
+        };
+        let _ = write!(s, ",eps_n [{sweep} = {}{unit}]{mark}", cell(m.value));
+    }
+    let overlays: alloc::vec::Vec<_> = frame.overlays.iter().filter(|o| o.g == frame.g).collect();
+    for o in &overlays {
+        let _ = write!(s, ",eps_n {}", o.label.replace(',', ";"));
+    }
+    s.push('\n');
+    let eps = frame.curve.as_ref().map(|c| c.eps());
+    let at = |v: Option<&alloc::vec::Vec<f64>>, k: usize| {
+        v.and_then(|v| v.get(k)).map_or(String::new(), |e| cell(*e))
+    };
+    for (k, &g) in frame.g.iter().enumerate() {
+        s.push_str(&cell(g));
+        let _ = write!(s, ",{}", at(eps.as_ref(), k));
+        if clean.is_some() {
+            let _ = write!(s, ",{}", at(clean.as_ref(), k));
+        }
+        for (_, e) in &members {
+            let _ = write!(s, ",{}", at(Some(e), k));
+        }
+        for o in &overlays {
+            let _ = write!(s, ",{}", at(Some(&o.eps), k));
+        }
+        s.push('\n');
+    }
+    s
+}
+
+/// The scene as `path = value` pairs of its active parameters (numbers in SI, shortest form),
+/// one line: what a reader needs to rebuild it with `rime --set`.
+pub fn scene_line(scene: &crate::Scene) -> String {
+    let mut parts = alloc::vec::Vec::new();
+    for p in PARAMETERS {
+        match scene.get(p.path) {
+            Ok(Value::Number(v)) => parts.push(format!(
+                "{}={}",
+                p.path,
+                crate::explorer::format::shortest(v)
+            )),
+            Ok(Value::Choice(c)) => parts.push(format!("{}={c}", p.path)),
+            Ok(Value::Enabled(false)) => parts.push(format!("{}=off", p.path)),
+            Ok(Value::Enabled(true)) | Ok(Value::Inactive) | Err(_) => {}
+        }
+    }
+    parts.join(" ")
+}
+
+/// `# ` lines that make a downloaded file reproducible from itself: what it holds, the program
+/// and version, the level, the scene, the date (given by the caller: the core has no clock) and
+/// the citation.
+pub fn context(frame: &Frame, what: &str, version: &str, date: &str) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "# {what}");
+    let _ = writeln!(
+        s,
+        "# rime {version}, level {}, {date}",
+        frame.request.accuracy.name()
+    );
+    let _ = writeln!(s, "# scene: {}", scene_line(&frame.request.scene));
+    let _ = writeln!(s, "# model: {CITATION}");
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cells_read_back_to_the_same_double() {
+        for v in [
+            1e-5,
+            0.01,
+            1.0,
+            2.5e-12,
+            0.1 + 0.2,
+            123456.789,
+            1e6,
+            999.9999,
+            -3e-9,
+        ] {
+            let c = cell(v);
+            assert_eq!(c.parse::<f64>().ok(), Some(v), "{c}");
+        }
+        assert_eq!(cell(0.0), "0");
+        assert_eq!(cell(-0.0), "0");
+        assert_eq!(cell(f64::NAN), "");
+        assert_eq!(cell(f64::INFINITY), "");
+        assert_eq!(cell(1e-5), "1e-5");
+    }
+}
