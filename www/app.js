@@ -9,12 +9,12 @@ import { CollisionView } from './collision.js';
 import { $, el, errText, linked, linkify, median } from './dom.js';
 import { CURVE_POINTS, MAP_N, START_PRESET, app, historySize } from './state.js';
 import { buildControls, edit, syncControls, wireToolbar, wireView } from './controls.js';
-import { BRIDGES, drawChartCanvas, familyNote, pinLabel, wireChart } from './chart.js';
+import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, wireChart } from './chart.js';
 import { drawLegend, drawMapCanvas, wireMap } from './map.js';
 import { buildTidal, showTidal } from './tidal.js';
 import { buildCompare, showOverlayScores } from './compare.js';
 import { loadHash, writeHash } from './url.js';
-import { chartSvg, curvesCsv, mapCsv, mapSvg, setVersion, wireDownloads } from './downloads.js';
+import { chartSvg, curvesCsv, familyCsv, mapCsv, mapSvg, setVersion, wireDownloads } from './downloads.js';
 
 // Exposed for tests and curious users.
 window.rimeState = { ready: false, errors: [] };
@@ -34,11 +34,10 @@ function schedule() {
 /** Asks the worker for the frame of the wanted scene and view (a newer request supersedes it). */
 function request() {
   const v = app.view;
-  const overlays = [...v.overlays];
-  if (v.experiments && !overlays.includes(BRIDGES)) overlays.push(BRIDGES);
   const view = {
     accuracy: v.accuracy, from: v.from, to: v.to, points: CURVE_POINTS, mapMax: v.mapMax, mapN: MAP_N,
-    tidal: app.tidalIn, overlays,
+    tidal: app.tidalIn, overlays: [...v.overlays], yLog: v.yScale === 'log', experiments: v.experiments,
+    pinned: pinnedForRequest(app.wantScene), date: new Date().toISOString().slice(0, 19) + 'Z',
   };
   if (window.rimeTest.fail.length) view.fail = [...window.rimeTest.fail];
   if (window.rimeTest.delayMs > 0) view.testDelayMs = window.rimeTest.delayMs;
@@ -72,6 +71,8 @@ function decode(msg, page) {
     mapNote: m ? m.note : null,
     tidal: j.tidal.error ? null : j.tidal,
     overlays: (j.overlays || []).map((o) => ({ ...o, g: F(o.g), eps: F(o.eps) })),
+    figures: j.figures.map((f) => ({ ...f, series: f.series.map((s) => ({ ...s, x: F(s.x), y: F(s.y) })) })),
+    records: j.records,
     errors: j.errors,
   };
 }
@@ -119,8 +120,8 @@ function onFrame(msg, req) {
   $('timing').classList.remove('busy');
   $('busy').hidden = true;
   const s = window.rimeState;
-  const own = (o) => !(o.key === BRIDGES && !req.page.view.overlays.includes(BRIDGES));
-  const bridges = res.overlays.find((o) => o.key === BRIDGES);
+  const fig = res.figures[0];
+  const bridges = fig.series.find((x) => /^Bridges/.test(x.name));
   Object.assign(s, {
     ready: true,
     sceneJson: req.scene,
@@ -134,9 +135,10 @@ function onFrame(msg, req) {
     mapClasses: res.map ? Array.from(res.map.codes) : null,
     mapMax: res.map ? res.map.max : null,
     mapNote: res.mapNote,
-    experiments: req.page.view.experiments && app.experiments
-      ? { bridges: bridges ? { g: Array.from(bridges.g), eps: Array.from(bridges.eps) } : null, bands: app.experiments.bands } : null,
-    overlays: res.overlays.filter(own).map((o) => ({ key: o.key, label: o.label, band: o.band, score: o.score, g: Array.from(o.g), eps: Array.from(o.eps), speeds: o.speeds })),
+    experiments: bridges || fig.bands.length
+      ? { bridges: bridges ? { name: bridges.name, g: Array.from(bridges.x), eps: Array.from(bridges.y) } : null, bands: fig.bands } : null,
+    figure: { y: fig.y, x: fig.x, series: fig.series.map((x) => x.name), markers: fig.markers.map((m) => m.label), caption: fig.caption },
+    overlays: res.overlays.map((o) => ({ key: o.key, label: o.label, band: o.band, score: o.score, g: Array.from(o.g), eps: Array.from(o.eps), speeds: o.speeds })),
     tidal: res.tidal,
     tidalIn: app.tidalIn,
     frameErrors: res.errors,
@@ -332,7 +334,7 @@ async function main() {
 
 // Exposed for the end-to-end test: the texts the download buttons save, and probes.
 window.rimeExports = {
-  chartSvg, mapSvg, curvesCsv: () => curvesCsv(), mapCsv: () => app.res.map && mapCsv(),
+  chartSvg, mapSvg, curvesCsv: () => curvesCsv(), familyCsv: () => familyCsv(), mapCsv: () => mapCsv(),
   probe: (g) => probe(g, app.drawn.view.accuracy),
   speed: (v) => speed(v), qty: (v, u) => qty(v, u),
 };

@@ -7,66 +7,34 @@ import { $, el } from './dom.js';
 import { CanvasPainter, drawChart } from './plot.js';
 import { app } from './state.js';
 
-/** The overlay the "experiments" switch adds: the Bridges et al. (1984) law, over its measured speeds. */
-export const BRIDGES = 'atlas:bridges1984';
-
 let geom = null;
 let hooks = { schedule: () => {}, replay: () => {} };
 
-/** The figure description of the chart for frame `res` seen through `view`. */
+/**
+ * The drawing description of the chart: the core's figure description of the frame (series in
+ * draw order, measured data beneath the model, axes as the view asks, markers, bands, the pinned
+ * curve, the palette) turned into the painters' terms, plus the other models' characteristic
+ * speeds as markers. The screen and the downloads both draw this.
+ */
 export function chartSpec(res, view, hover = null) {
-  const P = PALETTE;
-  const series = [];
-  const bands = [];
-  const markers = [];
-  if (view.experiments && app.experiments) {
-    app.experiments.bands.forEach((b) => bands.push({ x: b.x, y: b.y, color: P.experiment, label: b.label, short: b.label.split(' ')[0] }));
-  }
-  // Measured laws and other models, beneath the scene's own curves.
-  let k = 0;
+  const fig = res.figures[0];
+  const color = (i) => PALETTE.series[i] || '#000000';
+  const series = fig.series.map((s) => {
+    const top = color(s.color) === PALETTE.scene && !s.dashed;
+    return { x: s.x, y: s.y, color: color(s.color), width: top ? 2.6 : 1.5, dash: s.dashed ? [6, 3] : null, label: s.name };
+  });
+  const bands = fig.bands.map((b) => ({ x: b.x, y: b.y, color: color(b.color), label: b.label, short: b.label.split(' ')[0] }));
+  const markers = fig.markers.map((m) => {
+    const at = m.label.lastIndexOf(' = ');
+    return { x: m.x, label: m.label, short: at > 0 ? `${m.label.split(' ')[0]} ${m.label.slice(at + 3)}` : m.label, color: color(m.color) };
+  });
   for (const o of res.overlays || []) {
-    const fromSwitch = o.key === BRIDGES && view.experiments && !view.overlays.includes(BRIDGES);
-    const color = o.key === BRIDGES && view.experiments ? P.experiment : P.overlay[k++ % P.overlay.length];
-    const model = o.key.startsWith('model:');
-    if (o.band) {
-      bands.push({ x: [o.g[0], o.g[1]], y: [o.eps[0], o.eps[1]], color, label: o.label, short: o.key.split(':')[1] });
-    } else {
-      series.push({
-        x: o.g, y: o.eps, color, width: 1.6, dash: model ? [2, 3] : [6, 3],
-        label: fromSwitch ? 'Bridges et al. 1984 (measured speeds only)' : model ? o.key.slice(6) : o.label,
-      });
-    }
-    for (const s of o.speeds) markers.push({ x: s.value, label: `${o.key.slice(6)} ${s.name}: ${speed(s.value)}`, short: `${s.name} ${speed(s.value)}`, color });
+    for (const s of o.speeds) markers.push({ x: s.value, label: `${o.key.slice(6)} ${s.name}: ${speed(s.value)}`, short: `${s.name} ${speed(s.value)}`, color: '#555555' });
   }
-  if (res.family) {
-    const f = res.family;
-    f.values.forEach((v, i) => {
-      if (!f.curves[i]) return;
-      const value = `${qty(v, f.unit, 3)}${f.isScene && f.isScene[i] ? ' (= this scene)' : ''}`;
-      series.push({
-        x: res.g, y: f.curves[i], color: P.family[i % P.family.length], width: 1.3,
-        label: i === 0 ? `family, ${f.sym} varied around this scene: ${value}` : `${f.sym} = ${value}`,
-      });
-    });
-  }
-  if (res.clean) series.push({ x: res.g, y: res.clean, color: P.clean, width: 1.6, dash: [6, 4], label: 'clean surface (no layer, no adhesion)' });
-  if (app.pinned) series.push({ x: app.pinned.g, y: app.pinned.eps, color: P.scene, width: 1.8, dash: [5, 3], label: `pinned: ${app.pinned.label}` });
-  if (res.eps) series.push({ x: res.g, y: res.eps, color: P.scene, width: 2.6, label: res.gaps ? 'this scene (gaps: failed)' : 'this scene' });
-  // Critical speeds of this scene, in its colour; the bisected threshold only where it differs.
-  const crit = [];
-  for (const c of res.crit) {
-    if (crit.some((m) => Math.abs(m.x / c.value - 1) < 0.01)) continue;
-    crit.push({ x: c.value, label: `${c.label}: ${speed(c.value)}`, short: `${c.key === 'stick' ? 'stick' : 'g_s'} ${speed(c.value)}`, color: P.critical });
-  }
-  const lin = view.yScale === 'lin';
-  let minPos = 1, maxY = 1;
-  for (const arr of [res.eps, res.clean]) if (arr) for (const v of arr) { if (v > 0 && v < minPos) minPos = v; if (v > maxY) maxY = v; }
-  const yMin = lin ? 0 : Math.min(Math.max(1e-12, 10 ** Math.floor(Math.log10(minPos) - 1e-9)), 1e-2);
-  const yMax = lin ? Math.max(1, maxY) : 10 ** Math.ceil(Math.log10(maxY) - 1e-12) || 1;
   return {
-    xMin: view.from, xMax: view.to, yScale: lin ? 'lin' : 'log', yMin, yMax,
-    xLabel: 'impact speed g_N [m/s]', yLabel: lin ? 'ε_N (linear)' : 'ε_N (log)',
-    series, bands, markers: [...crit, ...markers.filter((m) => m.x > view.from && m.x < view.to)], hover,
+    xMin: fig.x.min, xMax: fig.x.max, yScale: fig.y.log ? 'log' : 'lin', yMin: fig.y.min, yMax: fig.y.max,
+    xLabel: fig.x.label, yLabel: fig.y.label,
+    series, bands, markers: markers.filter((m) => m.x > fig.x.min && m.x < fig.x.max), hover,
   };
 }
 
@@ -74,8 +42,8 @@ function size(canvas, width) {
   const w = Math.max(240, Math.floor((width ?? canvas.parentElement.clientWidth) - 2));
   const narrow = w < 560;
   // Never taller than about half a phone screen: the page must scroll past it.
-  const maxH = Math.min(520, Math.max(260, Math.round(window.innerHeight * 0.55)));
-  return [w, Math.min(maxH, Math.max(240, Math.round(w * (narrow ? 0.8 : 0.6))))];
+  const maxH = Math.min(520, Math.max(260, Math.round(window.innerHeight * 0.62)));
+  return [w, Math.min(maxH, Math.max(240, Math.round(w * (narrow ? 1.05 : 0.6))))];
 }
 
 /** Draws the chart of the frame on screen (with the hover cursor). */
@@ -100,7 +68,7 @@ function readout() {
   const parts = [`g_N = ${speed(res.g[i], 4)}`];
   if (res.eps) parts.push(`ε_N = ${sig(res.eps[i], 6)} (${app.statusNames[res.status[i]] ?? 'failed'})`);
   if (res.clean) parts.push(`clean ${sig(res.clean[i], 4)}`);
-  if (app.pinned && app.pinned.g.length === res.g.length && app.pinned.g[i] === res.g[i]) parts.push(`pinned ${sig(app.pinned.eps[i], 4)}`);
+  if (app.pinned && app.pinned.g[i] === res.g[i]) parts.push(`pinned ${sig(app.pinned.eps[i], 4)}`);
   parts.push(`at ${res.accuracy}`);
   out.textContent = parts.join(' · ');
 }
@@ -152,28 +120,45 @@ export function zoom(factor, shift = 0) {
 /** Keeps the current curve to compare with later edits (or drops it). */
 export function pin(on) {
   if (!on || !app.res || !app.res.eps) { app.pinned = null; } else {
-    const values = { ...app.res.values };
-    app.pinned = { g: Array.from(app.res.g), eps: Array.from(app.res.eps), values, label: 'scene when pinned' };
+    app.pinned = { g: Array.from(app.res.g), eps: Array.from(app.res.eps), scene: app.drawn.scene, label: 'same scene' };
   }
   pinLabel();
-  $('pin').setAttribute('aria-pressed', String(!!app.pinned));
-  $('pin').textContent = app.pinned ? 'unpin the curve' : 'pin this curve';
-  drawChartCanvas();
+  pinButton();
+  // The core draws the pinned curve into the figure: ask for the frame again.
+  hooks.schedule();
 }
 
-/** The pinned curve's legend: which parameters differ from the scene drawn now. */
-export function pinLabel() {
-  if (!app.pinned || !app.res) { $('pin-note').textContent = ''; return; }
+function pinButton() {
+  $('pin').setAttribute('aria-pressed', String(!!app.pinned));
+  $('pin').textContent = app.pinned ? 'unpin the curve' : 'pin this curve';
+}
+
+/** What the pinned scene (JSON) had that `current` (JSON) has not, in a few words. */
+export function pinnedDiff(pinnedScene, current) {
+  const a = JSON.parse(pinnedScene), b = JSON.parse(current);
+  const walk = (o, path) => path.split('.').reduce((x, k) => (x !== null && x !== undefined && typeof x === 'object' ? x[k] : undefined), o);
   const diff = [];
   for (const p of app.params) {
-    const a = app.pinned.values[p.path], b = app.res.values[p.path];
-    if (a !== b && !(a === null && b === null)) {
-      const show = (x) => (x === null ? 'off' : typeof x === 'number' ? qty(x, p.unit, 4) : String(x));
-      diff.push(`${p.label.split(' ')[0]} ${show(a)}`);
+    const va = walk(a, p.path), vb = walk(b, p.path);
+    if (p.kind === 'toggle') {
+      if ((va === null) !== (vb === null)) diff.push(`${p.label} ${va === null ? 'off' : 'on'}`);
+    } else if (va !== vb && va !== undefined && va !== null) {
+      diff.push(`${p.label.split(' ')[0]} ${typeof va === 'number' ? (p.unit ? qty(va, p.unit, 4) : sig(va, 4)) : va}`);
     }
   }
-  app.pinned.label = diff.length ? diff.slice(0, 3).join(', ') + (diff.length > 3 ? ', …' : '') : 'same scene';
-  $('pin-note').textContent = `Pinned (dashed): ${app.pinned.label}.`;
+  return diff.length ? diff.slice(0, 3).join(', ') + (diff.length > 3 ? ', …' : '') : 'same scene';
+}
+
+/** The pinned curve for the request (the core draws it into the figure), labelled by what differs. */
+export function pinnedForRequest(wantScene) {
+  if (!app.pinned) return null;
+  app.pinned.label = pinnedDiff(app.pinned.scene, wantScene);
+  return { label: app.pinned.label, g: app.pinned.g, eps: app.pinned.eps.map((e) => (Number.isFinite(e) ? e : null)) };
+}
+
+/** The pinned curve's note beside the chart. */
+export function pinLabel() {
+  $('pin-note').textContent = app.pinned ? `Pinned (dashed grey): the curve of the scene with ${app.pinned.label}.` : '';
 }
 
 export function wireChart(h) {
@@ -214,6 +199,7 @@ export function wireChart(h) {
   for (const r of document.querySelectorAll('input[name="yscale"]')) {
     r.addEventListener('change', () => { if (r.checked) { app.view.yScale = r.value; hooks.schedule(); } });
   }
+  pinButton();
 }
 
 /** The family's meaning, beside the chart. */

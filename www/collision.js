@@ -3,13 +3,14 @@
 // replay button; the energy ledger as bars. Draws what the core computed (Explorer.collision) and
 // holds no physics of its own. Respects prefers-reduced-motion: no animation, the slider instead.
 import { PALETTE, qty, sig, speed } from './core.js';
+import { linked } from './dom.js';
 
 const $ = (id) => document.getElementById(id);
 // Roles of the core's palette: the collision in the scene's colour, the other model and the
 // energy terms in the family's hues, what stays in the bulk in the clean-surface grey.
 const C = () => ({
   scene: PALETTE.scene, other: PALETTE.family[2], out: PALETTE.family[1], bulk: PALETTE.scene,
-  layer: PALETTE.family[0], kept: PALETTE.clean, grain1: PALETTE.family[0], grain2: PALETTE.overlay[0],
+  layer: PALETTE.family[0], kept: PALETTE.clean, grain1: PALETTE.family[0], grain2: PALETTE.series[5],
 });
 const fmtNum = (v, d) => sig(v, d);
 // Animation stages as fractions of the replay: approach, contact, departure.
@@ -96,7 +97,7 @@ export class CollisionView {
       bar.className = 'bar';
       bar.style.width = `${Math.max(0, Math.min(100, pct)).toFixed(1)}%`;
       bar.style.background = color;
-      li.append(`${name}: ${pct.toFixed(1)} %`, bar);
+      li.append(...linked(`${name}: ${pct.toFixed(1)} %`), bar);
       return li;
     }), Object.assign(document.createElement('li'), {
       className: 'hint',

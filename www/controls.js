@@ -100,7 +100,7 @@ export function buildControls(h) {
   box.append(el('h2', { id: 'parameters-heading', tabindex: '-1' }, 'Parameters of this scene'));
   box.append(el('p', { class: 'hint' }, 'Type a value with units (e.g. "2 kPa s", "5 µm") and press Enter, or drag the slider. Undo with Ctrl+Z.'));
   for (const [prefix, title] of GROUPS) {
-    const head = el('h3', {}, ...linked(title));
+    const head = el('h3', {}, el('span', {}, ...linked(title)));
     box.append(head);
     if (prefix === 'bulk') {
       const sel = el('select', { id: 'damping-form', 'aria-describedby': 'h-damping-form' },

@@ -9,7 +9,7 @@ import init, * as wasm from './pkg/rime_wasm.js';
  *  `format` (formatters and parsers, after the memo). */
 export const calls = { compute: 0, format: 0 };
 
-/** The core's palette: {scene, critical, clean, experiment, family[], series[], overlay[], classes{}}. */
+/** The core's palette: {scene, critical, clean, experiment, family[], series[], overlays[], pinned, classes{}}. */
 export let PALETTE = null;
 /** The core's words: {paper, repository, glossary[], parameters{path: {help, options}}, classes[], artifactNote}. */
 export let HELP = null;

@@ -1,8 +1,8 @@
-// Downloads: the figures exactly as the screen draws them (same figure descriptions, same axes
-// mode, range, overlays, pinned curve, palette) with a caption and parameter block, and the data
-// as CSV with units in the headers and the context (scene, level, version, date, citation) in
-// leading "# " lines. Numbers in files are the core's shortest round-trip texts.
-import { citation, qty, shortest, sig } from './core.js';
+// Downloads: the figures exactly as the screen draws them (the core's figure descriptions: axes
+// mode, range, overlays, pinned curve, palette) with the core's caption (level, scene, version,
+// citation) and the date, and the data as the core's records (units in the headers) after the
+// core's context lines ("# ": what, version, level, date, scene, citation).
+import { qty } from './core.js';
 import { $, el, wrapText } from './dom.js';
 import { chartSpec } from './chart.js';
 import { classColors, epsTSpec, mapSpec } from './map.js';
@@ -12,78 +12,31 @@ import { app } from './state.js';
 let version = '';
 export function setVersion(v) { version = v; }
 
-/** The scene's parameters in a few words ("R₁ 2 cm, ρ 900 kg/m³, …", effects that are off named). */
-export function sceneSummary(values) {
-  const parts = [];
-  for (const p of app.params) {
-    const v = values[p.path];
-    const sym = p.label.split(' ')[0];
-    if (p.kind === 'toggle') { if (v === false) parts.push(`${p.label} off`); continue; }
-    if (v === null || v === undefined) continue;
-    parts.push(p.kind === 'number' ? `${sym} ${p.unit ? qty(v, p.unit, 4) : sig(v, 4)}` : `${p.label} ${v}`);
-  }
-  return parts.join(', ');
-}
+// ---------- CSV: the core's one record contract (identical to `rime curve` / `rime map --format
+// csv`), after the core's context lines; nothing is built here. ----------
 
-/** The context of what is drawn: version, date, scene, level, range, citation. */
-function context() {
-  const d = app.drawn;
-  return {
-    made: `rime ${version}, ${new Date().toISOString().slice(0, 19)}Z`,
-    scene: d.scene,
-    summary: sceneSummary(app.res.values),
-    accuracy: d.view.accuracy,
-    range: `${shortest(d.view.from)}…${shortest(d.view.to)} m/s`,
-    cite: citation(),
-  };
-}
-
-function csvHead(what) {
-  const c = context();
-  return [
-    `# ${what}`,
-    `# made with ${c.made} (${location.origin}${location.pathname})`,
-    `# accuracy: ${c.accuracy}`,
-    `# scene: ${c.scene}`,
-    `# model: ${c.cite}`,
-  ].join('\n') + '\n';
-}
-
+/** This scene's ε_N records (as `rime curve --format csv`) with their context. */
 export function curvesCsv(res = app.res) {
-  const cols = ['g_n [m/s]', 'eps_n [1]', 'status', 'eps_n_clean [1]'];
-  if (res.family) res.family.values.forEach((v) => cols.push(`eps_n[${res.family.path}=${shortest(v)} ${res.family.unit}] [1]`));
-  if (app.pinned && app.pinned.g.length === res.g.length) cols.push('eps_n_pinned [1]');
-  const lines = [cols.join(',')];
-  const at = (arr, i) => (arr && Number.isFinite(arr[i]) ? shortest(arr[i]) : '');
-  for (let i = 0; i < res.g.length; i++) {
-    const row = [shortest(res.g[i]), at(res.eps, i), res.status ? app.statusNames[res.status[i]] ?? 'failed' : '', at(res.clean, i)];
-    if (res.family) res.family.curves.forEach((c) => row.push(at(c, i)));
-    if (app.pinned && app.pinned.g.length === res.g.length) row.push(at(app.pinned.eps, i));
-    lines.push(row.join(','));
-  }
-  return csvHead(`ε_N against the impact speed; ${res.g.length} log-spaced speeds ${context().range}`) + lines.join('\n') + '\n';
+  return res.records.context.curve + res.records.curve;
 }
 
-export function mapCsv(m = app.res.map) {
-  const lines = ['g_n [m/s],g_t [m/s],eps_n [1],eps_t [1],class'];
-  for (let i = 0; i < m.n; i++) {
-    for (let j = 0; j < m.n; j++) {
-      const k = i * m.n + j;
-      lines.push(`${shortest(m.g[i])},${shortest(m.g[j])},${shortest(m.epsN[i])},${shortest(m.epsT[k])},${app.classes[m.codes[k]].name}`);
-    }
-  }
-  return csvHead(`stick map over g_n and g_t from 0 to ${shortest(m.max)} m/s (${m.n}×${m.n})`) + lines.join('\n') + '\n';
+/** Every curve of the chart (scene, clean surface, family) with its context. */
+export function familyCsv(res = app.res) {
+  return res.records.context.family + res.records.family;
 }
 
-/** The caption and parameter block of a figure, wrapped to `width` px. */
-function captionLines(title, width) {
-  const c = context();
+/** The stick map's records (as `rime map --format csv`) with their context, or null. */
+export function mapCsv(res = app.res) {
+  return res.records.map === null || res.records.map === undefined ? null : res.records.context.map + res.records.map;
+}
+
+/** The caption and parameter block of figure `fig` (the core's), wrapped to `width` px. */
+function captionLines(fig, width, extra = '') {
   const chars = Math.max(40, Math.floor((width - 16) / 5.6));
   return [
-    ...wrapText(title, chars),
-    ...wrapText(`scene: ${c.summary}`, chars),
-    ...wrapText(`accuracy ${c.accuracy}; ${c.made}`, chars),
-    ...wrapText(`model: ${c.cite}`, chars),
+    ...wrapText(`${fig.title}${extra}`, chars),
+    ...wrapText(fig.caption, chars),
+    ...wrapText(`Drawn ${new Date().toISOString().slice(0, 19)}Z from ${location.origin}${location.pathname}`, chars),
   ];
 }
 
@@ -93,7 +46,8 @@ const CHART_H = 460;
 /** The chart figure (as on screen) with its caption, on painter `make(w, h)`. */
 function chartFigure(make) {
   const view = app.drawn.view;
-  const lines = captionLines(`ε_N against the impact speed g_N, ${view.yScale === 'lin' ? 'linear' : 'log'} ε_N axis, speeds ${context().range}.`, CHART_W);
+  const fig = app.res.figures[0];
+  const lines = captionLines(fig, CHART_W, `; impact speeds ${qty(fig.x.min, 'm/s', 3)} to ${qty(fig.x.max, 'm/s', 3)}.`);
   const p = make(CHART_W, CHART_H + 10 + lines.length * 14);
   p.rect(0, 0, CHART_W, p.height, { fill: '#fff' });
   p.height = CHART_H;
@@ -108,7 +62,8 @@ function mapFigure(make) {
   const m = app.res.map;
   const W = 560;
   const legendH = 18 * app.classes.length + 8;
-  const lines = captionLines(`Stick map: g_T across, g_N up, 0…${qty(m.max, 'm/s', 3)}; ε_T along one g_N row below.`, W);
+  const fig = app.res.figures.find((f) => f.map) || { title: 'Stick map', caption: '' };
+  const lines = captionLines(fig, W, ` (g_T across, g_N up, 0 to ${qty(m.max, 'm/s', 3)}); below: ε_T along one g_N row.`);
   const H = 560 + 40 + legendH + 220 + 10 + lines.length * 14;
   const p = make(W, H);
   p.rect(0, 0, W, H, { fill: '#fff' });
@@ -130,14 +85,15 @@ function mapFigure(make) {
 
 export function chartSvg() {
   const p = chartFigure((w, h) => new SvgPainter(w, h));
-  p.meta('rime: ε_N(g_N)', captionLines('ε_N against the impact speed', 2000).join(' '));
+  p.meta(app.res.figures[0].title, app.res.figures[0].caption);
   return p.svg();
 }
 
 export function mapSvg() {
   if (!app.res.map) return null;
   const p = mapFigure((w, h) => new SvgPainter(w, h));
-  p.meta('rime: stick map', captionLines('stick map', 2000).join(' '));
+  const fig = app.res.figures.find((f) => f.map);
+  if (fig) p.meta(fig.title, fig.caption);
   return p.svg();
 }
 
@@ -163,8 +119,9 @@ function download(name, type, data) {
 
 export function wireDownloads(onError) {
   const ok = () => app.res && app.drawn;
-  $('dl-curves').addEventListener('click', () => ok() && download('rime-curves.csv', 'text/csv', curvesCsv()));
-  $('dl-map').addEventListener('click', () => ok() && app.res.map && download('rime-map.csv', 'text/csv', mapCsv()));
+  $('dl-curves').addEventListener('click', () => ok() && download('rime-curve.csv', 'text/csv', curvesCsv()));
+  $('dl-family').addEventListener('click', () => ok() && download('rime-curves-all.csv', 'text/csv', familyCsv()));
+  $('dl-map').addEventListener('click', () => ok() && mapCsv() && download('rime-map.csv', 'text/csv', mapCsv()));
   $('dl-chart-svg').addEventListener('click', () => ok() && download('rime-chart.svg', 'image/svg+xml', chartSvg()));
   $('dl-map-svg').addEventListener('click', () => ok() && app.res.map && download('rime-map.svg', 'image/svg+xml', mapSvg()));
   const png = (name, fig) => pngOf(fig).then((b) => download(name, 'image/png', b)).catch((e) => onError(e));

@@ -48,7 +48,7 @@ export function drawMapCanvas(widths = {}) {
   if (res.map) {
     const m = res.map;
     const h = app.hover.map;
-    geom = drawMap(new CanvasPainter(canvas, s, s + 40), mapSpec(m, h));
+    geom = drawMap(new CanvasPainter(canvas, s, s - 28), mapSpec(m, h));
     drawLines(new CanvasPainter(et, Math.max(200, Math.floor((widths.epsT ?? et.parentElement.clientWidth) - 2)), 220), epsTSpec(m, h && h.i === mapRow(m) ? h.j : null));
     et.hidden = false;
     canvas.setAttribute('aria-label', `stick map over g_T (across) and g_N (up), 0 to ${speed(m.max)}; summary below`);

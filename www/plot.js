@@ -30,6 +30,7 @@ export class CanvasPainter {
     if (canvas.width !== cw) canvas.width = cw;
     if (canvas.height !== ch) canvas.height = ch;
     if (canvas.style.height !== `${height}px`) canvas.style.height = `${height}px`;
+    if (canvas.style.width !== `${width}px`) canvas.style.width = `${width}px`;
     this.canvas = canvas;
     this.ctx = canvas.getContext('2d');
     this.ctx.setTransform(scale, 0, 0, scale, 0, 0);
@@ -158,7 +159,10 @@ export class SvgPainter {
 function legendLayout(entries, x0, width) {
   const rows = [[]];
   let x = x0;
-  for (const e of entries) {
+  const maxChars = Math.max(12, Math.floor((width - 40) / 6.1));
+  for (const e0 of entries) {
+    // A label longer than a row is cut (the full text is in the figure's description).
+    const e = e0.label.length > maxChars ? { ...e0, label: `${e0.label.slice(0, maxChars - 1)}…` } : e0;
     const w = 26 + e.label.length * 6.1 + 14;
     if (x + w > x0 + width && rows[rows.length - 1].length) { rows.push([]); x = x0; }
     rows[rows.length - 1].push({ ...e, x });
@@ -336,7 +340,7 @@ export function drawLines(p, spec) {
     p.line([[box.l, y], [box.r, y]], { color: t === 0 ? '#999999' : GRID });
     p.text(box.l - 6, y + 4, sig(t, 2), { size: 10, align: 'right' });
   }
-  for (const t of niceTicks(0, spec.xMax, box.r - box.l < 250 ? 3 : 5)) {
+  for (const t of niceTicks(0, spec.xMax, box.r - box.l < 360 ? 3 : 5)) {
     const x = X(t);
     p.line([[x, box.b], [x, box.b + 4]], { color: AXIS });
     p.text(x, box.b + 16, t === 0 ? '0' : qty(t, 'm/s', 3), { size: 10, align: t / spec.xMax > 0.95 ? 'right' : 'center' });

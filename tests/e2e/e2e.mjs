@@ -232,7 +232,7 @@ try {
     });
     assert(d.chartOk, 'chart SVG invalid');
     assert(d.mapOk, 'map SVG invalid');
-    assert(d.curves[0].startsWith('g_n [m/s],eps_n [1],status') && d.curves.length === d.n + 1, `curves CSV malformed: ${d.curves[0]}`);
+    assert(d.curves[0].startsWith('g_n [m/s],eps_n,status,t_c [s]') && d.curves.length === d.n + 1, `curves CSV malformed: ${d.curves[0]}`);
     assert(d.mapLines === 120 * 120 + 1, 'map CSV malformed');
     const dl = page.waitForEvent('download');
     await page.click('#dl-scene');
@@ -243,19 +243,18 @@ try {
     return `${d.curves.length - 1} curve rows, ${d.mapLines - 1} map rows`;
   });
 
-  await check('experimental context: the Bridges law drawn over its measured speeds only (ε = (g / 0.0077 cm/s)^−0.234 there, never clamped), experiment boxes, toggle (issue 12 item 3)', async () => {
+  await check('experimental context: the Bridges law drawn over its measured speeds only (0.15–20 mm/s, ε = 0.32 (g / 1 cm/s)^−0.234 there, never clamped), experiment boxes, toggle (issue 12 item 3)', async () => {
     const s = await page.evaluate(() => window.rimeState);
     assert(s.experiments && s.experiments.bridges, 'no Bridges law in rimeState');
     const b = s.experiments.bridges;
-    // The law in the form the atlas cites (Morgado et al. 2023's caption): ε = (g / v_c)^−0.234 with
-    // v_c = 0.0077 cm/s, evaluated here independently of the page; at 1 cm/s that is 0.32 (0.3202).
-    const law = (g) => (g / 7.7e-5) ** -0.234;
-    assert(Math.abs(law(0.01) - 0.32) < 5e-4, 'the test\'s own law is not 0.32 at 1 cm/s');
+    // The law as its legend states it, ε = 0.32 (g / 1 cm/s)^−0.234, evaluated here independently.
+    assert(/0\.32 \(v\/1 cm\/s\)\^-0\.234/.test(b.name), `legend: ${b.name}`);
+    const law = (g) => 0.32 * (g / 0.01) ** -0.234;
     let worst = 0;
     b.g.forEach((g, k) => { worst = Math.max(worst, relErr(b.eps[k], law(g))); });
-    assert(worst < 1e-12, `Bridges law differs from (g / 0.0077 cm/s)^-0.234 by ${worst}`);
+    assert(worst < 1e-12, `Bridges law differs from 0.32 (g / 1 cm/s)^-0.234 by ${worst}`);
     const lo = Math.min(...b.g), hi = Math.max(...b.g);
-    assert(lo > 1e-5 && hi < 1 && b.eps.every((v) => v < 1), `drawn over ${lo}…${hi} (clamped values: ${b.eps.filter((v) => v >= 1).length})`);
+    assert(lo >= 1.5e-4 * (1 - 1e-12) && hi <= 0.02 * (1 + 1e-12) && b.eps.every((v) => v < 1), `drawn over ${lo}…${hi}, beyond the measured 0.15–20 mm/s (clamped values: ${b.eps.filter((v) => v >= 1).length})`);
     const bands = s.experiments.bands;
     assert(bands.length === 2 && /Heißelmann/.test(bands[0].label) && /Hill/.test(bands[1].label), 'experiment boxes missing');
     assert(bands[0].x[0] === 0.06 && bands[0].x[1] === 0.22 && bands[1].y[0] === 0.08 && bands[1].y[1] === 0.65, 'box ranges wrong');
@@ -543,6 +542,360 @@ try {
     return `last updates: ${last.join(', ')} calls`;
   });
   await pf.close();
+
+  // ---------- issue 11: records; issue 12: the page ----------
+  const pn = watch(await context.newPage(), 'issue12');
+  await pn.goto(url, { waitUntil: 'load' });
+  await ready(pn);
+  const typeIn = async (p, pathName, text) => {
+    const u = await updates(p);
+    const f = p.locator(`[id="p-${pathName}"]`);
+    await f.fill(text);
+    await f.press('Enter');
+    await waitUpdate(p, u);
+  };
+  const choosePreset = async (p, name) => {
+    const u = await updates(p);
+    await p.selectOption('#preset', name);
+    await waitUpdate(p, u);
+  };
+
+  await check("the page's curve CSV equals `rime curve --format csv` byte for byte after its '#' lines (issue 11)", async () => {
+    await choosePreset(pn, 'ice-frost');
+    const s = await pn.evaluate(() => ({ csv: window.rimeExports.curvesCsv(), scene: window.rimeState.sceneJson, view: window.rimeState.view, n: window.rimeState.g.length }));
+    const sceneFile = path.join(os.tmpdir(), `rime-e2e-records-${process.pid}.json`);
+    fs.writeFileSync(sceneFile, s.scene);
+    const cli = execFileSync(rime, ['curve', '--scene', sceneFile, '--from', String(s.view.from), '--to', String(s.view.to), '--points', String(s.n), '--accuracy', s.view.accuracy, '--format', 'csv'], { encoding: 'utf8' });
+    const page = s.csv.split('\n').filter((l) => !l.startsWith('#')).join('\n');
+    assert(s.csv.startsWith('# '), 'no context lines before the records');
+    if (page !== cli) {
+      // Name every column that differs and the first cell of each (the files are kept in target/).
+      fs.writeFileSync(path.join(outDir, 'www-e2e-curve-page.csv'), page);
+      fs.writeFileSync(path.join(outDir, 'www-e2e-curve-cli.csv'), cli);
+      const a = page.split('\n'), b = cli.split('\n');
+      const head = a[0].split(',');
+      const first = {};
+      let rows = 0;
+      for (let r = 0; r < Math.max(a.length, b.length); r++) {
+        if (a[r] === b[r]) continue;
+        rows++;
+        const x = (a[r] || '').split(','), y = (b[r] || '').split(',');
+        x.forEach((v, c) => { if (v !== y[c] && !first[head[c]]) first[head[c]] = `row ${r}: page ${v}, rime ${y[c]}`; });
+      }
+      throw new Error(`${rows} of ${b.length - 2} records differ; first per column: ${JSON.stringify(first)}`);
+    }
+    const map = await pn.evaluate(() => window.rimeExports.mapCsv());
+    assert(map && /^g_n \[m\/s\],g_t \[m\/s\],eps_t,class$/m.test(map), 'map records header');
+    return `${cli.split('\n').length - 2} records identical (${s.view.accuracy}, ${s.view.from}…${s.view.to} m/s)`;
+  });
+
+  await check('issue 12 item 14: intro, glossary, full citation, physics notes, help on every control, human option names, every "Eq. (N)" a link', async () => {
+    const d = await pn.evaluate(() => {
+      const terms = [...document.querySelectorAll('#glossary dt')].map((e) => e.textContent);
+      const controls = [...document.querySelectorAll('#controls input, #controls select')];
+      const noHelp = controls.filter((c) => {
+        const ids = (c.getAttribute('aria-describedby') || '').split(/\s+/).filter(Boolean);
+        return !ids.some((id) => { const e = document.getElementById(id); return e && e.textContent.trim().length > 10; });
+      }).map((c) => c.id || c.dataset.path);
+      const raw = [...document.querySelectorAll('#controls option')].map((o) => o.textContent).filter((t) => /^[a-z]+(_[a-z]+)+$/.test(t) || /^(offset|literal|paper|walton|brilliantov|consistent)$/.test(t));
+      // Every "Eq. (" in the visible text sits in a link to the physics notes.
+      const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+      const unlinked = [];
+      let linked = 0;
+      while (walker.nextNode()) {
+        const n = walker.currentNode;
+        if (!/Eq\. \(/.test(n.data) || n.parentElement.closest('option, select, script, style, [hidden], .visually-hidden')) continue;
+        const a = n.parentElement.closest('a');
+        if (a && /docs\/physics\.md/.test(a.href)) linked++;
+        else unlinked.push(n.data.trim().slice(0, 60));
+      }
+      return {
+        terms, noHelp, raw, unlinked, linked,
+        citation: document.getElementById('citation').textContent,
+        doi: document.getElementById('doi-link').href,
+        notes: [...document.querySelectorAll('a')].some((a) => /docs\/physics\.md$/.test(a.href)),
+        intro: document.querySelector('.intro').textContent,
+        contactEnd: [...document.querySelectorAll('[id="p-contact_end"] option')].map((o) => o.textContent),
+      };
+    });
+    for (const t of ['ε_N', 'g_N', 'g_T', 'this scene']) assert(d.terms.includes(t), `glossary lacks ${t}: ${d.terms}`);
+    assert(/this scene/.test(d.intro) && /ε/.test(d.intro), 'no intro');
+    assert(/J\.-M\. Hertzsch \(2002\)/.test(d.citation) && /A model for surface effects in slow collisions of icy grains/.test(d.citation) && /Planetary and Space Science 50, 1387–1397/.test(d.citation), `citation: ${d.citation}`);
+    assert(/crossref\.org|doi\.org/.test(d.doi), `DOI link: ${d.doi}`);
+    assert(d.notes, 'no link to docs/physics.md');
+    assert(d.noHelp.length === 0, `controls without help: ${d.noHelp.join(', ')}`);
+    assert(d.raw.length === 0, `raw option names: ${d.raw.join(', ')}`);
+    assert(!d.contactEnd.includes('force_zero') && d.contactEnd.length === 2, `contact end options: ${d.contactEnd}`);
+    assert(d.unlinked.length === 0 && d.linked > 10, `unlinked equations: ${JSON.stringify(d.unlinked)} (${d.linked} linked)`);
+    return `${d.terms.length} glossary terms, ${d.linked} equation links, contact end: ${d.contactEnd.join(' / ')}`;
+  });
+
+  await check('issue 12 item 15: opens on a scene with a visible threshold and a sticking corner; artifact note beside the map, no banner; timing in the footer', async () => {
+    const p = watch(await context.newPage(), 'open');
+    await p.goto(url, { waitUntil: 'load' });
+    await ready(p);
+    const s = await p.evaluate(() => window.rimeState);
+    const classes = await p.evaluate(() => JSON.parse(window.rimeState.sceneJson) && window.rimeState.mapClasses);
+    const names = await p.evaluate(() => [...document.querySelectorAll('#legend li')].map((li) => li.textContent));
+    const aggregation = names.findIndex((t) => /^aggregation/.test(t));
+    const stuck = classes.filter((c) => c === aggregation).length / classes.length;
+    const thresholds = s.critical.filter((c) => c.value > s.view.from && c.value < s.view.to);
+    const zeros = s.eps.filter((e) => e === 0).length;
+    const note = p.locator('.map-card #artifact-note');
+    const noteText = await note.textContent();
+    const noteVisible = await note.isVisible();
+    const inFooter = await p.locator('footer #timing').count();
+    const warnings = await p.locator('#warnings').innerText();
+    const bannerShown = await p.locator('#banner').isVisible();
+    await p.close();
+    assert(thresholds.length >= 1, 'no critical speed within the chart');
+    assert(zeros > 10 && zeros < s.eps.length - 10, `${zeros} sticking speeds: no threshold on the chart`);
+    assert(stuck > 0.01, `sticking corner: ${(100 * stuck).toFixed(2)} % aggregation`);
+    assert(noteVisible && /Eq\. \(23\)/.test(noteText) && /artifact/.test(noteText), `artifact note beside the map: "${noteText}"`);
+    assert(!/radicand/.test(warnings) && !bannerShown, 'the artifact is still announced above the page');
+    assert(inFooter === 1, 'timing not in the footer');
+    return `${thresholds.map((c) => c.key).join(', ')} threshold(s), ε_N = 0 at ${zeros} speeds, ${(100 * stuck).toFixed(1)} % aggregation`;
+  });
+
+  await check('issue 12 item 16: swiping scrolls (touch-action pan-y), canvases leave a phone screen room, deuteranopia keeps aggregation apart from rolling, map axes g_T across and g_N up', async () => {
+    const p = watch(await context.newPage(), 'phone');
+    await p.setViewportSize({ width: 375, height: 667 });
+    await p.goto(url, { waitUntil: 'load' });
+    await ready(p);
+    const d = await p.evaluate(() => ['chart', 'map', 'eps-t'].map((id) => {
+      const c = document.getElementById(id);
+      return { id, touch: getComputedStyle(c).touchAction, h: c.getBoundingClientRect().height };
+    }));
+    await p.close();
+    for (const c of d) {
+      assert(c.touch === 'pan-y', `${c.id}: touch-action ${c.touch}`);
+      assert(c.h <= 0.7 * 667, `${c.id} is ${c.h} px tall on a 667 px screen`);
+    }
+    // Deuteranopia (Machado, Oliveira & Fernandes 2009, severity 1) applied here to the page's colours.
+    // The colours as drawn: the legend's swatches (the map's cells use the same list).
+    const colors = await pn.evaluate(() => {
+      const out = {};
+      for (const li of document.querySelectorAll('#legend li')) {
+        const m = getComputedStyle(li.querySelector('.sw')).backgroundColor.match(/\d+/g).map(Number);
+        out[li.textContent.split(':')[0].trim()] = '#' + m.slice(0, 3).map((v) => v.toString(16).padStart(2, '0')).join('');
+      }
+      return out;
+    });
+    assert(colors.aggregation && colors.rolling, `legend colours: ${JSON.stringify(colors)}`);
+    const lin = (c) => { c /= 255; return c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4; };
+    const enc = (c) => { c = Math.min(1, Math.max(0, c)); return 255 * (c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) - 0.055); };
+    const M = [[0.367322, 0.860646, -0.227968], [0.280085, 0.672501, 0.047413], [-0.01182, 0.04294, 0.968881]];
+    const deut = (hex) => { const v = [1, 3, 5].map((k) => lin(parseInt(hex.slice(k, k + 2), 16))); return M.map((r) => enc(r[0] * v[0] + r[1] * v[1] + r[2] * v[2])); };
+    const a = deut(colors.aggregation), r = deut(colors.rolling);
+    const dist = Math.hypot(a[0] - r[0], a[1] - r[1], a[2] - r[2]);
+    assert(dist > 100, `aggregation and rolling ${dist.toFixed(0)} apart under deuteranopia`);
+    // Axes: hovering near the bottom right reads a large g_T and a small g_N.
+    await pn.locator('#map').scrollIntoViewIfNeeded();
+    const box = await pn.locator('#map').boundingBox();
+    const geo = await pn.evaluate(() => window.rimeState.mapMax);
+    await pn.mouse.move(box.x + 70 + 0.9 * (Math.min(box.width, 560) - 84), box.y + 10 + 0.9 * (Math.min(box.width, 560) - 84));
+    const text = await pn.locator('#map-readout').innerText();
+    const gN = text.match(/g_N = ([^·]+)/)[1].trim(), gT = text.match(/g_T = ([^·]+)/)[1].trim();
+    const parse = (t) => { const m = t.match(/^([\d.e+-]+)\s*(p|n|µ|m|)m\/s$/); return Number(m[1]) * { p: 1e-12, n: 1e-9, 'µ': 1e-6, m: 1e-3, '': 1 }[m[2]]; };
+    assert(parse(gT) > 0.7 * geo && parse(gN) < 0.3 * geo, `near the bottom right: g_N ${gN}, g_T ${gT} (max ${geo})`);
+    await pn.mouse.move(0, 0);
+    return `touch-action pan-y, heights ${d.map((c) => Math.round(c.h)).join('/')} px at 375×667; deuteranopia distance ${dist.toFixed(0)}; bottom right reads g_N ${gN}, g_T ${gT}`;
+  });
+
+  await check('issue 12 item 17: sliders announce values, the timing is not live, chart and map have text alternatives, the skip link reaches the first parameter in 2 Tabs, axe-core finds no violations', async () => {
+    const vt = await pn.locator('input[type=range][data-path="layer.viscosity"]').getAttribute('aria-valuetext');
+    assert(/^[\d.]+ (k|M|)?Pa s$/.test(vt), `aria-valuetext "${vt}"`);
+    const live = await pn.evaluate(() => { const t = document.getElementById('timing'); return !!t.closest('[aria-live]:not([aria-live="off"]), [role=status], [role=alert], [role=log]'); });
+    assert(!live, 'the timing line is in a live region');
+    const alt = await pn.evaluate(() => ['chart', 'map'].map((id) => {
+      const c = document.getElementById(id);
+      const desc = (c.getAttribute('aria-describedby') || '').split(' ').map((x) => document.getElementById(x)).filter(Boolean).map((e) => e.textContent).join(' ');
+      return { role: c.getAttribute('role'), label: c.getAttribute('aria-label'), desc };
+    }));
+    assert(alt.every((a) => a.role === 'img' && a.label && a.desc.length > 40), `text alternatives: ${JSON.stringify(alt)}`);
+    assert(/ε_N/.test(alt[0].desc) && /%/.test(alt[1].desc), `descriptions: ${alt[0].desc} | ${alt[1].desc}`);
+    const p = watch(await context.newPage(), 'keyboard');
+    await p.goto(url, { waitUntil: 'load' });
+    await ready(p);
+    await p.keyboard.press('Tab');
+    const first = await p.evaluate(() => document.activeElement.id);
+    await p.keyboard.press('Enter');
+    await p.keyboard.press('Tab');
+    const reached = await p.evaluate(() => ({ inControls: !!document.activeElement.closest('#controls'), path: document.activeElement.dataset.path || document.activeElement.id, hash: location.hash }));
+    assert(first === 'skip' && reached.inControls && /grains\.radius_1/.test(reached.path), `Tab → ${first}, Enter, Tab → ${JSON.stringify(reached)}`);
+    assert(reached.hash === '' || reached.hash.startsWith('#s='), `the skip link changed the link: ${reached.hash}`);
+    // axe-core on the page as it opens, with every disclosure open, and on a phone.
+    const axePath = path.join(root, 'tests', 'e2e', 'node_modules', 'axe-core', 'axe.min.js');
+    const runAxe = async (q) => {
+      await q.addScriptTag({ path: axePath });
+      return q.evaluate(async () => (await window.axe.run(document, { resultTypes: ['violations'] })).violations.map((v) => `${v.id} (${v.nodes.length}): ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(', ')}`));
+    };
+    const v1 = await runAxe(p);
+    await p.evaluate(() => document.querySelectorAll('details').forEach((d) => { d.open = true; }));
+    const v2 = await runAxe(p);
+    await p.setViewportSize({ width: 375, height: 700 });
+    await p.waitForTimeout(200);
+    const v3 = await runAxe(p);
+    await p.close();
+    const all = [...v1, ...v2, ...v3];
+    assert(all.length === 0, `axe-core: ${all.join(' | ')}`);
+    return `slider reads "${vt}"; Tab, Enter, Tab reaches ${reached.path}; axe-core: 0 violations (3 states)`;
+  });
+
+  await check('issue 12 item 18: readouts follow the drawn scene at the chosen level; greyed sliders disabled; tidal inputs in the link; one bad field named, the rest kept; huge numbers stay short; speed fields take units', async () => {
+    // Readouts: a cursor on the chart (keyboard), then the scene changes under it (Ctrl+Z): the
+    // readout shows the new frame's value there, computed at the chosen level.
+    await pn.selectOption('#accuracy', 'precise');
+    await pn.waitForFunction(() => window.rimeState.view.accuracy === 'precise', null, { timeout: 20000 });
+    await typeIn(pn, 'layer.viscosity', '3 kPa s');
+    await pn.locator('#chart').focus();
+    for (let k = 0; k < 6; k++) await pn.keyboard.press('ArrowRight');
+    const readEps = async () => {
+      const t = await pn.locator('#chart-readout').innerText();
+      const m = t.match(/g_N = ([^·]+)· ε_N = ([\d.e+-]+)/);
+      return { t, eps: m ? Number(m[2]) : NaN };
+    };
+    const before = await readEps();
+    let u = await updates(pn);
+    await pn.keyboard.press('Control+z');
+    await waitUpdate(pn, u);
+    await pn.waitForTimeout(50);
+    const after = await readEps();
+    const s = await pn.evaluate(() => window.rimeState);
+    const k = Math.floor(s.g.length / 2) + 6;
+    assert(Math.abs(after.eps - s.eps[k]) <= 1e-5 * s.eps[k] && after.eps !== before.eps && /at precise/.test(after.t), `readout "${before.t}" → "${after.t}" (frame ε_N there ${s.eps[k]})`);
+    const gShown = after.t.match(/g_N = ([^·]+)/)[1].trim();
+    // Greyed sliders: with the layer off its sliders are disabled and say so.
+    u = await updates(pn);
+    await pn.locator('[id="p-layer"]').uncheck();
+    await waitUpdate(pn, u);
+    const grey = await pn.evaluate(() => [...document.querySelectorAll('.param[data-path^="layer."] input')].map((e) => ({ disabled: e.disabled, vt: e.getAttribute('aria-valuetext'), type: e.type })));
+    assert(grey.length >= 4 && grey.every((g) => g.disabled) && grey.filter((g) => g.type === 'range').every((g) => g.vt === 'off'), `layer inputs: ${JSON.stringify(grey)}`);
+    u = await updates(pn);
+    await pn.locator('[id="p-layer"]').check();
+    await waitUpdate(pn, u);
+    // Tidal inputs are kept in the link.
+    u = await updates(pn);
+    await pn.locator('#t-distance').fill('2e5 km');
+    await pn.locator('#t-distance').press('Enter');
+    await waitUpdate(pn, u);
+    await pn.waitForFunction(() => /[?&#]?t=/.test(location.hash) && decodeURIComponent(location.hash).includes('200000000'), null, { timeout: 5000 });
+    const q = watch(await context.newPage(), 'tidal-link');
+    await q.goto(pn.url(), { waitUntil: 'load' });
+    await ready(q);
+    const tin = await q.evaluate(() => window.rimeState.tidal.input.distance);
+    await q.close();
+    assert(tin === 2e8, `tidal distance after reload: ${tin}`);
+    // One bad field: named, the others kept.
+    const scene = JSON.parse(s.sceneJson);
+    scene.layer = scene.layer || { thickness: 1e-6, viscosity: 1000, reading: 'offset' };
+    scene.grains.radius_1 = 0.03;
+    scene.layer.viscosity = -5;
+    const bad = watch(await context.newPage(), 'bad-field');
+    expected.push(['bad-field', /rime: link:/], ['huge', /rime: link:/]);
+    await bad.goto(`${url}#s=${encodeURIComponent(JSON.stringify(scene))}&v=${encodeURIComponent(JSON.stringify({ from: 1e-6, to: 1 }))}`, { waitUntil: 'load' });
+    await ready(bad);
+    const kept = await bad.evaluate(() => ({ scene: JSON.parse(window.rimeState.sceneJson), view: window.rimeState.view, notice: document.getElementById('notice').textContent }));
+    await bad.close();
+    assert(kept.scene.grains.radius_1 === 0.03 && kept.scene.layer && kept.view.from === 1e-6 && kept.view.to === 1, `good fields not kept: ${JSON.stringify(kept)}`);
+    assert(/layer\.viscosity/.test(kept.notice), `notice does not name the bad field: ${kept.notice}`);
+    // A 309-digit number: a short message, no page wider than the screen.
+    const huge = watch(await context.newPage(), 'huge');
+    await huge.setViewportSize({ width: 375, height: 700 });
+    await huge.goto(`${url}#s=${encodeURIComponent(s.sceneJson)}&v=${encodeURIComponent(`{"to": 1${'0'.repeat(308)}}`)}`, { waitUntil: 'load' });
+    await ready(huge);
+    const h = await huge.evaluate(() => ({ w: document.documentElement.scrollWidth, notice: document.getElementById('notice').textContent }));
+    await huge.close();
+    assert(h.w <= 376 && /view\.to/.test(h.notice) && h.notice.length < 400, `309 digits: ${h.w} px wide, notice "${h.notice}"`);
+    // Speed-range fields take units.
+    u = await updates(pn);
+    await pn.locator('#view-from').fill('1 um/s');
+    await pn.locator('#view-from').press('Enter');
+    await waitUpdate(pn, u);
+    const from = await pn.evaluate(() => window.rimeState.view.from);
+    assert(from === 1e-6, `"1 um/s" gave from = ${from}`);
+    await pn.selectOption('#accuracy', 'fast');
+    await pn.waitForFunction(() => window.rimeState.view.accuracy === 'fast', null, { timeout: 20000 });
+    return `readout follows the scene (${gShown}: ε_N ${before.eps} → ${after.eps}, at precise); bad field named: "${kept.notice.slice(0, 90)}…"; 309 digits → "${h.notice.slice(-80)}"`;
+  });
+
+  await check('issue 12 item 10: undo/redo of scene edits (buttons and Ctrl+Z / Ctrl+Shift+Z); re-choosing a preset is undoable', async () => {
+    await choosePreset(pn, 'ice-frost');
+    const visc = () => pn.evaluate(() => JSON.parse(window.rimeState.sceneJson).layer.viscosity);
+    await typeIn(pn, 'layer.viscosity', '4 kPa s');
+    assert(await visc() === 4000, 'edit not applied');
+    let u = await updates(pn);
+    await pn.click('#undo');
+    await waitUpdate(pn, u);
+    assert(await visc() === 1000, `undo: ${await visc()}`);
+    u = await updates(pn);
+    await pn.click('#redo');
+    await waitUpdate(pn, u);
+    assert(await visc() === 4000, `redo: ${await visc()}`);
+    // Re-choosing the same preset resets the edit, and can be undone from the keyboard.
+    await choosePreset(pn, 'ice-frost');
+    assert(await visc() === 1000, 're-choosing the preset did not reload it');
+    await pn.locator('#chart').focus();
+    u = await updates(pn);
+    await pn.keyboard.press('Control+z');
+    await waitUpdate(pn, u);
+    assert(await visc() === 4000, `Ctrl+Z after re-choosing the preset: ${await visc()}`);
+    u = await updates(pn);
+    await pn.keyboard.press('Control+Shift+Z');
+    await waitUpdate(pn, u);
+    assert(await visc() === 1000, `Ctrl+Shift+Z: ${await visc()}`);
+    return 'η* 1000 → 4000 → undo 1000 → redo 4000 → preset 1000 → Ctrl+Z 4000 → Ctrl+Shift+Z 1000';
+  });
+
+  await check('issue 12 items 20, 4, 19: pinned curve, ε_T beside the map, family meaning; lin/log, zoom and pan; downloads show the screen with context', async () => {
+    let u = await updates(pn);
+    await pn.click('#pin');
+    await waitUpdate(pn, u);
+    await typeIn(pn, 'layer.viscosity', '2 kPa s');
+    const s = await pn.evaluate(() => window.rimeState);
+    const pinned = s.figure.series.find((n) => /^pinned/.test(n));
+    assert(s.pinned && pinned && /η\* 1 kPa s/.test(pinned), `pinned legend: ${pinned}`);
+    assert(s.pinned.eps.some((e, k) => e !== s.eps[k]), 'pinned curve equals the current one');
+    assert(s.figure.series.some((n) => /varied around this scene/.test(n)), `family legend: ${s.figure.series}`);
+    assert((await inked(pn, 'eps-t')) > 1500, 'no ε_T plot beside the map');
+    // Linear ↔ log: the figure follows, and so does the download.
+    u = await updates(pn);
+    await pn.locator('input[name="yscale"][value="log"]').check();
+    await waitUpdate(pn, u);
+    const logFig = await pn.evaluate(() => ({ y: window.rimeState.figure.y, svg: window.rimeExports.chartSvg() }));
+    assert(logFig.y.log && logFig.y.min > 0 && logFig.svg.includes('(log'), `log axis: ${JSON.stringify(logFig.y)}`);
+    u = await updates(pn);
+    await pn.locator('input[name="yscale"][value="lin"]').check();
+    await waitUpdate(pn, u);
+    const linFig = await pn.evaluate(() => window.rimeState.figure.y);
+    assert(!linFig.log && linFig.min === 0, `linear axis: ${JSON.stringify(linFig)}`);
+    // Zoom and pan of the speed range, in decades.
+    const v0 = await pn.evaluate(() => window.rimeState.view);
+    u = await updates(pn);
+    await pn.click('#zoom-in');
+    await waitUpdate(pn, u);
+    const v1 = await pn.evaluate(() => window.rimeState.view);
+    const span = (v) => Math.log10(v.to / v.from);
+    assert(Math.abs(span(v1) - span(v0) / 2) < 1e-3, `zoom in: ${span(v0)} → ${span(v1)} decades`);
+    u = await updates(pn);
+    await pn.click('#pan-right');
+    await waitUpdate(pn, u);
+    const v2 = await pn.evaluate(() => window.rimeState.view);
+    assert(Math.abs(Math.log10(v2.from / v1.from) - span(v1) / 4) < 1e-3 && Math.abs(span(v2) - span(v1)) < 1e-3, `pan: ${v1.from} → ${v2.from}`);
+    const d = await pn.evaluate(() => ({ svg: window.rimeExports.chartSvg(), csv: window.rimeExports.curvesCsv(), fig: window.rimeState.figure, version: document.getElementById('version').textContent, level: window.rimeState.view.accuracy }));
+    assert(Math.abs(d.fig.x.min / v2.from - 1) < 1e-12 && Math.abs(d.fig.x.max / v2.to - 1) < 1e-12, 'the figure does not show the zoomed range');
+    assert(/pinned: η\* 1 kPa s/.test(d.svg), 'the download lacks the pinned curve');
+    // Context: caption and parameter block in the figure; '# ' lines in the CSV.
+    assert(/Scene: .*layer\.viscosity=2000/.test(d.svg) && /Hertzsch \(2002\)/.test(d.svg) && new RegExp(`rime ${d.version.replace(/\./g, '\\.')}`).test(d.svg), 'figure caption lacks scene, citation or version');
+    const head = d.csv.split('\n').filter((l) => l.startsWith('# ')).join('\n');
+    assert(new RegExp(`rime ${d.version.replace(/\./g, '\\.')}`).test(head) && new RegExp(`level ${d.level}`).test(head) && /layer\.viscosity=2000/.test(head) && /Hertzsch \(2002\)/.test(head) && /\d{4}-\d\d-\d\d/.test(head), `CSV context: ${head}`);
+    assert(/^g_n \[m\/s\],eps_n,status,t_c \[s\],xi_max \[m\]/m.test(d.csv), 'CSV header without units');
+    u = await updates(pn);
+    await pn.click('#pin');
+    await waitUpdate(pn, u);
+    return `pinned "${pinned}"; zoom ${span(v0).toFixed(2)} → ${span(v1).toFixed(2)} decades, pan to ${v2.from.toExponential(2)}; CSV context ${head.split('\n').length} lines`;
+  });
+  await pn.close();
 
   let med = NaN, medTotal = NaN;
   await check('recompute + redraw within one animation frame at fast (median of 40 inputs)', async () => {
