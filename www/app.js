@@ -234,9 +234,14 @@ function probe(g, accuracy) {
 }
 
 /** One collision of the drawn scene at `app.collisionG` (main thread: one live integration). */
+let replayed = '';
 function replayCollision(g) {
   if (g !== undefined) app.collisionG = g;
   if (!app.drawn || !app.collisionView) return;
+  // A new frame of the same scene at the same level (a zoom, an axis) does not replay it.
+  const key = `${app.drawn.scene}|${app.drawn.view.accuracy}|${app.collisionG}`;
+  if (g === undefined && key === replayed) return;
+  replayed = key;
   try {
     probe(app.collisionG, 'fast'); // points probeEx at the drawn scene
     const d = JSON.parse(app.probeEx.collision(app.collisionG, 300, app.drawn.view.accuracy));

@@ -17,15 +17,17 @@ export function el(tag, attrs = {}, ...children) {
 
 export const errText = (e) => String(e && e.message ? e.message : e);
 
-const EQ = /Eq\. \((A\.\d+|\d+)\)(?:–\((A\.\d+|\d+)\))?/g;
+const EQ = /Eq\. \((A\.\d+|\d+)\)(?:–\((A\.\d+|\d+)\))?|decision (\d+)/g;
 
-/** `text` as nodes, each "Eq. (N)" (or "Eq. (N)–(M)") a link to the physics notes. */
+/** `text` as nodes, each "Eq. (N)" (or "Eq. (N)–(M)") and "decision N" a link to the physics notes. */
 export function linked(text) {
+  text = String(text);
   const out = [];
   let at = 0;
-  for (const m of String(text).matchAll(EQ)) {
+  for (const m of text.matchAll(EQ)) {
     if (m.index > at) out.push(text.slice(at, m.index));
-    out.push(el('a', { href: physicsUrl(equationAnchor(m[1])), class: 'eq', target: '_blank', rel: 'noopener' }, m[0]));
+    const anchor = m[3] ? `decision-${m[3]}` : equationAnchor(m[1]);
+    out.push(el('a', { href: physicsUrl(anchor), class: 'eq', target: '_blank', rel: 'noopener' }, m[0]));
     at = m.index + m[0].length;
   }
   if (at < text.length) out.push(text.slice(at));
@@ -36,7 +38,7 @@ export function linked(text) {
 export function linkify(root) {
   const walker = document.createTreeWalker(root, NodeFilter.SHOW_TEXT, {
     acceptNode(n) {
-      if (!/Eq\. \(/.test(n.data)) return NodeFilter.FILTER_REJECT;
+      if (!/Eq\. \(|decision \d/.test(n.data)) return NodeFilter.FILTER_REJECT;
       if (n.parentElement.closest('a, option, select, script, style, textarea, canvas, button, label.raw')) return NodeFilter.FILTER_REJECT;
       return NodeFilter.FILTER_ACCEPT;
     },

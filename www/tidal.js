@@ -17,7 +17,8 @@ export const TIDAL_FIELDS = [
 const rows = new Map();
 let hooks = { schedule: () => {}, validate: () => {} };
 
-const shown = (f, v) => (f.unit === 'kg' ? sig(v, 12) : editable(v, f.unit));
+// Planet mass and distance read best in plain SI with an exponent (5.688e26 kg, 1.336e8 m).
+const shown = (f, v) => (f.key === 'planet_mass' || f.key === 'distance' ? sig(v, 12) : editable(v, f.unit));
 
 export function buildTidal(h) {
   hooks = h;
