@@ -532,7 +532,11 @@ impl App {
             (Action::Preset, _) => self.cycle_preset(),
             (Action::Accuracy, _) => {
                 self.accuracy = self.accuracy.next();
-                self.info(format!("accuracy: {}", self.accuracy.name()));
+                self.info(format!(
+                    "accuracy: {} ({})",
+                    self.accuracy.name(),
+                    self.accuracy.trade()
+                ));
                 self.request();
             }
             (Action::Sweep, _) => {

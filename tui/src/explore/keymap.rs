@@ -206,7 +206,7 @@ pub const KEYMAP: &[Row] = &[
     },
     Row {
         keys: "a",
-        does: "next accuracy (fast/balanced/precise)",
+        does: "next accuracy (fast/precise/integrated)",
         bindings: &[(Key::Char('a'), Action::Accuracy)],
     },
     Row {

@@ -242,10 +242,10 @@ fn accuracy_cycling() {
     assert_eq!(app.accuracy, Accuracy::Fast);
     let g = app.generation;
     update(&mut app, ch('a'));
-    assert_eq!(app.accuracy, Accuracy::Balanced);
+    assert_eq!(app.accuracy, Accuracy::Precise);
     assert!(app.generation > g);
     update(&mut app, ch('a'));
-    assert_eq!(app.accuracy, Accuracy::Precise);
+    assert_eq!(app.accuracy, Accuracy::Balanced);
     update(&mut app, ch('a'));
     assert_eq!(app.accuracy, Accuracy::Fast);
 }
