@@ -5,7 +5,9 @@
 #
 # Starts rime at 100×30, waits for the chart, selects the ice-frost preset (`p`), changes the layer
 # viscosity (select the row, `l`), checks that the readout changed, exports (`x`) and checks the
-# export folder and its CSVs, quits (`q`) and checks exit code 0. Exits non-zero with a message on
+# export folder and its CSVs, undoes and redoes the edit (`u`, `U`), scrolls the help, saves (`w`),
+# edits again and quits (`q`, which asks about the unsaved edit: `n` stays, `y` quits) and checks
+# exit code 0. Exits non-zero with a message on
 # any failure. Every wait is a polling loop with a timeout (≤ 20 s).
 set -euo pipefail
 
@@ -99,11 +101,43 @@ head -1 "$dir/eps_curves.csv" | grep -q '^g_n,eps_n,status' || fail "eps_curves.
 head -1 "$dir/stick_map.csv" | grep -q '^g_n,g_t,eps_t,class$' || fail "stick_map.csv header"
 grep -q '"viscosity": 1250' "$dir/scene.json" || fail "scene.json does not hold the changed viscosity"
 
-# Quit with q: exit code 0.
+# Undo the edit (u), redo it (U): the readout follows.
+tmux send-keys -t "$SESSION" u
+wait_for "undone"
+start=$SECONDS
+while [[ "$(readout)" != "$before" ]] && (( SECONDS - start < 20 )); do sleep 0.2; done
+[[ "$(readout)" == "$before" ]] || fail "u did not restore the readout ('$before')"
+tmux send-keys -t "$SESSION" U
+wait_for "redone"
+wait_for "1.25 kPa s"
+
+# The help scrolls (PgDn) and says how; Esc closes it.
+tmux send-keys -t "$SESSION" '?'
+wait_for "scroll"
+tmux send-keys -t "$SESSION" NPage
+wait_for "Glossary"
+tmux send-keys -t "$SESSION" Escape
+start=$SECONDS
+while screen | grep -qF "Glossary" && (( SECONDS - start < 20 )); do sleep 0.2; done
+
+# w writes the scene file; a second session's w would ask before overwriting it.
+tmux send-keys -t "$SESSION" w
+wait_for "saved scene"
+[[ -s "$WORK/rime-scene.json" ]] || fail "w did not write rime-scene.json"
+
+# Edit again, then q asks (unsaved edits); n stays, q y quits with exit code 0.
+tmux send-keys -t "$SESSION" l
+wait_for "1.56"
 tmux send-keys -t "$SESSION" q
+wait_for "quit anyway?"
+tmux send-keys -t "$SESSION" n
+wait_for "not quitting"
+tmux send-keys -t "$SESSION" q
+wait_for "quit anyway?"
+tmux send-keys -t "$SESSION" y
 start=$SECONDS
 while [[ ! -s "$WORK/exit" ]] && (( SECONDS - start < 20 )); do sleep 0.2; done
 [[ -s "$WORK/exit" ]] || fail "rime did not exit after q"
 code="$(cat "$WORK/exit")"
 [[ "$code" == "EXIT:0" ]] || fail "rime exited with '$code', expected EXIT:0"
-echo "e2e_tmux: ok (changed a parameter, exported to $(basename "$dir"), quit with 0)"
+echo "e2e_tmux: ok (changed a parameter, exported to $(basename "$dir"), undo/redo, help scroll, save, asked before quitting, quit with 0)"

@@ -68,6 +68,27 @@ fn log_points(g: &[f64], eps: impl Iterator<Item = f64>, y: YScale) -> Vec<(f64,
         .collect()
 }
 
+/// Rows that `spans` take when word-wrapped at `width` (breaks at plain spaces only; non-breaking
+/// spaces keep a value with its unit).
+fn wrapped_rows(spans: &[Span], width: usize) -> usize {
+    let text: String = spans.iter().map(|s| s.content.as_ref()).collect();
+    let mut rows = 1;
+    let mut used = 0;
+    for word in text.split(' ').filter(|w| !w.is_empty()) {
+        let w = word.chars().count();
+        if used > 0 && used + 1 + w > width {
+            rows += 1;
+            used = 0;
+        }
+        used += if used > 0 { 1 + w } else { w };
+        while used > width {
+            rows += 1;
+            used -= width;
+        }
+    }
+    rows
+}
+
 /// A polyline cut into dashes (runs of `run` points, every other run left out).
 fn dashes(pts: &[(f64, f64)], run: usize) -> Vec<Vec<(f64, f64)>> {
     pts.chunks(run.max(2))
@@ -257,25 +278,37 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) -> Option<LogAxis> 
     // over its own measured speeds, with the scene's score.
     let experiments = app.experiments && data.overlays.is_empty();
     let bands = rime_core::figure::experiments::bands(0);
-    // The experiments' legend: long names where two legend rows hold them, else short ones (the
-    // help names them), else in the chart's title.
+    // The legend may take three rows on a tall chart, two on a medium one. The experiments' legend:
+    // long names where the rows hold them, else short ones (the help names them), else in the
+    // chart's title.
+    let max_rows = if inner.height >= 16 {
+        3
+    } else if inner.height >= 8 {
+        2
+    } else {
+        1
+    };
+    let width = inner.width as usize;
     let mut experiments_in_title = false;
     if experiments {
-        let used: usize = legend.iter().map(|s| s.content.chars().count()).sum();
-        // Word wrapping wastes a few cells per row.
-        let room = (2 * inner.width as usize).saturating_sub(8);
-        let long = used + 40 <= room;
-        if long || used + 16 <= room {
-            legend.extend(experiment_legend(long));
+        let with = |long: bool| {
+            let mut l = legend.clone();
+            l.extend(experiment_legend(long));
+            wrapped_rows(&l, width)
+        };
+        if with(true) <= max_rows {
+            legend.extend(experiment_legend(true));
+        } else if with(false) <= max_rows {
+            legend.extend(experiment_legend(false));
         } else {
             experiments_in_title = true;
         }
     }
     if let Some(k) = family_label {
-        let used: usize = legend.iter().map(|s| s.content.chars().count()).sum();
-        let extra = " around this scene".chars().count();
-        if used + extra + 8 <= 2 * inner.width as usize {
-            legend[k] = Span::raw(nb(format!("{} varied around this scene:", sweep.symbol)));
+        let mut l = legend.clone();
+        l[k] = Span::raw(nb(format!("{} varied around this scene:", sweep.symbol)));
+        if wrapped_rows(&l, width) <= max_rows {
+            legend = l;
         }
     }
     if experiments_in_title {
@@ -298,12 +331,7 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) -> Option<LogAxis> 
     } else {
         frame.render_widget(block.title(title), area);
     }
-    let legend_w: usize = legend.iter().map(|s| s.content.chars().count()).sum();
-    let legend_h = if legend_w > inner.width as usize && inner.height >= 8 {
-        2
-    } else {
-        1
-    };
+    let legend_h = wrapped_rows(&legend, width).clamp(1, max_rows) as u16;
     frame.render_widget(
         Paragraph::new(Line::from(legend)).wrap(Wrap { trim: true }),
         Rect::new(inner.x, inner.y, inner.width, legend_h),
@@ -700,36 +728,38 @@ fn log_ticks(buf: &mut ratatui::buffer::Buffer, axis: &LogAxis, step: i32, style
     let step = (1..step)
         .find(|s| decade_w * f64::from(*s) >= 6.0)
         .unwrap_or(step);
-    let mut free_from = axis.left;
-    let mut placed = 0;
+    let mut taken: Vec<(u16, u16)> = Vec::new();
+    let free = |taken: &[(u16, u16)], start: u16, w: u16| {
+        start >= axis.left
+            && start + w <= right
+            && taken.iter().all(|(a, b)| start + w < *a || start > *b)
+    };
     let mut k = hi - (hi - lo) / step * step;
     while k <= hi {
         let text = decade(k);
         let w = text.chars().count() as u16;
         if let Some(c) = axis.column(f64::from(k)) {
             let start = c.saturating_sub(w / 2);
-            if start >= free_from && start + w <= right {
+            if free(&taken, start, w) {
                 buf.set_string(start, axis.label_row, &text, style);
-                free_from = start + w + 1;
-                placed += 1;
+                taken.push((start, start + w));
             }
         }
         k += step;
     }
-    // Zoomed in to a decade or less: label 2× and 5× too (each at its value).
-    if placed < 2 {
-        let mut free_from = axis.left;
+    // Zoomed in to a few decades or less: label 2× and 5× too, each at its value, where they fit.
+    if axis.hi - axis.lo < 3.0 {
         for k in lo..=hi {
-            for m in [1.0, 2.0, 5.0] {
+            for m in [2.0, 5.0] {
                 let Some(c) = axis.column(f64::from(k) + f64::log10(m)) else {
                     continue;
                 };
                 let text = tick_label(m, k);
                 let w = text.chars().count() as u16;
                 let start = c.saturating_sub(w / 2);
-                if start >= free_from && start + w <= right {
-                    buf.set_string(start, axis.label_row, &text, style);
-                    free_from = start + w + 1;
+                if free(&taken, start, w) {
+                    buf.set_string(start, axis.label_row, &text, style.fg(Color::DarkGray));
+                    taken.push((start, start + w));
                 }
             }
         }

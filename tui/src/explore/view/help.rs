@@ -43,7 +43,7 @@ pub const GLOSSARY: &[(&str, &str)] = &[
     ),
     (
         "g_s adhesion",
-        "a rebound speed (Eq. (15)): the grains stick when the rebound ε_N·g_N would be below it; drawn at g_N = g_s on the impact axis, sticking reaches to g_N = g_s/ε_N, right of the marker",
+        "a rebound speed (Eq. (15)): the grains stick when their rebound speed without adhesion, ε_N·g_N, is below it; the chart draws it at g_N = g_s on the impact axis, and sticking reaches up to where ε_N·g_N = g_s, right of the marker",
     ),
     (
         "A",
