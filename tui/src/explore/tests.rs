@@ -91,7 +91,9 @@ fn help_overlay_snapshot() {
     assert!(s.contains("rime — keys"));
     insta::assert_snapshot!("help_100x30", s);
     update(&mut app, ch('j'));
-    assert!(!app.help, "any key closes the help");
+    assert!(app.help && app.help_scroll == 1, "j scrolls the help");
+    update(&mut app, ch('x'));
+    assert!(!app.help, "any other key closes the help");
     assert!(!app.quit);
 }
 

@@ -187,7 +187,7 @@ pub fn content(inner_w: usize) -> Vec<Line<'static>> {
         .map(|r| r.keys.chars().count())
         .max()
         .unwrap_or(10)
-        .min(inner_w / 3);
+        .min(inner_w / 2);
     let mut lines = vec![heading("Keys")];
     for row in KEYMAP {
         lines.extend(entry(row.keys, keys, row.does, plain, name_w, inner_w));

@@ -62,7 +62,7 @@ pub fn map(
         ),
         Span::styled(
             if shared {
-                "(g_N ↑, g_T →) "
+                ""
             } else {
                 "classes over (g_N ↑, g_T →) "
             },
@@ -106,7 +106,14 @@ pub fn map(
     let axis_w: u16 = (max_label.chars().count() as u16 + 1).max(6);
     let show_legend = inner.width >= axis_w + legend_w + 12;
     let plot_w = inner.width - axis_w - if show_legend { legend_w + 1 } else { 0 };
-    let plot_h = inner.height - 1;
+    // Too narrow for the legend beside the map but tall: a compact legend below it.
+    let legend_below = !show_legend && inner.height >= 12;
+    let below_rows: u16 = match (legend_below, inner.height >= 14) {
+        (false, _) => 0,
+        (true, true) => 4,
+        (true, false) => 3,
+    };
+    let plot_h = inner.height - 1 - below_rows;
     let px = inner.x + axis_w;
     let py = inner.y;
     // Y axis labels.
@@ -163,6 +170,42 @@ pub fn map(
             .set_style(Style::new().fg(Color::Black).bg(Color::White));
     }
     // Legend.
+    if legend_below {
+        let mut spans = Vec::new();
+        for c in StickClass::ALL {
+            let artifact = super::help::class_meaning(c).1;
+            spans.push(Span::styled(
+                c.letter().to_string(),
+                Style::new().fg(class_ink(c)).bg(class_color(c)),
+            ));
+            let name = if artifact {
+                format!(
+                    "\u{a0}{}\u{a0}(artifact) ",
+                    class_label(c).replace(' ', "\u{a0}")
+                )
+            } else {
+                format!("\u{a0}{} ", class_label(c).replace(' ', "\u{a0}"))
+            };
+            spans.push(Span::styled(
+                name,
+                Style::new().fg(if artifact {
+                    Color::LightYellow
+                } else {
+                    Color::Gray
+                }),
+            ));
+        }
+        spans.push(Span::styled(
+            "· ? explains",
+            Style::new().fg(Color::DarkGray),
+        ));
+        Paragraph::new(Line::from(spans))
+            .wrap(Wrap { trim: true })
+            .render(
+                Rect::new(inner.x, py + plot_h + 1, inner.width, below_rows),
+                buf,
+            );
+    }
     if show_legend {
         let lx = px + plot_w + 1;
         for (k, c) in StickClass::ALL.iter().enumerate() {
