@@ -47,7 +47,8 @@ wait_for() {
 }
 
 # readout: the chart cursor readout line (▸ g … ε_N …).
-readout() { screen | grep -F "ε_N" | grep -F "│ ▸" | head -1 | sed 's/^.*│ ▸//'; }
+# (The panel's right border is ┃ while it has the focus, │ otherwise.)
+readout() { screen | grep -F "ε_N" | grep -E "[│┃] ▸" | head -1 | sed -E 's/^.*[│┃] ▸//'; }
 
 tmux new-session -d -s "$SESSION" -x 100 -y 30 -c "$WORK" \
     "'$BIN' --accuracy fast; echo EXIT:\$? > '$WORK/exit'; sleep 60"
