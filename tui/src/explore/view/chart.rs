@@ -281,7 +281,10 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) -> Option<LogAxis> 
     // The legend may take three rows on a tall chart, two on a medium one. The experiments' legend:
     // long names where the rows hold them, else short ones (the help names them), else in the
     // chart's title.
-    let max_rows = if inner.height >= 16 {
+    let max_rows = if inner.height >= 18 && !data.overlays.is_empty() {
+        // One comparison per row (measured laws carry temperature, geometry and score).
+        2 + data.overlays.len().min(5)
+    } else if inner.height >= 16 {
         3
     } else if inner.height >= 8 {
         2
