@@ -5,15 +5,19 @@ use crate::error::{Error, Result};
 /// How accurately restitution coefficients are computed.
 ///
 /// Each level carries a documented bound on the relative error of ε_N (where ε_N > 1e-6), checked by
-/// the test suite against an independent high-precision reference.
+/// the test suite against an independent high-precision reference. The default, `precise`, is the
+/// best choice: the fine table is both the tightest named bound and, after `fast`, the cheapest
+/// (issue 12: the old default integrated every contact, 100× slower at a 1e4 times looser bound).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum Accuracy {
-    /// Tabulated master curve, interpolated: relative error ≤ 1e-6 (see [`crate::master`]).
+    /// `fast`: the coarse table of the master curve ([`crate::master`]): relative error ≤ 1e-6.
     Fast,
-    /// Adaptive Dormand–Prince at a moderate tolerance: relative error ≤ 1e-6.
-    #[default]
+    /// `integrated` (formerly `balanced`, still accepted): integrates every contact with adaptive
+    /// Dormand–Prince at a moderate tolerance, relative error ≤ 1e-6. The slowest level; it checks
+    /// the tables and serves contacts they do not cover.
     Balanced,
-    /// Adaptive Dormand–Prince at a tight tolerance: relative error ≤ 1e-10.
+    /// `precise`: the fine table of the master curve, relative error ≤ 1e-10 (the default).
+    #[default]
     Precise,
     /// Adaptive Dormand–Prince with this relative tolerance (parsed from `[1e-11, 1e-2]`: tighter
     /// bounds than 1e-11 are not met by a double-precision integration of the contact).
@@ -25,24 +29,40 @@ pub enum Accuracy {
 pub const TIGHTEST_TOLERANCE: f64 = 1e-11;
 
 impl Accuracy {
-    /// The three named levels, in cycling order.
-    pub const LEVELS: [Accuracy; 3] = [Accuracy::Fast, Accuracy::Balanced, Accuracy::Precise];
+    /// The three named levels, in cycling order (cheapest first).
+    pub const LEVELS: [Accuracy; 3] = [Accuracy::Fast, Accuracy::Precise, Accuracy::Balanced];
 
-    /// Name used on the command line: `fast`, `balanced`, `precise`, or the tolerance as a number.
+    /// Name used on the command line: `fast`, `precise`, `integrated`, or `tolerance`.
     pub fn name(self) -> &'static str {
         match self {
             Accuracy::Fast => "fast",
-            Accuracy::Balanced => "balanced",
+            Accuracy::Balanced => "integrated",
             Accuracy::Precise => "precise",
             Accuracy::Tolerance(_) => "tolerance",
         }
     }
 
-    /// Parses `fast`, `balanced`, `precise` or a relative tolerance such as `1e-8`.
+    /// What the level trades, in a few words for a screen: how ε_N is obtained, its bound and its
+    /// cost (`coarse table · error ≤ 1e-6 · ~0.05 µs per speed`). The costs are orders of magnitude
+    /// measured by `rime bench` (one ε_N on the ice scenes); the surfaces show the measured frame time
+    /// beside it.
+    pub fn trade(self) -> &'static str {
+        match self {
+            Accuracy::Fast => "coarse table · error ≤ 1e-6 · ~0.05 µs per speed",
+            Accuracy::Precise => {
+                "fine table (literal layer: integrates) · error ≤ 1e-10 · ~0.06 µs per speed"
+            }
+            Accuracy::Balanced => "integrates each contact · error ≤ 1e-6 · ~10 µs per speed",
+            Accuracy::Tolerance(_) => "integrates each contact at your tolerance · slowest",
+        }
+    }
+
+    /// Parses `fast`, `precise`, `integrated` (or its former name `balanced`) or a relative
+    /// tolerance such as `1e-8`.
     pub fn parse(text: &str) -> Result<Accuracy> {
         match text.trim() {
             "fast" => Ok(Accuracy::Fast),
-            "balanced" => Ok(Accuracy::Balanced),
+            "integrated" | "balanced" => Ok(Accuracy::Balanced),
             "precise" => Ok(Accuracy::Precise),
             other => match other.parse::<f64>() {
                 Ok(t) if t.is_finite() && (TIGHTEST_TOLERANCE..=1e-2).contains(&t) => {
@@ -55,18 +75,18 @@ impl Accuracy {
                 }),
                 Err(_) => Err(Error::InvalidValue {
                     field: "accuracy",
-                    expected: "fast, balanced, precise, or a relative tolerance like 1e-8",
+                    expected: "fast, precise, integrated, or a relative tolerance like 1e-8",
                 }),
             },
         }
     }
 
-    /// The next named level (for the explorer's `a` key).
+    /// The next named level (for the explorer's `a` key): fast → precise → integrated → fast.
     pub fn next(self) -> Accuracy {
         match self {
-            Accuracy::Fast => Accuracy::Balanced,
-            Accuracy::Balanced => Accuracy::Precise,
-            Accuracy::Precise | Accuracy::Tolerance(_) => Accuracy::Fast,
+            Accuracy::Fast => Accuracy::Precise,
+            Accuracy::Precise => Accuracy::Balanced,
+            Accuracy::Balanced | Accuracy::Tolerance(_) => Accuracy::Fast,
         }
     }
 

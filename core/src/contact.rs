@@ -67,9 +67,20 @@ fn finite_positive(quantity: &'static str, fields: &'static str, v: f64) -> Resu
     }
 }
 
+impl Scene {
+    /// Checks the scene: every field's range, then every derived quantity (the same gate as
+    /// [`Contact::new`]); the error names the first offending field by its dotted path.
+    pub fn validate(&self) -> Result<()> {
+        Contact::new(self).map(|_| ())
+    }
+}
+
 impl Contact {
-    /// Derives the contact constants. Fails if a derived quantity over- or underflows.
+    /// Derives the contact constants: the single validity gate of a scene. Checks every field
+    /// (the error names it by its dotted path), then fails if a derived quantity over- or
+    /// underflows.
     pub fn new(scene: &Scene) -> Result<Contact> {
+        scene.check_fields()?;
         let g = &scene.grains;
         let (r1, r2) = (g.radius_1, g.radius_2);
         let volume = |r: f64| 4.0 / 3.0 * core::f64::consts::PI * r * r * r;

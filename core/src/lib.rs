@@ -53,7 +53,6 @@ pub mod fit;
 #[cfg(feature = "alloc")]
 pub mod fit_scene;
 pub mod kinematics;
-pub mod master;
 mod math;
 pub mod models;
 pub mod normal;
@@ -70,6 +69,9 @@ pub use accuracy::Accuracy;
 pub use contact::Contact;
 pub use error::{Error, Result};
 pub use kinematics::GrainState;
+/// The dimensionless master curve of Eq. (4) and its generated Chebyshev tables (they live with the
+/// viscoelastic model, [`normal::viscoelastic::master`]).
+pub use normal::viscoelastic::master;
 pub use normal::{Normal, Status};
 pub use scene::{
     Adhesion, AdhesionModulus, Bulk, ContactEnd, Damping, DampingFormula, Friction, Grains, Layer,

@@ -360,8 +360,10 @@ impl Preset {
 }
 
 impl Scene {
-    /// Checks every field; the error names the first offending one by its dotted path.
-    pub fn validate(&self) -> Result<()> {
+    /// Checks every field against its range; the error names the first offending one by its
+    /// dotted path. Only `Contact::new` calls this: it is the single validity
+    /// gate (fields, then every derived quantity), and [`Scene::validate`] asks it.
+    pub(crate) fn check_fields(&self) -> Result<()> {
         within(
             "grains.radius_1",
             self.grains.radius_1,
@@ -485,7 +487,7 @@ impl Scene {
                 });
             }
         }
-        crate::contact::Contact::new(self).map(|_| ())
+        Ok(())
     }
 
     /// The damping time `A` \[s\] of Eq. (4), from whichever form the scene gives.

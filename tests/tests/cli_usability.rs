@@ -374,3 +374,33 @@ fn completions_and_man_page_name_every_flag_the_parser_accepts() {
     }
     refused(&["completions", "tcsh"], "tcsh");
 }
+
+/// Issue 12 item 7: without `--accuracy` the command line uses the best level — the tightest named
+/// bound (1e-10) — and the former `balanced` is still accepted under its new name's meaning.
+#[test]
+fn the_default_level_is_the_tightest_named_bound_issue_12() {
+    let rec = json(&["eps", "--g", "0.01", "--format", "json"]);
+    let bound = rec[0]["error_estimate"].as_f64().unwrap();
+    assert!(bound <= 1e-10, "default error estimate {bound}");
+    let named = json(&[
+        "eps",
+        "--g",
+        "0.01",
+        "--accuracy",
+        "integrated",
+        "--format",
+        "json",
+    ]);
+    let old = json(&[
+        "eps",
+        "--g",
+        "0.01",
+        "--accuracy",
+        "balanced",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(named, old, "balanced is the old name of integrated");
+    let help = ok(&["help", "eps"]);
+    assert!(help.contains("precise (default"), "{help}");
+}

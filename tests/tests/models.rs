@@ -329,7 +329,7 @@ fn compare_json_has_records_and_characteristic_speeds() {
     let c = Contact::new(&Preset::IceSticky.scene()).unwrap();
     assert_eq!(
         records[1]["eps_n"].as_f64().unwrap(),
-        c.normal(0.01, Accuracy::Balanced).unwrap().eps
+        c.normal(0.01, Accuracy::default()).unwrap().eps
     );
     let speeds = v["characteristic_speeds"].as_array().unwrap();
     let find = |m: &str, n: &str| {

@@ -322,7 +322,7 @@ fn work_precision_svg(rows: &[Row]) -> String {
         top + ph / 2.0
     ));
     let colors = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"];
-    let markers = ["fast", "balanced", "precise"];
+    let markers = ["fast", "integrated", "precise"];
     let mut legend_y = top + 10.0;
     let mut models: Vec<&str> = rows.iter().map(|r| r.model).collect();
     models.dedup();
@@ -371,7 +371,7 @@ fn work_precision_svg(rows: &[Row]) -> String {
     legend_y += 10.0;
     for (label, shape) in [
         ("fast (coarse table)", "circle"),
-        ("balanced (live DP5)", "square"),
+        ("integrated (live DP5)", "square"),
         ("precise (fine table)", "triangle"),
     ] {
         let x = left + pw + 25.0;

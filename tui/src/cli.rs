@@ -188,7 +188,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
     let mut scene_file: Option<PathBuf> = None;
     let mut preset_name: Option<String> = None;
     let mut sets: Vec<String> = Vec::new();
-    let mut accuracy = Accuracy::Balanced;
+    let mut accuracy = Accuracy::default();
     let mut format: Option<Format> = None;
     let mut flags: Vec<(&'static str, String)> = Vec::new();
     let mut i = 0;

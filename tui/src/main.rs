@@ -8,7 +8,7 @@ mod codegen;
 mod commands;
 mod eps_file;
 mod explore;
-mod export;
+mod takeaway;
 mod output;
 mod progress;
 mod scene_io;

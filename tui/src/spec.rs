@@ -69,7 +69,7 @@ pub const SCENE_FLAGS: &[Flag] = &[
     f(
         "--accuracy",
         "LEVEL",
-        "fast | balanced | precise | a relative tolerance like 1e-8",
+        "precise (default: fine table, ε_N error ≤ 1e-10) | fast (coarse table, ≤ 1e-6) | integrated (integrates each contact, ≤ 1e-6, slowest) | a tolerance like 1e-8",
     ),
 ];
 
@@ -351,7 +351,7 @@ pub const SUBS: &[Sub] = &[
             f(
                 "--accuracy",
                 "LEVEL",
-                "fast | balanced | precise | a relative tolerance like 1e-8",
+                "precise (default: fine table, ε_N error ≤ 1e-10) | fast (coarse table, ≤ 1e-6) | integrated (integrates each contact, ≤ 1e-6, slowest) | a tolerance like 1e-8",
             ),
             switch(
                 "--explorer",

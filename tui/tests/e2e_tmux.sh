@@ -5,7 +5,9 @@
 #
 # Starts rime at 100×30, waits for the chart, selects the ice-frost preset (`p`), changes the layer
 # viscosity (select the row, `l`), checks that the readout changed, exports (`x`) and checks the
-# export folder and its CSVs, quits (`q`) and checks exit code 0. Exits non-zero with a message on
+# export folder and its CSVs, undoes and redoes the edit (`u`, `U`), scrolls the help, saves (`w`),
+# edits again and quits (`q`, which asks about the unsaved edit: `n` stays, `y` quits) and checks
+# exit code 0. Exits non-zero with a message on
 # any failure. Every wait is a polling loop with a timeout (≤ 20 s).
 set -euo pipefail
 
@@ -45,7 +47,8 @@ wait_for() {
 }
 
 # readout: the chart cursor readout line (▸ g … ε_N …).
-readout() { screen | grep -F "ε_N" | grep -F "│ ▸" | head -1 | sed 's/^.*│ ▸//'; }
+# (The panel's right border is ┃ while it has the focus, │ otherwise.)
+readout() { screen | grep -F "ε_N" | grep -E "[│┃] ▸" | head -1 | sed -E 's/^.*[│┃] ▸//'; }
 
 tmux new-session -d -s "$SESSION" -x 100 -y 30 -c "$WORK" \
     "'$BIN' --accuracy fast; echo EXIT:\$? > '$WORK/exit'; sleep 60"
@@ -92,18 +95,66 @@ while [[ -z "$dir" ]] && (( SECONDS - start < 20 )); do
     [[ -n "$dir" ]] || sleep 0.2
 done
 [[ -n "$dir" ]] || fail "no rime-export-* folder in $WORK"
-for f in scene.json eps_curves.csv stick_map.csv; do
+for f in scene.json eps_curve.csv eps_family.csv stick_map.csv eps_n.svg stick_map.svg; do
     [[ -s "$dir/$f" ]] || fail "export is missing $f"
 done
-head -1 "$dir/eps_curves.csv" | grep -q '^g_n,eps_n,status' || fail "eps_curves.csv header"
-head -1 "$dir/stick_map.csv" | grep -q '^g_n,g_t,eps_t,class$' || fail "stick_map.csv header"
 grep -q '"viscosity": 1250' "$dir/scene.json" || fail "scene.json does not hold the changed viscosity"
+# What the terminal exports is byte for byte what the command line prints for the same scene,
+# speeds, grid and level (issue 11); the export adds only its `# ` context lines.
+grep -v '^#' "$dir/eps_curve.csv" > "$WORK/terminal-curve.csv"
+first="$(sed -n 2p "$WORK/terminal-curve.csv" | cut -d, -f1)"
+last="$(tail -1 "$WORK/terminal-curve.csv" | cut -d, -f1)"
+points=$(( $(wc -l < "$WORK/terminal-curve.csv") - 1 ))
+"$BIN" curve --scene "$dir/scene.json" --accuracy fast --from "$first" --to "$last" \
+    --points "$points" --format csv > "$WORK/cli-curve.csv"
+cmp -s "$WORK/terminal-curve.csv" "$WORK/cli-curve.csv" \
+    || fail "eps_curve.csv differs from rime curve: $(diff "$WORK/terminal-curve.csv" "$WORK/cli-curve.csv" | head -4)"
+grep -v '^#' "$dir/stick_map.csv" > "$WORK/terminal-map.csv"
+n="$(tail -n +2 "$WORK/terminal-map.csv" | cut -d, -f1 | sort -u | wc -l)"
+max="$(tail -n +2 "$WORK/terminal-map.csv" | cut -d, -f1 | sort -g | tail -1)"
+"$BIN" map --scene "$dir/scene.json" --accuracy fast --max "$max" --n "$n" --format csv \
+    > "$WORK/cli-map.csv"
+cmp -s "$WORK/terminal-map.csv" "$WORK/cli-map.csv" \
+    || fail "stick_map.csv differs from rime map: $(diff "$WORK/terminal-map.csv" "$WORK/cli-map.csv" | head -4)"
+echo "e2e_tmux: the export's curve ($points speeds) and map (${n}×${n}) equal rime curve / rime map byte for byte"
 
-# Quit with q: exit code 0.
+# Undo the edit (u), redo it (U): the readout follows.
+tmux send-keys -t "$SESSION" u
+wait_for "undone"
+start=$SECONDS
+while [[ "$(readout)" != "$before" ]] && (( SECONDS - start < 20 )); do sleep 0.2; done
+[[ "$(readout)" == "$before" ]] || fail "u did not restore the readout ('$before')"
+tmux send-keys -t "$SESSION" U
+wait_for "redone"
+wait_for "1.25 kPa s"
+
+# The help scrolls (PgDn) and says how; Esc closes it.
+tmux send-keys -t "$SESSION" '?'
+wait_for "scroll"
+tmux send-keys -t "$SESSION" NPage
+wait_for "Glossary"
+tmux send-keys -t "$SESSION" Escape
+start=$SECONDS
+while screen | grep -qF "Glossary" && (( SECONDS - start < 20 )); do sleep 0.2; done
+
+# w writes the scene file; a second session's w would ask before overwriting it.
+tmux send-keys -t "$SESSION" w
+wait_for "saved scene"
+[[ -s "$WORK/rime-scene.json" ]] || fail "w did not write rime-scene.json"
+
+# Edit again, then q asks (unsaved edits); n stays, q y quits with exit code 0.
+tmux send-keys -t "$SESSION" l
+wait_for "1.56"
 tmux send-keys -t "$SESSION" q
+wait_for "quit anyway?"
+tmux send-keys -t "$SESSION" n
+wait_for "not quitting"
+tmux send-keys -t "$SESSION" q
+wait_for "quit anyway?"
+tmux send-keys -t "$SESSION" y
 start=$SECONDS
 while [[ ! -s "$WORK/exit" ]] && (( SECONDS - start < 20 )); do sleep 0.2; done
 [[ -s "$WORK/exit" ]] || fail "rime did not exit after q"
 code="$(cat "$WORK/exit")"
 [[ "$code" == "EXIT:0" ]] || fail "rime exited with '$code', expected EXIT:0"
-echo "e2e_tmux: ok (changed a parameter, exported to $(basename "$dir"), quit with 0)"
+echo "e2e_tmux: ok (changed a parameter, exported to $(basename "$dir"), undo/redo, help scroll, save, asked before quitting, quit with 0)"

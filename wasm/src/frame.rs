@@ -22,7 +22,7 @@ use serde_json::{Value as Json, json};
 pub const FAILED: u8 = u8::MAX;
 
 fn default_accuracy() -> String {
-    "fast".into()
+    "precise".into()
 }
 fn default_from() -> f64 {
     1e-7
@@ -44,7 +44,7 @@ fn default_true() -> bool {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields, rename_all = "camelCase")]
 pub struct View {
-    /// `fast`, `balanced`, `precise` or a tolerance.
+    /// `precise` (default), `fast`, `integrated` (or `balanced`) or a tolerance.
     #[serde(default = "default_accuracy")]
     pub accuracy: String,
     /// Lowest speed of the ε_N chart \[m/s\].
@@ -463,7 +463,7 @@ mod tests {
         let eps = get(&f, &j["curve"]["eps"]);
         let contact = Contact::new(&scene).unwrap();
         for (gi, e) in g.iter().zip(eps) {
-            assert_eq!(contact.normal(*gi, Accuracy::Fast).unwrap().eps, *e);
+            assert_eq!(contact.normal(*gi, Accuracy::Precise).unwrap().eps, *e);
         }
         assert_eq!(j["family"]["values"].as_array().unwrap().len(), 4);
         assert!(j["clean"]["eps"].is_object());
@@ -473,6 +473,43 @@ mod tests {
         assert_eq!(j["values"]["layer"], true);
         assert!(j["tidal"]["result"]["d_roche"].as_f64().unwrap() > 1e8);
         assert_eq!(j["critical"].as_array().unwrap().len(), 2);
+    }
+
+    #[test]
+    fn the_frame_carries_the_cores_records_and_figures_issue_11() {
+        let scene = frost();
+        let text = serde_json::to_string(&scene).unwrap();
+        let view = r#"{"points": 30, "mapN": 6, "from": 1e-6, "to": 1, "yLog": true, "date": "D"}"#;
+        let f = frame(&text, view).unwrap();
+        let j: Json = serde_json::from_str(&f.json).unwrap();
+        // The records are the CSV `rime curve` prints: built here from the core's normal results.
+        let contact = Contact::new(&scene).unwrap();
+        let mut g = vec![0.0; 30];
+        rime_core::sweep::log_space(1e-6, 1.0, &mut g);
+        let points: Vec<_> = g
+            .iter()
+            .map(|&gi| Some(contact.normal(gi, Accuracy::Precise).unwrap()))
+            .collect();
+        assert_eq!(
+            j["records"]["curve"],
+            rime_core::explorer::records::curve_csv(&g, &points)
+        );
+        assert!(
+            j["records"]["context"]["curve"]
+                .as_str()
+                .unwrap()
+                .contains("level precise, D")
+        );
+        assert!(
+            j["records"]["map"]
+                .as_str()
+                .unwrap()
+                .starts_with("g_n [m/s],g_t [m/s]")
+        );
+        let figs = j["figures"].as_array().unwrap();
+        assert_eq!(figs.len(), 2);
+        assert_eq!(figs[0]["y"]["log"], true, "the figure follows the view");
+        assert_eq!(figs[1]["map"], true);
     }
 
     #[test]

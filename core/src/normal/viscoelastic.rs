@@ -5,6 +5,8 @@
 //! so ε_N depends on δ alone. The start is singular (√x is not Lipschitz at 0); we integrate in
 //! `σ = √s`, in which the solution `x = σ² − (2/5)δσ⁵ − (4/35)σ⁷ + …` is analytic.
 
+pub mod master;
+
 use super::trace::{Kind, Nothing, Recorder, StateMap};
 use crate::error::{Error, Result};
 use crate::math::{powf, sqrt};

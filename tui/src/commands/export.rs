@@ -1,8 +1,8 @@
-//! `rime export --out DIR`: tables, fitted laws and generated code (crate::export, crate::codegen).
+//! `rime export --out DIR`: tables, fitted laws and generated code (crate::takeaway, crate::codegen).
 
 use crate::cli::Common;
 use crate::scene_io::{self, CliResult};
-use crate::{codegen, export, output};
+use crate::{codegen, output, takeaway};
 use std::path::Path;
 
 /// Writes the files into `out` and summarises them.
@@ -16,8 +16,8 @@ pub fn run(
 ) -> CliResult<String> {
     let scene = scene_io::scene_json(&c.scene)?;
     let law = codegen::Law::new(&c.scene, c.accuracy, &scene, runtime_params)?;
-    let e = export::compute(&c.scene, from, to, n, c.accuracy)?;
-    let files = export::write_all(out, &e, &scene, &law)?;
+    let e = takeaway::compute(&c.scene, from, to, n, c.accuracy)?;
+    let files = takeaway::write_all(out, &e, &scene, &law)?;
     let mut s = format!("wrote {} into {}\n", files.join(", "), out.display());
     if let Some(f) = e.eq27 {
         s.push_str(&format!(

@@ -105,10 +105,105 @@ pub struct App {
     pub tidal_factor: f64,
     /// Path being typed after `o` (None when not opening a scene file).
     pub open: Option<LineInput>,
+    /// In a shared layout ([`super::layout::Layout::shared`]), whether the right-hand pane shows
+    /// the stick map (else the ε_N chart).
+    pub map_shown: bool,
+    /// First line of the help shown (the help scrolls when it is taller than the screen).
+    pub help_scroll: u16,
+    /// Whether the ε_N axis is logarithmic (`y`); linear shows sticking (ε_N = 0).
+    pub y_log: bool,
+    /// The chart's speed range \[m/s\] (zoom `+ -`, pan `, .`); `None`: automatic. It goes into
+    /// the request as the core's `speeds`.
+    pub speeds: Option<(f64, f64)>,
+    /// A pinned ε_N curve (`P`), drawn dashed to compare with later edits.
+    pub pinned: Option<Pinned>,
+    /// Scene edits that `u` undoes (oldest first).
+    pub undo: Vec<SceneState>,
+    /// Undone edits that `U` redoes (most recent last).
+    pub redo: Vec<SceneState>,
+    /// The scene as last saved, opened or started with: quitting with another one asks first.
+    pub saved: Scene,
+    /// A yes/no question waiting for its answer.
+    pub confirm: Option<Confirm>,
+    /// Whether this session wrote the scene file (`w` then overwrites it without asking again).
+    pub wrote_scene_file: bool,
+    /// A speed to put the chart cursor on when the next frame arrives (after a range change).
+    pub cursor_at: Option<f64>,
+    /// Where the last frame drew what the mouse can click (written by the renderer).
+    pub drawn: std::cell::Cell<Drawn>,
+}
+
+/// The part of the state that undo and redo restore.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SceneState {
+    /// The scene.
+    pub scene: Scene,
+    /// The preset it was chosen as, if any.
+    pub preset: Option<usize>,
+}
+
+/// A pinned ε_N curve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Pinned {
+    /// What the legend calls it (the swept parameter's value when it was pinned).
+    pub label: String,
+    /// Speeds \[m/s\].
+    pub g: Vec<f64>,
+    /// ε_N at those speeds (0 stuck, NaN unknown).
+    pub eps: Vec<f64>,
+}
+
+/// A yes/no question on the message line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Confirm {
+    /// Quit although the scene has unsaved edits.
+    Quit,
+    /// Overwrite the existing scene file.
+    Overwrite,
+}
+
+/// Geometry of the last drawn frame that mouse clicks need (the renderer fills it in).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Drawn {
+    /// The chart's log speed axis.
+    pub chart_axis: Option<super::view::chart::LogAxis>,
+    /// The stick map's grid cells: (x, y, width, height) in cells.
+    pub map_plot: Option<ratatui::layout::Rect>,
+    /// The parameter panel: first row of the list and index of the first parameter shown.
+    pub panel_rows: Option<(u16, usize)>,
 }
 
 /// Default file that `o` offers (the one `w` writes).
 pub const SCENE_FILE: &str = "rime-scene.json";
+
+/// The slowest and fastest speeds the chart's range may reach \[m/s\] (the core's speed limit).
+pub const SPEED_MIN: f64 = 1e-12;
+/// See [`SPEED_MIN`].
+pub const SPEED_MAX: f64 = 1e6;
+/// The narrowest speed range, in decades.
+pub const MIN_SPAN_DECADES: f64 = 0.25;
+
+/// Index of the speed nearest `g` on the chart's log grid from `lo` to `hi`.
+pub fn grid_index(g: f64, lo: f64, hi: f64) -> usize {
+    let t = (g.log10() - lo.log10()) / (hi.log10() - lo.log10());
+    if !t.is_finite() {
+        return 0;
+    }
+    (t.clamp(0.0, 1.0) * (CURVE_POINTS - 1) as f64).round() as usize
+}
+
+/// Index of the speed in `g` nearest `target` (in log).
+fn nearest(g: &[f64], target: f64) -> usize {
+    let t = target.log10();
+    g.iter()
+        .enumerate()
+        .min_by(|a, b| {
+            let da = (a.1.log10() - t).abs();
+            let db = (b.1.log10() - t).abs();
+            da.total_cmp(&db)
+        })
+        .map_or(0, |(i, _)| i)
+}
 
 /// Factor by which `<` / `>` change the tidal calculator's planet distance.
 pub const TIDAL_STEP: f64 = 1.05;
@@ -147,6 +242,18 @@ impl App {
             inside_dynamic: Vec::new(),
             tidal_factor: 1.0,
             open: None,
+            map_shown: false,
+            help_scroll: 0,
+            y_log: true,
+            speeds: None,
+            pinned: None,
+            undo: Vec::new(),
+            redo: Vec::new(),
+            saved: scene,
+            confirm: None,
+            wrote_scene_file: false,
+            cursor_at: None,
+            drawn: std::cell::Cell::new(Drawn::default()),
         };
         app.request();
         app
@@ -162,6 +269,7 @@ impl App {
             sweep: self.sweep,
             map_max: self.map_max,
             overlay_set: self.overlay_set,
+            speeds: self.speeds,
         });
     }
 
@@ -197,14 +305,65 @@ impl App {
         }
     }
 
-    /// Replaces the scene and queues a recomputation.
+    /// Replaces the scene (an edit: undoable) and queues a recomputation.
     fn scene_changed(&mut self, next: Scene) {
-        if next != self.scene {
-            self.scene = next;
-            self.preset = None;
-            self.fix_sweep();
-            self.request();
+        self.replace_scene(next, None);
+    }
+
+    /// Replaces the scene and the preset it is, remembering the old ones for undo.
+    fn replace_scene(&mut self, next: Scene, preset: Option<usize>) {
+        if next == self.scene && preset == self.preset {
+            return;
         }
+        self.undo.push(SceneState {
+            scene: self.scene,
+            preset: self.preset,
+        });
+        self.redo.clear();
+        self.scene = next;
+        self.preset = preset;
+        self.fix_sweep();
+        self.request();
+    }
+
+    /// Whether the scene differs from the one last saved, opened or started with.
+    pub fn unsaved(&self) -> bool {
+        self.scene != self.saved
+    }
+
+    /// Undo (`back`) or redo one scene edit.
+    fn history(&mut self, back: bool) {
+        let (from, to) = if back {
+            (&mut self.undo, &mut self.redo)
+        } else {
+            (&mut self.redo, &mut self.undo)
+        };
+        let Some(state) = from.pop() else {
+            self.info(if back {
+                "nothing to undo"
+            } else {
+                "nothing to redo"
+            });
+            return;
+        };
+        to.push(SceneState {
+            scene: self.scene,
+            preset: self.preset,
+        });
+        self.scene = state.scene;
+        self.preset = state.preset;
+        self.fix_sweep();
+        self.request();
+        let left = if back {
+            self.undo.len()
+        } else {
+            self.redo.len()
+        };
+        self.info(format!(
+            "{} ({left} more) · {}",
+            if back { "undone" } else { "redone" },
+            if back { "U redoes" } else { "u undoes" }
+        ));
     }
 
     fn set_text(&mut self, path: &str, text: &str) -> bool {
@@ -283,7 +442,13 @@ impl App {
         if let Some(o) = options.get(next)
             && self.set_text(path, o)
         {
-            self.info(format!("{path} = {o}"));
+            let (words, _) = super::view::panel::choice_label(o);
+            let label = rime_core::params::parameter(path).map_or(path, |p| p.label);
+            if words.is_empty() {
+                self.info(format!("{label}: {o}"));
+            } else {
+                self.info(format!("{label}: {words} ({path} = {o}) · u undoes"));
+            }
         }
     }
 
@@ -323,8 +488,7 @@ impl App {
     fn cycle_preset(&mut self) {
         let i = self.preset.map_or(0, |i| (i + 1) % Preset::ALL.len());
         let p = Preset::ALL[i % Preset::ALL.len()];
-        self.scene = p.scene();
-        self.preset = Some(i);
+        self.replace_scene(p.scene(), Some(i));
         self.sweep = Sweep::default_for(&self.scene);
         self.map_max = None;
         self.info(format!("preset {}: {}", p.name(), p.description()));
@@ -399,11 +563,10 @@ impl App {
         };
         match scene_io::load_scene(&path) {
             Ok(next) => {
-                self.scene = next;
-                self.preset = Preset::ALL.iter().position(|p| p.scene() == next);
-                self.fix_sweep();
-                self.request();
-                self.info(format!("opened scene {}", path.display()));
+                let preset = Preset::ALL.iter().position(|p| p.scene() == next);
+                self.replace_scene(next, preset);
+                self.saved = next;
+                self.info(format!("opened scene {} (u undoes)", path.display()));
             }
             Err(e) => {
                 // load_scene words its errors for the command line (`--scene FILE: …`).
@@ -418,10 +581,19 @@ impl App {
             self.info("still computing — press x again in a moment");
             return;
         };
+        // The figures show what the screen shows: axis mode, experiments, pinned curve (the
+        // speed range is the frame's own).
         let view = rime_core::explorer::figures::View {
-            y_log: false,
+            y_log: self.y_log,
             experiments: self.experiments,
-            pinned: None,
+            pinned: self
+                .pinned
+                .as_ref()
+                .map(|p| rime_core::explorer::figures::Pinned {
+                    label: p.label.clone(),
+                    g: p.g.clone(),
+                    eps: p.eps.clone(),
+                }),
         };
         match frame_export::export(&self.out_dir, data, &view) {
             Ok(dir) => self.info(format!(
@@ -432,18 +604,81 @@ impl App {
         }
     }
 
+    /// `w`: saves the scene, asking first when it would overwrite a file this session did not write.
     fn save(&mut self) {
-        let path = self.out_dir.join("rime-scene.json");
+        let path = self.out_dir.join(SCENE_FILE);
+        if path.exists() && !self.wrote_scene_file {
+            self.confirm = Some(Confirm::Overwrite);
+            return;
+        }
+        self.write_scene();
+    }
+
+    fn write_scene(&mut self) {
+        let path = self.out_dir.join(SCENE_FILE);
         let result = scene_io::scene_json(&self.scene)
             .and_then(|json| scene_io::write_atomic(&path, (json + "\n").as_bytes()));
         match result {
-            Ok(()) => self.info(format!("saved scene to {}", path.display())),
+            Ok(()) => {
+                self.saved = self.scene;
+                self.wrote_scene_file = true;
+                self.info(format!("saved scene to {}", path.display()));
+            }
             Err(e) => self.error(format!("save failed: {e}")),
         }
     }
 
+    /// `q`/Esc: quits, asking first when the scene has unsaved edits.
+    fn ask_quit(&mut self) {
+        if self.unsaved() {
+            self.confirm = Some(Confirm::Quit);
+        } else {
+            self.quit = true;
+        }
+    }
+
+    fn handle_confirm_key(&mut self, question: Confirm, key: KeyEvent) {
+        self.confirm = None;
+        let yes = matches!(key.code, KeyCode::Char('y' | 'Y'));
+        let ctrl_c =
+            key.code == KeyCode::Char('c') && key.modifiers.contains(KeyModifiers::CONTROL);
+        match question {
+            Confirm::Quit if yes || ctrl_c => self.quit = true,
+            Confirm::Quit => self.info("not quitting · w saves the scene"),
+            Confirm::Overwrite if yes => self.write_scene(),
+            Confirm::Overwrite => self.info(format!("{SCENE_FILE} kept, scene not saved")),
+        }
+    }
+
+    /// Keys while the help is open: arrows and pages scroll, `q` quits, any other key closes.
+    fn handle_help_key(&mut self, key: KeyEvent) {
+        let (w, h) = self.size;
+        let max = super::view::help::max_scroll(w, h);
+        let page = super::view::help::page_rows(w, h).max(1);
+        let s = self.help_scroll;
+        self.help_scroll = match key.code {
+            KeyCode::Up | KeyCode::Char('k') => s.saturating_sub(1),
+            KeyCode::Down | KeyCode::Char('j') => (s + 1).min(max),
+            KeyCode::PageUp => s.saturating_sub(page),
+            KeyCode::PageDown | KeyCode::Char(' ') => (s + page).min(max),
+            KeyCode::Home => 0,
+            KeyCode::End => max,
+            _ => {
+                self.help = false;
+                if keymap::action(key) == Some(Action::Quit) {
+                    self.ask_quit();
+                }
+                return;
+            }
+        };
+    }
+
     fn handle_key(&mut self, key: KeyEvent) {
         if key.kind == KeyEventKind::Release {
+            return;
+        }
+        if let Some(question) = self.confirm {
+            self.handle_confirm_key(question, key);
             return;
         }
         if self.input.is_some() {
@@ -456,11 +691,7 @@ impl App {
         }
         let action = keymap::action(key);
         if self.help && !key.modifiers.contains(KeyModifiers::CONTROL) {
-            // Any key closes the help; q still quits.
-            self.help = false;
-            if action == Some(Action::Quit) {
-                self.quit = true;
-            }
+            self.handle_help_key(key);
             return;
         }
         let Some(action) = action else {
@@ -480,14 +711,19 @@ impl App {
                 self.tidal = false;
                 self.info("tidal appendix closed (Esc again quits)");
             }
-            (Action::Quit | Action::Back, _) => self.quit = true,
-            (Action::Help, _) => self.help = true,
+            (Action::Interrupt, _) => self.quit = true,
+            (Action::Quit | Action::Back, _) => self.ask_quit(),
+            (Action::Help, _) => {
+                self.help = true;
+                self.help_scroll = 0;
+            }
             (Action::FocusNext, _) => {
                 self.focus = match self.focus {
                     Focus::Panel => Focus::Chart,
                     Focus::Chart => Focus::Map,
                     Focus::Map => Focus::Panel,
                 };
+                self.focus_changed();
                 self.info(match self.focus {
                     Focus::Panel => "focus: parameters (↑↓ select, ←→ change)",
                     Focus::Chart => "focus: chart (←→ move the g_N cursor)",
@@ -500,6 +736,7 @@ impl App {
                     Focus::Chart => Focus::Panel,
                     Focus::Map => Focus::Chart,
                 };
+                self.focus_changed();
             }
             (Action::Up, Focus::Panel) => self.selected = (self.selected + n - 1) % n,
             (Action::Down, Focus::Panel) => self.selected = (self.selected + 1) % n,
@@ -532,7 +769,11 @@ impl App {
             (Action::Preset, _) => self.cycle_preset(),
             (Action::Accuracy, _) => {
                 self.accuracy = self.accuracy.next();
-                self.info(format!("accuracy: {}", self.accuracy.name()));
+                self.info(format!(
+                    "accuracy: {} ({})",
+                    self.accuracy.name(),
+                    self.accuracy.trade()
+                ));
                 self.request();
             }
             (Action::Sweep, _) => {
@@ -549,9 +790,23 @@ impl App {
                 self.request();
             }
             (Action::Cursor(d), _) => self.move_cursor(i64::from(d)),
-            (Action::MapWider | Action::MapNarrower, _) => {
-                let shown = self.data.as_ref().map_or(1.0, |d| d.map_max);
-                let next = if action == Action::MapWider {
+            (Action::ZoomIn | Action::ZoomOut, Focus::Panel | Focus::Chart) => {
+                self.zoom_speeds(if action == Action::ZoomIn { 0.5 } else { 2.0 }, None);
+            }
+            (Action::Pan(d), _) => self.pan_speeds(f64::from(d) * 0.25),
+            (Action::ZoomAuto, Focus::Panel | Focus::Chart) => {
+                self.cursor_at = self.cursor_speed();
+                self.speeds = None;
+                self.request();
+                self.info("speed range: automatic");
+            }
+            (Action::ZoomIn | Action::ZoomOut, Focus::Map) => {
+                let shown = self
+                    .map_max
+                    .or_else(|| self.data.as_ref().map(|d| d.map_max))
+                    .unwrap_or(1.0);
+                // Zooming in shows less: the range halves.
+                let next = if action == Action::ZoomOut {
                     shown * 2.0
                 } else {
                     shown / 2.0
@@ -563,7 +818,7 @@ impl App {
                 ));
                 self.request();
             }
-            (Action::MapAuto, _) => {
+            (Action::ZoomAuto, Focus::Map) => {
                 self.map_max = None;
                 self.info("stick map range: automatic");
                 self.request();
@@ -672,18 +927,252 @@ impl App {
             }
             (Action::Export, _) => self.export(),
             (Action::Save, _) => self.save(),
+            (Action::YScale, _) => {
+                self.y_log = !self.y_log;
+                self.info(if self.y_log {
+                    "ε_N axis: logarithmic (y: linear, shows sticking)"
+                } else {
+                    "ε_N axis: linear, sticking (ε_N = 0) on the bottom line (y: logarithmic)"
+                });
+            }
+            (Action::Pin, _) => self.pin(),
+            (Action::Walton, _) => self.toggle_walton(),
+            (Action::Undo, _) => self.history(true),
+            (Action::Redo, _) => self.history(false),
         }
     }
 
+    /// In a shared layout the right-hand pane follows the focus to the chart or the map.
+    fn focus_changed(&mut self) {
+        match self.focus {
+            Focus::Chart => self.map_shown = false,
+            Focus::Map => self.map_shown = true,
+            Focus::Panel => {}
+        }
+    }
+
+    /// Speed at the chart cursor.
+    fn cursor_speed(&self) -> Option<f64> {
+        self.data
+            .as_ref()
+            .and_then(|d| d.g.get(self.cursor).copied())
+    }
+
+    /// The chart's speed range now: the user's, else the last frame's.
+    fn speed_range(&self) -> Option<(f64, f64)> {
+        self.speeds
+            .or_else(|| self.data.as_ref().map(super::compute::auto_speeds))
+    }
+
+    /// Sets the chart's speed range (clamped to the core's limits, at least a quarter decade wide)
+    /// and keeps the cursor on the same speed.
+    fn set_speeds(&mut self, lo: f64, hi: f64) {
+        let (min, max) = (SPEED_MIN.log10(), SPEED_MAX.log10());
+        let span = (hi - lo).clamp(MIN_SPAN_DECADES, max - min);
+        let lo = lo.clamp(min, max - span);
+        let (lo, hi) = (10f64.powf(lo), 10f64.powf(lo + span));
+        let g = self.cursor_speed();
+        self.speeds = Some((lo, hi));
+        if let Some(g) = g {
+            self.cursor = grid_index(g, lo, hi);
+            self.cursor_at = Some(g);
+        }
+        self.request();
+        self.info(format!(
+            "speed range {} … {} · + - zoom · , . pan · 0 automatic",
+            super::format::qty3(lo, "m/s"),
+            super::format::qty3(hi, "m/s")
+        ));
+    }
+
+    /// Zooms the speed range by `factor` (in decades) around `at` (default: the cursor).
+    pub fn zoom_speeds(&mut self, factor: f64, at: Option<f64>) {
+        let Some((lo, hi)) = self.speed_range() else {
+            return;
+        };
+        let (l, h) = (lo.log10(), hi.log10());
+        let c = at
+            .or_else(|| self.cursor_speed())
+            .map_or((l + h) / 2.0, f64::log10)
+            .clamp(l, h);
+        // The point under `c` stays where it is.
+        let (nl, nh) = (c - (c - l) * factor, c + (h - c) * factor);
+        self.set_speeds(nl, nh.max(nl + MIN_SPAN_DECADES));
+    }
+
+    /// Moves the speed range by `fraction` of its width.
+    fn pan_speeds(&mut self, fraction: f64) {
+        let Some((lo, hi)) = self.speed_range() else {
+            return;
+        };
+        let (l, h) = (lo.log10(), hi.log10());
+        let d = (h - l) * fraction;
+        self.set_speeds(l + d, h + d);
+    }
+
+    /// `P`: pins the current ε_N curve, or unpins it.
+    fn pin(&mut self) {
+        if self.pinned.take().is_some() {
+            self.info("pinned curve removed");
+            return;
+        }
+        let Some(data) = self.data.as_ref().filter(|d| d.scene == self.scene) else {
+            self.info("still computing — press P again in a moment");
+            return;
+        };
+        let s = self.sweep_def();
+        let label = if s.available(&self.scene) {
+            format!(
+                "{} {}",
+                s.symbol,
+                super::format::qty3(s.current(&self.scene), s.unit)
+            )
+        } else {
+            "pinned".to_string()
+        };
+        let eps = data
+            .current
+            .iter()
+            .map(|n| n.map_or(f64::NAN, |n| n.eps))
+            .collect();
+        self.pinned = Some(Pinned {
+            label: label.clone(),
+            g: data.g.clone(),
+            eps,
+        });
+        self.info(format!(
+            "pinned this curve ({label}), drawn dashed · edit and compare · P unpins"
+        ));
+    }
+
+    /// `W`: switches the sliding law between the paper's Eq. (23) and Walton's.
+    fn toggle_walton(&mut self) {
+        use rime_core::scene::SlidingLaw;
+        let Some(f) = self.scene.friction else {
+            self.error("friction is off: no sliding law (select 'friction', press Enter)");
+            return;
+        };
+        let mut next = self.scene;
+        let law = match f.sliding_law {
+            SlidingLaw::Paper => SlidingLaw::Walton,
+            SlidingLaw::Walton => SlidingLaw::Paper,
+        };
+        if let Some(f) = next.friction.as_mut() {
+            f.sliding_law = law;
+        }
+        self.scene_changed(next);
+        self.info(match law {
+            SlidingLaw::Walton => "sliding law: Walton's (linear Coulomb impulse, no sliding gap) · W: the paper's · u undoes",
+            SlidingLaw::Paper => "sliding law: the paper's Eq. (23) (its gap is an artifact) · W: Walton's · u undoes",
+        });
+    }
+
+    /// Mouse: a click focuses the pane under it and selects the parameter row or places the chart
+    /// or map cursor there; the wheel moves the cursor (chart), zooms (over the g_N axis, or with
+    /// Ctrl), pans (sideways wheel), selects (panel) or scrolls the help.
     fn handle_mouse(&mut self, m: MouseEvent) {
-        let layout = super::layout::layout(self.size.0, self.size.1);
-        let Some(layout) = layout else { return };
+        let Some(layout) = super::layout::layout(self.size.0, self.size.1) else {
+            return;
+        };
         let inside = |r: ratatui::layout::Rect| {
             m.column >= r.x && m.column < r.x + r.width && m.row >= r.y && m.row < r.y + r.height
         };
+        if self.help {
+            let max = super::view::help::max_scroll(self.size.0, self.size.1);
+            match m.kind {
+                MouseEventKind::ScrollUp => self.help_scroll = self.help_scroll.saturating_sub(2),
+                MouseEventKind::ScrollDown => self.help_scroll = (self.help_scroll + 2).min(max),
+                MouseEventKind::Down(_) => self.help = false,
+                _ => {}
+            }
+            return;
+        }
+        if self.confirm.is_some() || self.input.is_some() || self.open.is_some() {
+            return;
+        }
+        let drawn = self.drawn.get();
+        let on_map = if layout.shared {
+            self.map_shown && inside(layout.map)
+        } else {
+            inside(layout.map)
+        };
+        let on_chart = inside(layout.chart) && !on_map;
+        let axis_speed = |axis: &super::view::chart::LogAxis| -> Option<f64> {
+            if axis.width == 0 || m.column < axis.x || m.column >= axis.x + axis.width {
+                return None;
+            }
+            let t = (f64::from(m.column - axis.x) + 0.5) / f64::from(axis.width);
+            Some(10f64.powf(axis.lo + t * (axis.hi - axis.lo)))
+        };
+        let on_axis =
+            |axis: &super::view::chart::LogAxis| m.row == axis.axis_row || m.row == axis.label_row;
+        let ctrl = m.modifiers.contains(KeyModifiers::CONTROL);
         match m.kind {
-            MouseEventKind::ScrollUp if inside(layout.chart) => self.move_cursor(2),
-            MouseEventKind::ScrollDown if inside(layout.chart) => self.move_cursor(-2),
+            MouseEventKind::Down(crossterm::event::MouseButton::Left) => {
+                if inside(layout.panel) {
+                    self.focus = Focus::Panel;
+                    if let Some((y0, offset)) = drawn.panel_rows
+                        && m.row >= y0
+                    {
+                        let k = offset + usize::from(m.row - y0);
+                        if k < PARAMETERS.len() {
+                            self.selected = k;
+                        }
+                    }
+                } else if layout.shared && inside(layout.chart) && m.row == layout.chart.y {
+                    // The shared pane's title row switches between the chart and the map.
+                    self.focus = if self.map_shown {
+                        Focus::Chart
+                    } else {
+                        Focus::Map
+                    };
+                    self.focus_changed();
+                } else if on_map {
+                    self.focus = Focus::Map;
+                    self.focus_changed();
+                    if let (Some(r), Some(n)) = (
+                        drawn.map_plot,
+                        self.data
+                            .as_ref()
+                            .and_then(|d| d.map.as_ref())
+                            .map(|m| m.n()),
+                    ) && inside(r)
+                        && n > 1
+                    {
+                        let pick = |k: u16, len: u16| -> usize {
+                            if len <= 1 {
+                                0
+                            } else {
+                                ((f64::from(k) * (n - 1) as f64 / f64::from(len - 1)).round()
+                                    as usize)
+                                    .min(n - 1)
+                            }
+                        };
+                        let j = pick(m.column - r.x, r.width);
+                        let i = pick(r.height - 1 - (m.row - r.y), r.height);
+                        self.map_cursor = (i, j);
+                    }
+                } else if on_chart {
+                    self.focus = Focus::Chart;
+                    self.focus_changed();
+                    if let (Some(axis), Some(data)) = (drawn.chart_axis, self.data.as_ref())
+                        && let Some(g) = axis_speed(&axis)
+                    {
+                        self.cursor = nearest(&data.g, g);
+                    }
+                }
+            }
+            MouseEventKind::ScrollUp | MouseEventKind::ScrollDown if on_chart => {
+                let up = m.kind == MouseEventKind::ScrollUp;
+                match drawn.chart_axis {
+                    Some(axis) if ctrl || on_axis(&axis) => {
+                        self.zoom_speeds(if up { 0.8 } else { 1.25 }, axis_speed(&axis));
+                    }
+                    _ => self.move_cursor(if up { 2 } else { -2 }),
+                }
+            }
+            MouseEventKind::ScrollLeft if on_chart => self.pan_speeds(-0.1),
+            MouseEventKind::ScrollRight if on_chart => self.pan_speeds(0.1),
             MouseEventKind::ScrollUp if inside(layout.panel) => {
                 self.selected = self.selected.saturating_sub(1);
             }
@@ -704,6 +1193,9 @@ pub fn update(app: &mut App, event: Event) {
         Event::Computed(data) => {
             // Drop stale results: a newer request is on its way.
             if data.generation == app.generation {
+                if let Some(g) = app.cursor_at.take() {
+                    app.cursor = nearest(&data.g, g);
+                }
                 app.data = Some(*data);
             }
         }

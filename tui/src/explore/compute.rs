@@ -27,6 +27,8 @@ pub struct Request {
     pub map_max: Option<f64>,
     /// What is drawn over the chart beside the scene (`c` cycles): index into [`OVERLAY_SETS`].
     pub overlay_set: usize,
+    /// The chart's speed range \[m/s\] (the core's `speeds`); `None`: automatic decades.
+    pub speeds: Option<(f64, f64)>,
 }
 
 /// The overlay sets the explorer's `c` cycles through: nothing, the measured laws and ranges of the
@@ -101,6 +103,14 @@ pub struct FrameData {
     pub frame: rime_core::explorer::frame::Frame,
 }
 
+/// The speed range a frame was computed over (its first and last speed).
+pub fn auto_speeds(data: &FrameData) -> (f64, f64) {
+    match (data.g.first(), data.g.last()) {
+        (Some(lo), Some(hi)) if lo < hi => (*lo, *hi),
+        _ => (1e-7, 10.0),
+    }
+}
+
 /// Computes a frame with the one explorer model of the core ([`rime_core::explorer::frame`]), and
 /// adapts it to what the terminal's views read. Returns `None` as soon as `cancelled()` says a newer
 /// request is waiting.
@@ -112,6 +122,7 @@ pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<FrameData>
     core_req.map_n = MAP_POINTS;
     core_req.sweep = Some(req.sweep).filter(|k| *k < SWEEPS.len());
     core_req.map_max = req.map_max;
+    core_req.speeds = req.speeds;
     core_req.overlays = OVERLAY_SETS
         .get(req.overlay_set)
         .map(|(_, keys)| {

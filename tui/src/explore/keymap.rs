@@ -30,6 +30,10 @@ pub enum Key {
     Esc,
     /// Ctrl-C.
     CtrlC,
+    /// Ctrl-Z.
+    CtrlZ,
+    /// Ctrl-Y.
+    CtrlY,
 }
 
 impl Key {
@@ -50,6 +54,8 @@ impl Key {
             Key::BackTab => KeyEvent::new(KeyCode::BackTab, KeyModifiers::SHIFT),
             Key::Esc => plain(KeyCode::Esc),
             Key::CtrlC => KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL),
+            Key::CtrlZ => KeyEvent::new(KeyCode::Char('z'), KeyModifiers::CONTROL),
+            Key::CtrlY => KeyEvent::new(KeyCode::Char('y'), KeyModifiers::CONTROL),
         }
     }
 
@@ -57,7 +63,12 @@ impl Key {
     pub fn of(event: KeyEvent) -> Option<Key> {
         let shift = event.modifiers.contains(KeyModifiers::SHIFT);
         if event.modifiers.contains(KeyModifiers::CONTROL) {
-            return (event.code == KeyCode::Char('c')).then_some(Key::CtrlC);
+            return match event.code {
+                KeyCode::Char('c') => Some(Key::CtrlC),
+                KeyCode::Char('z') => Some(Key::CtrlZ),
+                KeyCode::Char('y') => Some(Key::CtrlY),
+                _ => None,
+            };
         }
         Some(match event.code {
             KeyCode::Char(c) => Key::Char(c),
@@ -107,12 +118,25 @@ pub enum Action {
     FocusNext,
     /// Previous pane.
     FocusPrev,
-    /// Stick-map range ×2.
-    MapWider,
-    /// Stick-map range ÷2.
-    MapNarrower,
-    /// Automatic stick-map range.
-    MapAuto,
+    /// Zoom in: the stick map's range ÷2 when it has the focus, else the chart's speed range ÷2
+    /// (in decades, around the cursor).
+    ZoomIn,
+    /// Zoom out (the inverse of [`Action::ZoomIn`]).
+    ZoomOut,
+    /// Automatic range of the focused view (stick map, else the chart's speeds).
+    ZoomAuto,
+    /// Pan the chart's speed range by a quarter of its width (−1 left, +1 right).
+    Pan(i8),
+    /// The ε_N axis: log ↔ linear.
+    YScale,
+    /// Pin the current ε_N curve (or unpin it).
+    Pin,
+    /// The scene's sliding law: the paper's Eq. (23) ↔ Walton's.
+    Walton,
+    /// Undo the last scene edit.
+    Undo,
+    /// Redo the last undone scene edit.
+    Redo,
     /// Experiments on/off.
     Experiments,
     /// Tidal appendix on/off.
@@ -139,8 +163,10 @@ pub enum Action {
     Help,
     /// Close the tidal appendix, else quit.
     Back,
-    /// Quit.
+    /// Quit (asks first when the scene has unsaved edits).
     Quit,
+    /// Ctrl-C: quit at once.
+    Interrupt,
 }
 
 /// One row of the table: how the help names the keys, what they do, and the keys themselves.
@@ -206,7 +232,7 @@ pub const KEYMAP: &[Row] = &[
     },
     Row {
         keys: "a",
-        does: "next accuracy (fast/balanced/precise)",
+        does: "next accuracy (fast/precise/integrated)",
         bindings: &[(Key::Char('a'), Action::Accuracy)],
     },
     Row {
@@ -225,8 +251,8 @@ pub const KEYMAP: &[Row] = &[
         ],
     },
     Row {
-        keys: "Tab",
-        does: "focus: parameters → chart → stick map",
+        keys: "Tab  click",
+        does: "focus: parameters → chart → stick map (short terminals: one at a time)",
         bindings: &[
             (Key::Tab, Action::FocusNext),
             (Key::BackTab, Action::FocusPrev),
@@ -239,12 +265,45 @@ pub const KEYMAP: &[Row] = &[
     },
     Row {
         keys: "+ / - / 0",
-        does: "stick map range ×2, ÷2, automatic",
+        does: "zoom in / out / automatic: speed range (map focus: map range)",
         bindings: &[
-            (Key::Char('+'), Action::MapWider),
-            (Key::Char('='), Action::MapWider),
-            (Key::Char('-'), Action::MapNarrower),
-            (Key::Char('0'), Action::MapAuto),
+            (Key::Char('+'), Action::ZoomIn),
+            (Key::Char('='), Action::ZoomIn),
+            (Key::Char('-'), Action::ZoomOut),
+            (Key::Char('0'), Action::ZoomAuto),
+        ],
+    },
+    Row {
+        keys: ", / .  wheel on axis",
+        does: "pan the speed range left / right; wheel on the g_N axis zooms",
+        bindings: &[
+            (Key::Char(','), Action::Pan(-1)),
+            (Key::Char('.'), Action::Pan(1)),
+        ],
+    },
+    Row {
+        keys: "y",
+        does: "ε_N axis log / linear (linear shows sticking, ε_N = 0)",
+        bindings: &[(Key::Char('y'), Action::YScale)],
+    },
+    Row {
+        keys: "P",
+        does: "pin this ε_N curve to compare with later edits / unpin",
+        bindings: &[(Key::Char('P'), Action::Pin)],
+    },
+    Row {
+        keys: "W",
+        does: "sliding law: the paper's Eq. (23) ↔ Walton's (no sliding gap)",
+        bindings: &[(Key::Char('W'), Action::Walton)],
+    },
+    Row {
+        keys: "u / U  Ctrl-Z/Y",
+        does: "undo / redo a scene edit (also p, o, f, W)",
+        bindings: &[
+            (Key::Char('u'), Action::Undo),
+            (Key::CtrlZ, Action::Undo),
+            (Key::Char('U'), Action::Redo),
+            (Key::CtrlY, Action::Redo),
         ],
     },
     Row {
@@ -284,7 +343,7 @@ pub const KEYMAP: &[Row] = &[
     },
     Row {
         keys: "w / o",
-        does: "save / open a scene JSON (rime-scene.json)",
+        does: "save (asks before overwriting) / open a scene JSON (rime-scene.json)",
         bindings: &[
             (Key::Char('w'), Action::Save),
             (Key::Char('o'), Action::Open),
@@ -292,12 +351,12 @@ pub const KEYMAP: &[Row] = &[
     },
     Row {
         keys: "?  /  q Esc Ctrl-C",
-        does: "this help (any key closes) / quit",
+        does: "this help (↑↓ scroll) / quit (asks if edits are unsaved)",
         bindings: &[
             (Key::Char('?'), Action::Help),
             (Key::Char('q'), Action::Quit),
             (Key::Esc, Action::Back),
-            (Key::CtrlC, Action::Quit),
+            (Key::CtrlC, Action::Interrupt),
         ],
     },
 ];

@@ -21,11 +21,22 @@ pub struct Layout {
     pub status: Rect,
     /// Message / input line (None on short terminals: the message joins the status line).
     pub message: Option<Rect>,
+    /// Whether the chart and the stick map share one pane (short terminals, below
+    /// [`SPLIT_HEIGHT`] rows): then `chart` and `map` are the same area and one of them is shown.
+    pub shared: bool,
 }
+
+/// Terminals at least this tall show the ε_N chart and the stick map one above the other; shorter
+/// ones (80×24, the usual default) show one of them in the whole right-hand pane, so that the chart
+/// keeps a useful height (15 rows of plot at 80×24 instead of 5).
+pub const SPLIT_HEIGHT: u16 = 30;
 
 impl Layout {
     /// The area of the tidal calculator: the chart and the stick map together.
     pub fn views(&self) -> Rect {
+        if self.shared {
+            return self.chart;
+        }
         Rect::new(
             self.chart.x,
             self.chart.y,
@@ -44,11 +55,22 @@ pub fn layout(w: u16, h: u16) -> Option<Layout> {
     let main_h = h - bottom;
     let panel_w = (w * 3 / 8).clamp(26, 40);
     let right_w = w - panel_w;
+    let shared = h < SPLIT_HEIGHT;
+    let right = Rect::new(panel_w, 0, right_w, main_h);
     let chart_h = main_h * 11 / 20;
+    let (chart, map) = if shared {
+        (right, right)
+    } else {
+        (
+            Rect::new(panel_w, 0, right_w, chart_h),
+            Rect::new(panel_w, chart_h, right_w, main_h - chart_h),
+        )
+    };
     Some(Layout {
         panel: Rect::new(0, 0, panel_w, main_h),
-        chart: Rect::new(panel_w, 0, right_w, chart_h),
-        map: Rect::new(panel_w, chart_h, right_w, main_h - chart_h),
+        chart,
+        map,
+        shared,
         derived: Rect::new(0, main_h, w, 1),
         status: Rect::new(0, main_h + 1, w, 1),
         message: (bottom == 3).then(|| Rect::new(0, main_h + 2, w, 1)),

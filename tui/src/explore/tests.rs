@@ -91,7 +91,9 @@ fn help_overlay_snapshot() {
     assert!(s.contains("rime — keys"));
     insta::assert_snapshot!("help_100x30", s);
     update(&mut app, ch('j'));
-    assert!(!app.help, "any key closes the help");
+    assert!(app.help && app.help_scroll == 1, "j scrolls the help");
+    update(&mut app, ch('x'));
+    assert!(!app.help, "any other key closes the help");
     assert!(!app.quit);
 }
 
@@ -242,10 +244,10 @@ fn accuracy_cycling() {
     assert_eq!(app.accuracy, Accuracy::Fast);
     let g = app.generation;
     update(&mut app, ch('a'));
-    assert_eq!(app.accuracy, Accuracy::Balanced);
+    assert_eq!(app.accuracy, Accuracy::Precise);
     assert!(app.generation > g);
     update(&mut app, ch('a'));
-    assert_eq!(app.accuracy, Accuracy::Precise);
+    assert_eq!(app.accuracy, Accuracy::Balanced);
     update(&mut app, ch('a'));
     assert_eq!(app.accuracy, Accuracy::Fast);
 }
@@ -301,6 +303,40 @@ fn cursor_moves_and_readout_has_no_nan() {
     let m = app.map_cursor;
     update(&mut app, key(KeyCode::Up));
     assert!(app.map_cursor.0 > m.0);
+}
+
+/// Issue 12 item 4 / issue 11: `x` exports what the screen shows — the ε_N axis mode (`y`) and the
+/// pinned curve (`P`) reach the exported figure.
+#[test]
+fn export_shows_what_the_screen_shows_issue_12() {
+    let dir = std::env::temp_dir().join(format!("rime-tui-test-screen-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp");
+    let svg_after = |app: &mut App| -> String {
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).expect("tmp");
+        update(app, ch('x'));
+        let export = std::fs::read_dir(&dir)
+            .expect("read")
+            .filter_map(|e| e.ok())
+            .find(|e| e.file_name().to_string_lossy().starts_with("rime-export-"))
+            .expect("export folder")
+            .path();
+        std::fs::read_to_string(export.join("eps_n.svg")).expect("figure")
+    };
+    let mut app = app_on(Preset::IceFrost.scene());
+    app.out_dir = dir.clone();
+    let first = svg_after(&mut app);
+    let log_first = first.contains("(log;");
+    assert_eq!(log_first, app.y_log, "the figure's axis follows the screen");
+    assert!(!first.contains("pinned:"));
+    update(&mut app, ch('y'));
+    update(&mut app, ch('P'));
+    assert!(app.pinned.is_some());
+    let second = svg_after(&mut app);
+    assert_eq!(second.contains("(log;"), app.y_log);
+    assert_ne!(log_first, app.y_log, "y toggled the axis");
+    assert!(second.contains("pinned:"), "the pinned curve is exported");
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -364,7 +400,7 @@ fn paper_inconsistent_options_are_flagged() {
         .set("friction.sliding_law", "walton")
         .expect("set");
     let opts = super::view::lines::paper_options(&app.scene);
-    assert_eq!(opts, vec!["layer.reading=literal"]);
+    assert_eq!(opts, vec!["Eq. (8) read literally"]);
     app.scene
         .set("adhesion.modulus", "consistent")
         .expect("set");
@@ -524,24 +560,62 @@ fn toggling_experiments_changes_the_chart() {
     assert_eq!(plot(&text(&screen(&app, 100, 30))), plot(&on));
 }
 
+/// Every page of the help at `w × h`, scrolled with PgDn from the top (the help stays open).
+fn help_pages(app: &mut App, w: u16, h: u16) -> String {
+    app.size = (w, h);
+    update(app, ch('?'));
+    let mut all = String::new();
+    let mut last = String::new();
+    for _ in 0..40 {
+        let s = text(&screen(app, w, h));
+        if s == last {
+            break;
+        }
+        all.push_str(&s);
+        last = s;
+        update(app, key(KeyCode::PageDown));
+        assert!(app.help, "PgDn scrolls, it does not close the help");
+    }
+    update(app, ch('x'));
+    assert!(!app.help, "another key closes the help");
+    all
+}
+
 #[test]
 fn help_names_new_keys_and_sources() {
     let mut app = app_on(Scene::default());
-    update(&mut app, ch('?'));
-    let s = text(&screen(&app, 100, 30));
+    let s = help_pages(&mut app, 100, 30);
     for needle in [
         "tidal appendix",
         "experiments",
         "open",
+        "undo / redo",
+        "pin this ε_N curve",
+        "Walton",
+        "linear shows sticking",
         "Bridges",
         "Heißelmann",
         "Hill",
     ] {
         assert!(s.contains(needle), "missing {needle}\n{s}");
     }
-    // Still whole at 80×24.
-    let s = text(&screen(&app, 80, 24));
-    assert!(s.contains("any key closes") && s.contains("Hill"), "{s}");
+    // Issue 12, item 8: at 80×24 and 60×20 every line is reachable (it was cut before "quit").
+    for (w, h) in [(80, 24), (60, 20)] {
+        let s = help_pages(&mut app, w, h);
+        for row in super::keymap::KEYMAP {
+            let head: String = row.does.chars().take(12).collect();
+            assert!(s.contains(&head), "{w}×{h}: missing '{}'\n{s}", row.does);
+        }
+        assert!(s.contains("quit") && s.contains("Hill"), "{w}×{h}\n{s}");
+        // The first page says how to scroll and that q quits.
+        update(&mut app, ch('?'));
+        let first = text(&screen(&app, w, h));
+        assert!(
+            first.contains("scroll") && first.contains("q quits"),
+            "{first}"
+        );
+        update(&mut app, ch('x'));
+    }
 }
 
 #[test]
@@ -849,4 +923,394 @@ fn stick_panel_tabulates_the_cores_thresholds_issue_15() {
     }
     update(&mut app, ch('v'));
     assert!(app.stick.is_none());
+}
+
+fn click(column: u16, row: u16) -> Event {
+    Event::Mouse(crossterm::event::MouseEvent {
+        kind: crossterm::event::MouseEventKind::Down(crossterm::event::MouseButton::Left),
+        column,
+        row,
+        modifiers: KeyModifiers::NONE,
+    })
+}
+
+fn wheel(up: bool, column: u16, row: u16) -> Event {
+    Event::Mouse(crossterm::event::MouseEvent {
+        kind: if up {
+            crossterm::event::MouseEventKind::ScrollUp
+        } else {
+            crossterm::event::MouseEventKind::ScrollDown
+        },
+        column,
+        row,
+        modifiers: KeyModifiers::NONE,
+    })
+}
+
+/// Rows of the ε_N chart's plot (the y axis line above the x axis), as drawn.
+fn chart_rows(app: &App, w: u16, h: u16) -> usize {
+    let t = screen(app, w, h);
+    let axis = app.drawn.get().chart_axis.expect("chart drawn");
+    let buf = t.backend().buffer();
+    (0..axis.axis_row)
+        .filter(|y| buf[(axis.x - 1, *y)].symbol() == "│")
+        .count()
+}
+
+/// Issue 12, item 8: at 80×24 the chart had 5 rows; the chart and the map now share the right-hand
+/// pane on short terminals (Tab switches), so the chart gets the whole height.
+#[test]
+fn chart_gets_a_useful_height_at_80x24_issue_12_item_8() {
+    let mut app = app_on(Scene::default());
+    app.size = (80, 24);
+    let rows = chart_rows(&app, 80, 24);
+    assert!(rows >= 14, "chart rows at 80×24: {rows}");
+    assert!(chart_rows(&app, 60, 20) >= 10);
+    // Tall terminals keep both views.
+    let s = text(&screen(&app, 120, 40));
+    assert!(s.contains("ε_N(g_N)") && s.contains("stick map"));
+    let s = text(&screen(&app, 80, 24));
+    assert!(s.contains("stick map: Tab"), "{s}");
+    // Tab: chart, then the map in the same pane, with every class in its legend.
+    update(&mut app, key(KeyCode::Tab));
+    update(&mut app, key(KeyCode::Tab));
+    assert_eq!(app.focus, Focus::Map);
+    let s = text(&screen(&app, 80, 24));
+    assert!(
+        s.contains("ε_N chart: Tab") && !s.contains("ε_N(g_N)"),
+        "{s}"
+    );
+    for c in rime_core::StickClass::ALL {
+        let label = super::view::map::legend_label(c, 17);
+        assert!(s.contains(&label), "missing {label}\n{s}");
+    }
+    // A click on the pane's title row switches back to the chart.
+    update(&mut app, click(50, 0));
+    assert_eq!(app.focus, Focus::Chart);
+    assert!(text(&screen(&app, 80, 24)).contains("ε_N(g_N)"));
+}
+
+/// Issue 12, item 6: every class explained in the legend and the help, the sliding gap marked as an
+/// artifact, and Walton's law one key (`W`) away.
+#[test]
+fn stick_classes_explained_gap_is_an_artifact_walton_one_key_issue_12_item_6() {
+    use rime_core::StickClass;
+    use rime_core::scene::SlidingLaw;
+    let mut app = app_on(Scene::default());
+    let s = text(&screen(&app, 120, 40));
+    assert!(s.contains("sliding gap: artifact"), "{s}");
+    let help = help_pages(&mut app, 100, 30);
+    for c in StickClass::ALL {
+        let (meaning, _) = super::view::help::class_meaning(c);
+        let head: String = meaning.chars().take(20).collect();
+        assert!(help.contains(&head), "help misses {c:?}\n{help}");
+    }
+    assert!(help.contains("an artifact of the printed law, not a regime"));
+    let gaps = |app: &App| {
+        let m = app.data.as_ref().and_then(|d| d.map.as_ref()).expect("map");
+        m.class
+            .iter()
+            .filter(|c| **c == StickClass::SlidingGap)
+            .count()
+    };
+    assert!(gaps(&app) > 0, "the default scene shows the gap");
+    update(&mut app, ch('W'));
+    settle(&mut app);
+    assert_eq!(
+        app.scene.friction.map(|f| f.sliding_law),
+        Some(SlidingLaw::Walton)
+    );
+    assert_eq!(gaps(&app), 0, "Walton's law has no gap");
+    update(&mut app, ch('W'));
+    assert_eq!(
+        app.scene.friction.map(|f| f.sliding_law),
+        Some(SlidingLaw::Paper)
+    );
+    // The readout at a gap cell says so.
+    settle(&mut app);
+    let m = app.data.as_ref().and_then(|d| d.map.clone()).expect("map");
+    let k = m
+        .class
+        .iter()
+        .position(|c| *c == StickClass::SlidingGap)
+        .expect("a gap cell");
+    app.map_cursor = (k / m.n(), k % m.n());
+    let s = text(&screen(&app, 120, 40));
+    assert!(s.contains("artifact of Eq. (23)"), "{s}");
+    // Without friction, W says why it does nothing.
+    select(&mut app, "friction");
+    update(&mut app, key(KeyCode::Enter));
+    update(&mut app, ch('W'));
+    assert_eq!(app.message.as_ref().map(|m| m.1), Some(Tone::Error));
+}
+
+/// Issue 12, item 9: a glossary, human labels, a labelled timing, the adhesion g_s note and the
+/// tidal warning inside Saturn.
+#[test]
+fn glossary_human_labels_timing_and_warnings_issue_12_item_9() {
+    let mut app = app_on(Preset::IceSticky.scene());
+    let s = text(&screen(&app, 100, 30));
+    for raw in ["force_zero", "as_printed", "zero_overlap"] {
+        assert!(!s.contains(raw), "raw enum name {raw} on screen\n{s}");
+    }
+    assert!(s.contains("force returns to zero"), "{s}");
+    assert!(s.contains("as printed"), "{s}");
+    assert!(s.contains("computed in 3 ms at fast"), "{s}");
+    let s = text(&screen(&app, 160, 40));
+    assert!(
+        s.contains("g_s adhesion") && s.contains("(a rebound speed)"),
+        "{s}"
+    );
+    let help = help_pages(&mut app, 100, 30);
+    for sym in [
+        "δ, δ(g)",
+        "tan ψ₀",
+        "g_s adhesion",
+        "ε_N",
+        "ε_T",
+        "g_N, g_T",
+    ] {
+        assert!(help.contains(sym), "glossary misses {sym}");
+    }
+    assert!(help.contains("a rebound speed (Eq. (15))"));
+    // Cycling a choice names it in words.
+    select(&mut app, "contact_end");
+    update(&mut app, key(KeyCode::Enter));
+    let msg = app.message.clone().expect("message").0;
+    assert!(msg.contains("overlap returns to zero"), "{msg}");
+    // The tidal view warns inside the planet.
+    update(&mut app, ch('t'));
+    assert!(!text(&screen(&app, 100, 30)).contains("inside Saturn"));
+    app.tidal_factor = 0.3;
+    let s = text(&screen(&app, 100, 30));
+    assert!(s.contains("inside Saturn"), "{s}");
+}
+
+/// Issue 12, item 10: undo/redo (a preset too), asking before overwriting the scene file and
+/// before quitting with unsaved edits.
+#[test]
+fn undo_redo_and_confirmations_issue_12_item_10() {
+    let dir = tmp_dir("undo");
+    let mut app = app_on(Scene::default());
+    app.out_dir = dir.clone();
+    let start = app.scene;
+    // A clean scene quits at once.
+    let mut clean = app.clone();
+    update(&mut clean, ch('q'));
+    assert!(clean.quit);
+    select(&mut app, "friction.coefficient");
+    update(&mut app, ch('l'));
+    let edited = app.scene;
+    assert_ne!(edited, start);
+    // p until a preset that is neither the start nor the edit (the first may be the default).
+    update(&mut app, ch('p'));
+    let mut presses = 1;
+    while app.scene == start || app.scene == edited {
+        update(&mut app, ch('p'));
+        presses += 1;
+    }
+    let preset = app.scene;
+    update(&mut app, ch('u'));
+    assert_ne!(app.scene, preset, "u undoes the preset");
+    for _ in 1..presses {
+        update(&mut app, ch('u'));
+    }
+    assert_eq!(app.scene, edited);
+    update(
+        &mut app,
+        Event::Key(KeyEvent::new(KeyCode::Char('z'), KeyModifiers::CONTROL)),
+    );
+    assert_eq!(app.scene, start);
+    update(&mut app, ch('U'));
+    assert_eq!(app.scene, edited);
+    for _ in 0..presses {
+        update(
+            &mut app,
+            Event::Key(KeyEvent::new(KeyCode::Char('y'), KeyModifiers::CONTROL)),
+        );
+    }
+    assert_eq!(app.scene, preset);
+    assert!(app.preset.is_some(), "redo restores the preset's name");
+    // q with unsaved edits asks; n stays.
+    update(&mut app, ch('q'));
+    assert!(!app.quit);
+    assert!(text(&screen(&app, 100, 30)).contains("quit anyway?"));
+    update(&mut app, ch('n'));
+    assert!(!app.quit && app.confirm.is_none());
+    update(&mut app, key(KeyCode::Esc));
+    assert!(app.confirm.is_some(), "Esc asks too");
+    update(&mut app, ch('n'));
+    // w over an existing file asks; n keeps it.
+    let file = dir.join("rime-scene.json");
+    std::fs::write(&file, "keep me").expect("write");
+    update(&mut app, ch('w'));
+    assert!(text(&screen(&app, 100, 30)).contains("exists: overwrite it?"));
+    update(&mut app, ch('n'));
+    assert_eq!(std::fs::read_to_string(&file).expect("read"), "keep me");
+    update(&mut app, ch('w'));
+    update(&mut app, ch('y'));
+    assert!(
+        std::fs::read_to_string(&file)
+            .expect("read")
+            .contains("grains")
+    );
+    // Saved: q quits at once.
+    update(&mut app, ch('q'));
+    assert!(app.quit);
+    // An edit after saving asks again; y quits.
+    let mut app2 = app_on(Scene::default());
+    select(&mut app2, "friction.coefficient");
+    update(&mut app2, ch('l'));
+    update(&mut app2, ch('q'));
+    update(&mut app2, ch('y'));
+    assert!(app2.quit);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 12, item 11: clicks focus a pane, select a parameter and place the cursors; `+` zooms in;
+/// the focused pane's border is thick and highlighted.
+#[test]
+fn mouse_clicks_focus_select_and_place_cursors_issue_12_item_11() {
+    let mut app = app_on(Preset::IceFrost.scene());
+    app.size = (100, 30);
+    let t = screen(&app, 100, 30);
+    let l = super::layout::layout(100, 30).expect("layout");
+    // The focused panel's border is thick and cyan; the chart's is thin.
+    let buf = t.backend().buffer();
+    let edge = &buf[(l.panel.right() - 1, 5)];
+    assert_eq!(edge.symbol(), "┃");
+    assert_eq!(edge.fg, ratatui::style::Color::Cyan);
+    assert_eq!(buf[(l.chart.right() - 1, l.chart.y)].symbol(), "─");
+    // Click the fifth parameter row.
+    let (y0, offset) = app.drawn.get().panel_rows.expect("panel drawn");
+    update(&mut app, click(3, y0 + 4));
+    assert_eq!(app.selected, offset + 4);
+    // Click in the chart at a column: focus and cursor there.
+    let axis = app.drawn.get().chart_axis.expect("chart drawn");
+    let col = axis.x + axis.width / 4;
+    update(&mut app, click(col, axis.axis_row - 2));
+    assert_eq!(app.focus, Focus::Chart);
+    let t = screen(&app, 100, 30);
+    assert_eq!(
+        t.backend().buffer()[(l.chart.right() - 1, l.chart.y)].symbol(),
+        "━"
+    );
+    let g = app.data.as_ref().expect("data").g[app.cursor].log10();
+    let want =
+        axis.lo + (f64::from(col - axis.x) + 0.5) / f64::from(axis.width) * (axis.hi - axis.lo);
+    assert!((g - want).abs() < 0.05, "cursor at {g}, clicked {want}");
+    // Click in the map: focus and map cursor there.
+    let r = app.drawn.get().map_plot.expect("map drawn");
+    update(&mut app, click(r.x, r.y + r.height - 1));
+    assert_eq!(app.focus, Focus::Map);
+    assert_eq!(app.map_cursor, (0, 0));
+    update(&mut app, click(r.x + r.width - 1, r.y));
+    assert_eq!(app.map_cursor, (80, 80));
+    // `+` zooms the map in (range halves), `-` out.
+    settle(&mut app);
+    let before = app.data.as_ref().expect("data").map_max;
+    update(&mut app, ch('+'));
+    assert!((app.map_max.expect("set") - before / 2.0).abs() < 1e-12 * before);
+    update(&mut app, ch('-'));
+    assert!((app.map_max.expect("set") - before).abs() < 1e-12 * before);
+}
+
+/// Issue 12, item 4: the ε_N axis toggles linear/log (`y`); the speed range zooms and pans (keys
+/// and the wheel on the axis) and lives in the request.
+#[test]
+fn y_axis_toggle_and_speed_zoom_pan_issue_12_item_4() {
+    let mut app = app_on(Preset::IceFrost.scene());
+    app.size = (100, 30);
+    assert!(app.y_log);
+    update(&mut app, ch('y'));
+    assert!(!app.y_log);
+    let s = text(&screen(&app, 100, 30));
+    assert!(s.contains("0.5") && s.contains("linear"), "{s}");
+    // Sticking (below g_s of the layer) sits on the ε_N = 0 line: the bottom row of the plot has
+    // Braille dots left of the marker.
+    let axis = app.drawn.get().chart_axis.expect("axis");
+    let t = screen(&app, 100, 30);
+    let bottom: String = (axis.x..axis.x + axis.width / 3)
+        .map(|x| {
+            t.backend().buffer()[(x, axis.axis_row - 1)]
+                .symbol()
+                .to_string()
+        })
+        .collect();
+    assert!(
+        bottom
+            .chars()
+            .any(|c| ('\u{2801}'..='\u{28ff}').contains(&c)),
+        "{bottom}"
+    );
+    // Zoom in around the cursor: half the decades, in the request, computed.
+    app.focus = Focus::Chart;
+    let (lo, hi) = super::compute::auto_speeds(app.data.as_ref().expect("data"));
+    let g = app.data.as_ref().expect("data").g[app.cursor];
+    update(&mut app, ch('+'));
+    let (zlo, zhi) = app.speeds.expect("zoomed");
+    assert!(((zhi / zlo).log10() - (hi / lo).log10() / 2.0).abs() < 1e-9);
+    assert_eq!(
+        app.pending.as_ref().and_then(|r| r.speeds),
+        Some((zlo, zhi))
+    );
+    settle(&mut app);
+    let d = app.data.as_ref().expect("data");
+    assert!((d.g[0] / zlo - 1.0).abs() < 1e-9 && (d.g[d.g.len() - 1] / zhi - 1.0).abs() < 1e-9);
+    assert!(
+        (d.g[app.cursor] / g).log10().abs() < 0.05,
+        "the cursor stays on its speed"
+    );
+    // Pan right by a quarter.
+    update(&mut app, ch('.'));
+    let (plo, phi) = app.speeds.expect("panned");
+    let q = (zhi / zlo).log10() / 4.0;
+    assert!(((plo / zlo).log10() - q).abs() < 1e-9 && ((phi / zhi).log10() - q).abs() < 1e-9);
+    settle(&mut app);
+    // The wheel on the axis zooms; elsewhere it moves the cursor.
+    let axis = app.drawn.get().chart_axis.expect("axis");
+    let _ = screen(&app, 100, 30);
+    let before = app.speeds;
+    update(
+        &mut app,
+        wheel(true, axis.x + axis.width / 2, axis.label_row),
+    );
+    assert_ne!(app.speeds, before);
+    // 0: automatic again.
+    update(&mut app, ch('0'));
+    assert_eq!(app.speeds, None);
+    settle(&mut app);
+    assert_eq!(
+        super::compute::auto_speeds(app.data.as_ref().expect("data")),
+        (lo, hi)
+    );
+}
+
+/// Issue 12, item 20: a pinned curve stays as the scene changes, drawn dashed with a legend entry;
+/// the family's legend says what it is.
+#[test]
+fn pinned_curve_and_family_meaning_issue_12_item_20() {
+    let mut app = app_on(Scene::default());
+    let s = text(&screen(&app, 120, 40));
+    assert!(s.contains("A varied around this scene"), "{s}");
+    update(&mut app, ch('P'));
+    let pinned = app.pinned.clone().expect("pinned");
+    select(&mut app, "bulk.damping.time");
+    update(&mut app, ch('l'));
+    update(&mut app, ch('l'));
+    settle(&mut app);
+    assert_eq!(app.pinned.as_ref(), Some(&pinned), "the pin survives edits");
+    let s = text(&screen(&app, 120, 40));
+    assert!(s.contains("pinned (A 100 µs)"), "{s}");
+    // Dashed: the pinned colour appears in several separate runs on the plot.
+    let t = screen(&app, 120, 40);
+    let axis = app.drawn.get().chart_axis.expect("axis");
+    let buf = t.backend().buffer();
+    let white = (0..axis.axis_row)
+        .flat_map(|y| (axis.x..axis.x + axis.width).map(move |x| (x, y)))
+        .filter(|p| buf[*p].fg == ratatui::style::Color::White && buf[*p].symbol() != " ")
+        .count();
+    assert!(white > 10, "pinned curve drawn ({white} cells)");
+    update(&mut app, ch('P'));
+    assert!(app.pinned.is_none());
 }

@@ -7,6 +7,10 @@
 use rime_core::Scene;
 use rime_core::tidal::{Tidal, TidalInput, tidal};
 
+/// Saturn's equatorial radius \[m\] (60 268 km at 1 bar): a planet distance below it is inside
+/// the planet.
+pub const SATURN_RADIUS: f64 = 6.0268e7;
+
 /// The paper's γ, used when the scene has no adhesion \[J/m²\].
 pub const PAPER_GAMMA: f64 = 0.1;
 
@@ -19,6 +23,8 @@ pub struct TidalView {
     pub gamma_from_paper: bool,
     /// Whether the inputs are exactly the paper's example (then the printed numbers compare).
     pub paper_inputs: bool,
+    /// Whether the planet distance is inside Saturn (below [`SATURN_RADIUS`]).
+    pub inside_planet: bool,
     /// Eq. (A.1)–(A.7), or why they cannot be evaluated.
     pub result: Result<Tidal, String>,
 }
@@ -41,6 +47,7 @@ pub fn view(scene: &Scene, factor: f64) -> TidalView {
         input,
         gamma_from_paper,
         paper_inputs: input == paper,
+        inside_planet: input.distance < SATURN_RADIUS,
         result: tidal(&input).map_err(|e| e.to_string()),
     }
 }

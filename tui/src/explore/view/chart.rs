@@ -3,7 +3,7 @@
 
 use super::{
     BAND_COLORS, BAND_SHORT, BAND_TINY, BRIDGES, CLEAN, CURRENT, FAMILY_COLORS, GS_ADHESION,
-    GS_LAYER, OVERLAY_COLORS, nb,
+    GS_LAYER, OVERLAY_COLORS, PINNED, nb,
 };
 use crate::explore::compute::{FrameData, Sweep};
 use crate::explore::format::{decade, num3, qty, qty3, sig};
@@ -40,12 +40,72 @@ fn labels(lo: i32, hi: i32, step: i32, unit: &str) -> Vec<Span<'static>> {
     out
 }
 
-fn log_points(g: &[f64], eps: impl Iterator<Item = f64>, y_lo: f64) -> Vec<(f64, f64)> {
+/// How the ε_N axis maps a value: log10 (values below `lo` dropped) or linear (0 … 1, sticking
+/// on the bottom line).
+#[derive(Debug, Clone, Copy)]
+struct YScale {
+    log: bool,
+    lo: f64,
+}
+
+impl YScale {
+    fn y(self, e: f64) -> Option<f64> {
+        if !e.is_finite() {
+            return None;
+        }
+        if self.log {
+            (e > 0.0 && e.log10() >= self.lo).then(|| e.log10())
+        } else {
+            (e >= 0.0).then_some(e.min(1.0))
+        }
+    }
+}
+
+fn log_points(g: &[f64], eps: impl Iterator<Item = f64>, y: YScale) -> Vec<(f64, f64)> {
     g.iter()
         .zip(eps)
-        .filter(|(_, e)| e.is_finite() && *e > 0.0 && e.log10() >= y_lo)
-        .map(|(g, e)| (g.log10(), e.log10()))
+        .filter_map(|(g, e)| Some((g.log10(), y.y(e)?)))
         .collect()
+}
+
+/// Rows that `spans` take when word-wrapped at `width` (breaks at plain spaces only; non-breaking
+/// spaces keep a value with its unit).
+fn wrapped_rows(spans: &[Span], width: usize) -> usize {
+    let text: String = spans.iter().map(|s| s.content.as_ref()).collect();
+    let mut rows = 1;
+    let mut used = 0;
+    for word in text.split(' ').filter(|w| !w.is_empty()) {
+        let w = word.chars().count();
+        if used > 0 && used + 1 + w > width {
+            rows += 1;
+            used = 0;
+        }
+        used += if used > 0 { 1 + w } else { w };
+        while used > width {
+            rows += 1;
+            used -= width;
+        }
+    }
+    rows
+}
+
+/// A polyline cut into dashes (runs of `run` points, every other run left out).
+fn dashes(pts: &[(f64, f64)], run: usize) -> Vec<Vec<(f64, f64)>> {
+    pts.chunks(run.max(2))
+        .step_by(2)
+        .map(<[(f64, f64)]>::to_vec)
+        .collect()
+}
+
+/// A tick label for `m`·10^`k` (m = 1, 2, 5): plain between 0.01 and 1000, else `2e-5`.
+fn tick_label(m: f64, k: i32) -> String {
+    if (-2..=3).contains(&k) {
+        sig(m * 10f64.powi(k), 2)
+    } else if m == 1.0 {
+        decade(k)
+    } else {
+        format!("{m}e{k}")
+    }
 }
 
 /// Describes ε_N at one point for readouts: `0.3602 rebound`, `0 stuck in layer`.
@@ -71,39 +131,56 @@ pub struct ChartView<'a> {
     pub experiments: bool,
     /// Whether the chart has the focus.
     pub focused: bool,
+    /// Whether the ε_N axis is logarithmic (else linear, 0 … 1).
+    pub y_log: bool,
+    /// A pinned curve to draw dashed.
+    pub pinned: Option<&'a crate::explore::app::Pinned>,
+    /// Whether the chart shares its pane with the stick map (the title says how to switch).
+    pub shared: bool,
 }
 
-/// Draws the ε_N chart: legend, curves, markers, experiments, cursor and readout.
-pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
+/// Draws the ε_N chart: legend, curves, markers, experiments, cursor and readout. Returns the
+/// speed axis as drawn (for mouse clicks).
+pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) -> Option<LogAxis> {
     let sweep = app.sweep;
     let focus = app.focused;
     let title_name = Span::styled(
         " ε_N(g_N) ",
-        Style::new().add_modifier(Modifier::BOLD).fg(if focus {
-            Color::White
-        } else {
-            Color::Gray
-        }),
+        Style::new()
+            .add_modifier(Modifier::BOLD)
+            .fg(if focus { Color::Cyan } else { Color::Gray }),
     );
-    let title = Line::from(vec![
+    let switch = Span::styled("│ stick map: Tab ", Style::new().fg(Color::Yellow));
+    let axis_word = if app.y_log { "log" } else { "linear" };
+    let mut title_spans = vec![
         title_name.clone(),
         Span::styled(
-            format!("normal restitution · family over {} ", sweep.symbol),
+            if app.shared {
+                format!("{axis_word} axis ")
+            } else {
+                format!("normal restitution · {axis_word} axis ")
+            },
             Style::new().fg(Color::Gray),
         ),
-    ]);
+    ];
+    if app.shared {
+        title_spans.push(switch.clone());
+    }
+    let title = Line::from(title_spans);
+    let (kind, border_style) = super::pane_border(focus);
     let block = Block::new()
         .borders(Borders::TOP | Borders::BOTTOM)
-        .border_style(Style::new().fg(if focus { Color::White } else { Color::DarkGray }))
+        .border_type(kind)
+        .border_style(border_style)
         .title_bottom(chart_readout(app.data, app.cursor));
     let inner = block.inner(area);
     let Some(data) = app.data else {
         frame.render_widget(block.title(title), area);
         frame.render_widget(Paragraph::new("computing…"), inner);
-        return;
+        return None;
     };
     if inner.height < 4 {
-        return;
+        return None;
     }
     // Legend line.
     let mut legend: Vec<Span> = Vec::new();
@@ -117,6 +194,12 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
         nb("━ this scene".to_string())
     };
     legend.push(Span::styled(this + " ", Style::new().fg(CURRENT)));
+    if let Some(p) = app.pinned {
+        legend.push(Span::styled(
+            nb(format!("┅ pinned ({}) ", p.label)),
+            Style::new().fg(PINNED),
+        ));
+    }
     // The comparisons first: with them on, the legend's second row may not hold everything.
     for (k, o) in data.overlays.iter().enumerate() {
         let key = o.overlay.key();
@@ -156,8 +239,12 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
             Style::new().fg(CLEAN),
         ));
     }
+    // What the family is: this scene with one parameter varied around its value (the long words
+    // where the legend's two rows hold them, decided below).
+    let mut family_label = None;
     if !data.family.is_empty() {
-        legend.push(Span::raw(format!("{}:", sweep.symbol)));
+        family_label = Some(legend.len());
+        legend.push(Span::raw(nb(format!("{} varied:", sweep.symbol))));
         for (k, m) in data.family.iter().enumerate() {
             legend.push(Span::styled(
                 format!(" {}", qty(m.value, sweep.unit).replace(' ', "\u{a0}")),
@@ -178,8 +265,9 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
         }
         if let Some(a) = c.adhesion {
             legend.push(Span::styled(
+                // Eq. (15)'s g_s is a rebound speed drawn on the impact axis (the help explains).
                 format!(
-                    "┊\u{a0}g_s\u{a0}adhesion\u{a0}{} ",
+                    "┊\u{a0}g_s\u{a0}adhesion\u{a0}{}\u{a0}(a\u{a0}rebound\u{a0}speed) ",
                     nb(qty(a.critical_velocity, "m/s"))
                 ),
                 Style::new().fg(GS_ADHESION),
@@ -190,39 +278,63 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
     // over its own measured speeds, with the scene's score.
     let experiments = app.experiments && data.overlays.is_empty();
     let bands = rime_core::figure::experiments::bands(0);
-    // The experiments' legend: long names where two legend rows hold them, else short ones (the
-    // help names them), else in the chart's title.
+    // The legend may take three rows on a tall chart, two on a medium one. The experiments' legend:
+    // long names where the rows hold them, else short ones (the help names them), else in the
+    // chart's title.
+    let max_rows = if inner.height >= 18 && !data.overlays.is_empty() {
+        // One comparison per row (measured laws carry temperature, geometry and score).
+        2 + data.overlays.len().min(5)
+    } else if inner.height >= 16 {
+        3
+    } else if inner.height >= 8 {
+        2
+    } else {
+        1
+    };
+    let width = inner.width as usize;
     let mut experiments_in_title = false;
     if experiments {
-        let used: usize = legend.iter().map(|s| s.content.chars().count()).sum();
-        // Word wrapping wastes a few cells per row.
-        let room = (2 * inner.width as usize).saturating_sub(8);
-        let long = used + 40 <= room;
-        if long || used + 16 <= room {
-            legend.extend(experiment_legend(long));
+        let with = |long: bool| {
+            let mut l = legend.clone();
+            l.extend(experiment_legend(long));
+            wrapped_rows(&l, width)
+        };
+        if with(true) <= max_rows {
+            legend.extend(experiment_legend(true));
+        } else if with(false) <= max_rows {
+            legend.extend(experiment_legend(false));
         } else {
             experiments_in_title = true;
+        }
+    }
+    if let Some(k) = family_label {
+        let mut l = legend.clone();
+        l[k] = Span::raw(nb(format!("{} varied around this scene:", sweep.symbol)));
+        if wrapped_rows(&l, width) <= max_rows {
+            legend = l;
         }
     }
     if experiments_in_title {
         let mut spans = vec![
             title_name,
             Span::styled(
-                format!("· over {} ", sweep.symbol),
+                format!(
+                    "· over {}{} ",
+                    sweep.symbol,
+                    if app.y_log { "" } else { " · linear" }
+                ),
                 Style::new().fg(Color::Gray),
             ),
         ];
         spans.extend(experiment_legend(false));
+        if app.shared {
+            spans.push(switch);
+        }
         frame.render_widget(block.title(Line::from(spans)), area);
     } else {
         frame.render_widget(block.title(title), area);
     }
-    let legend_w: usize = legend.iter().map(|s| s.content.chars().count()).sum();
-    let legend_h = if legend_w > inner.width as usize && inner.height >= 8 {
-        2
-    } else {
-        1
-    };
+    let legend_h = wrapped_rows(&legend, width).clamp(1, max_rows) as u16;
     frame.render_widget(
         Paragraph::new(Line::from(legend)).wrap(Wrap { trim: true }),
         Rect::new(inner.x, inner.y, inner.width, legend_h),
@@ -242,15 +354,16 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
                 .wrap(Wrap { trim: true }),
             plot,
         );
-        return;
+        return None;
     }
-    // Axis ranges (log10).
+    // Axis ranges (log10): the speeds computed, exactly (decades unless zoomed or panned).
     let (Some(g0), Some(g1)) = (data.g.first(), data.g.last()) else {
-        return;
+        return None;
     };
-    let (x_lo, x_hi, x_step) = decade_axis(
-        g0.log10().floor() as i32,
-        g1.log10().ceil() as i32,
+    let (x_lo_f, x_hi_f) = (g0.log10(), g1.log10());
+    let (_, _, x_step) = decade_axis(
+        (x_lo_f + 1e-9).floor() as i32,
+        (x_hi_f - 1e-9).ceil() as i32,
         if plot.width >= 36 { 5 } else { 4 },
     );
     let mut min_eps = f64::INFINITY;
@@ -277,22 +390,43 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
         -1
     };
     let (y_lo, y_hi, y_step) = decade_axis(y_floor, 0, if plot.height >= 12 { 5 } else { 3 });
-    let y_lo_f = f64::from(y_lo);
-    let current_pts = log_points(
-        &data.g,
-        data.current.iter().map(|n| n.map_or(f64::NAN, |n| n.eps)),
-        y_lo_f,
-    );
+    let (y_lo_f, y_hi_f) = if app.y_log {
+        (f64::from(y_lo), f64::from(y_hi))
+    } else {
+        (0.0, 1.0)
+    };
+    let ys = YScale {
+        log: app.y_log,
+        lo: y_lo_f,
+    };
+    let stuck_is_zero = |n: Option<rime_core::Normal>| {
+        n.map_or(f64::NAN, |n| match n.status {
+            Status::StuckInLayer | Status::StuckByAdhesion => 0.0,
+            _ => n.eps,
+        })
+    };
+    let current_pts = log_points(&data.g, data.current.iter().map(|n| stuck_is_zero(*n)), ys);
     let clean_pts = data
         .clean
         .as_ref()
-        .map(|c| log_points(&data.g, c.iter().copied(), y_lo_f));
+        .map(|c| log_points(&data.g, c.iter().copied(), ys));
     let family_pts: Vec<Vec<(f64, f64)>> = data
         .family
         .iter()
-        .map(|m| log_points(&data.g, m.eps.iter().copied(), y_lo_f))
+        .map(|m| log_points(&data.g, m.eps.iter().copied(), ys))
         .collect();
-    let vline = |x: f64| vec![(x, y_lo_f), (x, f64::from(y_hi))];
+    // The pinned curve, where its speeds are on this axis, in dashes.
+    let pinned_pts: Vec<Vec<(f64, f64)>> = app
+        .pinned
+        .map(|p| {
+            let pts: Vec<(f64, f64)> = log_points(&p.g, p.eps.iter().copied(), ys)
+                .into_iter()
+                .filter(|(x, _)| (x_lo_f..=x_hi_f).contains(x))
+                .collect();
+            dashes(&pts, 6)
+        })
+        .unwrap_or_default();
+    let vline = |x: f64| vec![(x, y_lo_f), (x, y_hi_f)];
     let markers: Vec<(Vec<(f64, f64)>, Color)> = data
         .contact
         .iter()
@@ -307,17 +441,28 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
         .map(|(g, c)| (vline(g.log10()), c))
         .collect();
     let cursor_pts = data.g.get(app.cursor).map(|g| vline(g.log10()));
-    let y_hi_f = f64::from(y_hi);
-    let clip_y = |e: f64| e.log10().clamp(y_lo_f, y_hi_f);
+    let clip_y = |e: f64| {
+        if app.y_log {
+            e.log10().clamp(y_lo_f, y_hi_f)
+        } else {
+            e.clamp(0.0, 1.0)
+        }
+    };
+    // The core's one description of the law: only over the speeds it was measured at, unclamped
+    // (it stays below 1 there), drawn beneath the model's curves.
+    let (g_first, g_last) = (
+        data.g.first().copied().unwrap_or(1e-7),
+        data.g.last().copied().unwrap_or(10.0),
+    );
     let bridges_pts: Vec<(f64, f64)> = if experiments {
-        data.g
-            .iter()
-            .map(|&g| {
-                let e = rime_core::fit::BRIDGES_1984.eval(g).min(1.0);
-                (g.log10(), e.log10())
+        rime_core::figure::experiments::bridges_measured(g_first, g_last, 0)
+            .map(|s| {
+                s.points
+                    .into_iter()
+                    .filter_map(|(g, e)| Some((g.log10(), ys.y(e)?)))
+                    .collect()
             })
-            .filter(|(_, e)| e.is_finite() && *e >= y_lo_f)
-            .collect()
+            .unwrap_or_default()
     } else {
         Vec::new()
     };
@@ -334,7 +479,7 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
                 color,
             ));
         } else {
-            overlay_pts.push((log_points(&o.g, o.eps.iter().copied(), y_lo_f), color));
+            overlay_pts.push((log_points(&o.g, o.eps.iter().copied(), ys), color));
         }
         for (_, g) in &o.speeds {
             if g.is_finite() && *g > 0.0 {
@@ -368,18 +513,30 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
     }
     let fg = |c: Color| Style::new().fg(c);
     let mut datasets = Vec::new();
+    // Measured laws first, beneath every model curve (the core's figure description draws them in
+    // the same order): the Bridges law and the compared laws. The boxes are outlines: drawn beneath,
+    // a Braille cell a curve passes through would hide them whole, so they go above the family and
+    // below this scene's curve.
+    if !bridges_pts.is_empty() {
+        datasets.push(line(&bridges_pts, fg(BRIDGES)));
+    }
+    for (pts, color) in &overlay_pts {
+        datasets.push(line(pts, fg(*color)));
+    }
     for (k, pts) in family_pts.iter().enumerate() {
         datasets.push(line(pts, fg(FAMILY_COLORS[k % FAMILY_COLORS.len()])));
     }
     if let Some(pts) = &clean_pts {
         datasets.push(line(pts, fg(CLEAN)));
     }
-    // The experiments above the family (else the curves hide them), below this scene's curve.
-    if !bridges_pts.is_empty() {
-        datasets.push(line(&bridges_pts, fg(BRIDGES)));
-    }
-    for (pts, color) in band_pts.iter().chain(&overlay_pts).chain(&markers) {
+    for (pts, color) in &band_pts {
         datasets.push(line(pts, fg(*color)));
+    }
+    for (pts, color) in &markers {
+        datasets.push(line(pts, fg(*color)));
+    }
+    for pts in &pinned_pts {
+        datasets.push(line(pts, fg(PINNED)));
     }
     if let Some(pts) = &cursor_pts {
         datasets.push(line(pts, fg(Color::White)));
@@ -389,13 +546,19 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
         Style::new().fg(CURRENT).add_modifier(Modifier::BOLD),
     ));
     let axis_style = Style::new().fg(Color::Gray);
-    let y_labels = labels(y_lo, y_hi, y_step, "");
+    let y_labels = if app.y_log {
+        labels(y_lo, y_hi, y_step, "")
+    } else if plot.height >= 12 {
+        ["0", "0.25", "0.5", "0.75", "1"].map(Span::raw).to_vec()
+    } else {
+        ["0", "0.5", "1"].map(Span::raw).to_vec()
+    };
     let chart = Chart::new(datasets)
         .x_axis(
             Axis::default()
                 .title("g_N m/s")
                 .style(axis_style)
-                .bounds([f64::from(x_lo), f64::from(x_hi)])
+                .bounds([x_lo_f, x_hi_f])
                 // Placeholders that reserve the label row; `log_ticks` writes the labels at their
                 // values (ratatui spreads labels evenly, which puts them up to 0.4 decade off).
                 .labels(vec![Span::raw(""), Span::raw("")]),
@@ -404,13 +567,13 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
             Axis::default()
                 .title("ε_N")
                 .style(axis_style)
-                .bounds([y_lo_f, f64::from(y_hi)])
+                .bounds([y_lo_f, y_hi_f])
                 .labels(y_labels.clone()),
         )
         .legend_position(None);
     let y_label_w = y_labels.iter().map(|l| l.width() as u16).max().unwrap_or(0);
     frame.render_widget(chart, plot);
-    let axis = LogAxis::under(plot, y_label_w, f64::from(x_lo), f64::from(x_hi));
+    let axis = LogAxis::under(plot, y_label_w, x_lo_f, x_hi_f);
     log_ticks(frame.buffer_mut(), &axis, x_step, axis_style);
     if current_pts.is_empty() {
         let msg = match data.current.iter().flatten().next().map(|n| n.status) {
@@ -429,6 +592,7 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) {
             ),
         );
     }
+    Some(axis)
 }
 
 /// Legend entries of the Bridges law and the experiments' boxes (long or short names).
@@ -546,8 +710,11 @@ impl LogAxis {
 /// Major ticks and labels at every `step`-th decade, minor ticks at 2…9 × 10^k (at 2 and 5 when a
 /// decade is narrow, none when it is very narrow), each where its value is drawn.
 fn log_ticks(buf: &mut ratatui::buffer::Buffer, axis: &LogAxis, step: i32, style: Style) {
-    let (lo, hi) = (axis.lo.round() as i32, axis.hi.round() as i32);
-    let decade_w = f64::from(axis.width) / f64::from((hi - lo).max(1));
+    let (lo, hi) = (
+        (axis.lo - 1e-9).floor() as i32,
+        (axis.hi + 1e-9).ceil() as i32,
+    );
+    let decade_w = f64::from(axis.width) / (axis.hi - axis.lo).max(1e-3);
     let minors: &[f64] = if decade_w >= 12.0 {
         &[2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]
     } else if decade_w >= 5.0 {
@@ -580,18 +747,40 @@ fn log_ticks(buf: &mut ratatui::buffer::Buffer, axis: &LogAxis, step: i32, style
     let step = (1..step)
         .find(|s| decade_w * f64::from(*s) >= 6.0)
         .unwrap_or(step);
-    let mut free_from = axis.left;
+    let mut taken: Vec<(u16, u16)> = Vec::new();
+    let free = |taken: &[(u16, u16)], start: u16, w: u16| {
+        start >= axis.left
+            && start + w <= right
+            && taken.iter().all(|(a, b)| start + w < *a || start > *b)
+    };
     let mut k = hi - (hi - lo) / step * step;
     while k <= hi {
         let text = decade(k);
         let w = text.chars().count() as u16;
         if let Some(c) = axis.column(f64::from(k)) {
             let start = c.saturating_sub(w / 2);
-            if start >= free_from && start + w <= right {
+            if free(&taken, start, w) {
                 buf.set_string(start, axis.label_row, &text, style);
-                free_from = start + w + 1;
+                taken.push((start, start + w));
             }
         }
         k += step;
+    }
+    // Zoomed in to a few decades or less: label 2× and 5× too, each at its value, where they fit.
+    if axis.hi - axis.lo < 3.0 {
+        for k in lo..=hi {
+            for m in [2.0, 5.0] {
+                let Some(c) = axis.column(f64::from(k) + f64::log10(m)) else {
+                    continue;
+                };
+                let text = tick_label(m, k);
+                let w = text.chars().count() as u16;
+                let start = c.saturating_sub(w / 2);
+                if free(&taken, start, w) {
+                    buf.set_string(start, axis.label_row, &text, style.fg(Color::DarkGray));
+                    taken.push((start, start + w));
+                }
+            }
+        }
     }
 }

@@ -1,55 +1,285 @@
-//! The `?` overlay: every key (from the keymap table) and the sources of the experimental context.
+//! The `?` overlay: every key (from the keymap table), what each stick-map class means, a glossary
+//! of the symbols on screen, and the sources of the experimental context. It scrolls (↑↓, PgUp/PgDn,
+//! Home/End, the wheel) when it is taller than the terminal, so every line is reachable at 60×20.
 
 use crate::explore::keymap::KEYMAP;
 use ratatui::Frame;
 use ratatui::layout::Rect;
-use ratatui::style::{Color, Style};
+use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Clear, Paragraph, Wrap};
+use ratatui::widgets::{Block, Clear, Paragraph};
+use rime_core::StickClass;
 
 /// Sources of the experimental context and the tidal calculator, shown in the help.
 pub const SOURCES: &str = "B84 Bridges et al. 1984: ε = 0.32 (v/1 cm/s)^−0.234 · \
 H10 Heißelmann et al. 2010: 6–22 cm/s · H15 Hill et al. 2015: 0.27–0.51 m/s · \
 citations: docs/physics.md";
 
-/// Draws the help overlay centred in `area`.
-pub fn help(frame: &mut Frame, area: Rect) {
-    let w = 78.min(area.width);
-    let inner_w = w.saturating_sub(2).max(1) as usize;
-    let source_rows = SOURCES.chars().count().div_ceil(inner_w) as u16 + 1;
-    let h = (KEYMAP.len() as u16 + 3 + source_rows).min(area.height);
-    let r = Rect::new(
-        area.x + (area.width - w) / 2,
-        area.y + (area.height - h) / 2,
-        w,
-        h,
-    );
-    let mut lines: Vec<Line> = KEYMAP
-        .iter()
-        .map(|row| {
+/// The symbols on screen and what they mean.
+pub const GLOSSARY: &[(&str, &str)] = &[
+    (
+        "g_N, g_T",
+        "normal and tangential impact speed: the grains' relative speed along and across the line of centres [m/s]",
+    ),
+    (
+        "ε_N",
+        "normal restitution −g'_N/g_N: rebound over impact speed; 0 = the grains stick",
+    ),
+    (
+        "ε_T",
+        "tangential restitution g'_T/g_T, −1 … 1; negative: the tangential motion reverses",
+    ),
+    (
+        "δ, δ(g)",
+        "dimensionless damping A α^(2/5) g^(1/5) of one collision, at the cursor's speed g; large δ: overdamped",
+    ),
+    (
+        "tan ψ₀",
+        "μ/κ (Eq. (25)): impacts with g_T/g_N above it slide, below it roll",
+    ),
+    (
+        "g_s layer",
+        "impact speed below which the soft layer stops the grains (Eq. (10)); sticking left of the marker",
+    ),
+    (
+        "g_s adhesion",
+        "a rebound speed (Eq. (15)): the grains stick when their rebound speed without adhesion, ε_N·g_N, is below it; the chart draws it at g_N = g_s on the impact axis, and sticking reaches up to where ε_N·g_N = g_s, right of the marker",
+    ),
+    (
+        "A",
+        "damping time of the viscoelastic bulk (Eq. (4)) [s]; η₁, η₂ give it when set",
+    ),
+    (
+        "R_eff, m_eff",
+        "reduced radius R₁R₂/(R₁+R₂) and reduced mass of the pair",
+    ),
+    ("t_c", "contact duration of one collision"),
+    (
+        "η*, D",
+        "viscosity and thickness of the soft surface layer (frost, dust; Eq. (6)–(10))",
+    ),
+    (
+        "γ",
+        "surface energy of adhesion (JKR, Eq. (11)–(17)) [J/m²]",
+    ),
+    (
+        "μ, κ",
+        "friction coefficient and reduced moment of inertia (2/7 for solid spheres)",
+    ),
+    (
+        "family",
+        "the same scene with one parameter (s chooses it) varied around its value",
+    ),
+    ("clean surface", "this scene without layer and adhesion"),
+    (
+        "pinned",
+        "a curve kept by P, drawn dashed, to compare with later edits",
+    ),
+    (
+        "computed in",
+        "wall time of the last frame at the accuracy level shown (a: next level)",
+    ),
+];
+
+/// What each stick-map class means, and whether it is an artifact of the printed law rather than
+/// a physical regime.
+pub fn class_meaning(c: StickClass) -> (&'static str, bool) {
+    match c {
+        StickClass::Rolling => (
+            "rolling (ψ ≤ ψ₀): the contact point sticks; the tangential motion reverses, ε_T = −ε_N(g_T)",
+            false,
+        ),
+        StickClass::Sliding => (
+            "sliding (ψ > ψ₀): the grains slide over each other; ε_T from the sliding law",
+            false,
+        ),
+        StickClass::RollingStop => (
+            "rolling stop: rolling with ε_N(g_T) = 0; the tangential motion stops, the normal one rebounds",
+            false,
+        ),
+        StickClass::SlidingGap => (
+            "sliding gap: an artifact of the printed law, not a regime; Eq. (23)'s radicand is negative, ε_T clamped to 0 (W: Walton's law has no gap)",
+            true,
+        ),
+        StickClass::Aggregation => (
+            "aggregation: ε_N = 0 and ε_T = 0; both motions stop, the grains stick together",
+            false,
+        ),
+        StickClass::NormalStickOnly => (
+            "normal stick only: ε_N = 0 but ε_T ≠ 0; the normal motion stops, the tangential one goes on",
+            false,
+        ),
+        StickClass::Undefined => ("undefined: g_N = g_T = 0, no collision", false),
+    }
+}
+
+/// Splits `text` into lines of at most `width` characters at spaces.
+fn wrap(text: &str, width: usize) -> Vec<String> {
+    let width = width.max(8);
+    let mut out = Vec::new();
+    let mut line = String::new();
+    for word in text.split(' ') {
+        let (lw, ww) = (line.chars().count(), word.chars().count());
+        if lw > 0 && lw + 1 + ww > width {
+            out.push(std::mem::take(&mut line));
+        }
+        if !line.is_empty() {
+            line.push(' ');
+        }
+        line.push_str(word);
+        // A word longer than the line: cut it.
+        while line.chars().count() > width {
+            let head: String = line.chars().take(width).collect();
+            line = line.chars().skip(width).collect();
+            out.push(head);
+        }
+    }
+    if !line.is_empty() {
+        out.push(line);
+    }
+    out
+}
+
+/// A two-column entry (`name` right-aligned in `name_w`, `text` wrapped beside it with a hanging
+/// indent).
+fn entry(
+    name: &str,
+    name_style: Style,
+    text: &str,
+    text_style: Style,
+    name_w: usize,
+    inner_w: usize,
+) -> Vec<Line<'static>> {
+    let text_w = inner_w.saturating_sub(name_w + 2).max(8);
+    wrap(text, text_w)
+        .into_iter()
+        .enumerate()
+        .map(|(k, part)| {
+            let head = if k == 0 {
+                format!("{name:>name_w$}  ")
+            } else {
+                " ".repeat(name_w + 2)
+            };
             Line::from(vec![
-                Span::styled(
-                    format!("{:>18}  ", row.keys),
-                    Style::new().fg(Color::Yellow),
-                ),
-                Span::raw(row.does),
+                Span::styled(head, name_style),
+                Span::styled(part, text_style),
             ])
         })
+        .collect()
+}
+
+fn heading(text: &str) -> Line<'static> {
+    Line::from(Span::styled(
+        text.to_string(),
+        Style::new()
+            .fg(Color::White)
+            .add_modifier(Modifier::BOLD | Modifier::UNDERLINED),
+    ))
+}
+
+/// Every line of the help at inner width `inner_w`.
+pub fn content(inner_w: usize) -> Vec<Line<'static>> {
+    let keys = Style::new().fg(Color::Yellow);
+    let plain = Style::new();
+    let dim = Style::new().fg(Color::Gray);
+    let name_w = KEYMAP
+        .iter()
+        .map(|r| r.keys.chars().count())
+        .max()
+        .unwrap_or(10)
+        .min(inner_w / 2);
+    let mut lines = vec![heading("Keys")];
+    for row in KEYMAP {
+        lines.extend(entry(row.keys, keys, row.does, plain, name_w, inner_w));
+    }
+    lines.push(Line::default());
+    lines.push(heading("Stick map: the class of each (g_N, g_T)"));
+    for c in StickClass::ALL {
+        let (text, artifact) = class_meaning(c);
+        let style = if artifact {
+            Style::new().fg(Color::LightYellow)
+        } else {
+            plain
+        };
+        let name = format!("{}{}", if artifact { "⚠ " } else { "" }, c.letter());
+        lines.extend(entry(&name, keys, text, style, 3, inner_w));
+    }
+    lines.extend(entry(
+        "",
+        keys,
+        "stuck means ε_N = 0 exactly; an ε_N below 1e-9 still counts as a rebound (docs/physics.md#decision-7)",
+        dim,
+        3,
+        inner_w,
+    ));
+    lines.push(Line::default());
+    lines.push(heading("Glossary"));
+    let gw = GLOSSARY
+        .iter()
+        .map(|(n, _)| n.chars().count())
+        .max()
+        .unwrap_or(8)
+        .min(inner_w / 3);
+    for (name, text) in GLOSSARY {
+        lines.extend(entry(name, keys, text, plain, gw, inner_w));
+    }
+    lines.push(Line::default());
+    lines.push(heading("Sources"));
+    for part in wrap(SOURCES, inner_w) {
+        lines.push(Line::from(Span::styled(part, dim)));
+    }
+    lines
+}
+
+/// The help box on a `w × h` screen.
+fn frame_rect(w: u16, h: u16) -> Rect {
+    let bw = 90.min(w);
+    let inner_w = bw.saturating_sub(2).max(1) as usize;
+    let bh = (content(inner_w).len() as u16 + 2).min(h);
+    Rect::new(w.saturating_sub(bw) / 2, h.saturating_sub(bh) / 2, bw, bh)
+}
+
+/// Rows of help text visible at once on a `w × h` screen.
+pub fn page_rows(w: u16, h: u16) -> u16 {
+    frame_rect(w, h).height.saturating_sub(2)
+}
+
+/// The largest useful scroll offset on a `w × h` screen.
+pub fn max_scroll(w: u16, h: u16) -> u16 {
+    let r = frame_rect(w, h);
+    let total = content(r.width.saturating_sub(2).max(1) as usize).len() as u16;
+    total.saturating_sub(page_rows(w, h))
+}
+
+/// Draws the help overlay centred in `area`, from line `scroll`.
+pub fn help(frame: &mut Frame, area: Rect, scroll: u16) {
+    let r = frame_rect(area.width, area.height);
+    let r = Rect::new(area.x + r.x, area.y + r.y, r.width, r.height);
+    let inner_w = r.width.saturating_sub(2).max(1) as usize;
+    let lines = content(inner_w);
+    let total = lines.len() as u16;
+    let page = r.height.saturating_sub(2);
+    let scroll = scroll.min(total.saturating_sub(page));
+    let shown: Vec<Line> = lines
+        .into_iter()
+        .skip(usize::from(scroll))
+        .take(usize::from(page))
         .collect();
-    lines.push(Line::from(Span::styled(
-        "ε_N: normal, ε_T: tangential restitution; speeds in m/s",
-        Style::new().fg(Color::Gray),
-    )));
-    lines.push(Line::from(Span::styled(
-        SOURCES,
-        Style::new().fg(Color::Gray),
-    )));
+    let footer = if total > page {
+        format!(
+            " ↑↓ PgDn scroll {}–{}/{total} · q quits · other keys close ",
+            scroll + 1,
+            (scroll + page).min(total)
+        )
+    } else {
+        " q quits · any other key closes ".to_string()
+    };
     frame.render_widget(Clear, r);
     frame.render_widget(
-        Paragraph::new(lines).wrap(Wrap { trim: false }).block(
+        Paragraph::new(shown).block(
             Block::bordered()
-                .title(" rime — keys ")
-                .title_bottom(" any key closes "),
+                .title(" rime — keys, classes, glossary ")
+                .title_bottom(Span::styled(footer, Style::new().fg(Color::Yellow))),
         ),
         r,
     );

@@ -1,8 +1,8 @@
 //! The one-line views: derived quantities, status (accuracy, timing, warnings), message or input.
 
-use crate::explore::app::{LineInput, Tone};
+use crate::explore::app::{Confirm, LineInput, SCENE_FILE, Tone};
 use crate::explore::compute::FrameData;
-use crate::explore::format::{num3, qty, qty3};
+use crate::explore::format::{num3, qty3};
 use ratatui::style::{Color, Style};
 use ratatui::text::{Line, Span};
 use rime_core::params::PARAMETERS;
@@ -66,13 +66,13 @@ pub fn derived_line(data: Option<&FrameData>, cursor: usize, width: u16) -> Line
 pub fn paper_options(s: &Scene) -> Vec<&'static str> {
     let mut out = Vec::new();
     if s.layer.is_some_and(|l| l.reading == LayerReading::Literal) {
-        out.push("layer.reading=literal");
+        out.push("Eq. (8) read literally");
     }
     if s.contact_end == ContactEnd::ZeroOverlap {
-        out.push("contact_end=zero_overlap");
+        out.push("contact ends at zero overlap");
     }
     if matches!(s.bulk.damping, Damping::Viscosities(v) if v.formula == DampingFormula::AsPrinted) {
-        out.push("A formula as_printed");
+        out.push("A formula as printed in the paper");
     }
     out
 }
@@ -96,13 +96,26 @@ pub struct StatusView<'a> {
 
 /// Accuracy, compute time and warnings.
 pub fn status_line(app: &StatusView, width: u16) -> Line<'static> {
-    let mut spans = vec![Span::styled(
-        format!(" {} ", app.accuracy.name()),
+    let level = Span::styled(
+        app.accuracy.name().to_string(),
         Style::new().fg(Color::Black).bg(Color::Cyan),
-    )];
-    if let Some(d) = app.data {
-        let t = app.elapsed.unwrap_or(d.elapsed);
-        spans.push(Span::raw(format!(" {} ", qty(t.as_secs_f64(), "s"))));
+    );
+    let mut spans = Vec::new();
+    match app.data {
+        Some(d) => {
+            let t = app.elapsed.unwrap_or(d.elapsed);
+            spans.push(Span::raw(format!(
+                " computed in {} at ",
+                qty3(t.as_secs_f64(), "s")
+            )));
+            spans.push(level);
+            spans.push(Span::raw(" "));
+        }
+        None => {
+            spans.push(Span::raw(" accuracy "));
+            spans.push(level);
+            spans.push(Span::raw(" "));
+        }
     }
     if app.computing {
         spans.push(Span::styled(" computing… ", Style::new().fg(Color::Yellow)));
@@ -138,6 +151,8 @@ pub fn status_line(app: &StatusView, width: u16) -> Line<'static> {
 /// What the message line shows: an input being typed, else the last message.
 #[derive(Debug, Clone, Copy)]
 pub struct MessageView<'a> {
+    /// A yes/no question waiting for its answer.
+    pub confirm: Option<Confirm>,
     /// Path being typed after `o`.
     pub open: Option<&'a LineInput>,
     /// Value being typed after `e`.
@@ -186,6 +201,22 @@ fn input_spans(input: &LineInput, hint: &str) -> Vec<Span<'static>> {
 
 /// The message / input line.
 pub fn message_line(app: &MessageView) -> Line<'static> {
+    let ask = Style::new().fg(Color::Black).bg(Color::Yellow);
+    match app.confirm {
+        Some(Confirm::Quit) => {
+            return Line::from(vec![
+                Span::styled(" unsaved edits: quit anyway? ", ask),
+                Span::raw(" y quits · n stays (w saves, u undoes)"),
+            ]);
+        }
+        Some(Confirm::Overwrite) => {
+            return Line::from(vec![
+                Span::styled(format!(" {SCENE_FILE} exists: overwrite it? "), ask),
+                Span::raw(" y overwrites · n keeps it"),
+            ]);
+        }
+        None => {}
+    }
     if let Some(text) = app.open {
         return Line::from(vec![
             Span::styled(

@@ -25,36 +25,66 @@ pub fn class_label(c: StickClass) -> String {
     c.name().replace('_', " ")
 }
 
-/// Draws the stick map of `data` with the cursor at grid cell `cursor` = (i for g_N, j for g_T).
+/// The legend's name of a class, marking the artifact (`sliding gap: artifact`), within `w` cells.
+pub fn legend_label(c: StickClass, w: usize) -> String {
+    let long = if super::help::class_meaning(c).1 {
+        format!("{}: artifact", class_label(c))
+    } else {
+        class_label(c)
+    };
+    if long.chars().count() <= w || c != StickClass::SlidingGap {
+        long
+    } else {
+        "gap: artifact".to_string()
+    }
+}
+
+/// Draws the stick map of `data` with the cursor at grid cell `cursor` = (i for g_N, j for g_T);
+/// `shared`: the map shares its pane with the chart (the title says how to switch). Returns the
+/// cells of the map grid (for mouse clicks).
 pub fn map(
     buf: &mut Buffer,
     area: Rect,
     data: Option<&FrameData>,
     cursor: (usize, usize),
     focused: bool,
-) {
+    shared: bool,
+) -> Option<Rect> {
     let focus = focused;
-    let title = Line::from(vec![
+    let mut title = vec![
         Span::styled(
             " stick map ",
             Style::new().add_modifier(Modifier::BOLD).fg(if focus {
-                Color::White
+                Color::Cyan
             } else {
                 Color::Gray
             }),
         ),
-        Span::styled("classes over (g_N ↑, g_T →) ", Style::new().fg(Color::Gray)),
-    ]);
+        Span::styled(
+            if shared {
+                ""
+            } else {
+                "classes over (g_N ↑, g_T →) "
+            },
+            Style::new().fg(Color::Gray),
+        ),
+    ];
+    if shared {
+        title.push(Span::styled(
+            "│ ε_N chart: Tab ",
+            Style::new().fg(Color::Yellow),
+        ));
+    }
+    let (kind, style) = super::pane_border(focus);
     let block = Block::new()
         .borders(Borders::TOP | Borders::BOTTOM)
-        .border_style(Style::new().fg(if focus { Color::White } else { Color::DarkGray }))
-        .title(title)
+        .border_type(kind)
+        .border_style(style)
+        .title(Line::from(title))
         .title_bottom(map_readout(data, cursor));
     let inner = block.inner(area);
     block.render(area, buf);
-    let Some(data) = data else {
-        return;
-    };
+    let data = data?;
     let Some(m) = data.map.as_ref() else {
         let text = if data.scene.friction.is_none() {
             "friction is off: no tangential restitution (select 'friction', press Enter)"
@@ -65,18 +95,25 @@ pub fn map(
             .style(Style::new().fg(Color::Gray))
             .wrap(Wrap { trim: true })
             .render(inner, buf);
-        return;
+        return None;
     };
     let n = m.n();
     if n < 2 || inner.height < 3 || inner.width < 20 {
-        return;
+        return None;
     }
-    let legend_w: u16 = 20;
+    let legend_w: u16 = if inner.width >= 60 { 24 } else { 20 };
     let max_label = qty3(data.map_max, "m/s");
     let axis_w: u16 = (max_label.chars().count() as u16 + 1).max(6);
     let show_legend = inner.width >= axis_w + legend_w + 12;
     let plot_w = inner.width - axis_w - if show_legend { legend_w + 1 } else { 0 };
-    let plot_h = inner.height - 1;
+    // Too narrow for the legend beside the map but tall: a compact legend below it.
+    let legend_below = !show_legend && inner.height >= 12;
+    let below_rows: u16 = match (legend_below, inner.height >= 14) {
+        (false, _) => 0,
+        (true, true) => 4,
+        (true, false) => 3,
+    };
+    let plot_h = inner.height - 1 - below_rows;
     let px = inner.x + axis_w;
     let py = inner.y;
     // Y axis labels.
@@ -133,6 +170,42 @@ pub fn map(
             .set_style(Style::new().fg(Color::Black).bg(Color::White));
     }
     // Legend.
+    if legend_below {
+        let mut spans = Vec::new();
+        for c in StickClass::ALL {
+            let artifact = super::help::class_meaning(c).1;
+            spans.push(Span::styled(
+                c.letter().to_string(),
+                Style::new().fg(class_ink(c)).bg(class_color(c)),
+            ));
+            let name = if artifact {
+                format!(
+                    "\u{a0}{}\u{a0}(artifact) ",
+                    class_label(c).replace(' ', "\u{a0}")
+                )
+            } else {
+                format!("\u{a0}{} ", class_label(c).replace(' ', "\u{a0}"))
+            };
+            spans.push(Span::styled(
+                name,
+                Style::new().fg(if artifact {
+                    Color::LightYellow
+                } else {
+                    Color::Gray
+                }),
+            ));
+        }
+        spans.push(Span::styled(
+            "· ? explains",
+            Style::new().fg(Color::DarkGray),
+        ));
+        Paragraph::new(Line::from(spans))
+            .wrap(Wrap { trim: true })
+            .render(
+                Rect::new(inner.x, py + plot_h + 1, inner.width, below_rows),
+                buf,
+            );
+    }
     if show_legend {
         let lx = px + plot_w + 1;
         for (k, c) in StickClass::ALL.iter().enumerate() {
@@ -146,12 +219,17 @@ pub fn map(
                 format!("{}", c.letter()),
                 Style::new().fg(class_ink(*c)).bg(class_color(*c)),
             );
+            let artifact = super::help::class_meaning(*c).1;
             buf.set_stringn(
                 lx + 2,
                 y,
-                class_label(*c),
+                legend_label(*c, (legend_w - 3) as usize),
                 (legend_w - 3) as usize,
-                Style::new().fg(Color::Gray),
+                Style::new().fg(if artifact {
+                    Color::LightYellow
+                } else {
+                    Color::Gray
+                }),
             );
         }
         // The convention behind "stuck" (docs/physics.md#decision-7).
@@ -165,7 +243,17 @@ pub fn map(
                 Style::new().fg(Color::DarkGray),
             );
         }
+        if y + 1 < inner.y + inner.height {
+            buf.set_stringn(
+                lx,
+                y + 1,
+                "? explains classes",
+                legend_w as usize,
+                Style::new().fg(Color::DarkGray),
+            );
+        }
     }
+    Some(Rect::new(px, py, plot_w, plot_h))
 }
 
 /// The map's readout at the cursor: speeds, ε_T and the class.
@@ -193,6 +281,14 @@ fn map_readout(data: Option<&FrameData>, cursor: (usize, usize)) -> Line<'static
         Span::styled(
             format!("{} ", class_label(*class)),
             Style::new().fg(class_color(*class)),
+        ),
+        Span::styled(
+            if *class == StickClass::SlidingGap {
+                "(artifact of Eq. (23); W: Walton) "
+            } else {
+                ""
+            },
+            Style::new().fg(Color::LightYellow),
         ),
     ])
 }

@@ -18,7 +18,7 @@ use ratatui::Frame;
 use ratatui::layout::{Alignment, Rect};
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Paragraph, Wrap};
+use ratatui::widgets::{BorderType, Paragraph, Wrap};
 use rime_core::explorer::palette;
 
 /// Replaces spaces by non-breaking ones (a value and its unit stay on one line).
@@ -48,6 +48,8 @@ const OVERLAY_COLORS: [Color; 5] = [
 ];
 /// This scene's curve.
 const CURRENT: Color = rgb(palette::SCENE);
+/// A pinned curve (`P`), drawn dashed.
+const PINNED: Color = Color::White;
 /// The clean-surface curve.
 const CLEAN: Color = rgb(palette::CLEAN);
 /// The critical-speed markers (the colour of this scene's curve).
@@ -61,6 +63,18 @@ const BAND_COLORS: [Color; 2] = [rgb(palette::EXPERIMENT), rgb(palette::EXPERIME
 const BAND_SHORT: [&str; 2] = ["Heißelmann'10", "Hill'15"];
 const BAND_TINY: [&str; 2] = ["H10", "H15"];
 
+/// The focused pane's border: thick and highlighted; the others thin and dim.
+pub(super) fn pane_border(focused: bool) -> (BorderType, Style) {
+    if focused {
+        (
+            BorderType::Thick,
+            Style::new().fg(Color::Cyan).add_modifier(Modifier::BOLD),
+        )
+    } else {
+        (BorderType::Plain, Style::new().fg(Color::DarkGray))
+    }
+}
+
 /// Draws the whole screen: the one place that reads the whole [`App`] and hands each view its data.
 pub fn render(app: &App, frame: &mut Frame) {
     let area = frame.area();
@@ -68,7 +82,7 @@ pub fn render(app: &App, frame: &mut Frame) {
         too_small(frame, area);
         return;
     };
-    panel::panel(
+    let panel_rows = panel::panel(
         frame,
         l.panel,
         &panel::PanelView {
@@ -78,29 +92,44 @@ pub fn render(app: &App, frame: &mut Frame) {
             focused: app.focus == Focus::Panel,
         },
     );
+    let mut drawn = super::app::Drawn {
+        panel_rows,
+        ..Default::default()
+    };
     let data = app.data.as_ref();
-    chart::chart(
-        frame,
-        l.chart,
-        &chart::ChartView {
+    let show_map = !l.shared || app.map_shown;
+    let show_chart = !l.shared || !app.map_shown;
+    if show_chart {
+        drawn.chart_axis = chart::chart(
+            frame,
+            l.chart,
+            &chart::ChartView {
+                data,
+                sweep: app.sweep_def(),
+                cursor: app.cursor,
+                experiments: app.experiments,
+                focused: app.focus == Focus::Chart,
+                y_log: app.y_log,
+                pinned: app.pinned.as_ref(),
+                shared: l.shared,
+            },
+        );
+    }
+    if show_map {
+        drawn.map_plot = map::map(
+            frame.buffer_mut(),
+            l.map,
             data,
-            sweep: app.sweep_def(),
-            cursor: app.cursor,
-            experiments: app.experiments,
-            focused: app.focus == Focus::Chart,
-        },
-    );
-    map::map(
-        frame.buffer_mut(),
-        l.map,
-        data,
-        app.map_cursor,
-        app.focus == Focus::Map,
-    );
+            app.map_cursor,
+            app.focus == Focus::Map,
+            l.shared,
+        );
+    }
     frame.render_widget(
         Paragraph::new(lines::derived_line(data, app.cursor, l.derived.width)),
         l.derived,
     );
+    app.drawn.set(drawn);
     let status = lines::StatusView {
         scene: &app.scene,
         accuracy: app.accuracy,
@@ -110,6 +139,7 @@ pub fn render(app: &App, frame: &mut Frame) {
         cursor: app.cursor,
     };
     let message = lines::message_line(&lines::MessageView {
+        confirm: app.confirm,
         open: app.open.as_ref(),
         input: app.input.as_ref(),
         selected: app.selected,
@@ -124,7 +154,7 @@ pub fn render(app: &App, frame: &mut Frame) {
             frame.render_widget(Paragraph::new(message), r);
         }
         None => {
-            let mut line = if app.input.is_some() || app.open.is_some() {
+            let mut line = if app.input.is_some() || app.open.is_some() || app.confirm.is_some() {
                 Line::default()
             } else {
                 lines::status_line(&status, l.status.width)
@@ -152,7 +182,7 @@ pub fn render(app: &App, frame: &mut Frame) {
         collision::render(frame, l.views(), &view);
     }
     if app.help {
-        help::help(frame, area);
+        help::help(frame, area, app.help_scroll);
     }
 }
 

@@ -9,6 +9,36 @@ use ratatui::widgets::{Block, Borders, Paragraph};
 use rime_core::Scene;
 use rime_core::params::{Kind, PARAMETERS, Value};
 
+/// Human words for a choice's JSON name: (long, short). The JSON name stays in the scene file, on
+/// the command line and in the message after a change.
+pub fn choice_label(name: &str) -> (&'static str, &'static str) {
+    match name {
+        "brilliantov" => ("Brilliantov et al. 1996", "Brilliantov"),
+        "as_printed" => ("as printed in the paper", "as printed"),
+        "force_zero" => ("force returns to zero", "force → 0"),
+        "zero_overlap" => ("overlap returns to zero", "overlap → 0"),
+        "offset" => ("layer crushed, bulk offset", "offset"),
+        "literal" => ("literally, piecewise in ξ", "literal"),
+        "consistent" => ("consistent with Eq. (4)", "consistent"),
+        "paper" => ("the paper's Eq. (23)", "paper's"),
+        "walton" => ("Walton's linear law", "Walton"),
+        _ => ("", ""),
+    }
+}
+
+/// The text of a parameter's value with its unit (`—` when inactive), choices in human words
+/// (the long ones when `long`).
+pub fn value_text_fit(scene: &Scene, path: &str, unit: &str, long: bool) -> (String, bool) {
+    match scene.get(path) {
+        Ok(Value::Choice(c)) => {
+            let (l, s) = choice_label(c);
+            let text = if long { l } else { s };
+            (if text.is_empty() { c } else { text }.to_string(), true)
+        }
+        _ => value_text(scene, path, unit),
+    }
+}
+
 /// The text of a parameter's value with its unit (`—` when inactive).
 pub fn value_text(scene: &Scene, path: &str, unit: &str) -> (String, bool) {
     match scene.get(path) {
@@ -32,22 +62,34 @@ pub struct PanelView<'a> {
     pub focused: bool,
 }
 
-/// Draws the parameter panel.
-pub fn panel(frame: &mut Frame, area: Rect, view: &PanelView) {
+/// Index of the first parameter shown when `rows` rows hold the list and `selected` is selected.
+pub fn first_row(selected: usize, rows: usize) -> usize {
+    if selected >= rows {
+        selected + 1 - rows
+    } else {
+        0
+    }
+}
+
+/// Draws the parameter panel; returns the screen row of the first parameter and its index (for
+/// mouse clicks).
+pub fn panel(frame: &mut Frame, area: Rect, view: &PanelView) -> Option<(u16, usize)> {
+    let (kind, style) = super::pane_border(view.focused);
     let block = Block::new()
         .borders(Borders::RIGHT)
-        .border_style(Style::new().fg(Color::DarkGray));
+        .border_type(kind)
+        .border_style(style);
     let inner = block.inner(area);
     frame.render_widget(block, area);
     if inner.height == 0 || inner.width < 4 {
-        return;
+        return None;
     }
     let preset = view
         .preset
         .and_then(|i| rime_core::Preset::ALL.get(i))
         .map_or("custom".to_string(), |p| p.name().to_string());
     let title_style = if view.focused {
-        Style::new().add_modifier(Modifier::BOLD).fg(Color::White)
+        Style::new().add_modifier(Modifier::BOLD).fg(Color::Cyan)
     } else {
         Style::new().add_modifier(Modifier::BOLD).fg(Color::Gray)
     };
@@ -56,14 +98,16 @@ pub fn panel(frame: &mut Frame, area: Rect, view: &PanelView) {
         Span::styled(format!(" · {preset}"), Style::new().fg(Color::Gray)),
     ])];
     let rows = inner.height.saturating_sub(1) as usize;
-    let offset = if view.selected >= rows {
-        view.selected + 1 - rows
-    } else {
-        0
-    };
+    let offset = first_row(view.selected, rows);
     let w = inner.width as usize;
     for (k, p) in PARAMETERS.iter().enumerate().skip(offset).take(rows) {
-        let (value, active) = value_text(view.scene, p.path, p.unit);
+        let (long, active) = value_text_fit(view.scene, p.path, p.unit, true);
+        // The long words where the label still fits beside them, else the short ones.
+        let (value, active) = if long.chars().count() + p.label.chars().count() + 3 <= w {
+            (long, active)
+        } else {
+            value_text_fit(view.scene, p.path, p.unit, false)
+        };
         let header = matches!(p.kind, Kind::Toggle);
         let selected = k == view.selected;
         let marker = if selected { "▸" } else { " " };
@@ -100,4 +144,5 @@ pub fn panel(frame: &mut Frame, area: Rect, view: &PanelView) {
         ]));
     }
     frame.render_widget(Paragraph::new(lines), inner);
+    Some((inner.y + 1, offset))
 }

@@ -84,6 +84,17 @@ pub fn lines(t: &TidalView) -> Vec<Line<'static>> {
             },
         ]),
     ];
+    if t.inside_planet {
+        out.push(Line::from(Span::styled(
+            format!(
+                "⚠ d is inside Saturn (radius {}): no ring particle orbits there",
+                v(crate::explore::tidal::SATURN_RADIUS, "m")
+            ),
+            Style::new()
+                .fg(Color::LightRed)
+                .add_modifier(Modifier::BOLD),
+        )));
+    }
     let tidal = match &t.result {
         Ok(r) => *r,
         Err(e) => {

@@ -5,7 +5,7 @@
 //! are stored as piecewise Chebyshev series in u = log₁₀ δ on equal segments of [`U_MIN`, u_max],
 //! built from the Dormand–Prince integrator at rtol 1e-14 and stored in the generated file
 //! `master_table.rs` (regenerate with `cargo run --release -p rime-core --example
-//! generate_master_table > core/src/master_table.rs`; the test `master_table_matches_a_fresh_generation`
+//! generate_master_table > core/src/normal/viscoelastic/master_table.rs`; the test `master_table_matches_a_fresh_generation`
 //! fails when the committed table is stale). Two resolutions:
 //!
 //! * [`Resolution::Fine`] (16 coefficients per ⅛ decade, used by [`crate::Accuracy::Precise`]):
@@ -564,8 +564,8 @@ mod tests {
         for (a, b) in fresh.iter().zip(&committed) {
             assert!(
                 (a - b).abs() <= 1e-9 * (1.0 + b.abs()),
-                "core/src/master_table.rs is stale ({a} vs {b}): regenerate it with \
-                 `cargo run --release -p rime-core --example generate_master_table > core/src/master_table.rs`"
+                "core/src/normal/viscoelastic/master_table.rs is stale ({a} vs {b}): regenerate it with \
+                 `cargo run --release -p rime-core --example generate_master_table > core/src/normal/viscoelastic/master_table.rs`"
             );
         }
     }
