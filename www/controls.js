@@ -195,6 +195,7 @@ export function syncControls() {
   $('damping-form').value = values['bulk.damping.time'] === null ? 'viscosities' : 'time';
   const view = app.drawn.view;
   $('accuracy').value = view.accuracy;
+  showTrade();
   const keep = (id) => document.activeElement === $(id) && $(id).dataset.dirty === '1';
   if (!keep('view-from')) $('view-from').value = editable(view.from, 'm/s');
   if (!keep('view-to')) $('view-to').value = editable(view.to, 'm/s');
@@ -203,6 +204,12 @@ export function syncControls() {
   for (const box of document.querySelectorAll('#overlay-list input')) box.checked = view.overlays.includes(box.value);
   $('chart-sources').hidden = !view.experiments;
   if (!keep('view-mapmax')) $('view-mapmax').value = view.mapMax === null ? '' : editable(view.mapMax, 'm/s');
+}
+
+/** What the chosen level trades (how ε_N is obtained, its bound, its cost), beside the menu. */
+function showTrade() {
+  const l = HELP.levels.find((x) => x.name === $('accuracy').value);
+  $('accuracy-help').textContent = l ? l.trade : '';
 }
 
 /** Goes back (or forward) in the history of scene edits. */
@@ -232,7 +239,10 @@ export function wireToolbar(presets) {
     if (edit('preset', () => app.ex.loadPreset(name))) $('history-status').textContent = `loaded ${name}`;
     $('preset').value = '';
   });
-  $('accuracy').addEventListener('change', () => { app.view.accuracy = $('accuracy').value; hooks.schedule(); });
+  // The core's levels, each with its trade (how, bound, cost).
+  $('accuracy').replaceChildren(...HELP.levels.map((l) => el('option', { value: l.name }, l.name)));
+  $('accuracy').addEventListener('change', () => { app.view.accuracy = $('accuracy').value; showTrade(); hooks.schedule(); });
+  showTrade();
   $('undo').addEventListener('click', () => step(true));
   $('redo').addEventListener('click', () => step(false));
   onHistory(historyButtons);

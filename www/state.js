@@ -8,7 +8,7 @@ export const START_PRESET = 'ice-sticky';
 export const CURVE_POINTS = 240;
 export const MAP_N = 120;
 export const DEFAULT_VIEW = {
-  accuracy: 'fast', from: 1e-7, to: 10, mapMax: null, experiments: true, overlays: [], yScale: 'lin',
+  accuracy: 'precise', from: 1e-7, to: 10, mapMax: null, experiments: true, overlays: [], yScale: 'lin',
 };
 
 export const app = {

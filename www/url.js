@@ -20,7 +20,6 @@ export function writeHashNow() {
   if (location.hash !== hash) history.replaceState(null, '', hash);
 }
 
-const LEVELS = ['fast', 'balanced', 'precise'];
 
 /** The view in the link, field by field; each bad field named in `problems` and left at its default. */
 function readView(text, problems) {
@@ -44,8 +43,11 @@ function readView(text, problems) {
   }
   speedOf('mapMax');
   if (obj.accuracy !== undefined) {
-    if (LEVELS.includes(obj.accuracy)) v.accuracy = obj.accuracy;
-    else problems.push(`view.accuracy: one of ${LEVELS.join(', ')}`);
+    const levels = HELP.levels.map((l) => l.name);
+    // "balanced" is the former name of "integrated" (old links keep working).
+    const a = obj.accuracy === 'balanced' ? 'integrated' : obj.accuracy;
+    if (levels.includes(a)) v.accuracy = a;
+    else problems.push(`view.accuracy: one of ${levels.join(', ')}`);
   }
   if (obj.experiments !== undefined) {
     if (typeof obj.experiments === 'boolean') v.experiments = obj.experiments;

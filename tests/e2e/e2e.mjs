@@ -153,12 +153,13 @@ try {
     return `η* 1000 → 2500 (typed) → ${visc} Pa s (slider); ${changed1} and ${changed2} of ${s2.eps.length} points changed`;
   });
 
-  await check('page ε_N agrees with `rime eps --accuracy fast` to 1e-12 relative', async () => {
+  await check('page ε_N agrees with `rime eps` at the page\'s level to 1e-12 relative', async () => {
     assert(fs.existsSync(rime), `${rime} not built`);
     const s = await page.evaluate(() => window.rimeState);
+    assert(s.view.accuracy === 'precise', `the page opens at ${s.view.accuracy}, not the core's default precise`);
     const idx = [0, 17, 40, 60, 80, 100, 120, 150, 180, 200, 239].filter((i) => i < s.g.length);
     const gs = idx.map((i) => s.g[i]);
-    const out = execFileSync(rime, ['eps', '--g', gs.map(String).join(','), '--scene', sceneFile, '--accuracy', 'fast', '--format', 'json'], { encoding: 'utf8' });
+    const out = execFileSync(rime, ['eps', '--g', gs.map(String).join(','), '--scene', sceneFile, '--accuracy', s.view.accuracy, '--format', 'json'], { encoding: 'utf8' });
     const cli = JSON.parse(out);
     assert(cli.length === idx.length, 'CLI returned a different number of records');
     let worst = 0;
@@ -899,6 +900,10 @@ try {
 
   let med = NaN, medTotal = NaN;
   await check('recompute + redraw within one animation frame at fast (median of 40 inputs)', async () => {
+    if ((await page.evaluate(() => window.rimeState.view.accuracy)) !== 'fast') {
+      await page.selectOption('#accuracy', 'fast');
+      await page.waitForFunction(() => window.rimeState.view.accuracy === 'fast', null, { timeout: 20000 });
+    }
     await page.evaluate(() => { window.rimeState.computeMs.length = 0; });
     const slider = page.locator('input[type=range][data-path="layer.viscosity"]');
     for (let k = 0; k < 40; k++) {

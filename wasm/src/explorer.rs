@@ -482,6 +482,8 @@ pub fn help_json() -> String {
         "classes": classes,
         "artifactNote": ARTIFACT_NOTE,
         "tidalPaper": TidalInput::default(),
+        "levels": Accuracy::LEVELS.iter().map(|l| json!({"name": l.name(), "trade": l.trade(),
+            "bound": l.error_bound()})).collect::<Vec<_>>(),
         "limits": {"speedMin": rime_core::explorer::limits::SPEED_MIN,
                    "speedMax": rime_core::explorer::limits::SPEED_MAX},
     })
@@ -627,6 +629,13 @@ mod tests {
             .map(|c| c["name"].as_str().unwrap())
             .collect();
         assert_eq!(artifacts, ["sliding_gap"]);
+        let levels: Vec<&str> = h["levels"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|l| l["name"].as_str().unwrap())
+            .collect();
+        assert_eq!(levels, ["fast", "precise", "integrated"]);
     }
 
     #[test]
