@@ -3,16 +3,17 @@
 // the link. Each part of a frame fails on its own: what succeeded is drawn, the failing part leaves
 // a note in its place, the banner names the cause and the console gets the error; controls and
 // the link always show the scene actually drawn. No physics, palette, formatting or ranges here.
-import { Explorer, HELP, calls, citation, counted, physicsUrl, qty, speed, start } from './core.js';
+import { Explorer, calls, counted, qty, speed, start } from './core.js';
 import { Computer } from './compute.js';
 import { CollisionView } from './collision.js';
-import { $, el, errText, linked, linkify, median } from './dom.js';
+import { $, errText, linkify, median } from './dom.js';
 import { CURVE_POINTS, MAP_N, START_PRESET, app, historySize } from './state.js';
 import { buildControls, edit, syncControls, wireToolbar, wireView } from './controls.js';
 import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, wireChart } from './chart.js';
 import { drawLegend, drawMapCanvas, wireMap } from './map.js';
 import { buildTidal, showTidal } from './tidal.js';
-import { buildCompare, showOverlayScores } from './compare.js';
+import { buildCompare } from './compare.js';
+import { intro, showBanner, showNotice, showPartNotes, showWarnings, wireBanner } from './messages.js';
 import { loadHash, writeHash } from './url.js';
 import { chartSvg, curvesCsv, familyCsv, mapCsv, mapSvg, setVersion, wireDownloads } from './downloads.js';
 
@@ -22,8 +23,6 @@ window.rimeState = { ready: false, errors: [] };
 window.rimeTest = { fail: [], delayMs: 0 };
 
 let pending = false;
-let bannerKey = '';
-let bannerDismissed = '';
 
 function schedule() {
   if (pending) return;
@@ -167,45 +166,8 @@ function onBusy(busy) {
   }, 120);
 }
 
-/** The banner naming every part that failed (role=alert), each error also to the console. */
-function showBanner(errors) {
-  const key = JSON.stringify(errors);
-  if (key !== bannerKey) {
-    for (const e of errors) console.error(`rime: ${e.part}: ${e.message}`);
-    bannerKey = key;
-  }
-  const b = $('banner');
-  if (!errors.length || bannerDismissed === key) { b.hidden = true; return; }
-  $('banner-list').replaceChildren(...errors.map((e) => el('li', {}, el('strong', {}, e.part), `: ${e.message}`)));
-  b.hidden = false;
-}
-
-function showWarnings(res) {
-  showOverlayScores(res);
-  $('warnings').replaceChildren(...res.warnings.map((w) => el('li', {}, ...linked(w))));
-}
-
-/** A visible note in place of each part of the chart that failed (the banner has the details). */
-function showPartNotes(res) {
-  const notes = [];
-  for (const e of res.errors) {
-    if (e.part === 'stick map' || e.part === 'tidal' || /^(atlas|model):/.test(e.part)) continue;
-    notes.push(e.part === 'curve' ? `this scene: ${res.gaps} of ${res.g.length} speeds failed, drawn as gaps`
-      : e.part === 'clean' ? 'clean surface: gaps where ε_N failed'
-        : e.part.startsWith('family') ? `${e.part.replace('family ', 'family curve ')} not drawn`
-          : `${e.part}: not drawn`);
-  }
-  const cn = $('chart-note');
-  cn.textContent = notes.length ? `⚠ ${notes.join(' · ')} (see the message above)` : '';
-  cn.hidden = !notes.length;
-  const rn = $('map-range-note');
-  rn.textContent = res.mapNote ? `Note: ${res.mapNote}.` : '';
-  rn.hidden = !res.mapNote;
-}
-
 function draw() {
   if (!app.res) return;
-  const t = [performance.now()];
   // Read the layout once, before this frame writes to the DOM (each read after a write forces a
   // synchronous layout of the whole page).
   const widths = {
@@ -213,14 +175,10 @@ function draw() {
   };
   pinLabel();
   drawChartCanvas(widths.chart);
-  t.push(performance.now());
   familyNote(app.res);
   drawLegend(app.res);
-  t.push(performance.now());
   drawMapCanvas(widths);
-  t.push(performance.now());
   showPartNotes(app.res);
-  window.rimeState.drawParts = { chart: t[1] - t[0], legend: t[2] - t[1], map: t[3] - t[2] };
 }
 
 /** The normal result at `g` for the drawn scene (main thread; tests). */
@@ -255,30 +213,6 @@ function replayCollision(g) {
     console.error(`rime: collision: ${errText(e)}`);
     app.collisionView.fail(errText(e));
   }
-}
-
-function showNotice(problems) {
-  const n = $('notice');
-  if (!problems.length) { n.hidden = true; n.textContent = ''; return; }
-  n.hidden = false;
-  n.replaceChildren(
-    el('strong', {}, 'Part of the link could not be read; '), 'the rest of it was kept and the fields named here are at their defaults:',
-    el('ul', {}, ...problems.map((p) => el('li', {}, p))));
-  window.rimeState.notice = n.textContent;
-}
-
-/** The intro: what the page is, the glossary, how to read it, the paper and the notes. */
-function intro() {
-  const glossary = new Map(HELP.glossary.map((g) => [g.term, g.meaning]));
-  const dl = $('glossary');
-  for (const term of ['ε_N', 'g_N', 'g_T', 'this scene', 'g_s', 'ε_T', 'family', 'clean surface', 'stick map']) {
-    if (glossary.has(term)) dl.append(el('dt', {}, term), el('dd', {}, ...linked(glossary.get(term))));
-  }
-  $('citation').textContent = citation();
-  const q = encodeURIComponent(`${HELP.paper.authors} ${HELP.paper.year} ${HELP.paper.title}`);
-  $('doi-link').href = `https://search.crossref.org/?from_ui=yes&q=${q}`;
-  for (const a of document.querySelectorAll('a[data-physics]')) a.href = physicsUrl(a.dataset.physics);
-  $('repo-link').href = HELP.repository;
 }
 
 async function main() {
@@ -317,7 +251,7 @@ async function main() {
     h.scrollIntoView();
     h.focus();
   });
-  $('banner-close').addEventListener('click', () => { bannerDismissed = bannerKey; $('banner').hidden = true; });
+  wireBanner();
   let resizeQueued = false;
   window.addEventListener('resize', () => {
     if (resizeQueued) return;

@@ -1,7 +1,7 @@
 // "Compare": measured ice laws and other models over the ε_N chart (the core's list and scores),
 // and "fit A to the first checked measured law" (the core's fit).
 import { qty, sig, speed } from './core.js';
-import { $, el, errText } from './dom.js';
+import { $, el } from './dom.js';
 import { app } from './state.js';
 
 let hooks = { schedule: () => {}, edit: () => false };
@@ -51,4 +51,3 @@ export function showOverlayScores(res) {
   $('overlay-scores').replaceChildren(...items);
 }
 
-export { errText };

@@ -4,7 +4,7 @@
 // through the core (app.ex); a value it rejects is refused at the control, naming the field.
 import { HELP, editable, parseSpeed, qty, sig } from './core.js';
 import { $, el, errText, linked } from './dom.js';
-import { START_PRESET, app, canRedo, canUndo, onHistory, redo, remember, undo } from './state.js';
+import { app, canRedo, canUndo, onHistory, redo, remember, undo } from './state.js';
 
 const SLIDER_STEPS = 1000;
 const GROUPS = [
@@ -294,4 +294,3 @@ export function wireView() {
   });
 }
 
-export { START_PRESET, setErr };

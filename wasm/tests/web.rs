@@ -2,7 +2,10 @@
 #![cfg(target_arch = "wasm32")]
 #![allow(clippy::unwrap_used, clippy::expect_used, missing_docs)]
 
-use rime_wasm::bindings::{Explorer, compute_frame};
+use rime_wasm::bindings::{
+    Explorer, agrees_to_printed, compute_frame, fmt_decade, fmt_editable, fmt_qty, fmt_shortest,
+    fmt_sig, help, palette, parse_quantity, parse_speed,
+};
 use wasm_bindgen_test::*;
 
 wasm_bindgen_test_configure!(run_in_browser);
@@ -44,8 +47,17 @@ fn one_frame_per_call_with_parts_failing_alone() {
     let codes = f.codes();
     assert!(json.contains("\"errors\":[]"), "{json}");
     assert!(json.contains("\"key\":\"layer\""));
-    // g (64), curve (64), clean (64), 4 family curves, map g, ε_N (16) and ε_T (256).
-    assert_eq!(numbers.len(), 64 * 7 + 16 * 2 + 256);
+    // g (64), curve (64), clean (64), 4 family curves, map g, ε_N (16) and ε_T (256), then the
+    // figures' series (x and y of each).
+    let j: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let figure_numbers: u64 = j["figures"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|f| f["series"].as_array().unwrap().iter())
+        .map(|s| s["x"]["len"].as_u64().unwrap() + s["y"]["len"].as_u64().unwrap())
+        .sum();
+    assert_eq!(numbers.len() as u64, 64 * 7 + 16 * 2 + 256 + figure_numbers);
     // statuses: curve, clean, 4 family curves; classes 256.
     assert_eq!(codes.len(), 64 * 6 + 256);
     assert_eq!(codes[0], 1, "stuck in layer at the lowest speed");
@@ -64,4 +76,35 @@ fn metadata() {
     let e = Explorer::new();
     assert!(e.tidal("").unwrap().contains("d_roche"));
     assert_eq!(e.get("layer").unwrap(), "false");
+}
+
+#[wasm_bindgen_test]
+fn the_cores_palette_formatters_and_parsers_reach_the_page_issue_11() {
+    let p: serde_json::Value = serde_json::from_str(&palette()).unwrap();
+    assert_eq!(p["scene"], "#E69F00");
+    assert_eq!(p["classes"]["aggregation"], "#D55E00");
+    let h: serde_json::Value = serde_json::from_str(&help()).unwrap();
+    assert_eq!(h["paper"]["year"], 2002);
+    assert!(
+        h["parameters"]["layer.viscosity"]["help"]
+            .as_str()
+            .unwrap()
+            .len()
+            > 10
+    );
+    // Values worked out by hand: 6.6e-6 m/s is 6.6 µm/s; 1e-7 m/s reads back from "1e-7".
+    assert_eq!(fmt_qty(6.6e-6, "m/s", 4), "6.6 µm/s");
+    assert_eq!(fmt_sig(f64::NAN, 4), "—");
+    assert_eq!(fmt_sig(0.36019, 3), "0.36");
+    assert_eq!(fmt_shortest(1e-7), "1e-7");
+    assert_eq!(fmt_editable(2000.0, "Pa s"), "2 kPa s");
+    assert_eq!(fmt_decade(-6), "1e-6");
+    assert!(agrees_to_printed(1.3408e8, 1.341e8));
+    assert!(!agrees_to_printed(37.72, 37.6));
+    assert_eq!(parse_speed("g from", "1 um/s").unwrap(), 1e-6);
+    assert!(parse_speed("g to", "2e6 m/s").is_err());
+    assert_eq!(
+        parse_quantity("tidal.distance", "1.5e5 km", "m").unwrap(),
+        1.5e8
+    );
 }

@@ -1,0 +1,73 @@
+// What the page says in words around the figures: the intro (the core's glossary and citation),
+// the banner naming parts of a frame that failed, the notes in their place, the core's warnings,
+// and the notice naming fields of a link that could not be read.
+import { HELP, citation, physicsUrl } from './core.js';
+import { $, el, linked } from './dom.js';
+import { showOverlayScores } from './compare.js';
+
+let bannerKey = '';
+let bannerDismissed = '';
+
+export function wireBanner() {
+  $('banner-close').addEventListener('click', () => { bannerDismissed = bannerKey; $('banner').hidden = true; });
+}
+
+/** The banner naming every part that failed (role=alert), each error also to the console. */
+export function showBanner(errors) {
+  const key = JSON.stringify(errors);
+  if (key !== bannerKey) {
+    for (const e of errors) console.error(`rime: ${e.part}: ${e.message}`);
+    bannerKey = key;
+  }
+  const b = $('banner');
+  if (!errors.length || bannerDismissed === key) { b.hidden = true; return; }
+  $('banner-list').replaceChildren(...errors.map((e) => el('li', {}, el('strong', {}, e.part), `: ${e.message}`)));
+  b.hidden = false;
+}
+
+export function showWarnings(res) {
+  showOverlayScores(res);
+  $('warnings').replaceChildren(...res.warnings.map((w) => el('li', {}, ...linked(w))));
+}
+
+/** A visible note in place of each part of the chart that failed (the banner has the details). */
+export function showPartNotes(res) {
+  const notes = [];
+  for (const e of res.errors) {
+    if (e.part === 'stick map' || e.part === 'tidal' || /^(atlas|model):/.test(e.part)) continue;
+    notes.push(e.part === 'curve' ? `this scene: ${res.gaps} of ${res.g.length} speeds failed, drawn as gaps`
+      : e.part === 'clean' ? 'clean surface: gaps where ε_N failed'
+        : e.part.startsWith('family') ? `${e.part.replace('family ', 'family curve ')} not drawn`
+          : `${e.part}: not drawn`);
+  }
+  const cn = $('chart-note');
+  cn.textContent = notes.length ? `⚠ ${notes.join(' · ')} (see the message above)` : '';
+  cn.hidden = !notes.length;
+  const rn = $('map-range-note');
+  rn.textContent = res.mapNote ? `Note: ${res.mapNote}.` : '';
+  rn.hidden = !res.mapNote;
+}
+
+export function showNotice(problems) {
+  const n = $('notice');
+  if (!problems.length) { n.hidden = true; n.textContent = ''; return; }
+  n.hidden = false;
+  n.replaceChildren(
+    el('strong', {}, 'Part of the link could not be read; '), 'the rest of it was kept and the fields named here are at their defaults:',
+    el('ul', {}, ...problems.map((p) => el('li', {}, p))));
+  window.rimeState.notice = n.textContent;
+}
+
+/** The intro: what the page is, the glossary, how to read it, the paper and the notes. */
+export function intro() {
+  const glossary = new Map(HELP.glossary.map((g) => [g.term, g.meaning]));
+  const dl = $('glossary');
+  for (const term of ['ε_N', 'g_N', 'g_T', 'this scene', 'g_s', 'ε_T', 'family', 'clean surface', 'stick map']) {
+    if (glossary.has(term)) dl.append(el('dt', {}, term), el('dd', {}, ...linked(glossary.get(term))));
+  }
+  $('citation').textContent = citation();
+  const q = encodeURIComponent(`${HELP.paper.authors} ${HELP.paper.year} ${HELP.paper.title}`);
+  $('doi-link').href = `https://search.crossref.org/?from_ui=yes&q=${q}`;
+  for (const a of document.querySelectorAll('a[data-physics]')) a.href = physicsUrl(a.dataset.physics);
+  $('repo-link').href = HELP.repository;
+}
