@@ -115,7 +115,7 @@ function onFrame(msg, req) {
   app.timings.push(msg.ms);
   app.totals.push(t2 - req.page.t0);
   if (app.timings.length > 200) for (const a of [app.timings, app.totals, app.callsPerUpdate, app.formatCallsPerUpdate]) a.shift();
-  $('timing').textContent = `last frame: ${msg.ms.toFixed(1)} ms in the worker (median ${median(app.timings).toFixed(1)} ms), on screen after ${(t2 - req.page.t0).toFixed(1)} ms, accuracy ${res.accuracy}`;
+  $('timing').textContent = `last frame: ${qty(msg.ms / 1e3, 's', 3)} in the worker (median ${qty(median(app.timings) / 1e3, 's', 3)}), on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)}, accuracy ${res.accuracy}`;
   $('timing').classList.remove('busy');
   $('busy').hidden = true;
   const s = window.rimeState;

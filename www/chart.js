@@ -28,9 +28,10 @@ export function chartSpec(res, view, hover = null) {
     const at = m.label.lastIndexOf(' = ');
     return { x: m.x, label: m.label, short: at > 0 ? `${m.label.split(' ')[0]} ${m.label.slice(at + 3)}` : m.label, color: color(m.color) };
   });
-  for (const o of res.overlays || []) {
-    for (const s of o.speeds) markers.push({ x: s.value, label: `${o.key.slice(6)} ${s.name}: ${speed(s.value)}`, short: `${s.name} ${speed(s.value)}`, color: '#555555' });
-  }
+  // Other models' characteristic speeds, in their curve's colour (the figure's order of comparisons).
+  (res.overlays || []).forEach((o, k) => {
+    for (const s of o.speeds) markers.push({ x: s.value, label: `${o.key.slice(6)} ${s.name}: ${speed(s.value)}`, short: `${s.name} ${speed(s.value)}`, color: PALETTE.overlays[k % PALETTE.overlays.length] });
+  });
   return {
     xMin: fig.x.min, xMax: fig.x.max, yScale: fig.y.log ? 'log' : 'lin', yMin: fig.y.min, yMax: fig.y.max,
     xLabel: fig.x.label, yLabel: fig.y.label,
@@ -112,8 +113,8 @@ export function zoom(factor, shift = 0) {
   const min = Math.log10(HELP.limits.speedMin), max = Math.log10(HELP.limits.speedMax);
   const half = Math.min(span, max - min) / 2;
   c = Math.min(max - half, Math.max(min + half, c));
-  v.from = Number((10 ** (c - half)).toPrecision(6));
-  v.to = Number((10 ** (c + half)).toPrecision(6));
+  v.from = Number(sig(10 ** (c - half), 6));
+  v.to = Number(sig(10 ** (c + half), 6));
   hooks.schedule();
 }
 

@@ -97,11 +97,11 @@ export class CollisionView {
       bar.className = 'bar';
       bar.style.width = `${Math.max(0, Math.min(100, pct)).toFixed(1)}%`;
       bar.style.background = color;
-      li.append(...linked(`${name}: ${pct.toFixed(1)} %`), bar);
+      li.append(...linked(`${name}: ${sig(pct, 3)} %`), bar);
       return li;
     }), Object.assign(document.createElement('li'), {
       className: 'hint',
-      textContent: `kinetic energy in ${qty(l.kinetic_in, 'J', 3)} · closure ${l.closure.toExponential(1)}${d.resolved ? '' : ' (the slow end of the contact is not sampled)'}`,
+      textContent: `kinetic energy in ${qty(l.kinetic_in, 'J', 3)} · closure ${sig(l.closure, 2)}${d.resolved ? '' : ' (the slow end of the contact is not sampled)'}`,
     }));
     $('collision-title').textContent = `at g_N = ${speed(d.g, 4)}: ε_N = ${fmtNum(d.eps_n, 5)}, ${d.status}` +
       (d.t_c === null ? '' : `, t_c = ${qty(d.t_c, 's', 3)}`) + `, ξ_max = ${qty(d.xi_max, 'm', 3)}`;

@@ -90,7 +90,7 @@ export function drawLegend(res) {
   $('legend').replaceChildren(...app.classes.map((c, k) => el('li', { class: isArtifact(c.name) ? 'artifact' : null },
     el('span', { class: 'sw', style: `background:${colors[k]}`, 'aria-hidden': 'true' }),
     el('span', {}, ...linked(c.description), isArtifact(c.name) ? el('em', {}, ' — an artifact of the printed law, not a regime') : '',
-      ' ', el('span', { class: 'count' }, total ? `(${((100 * counts[k]) / total).toFixed(1)} %)` : '')))));
+      ' ', el('span', { class: 'count' }, total ? `(${sig((100 * counts[k]) / total, 3)} %)` : '')))));
   res.classCounts = counts;
   const gap = app.classes.findIndex((c) => isArtifact(c.name));
   const note = $('artifact-note');
@@ -99,7 +99,7 @@ export function drawLegend(res) {
   note.replaceChildren(...(shown ? linked(HELP.artifactNote) : []));
   if (res.map) {
     const parts = app.classes.map((c, k) => [c, counts[k]]).filter(([, n]) => n > 0)
-      .map(([c, n]) => `${c.description.split(':')[0]} ${((100 * n) / total).toFixed(1)} %`);
+      .map(([c, n]) => `${c.description.split(':')[0]} ${sig((100 * n) / total, 3)} %`);
     $('map-desc').textContent = `Stick map, g_T across and g_N up from 0 to ${speed(res.map.max)}: ${parts.join(', ')}.`;
   } else $('map-desc').textContent = '';
 }

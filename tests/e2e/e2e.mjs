@@ -540,7 +540,9 @@ try {
     const s = await pf.evaluate(() => window.rimeState);
     const last = s.callsPerUpdate.slice(-5);
     assert(Math.max(...last) <= 10, `calls per update: ${last}`);
-    return `last updates: ${last.join(', ')} calls`;
+    // Formatting and unit parsing are the core's too (memoised pure calls, counted apart).
+    const fmt = s.formatCallsPerUpdate.slice(-5);
+    return `last updates: ${last.join(', ')} compute calls (worker and edits); ${fmt.join(', ')} formatter calls`;
   });
   await pf.close();
 
