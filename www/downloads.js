@@ -64,7 +64,9 @@ function mapFigure(make) {
   const legendH = 18 * app.classes.length + 8;
   const fig = app.res.figures.find((f) => f.map) || { title: 'Stick map', caption: '' };
   const lines = captionLines(fig, W, ` (g_T across, g_N up, 0 to ${qty(m.max, 'm/s', 3)}); below: ε_T along one g_N row.`);
-  const H = 560 + 40 + legendH + 220 + 10 + lines.length * 14;
+  // The map square is W − 84 wide; its axes end 44 px below it (plot.js drawMap).
+  const mapBottom = 10 + (W - 84) + 44;
+  const H = mapBottom + legendH + 220 + 16 + lines.length * 14;
   const p = make(W, H);
   p.rect(0, 0, W, H, { fill: '#fff' });
   p.height = 600;
