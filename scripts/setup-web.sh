@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what the web tests need on a fresh machine; skips what is already there:
 # the wasm32 target, wasm-bindgen-cli at Cargo.lock's wasm-bindgen version, chromium + chromedriver
-# (apt, when root), and playwright-core in tests/e2e (npm).
+# (apt, when root), and playwright-core and axe-core in tests/e2e (npm).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -39,6 +39,6 @@ if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
     exit 1
   fi
 fi
-if [ ! -d tests/e2e/node_modules/playwright-core ]; then
+if [ ! -d tests/e2e/node_modules/playwright-core ] || [ ! -d tests/e2e/node_modules/axe-core ]; then
   (cd tests/e2e && { npm ci --no-audit --no-fund || npm install --no-audit --no-fund; })
 fi
