@@ -43,6 +43,8 @@ export const sig = (v, digits = 4) => cached(`s${digits}|${num(v)}`, () => wasm.
 /** A quantity with its unit and an SI prefix ("6.6 µm/s"). */
 export const qty = (v, unit, digits = 4) => cached(`q${digits}|${unit}|${num(v)}`, () => wasm.fmtQty(num(v), unit, digits));
 /** A speed with an SI prefix. */
+/** The stick map's records (`rime map --format csv`) from the frame's arrays, by the core. */
+export const mapRecords = (g, epsT, codes) => { calls.compute++; return wasm.mapRecords(g, epsT, codes); };
 export const speed = (v, digits = 3) => qty(v, 'm/s', digits);
 /** The shortest text that reads back as exactly `v` (files). */
 export const shortest = (v) => cached(`r|${num(v)}`, () => wasm.fmtShortest(num(v)));

@@ -2,7 +2,7 @@
 // mode, range, overlays, pinned curve, palette) with the core's caption (level, scene, version,
 // citation) and the date, and the data as the core's records (units in the headers) after the
 // core's context lines ("# ": what, version, level, date, scene, citation).
-import { qty } from './core.js';
+import { mapRecords, qty } from './core.js';
 import { $, el, wrapText } from './dom.js';
 import { chartSpec } from './chart.js';
 import { classColors, epsTSpec, mapSpec } from './map.js';
@@ -27,7 +27,8 @@ export function familyCsv(res = app.res) {
 
 /** The stick map's records (as `rime map --format csv`) with their context, or null. */
 export function mapCsv(res = app.res) {
-  return res.records.map === null || res.records.map === undefined ? null : res.records.context.map + res.records.map;
+  // Formatted by the core only now, from the drawn map's arrays (too costly for every frame).
+  return res.map ? res.records.context.map + mapRecords(res.map.g, res.map.epsT, res.map.codes) : null;
 }
 
 /** The caption and parameter block of figure `fig` (the core's), wrapped to `width` px. */

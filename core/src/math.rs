@@ -1,48 +1,30 @@
-//! Elementary functions: the platform's (via `std`) when available, `libm` otherwise.
+//! Elementary functions, always from `libm` — also with `std`. The platform's maths library differs
+//! between targets in the last bit (glibc natively, a musl port on wasm32), and the terminal, the
+//! command line and the web page must give bit-identical numbers for the same scene (issue 11), so
+//! every target evaluates the same code.
 
 macro_rules! unary {
-    ($name:ident, $std:ident, $libm:ident) => {
+    ($name:ident, $libm:ident) => {
         #[inline]
         pub(crate) fn $name(x: f64) -> f64 {
-            #[cfg(feature = "std")]
-            {
-                x.$std()
-            }
-            #[cfg(not(feature = "std"))]
-            {
-                libm::$libm(x)
-            }
+            libm::$libm(x)
         }
     };
 }
 
-unary!(sqrt, sqrt, sqrt);
-unary!(ln, ln, log);
-unary!(log10, log10, log10);
-unary!(exp, exp, exp);
-unary!(cbrt, cbrt, cbrt);
-unary!(atan, atan, atan);
+unary!(sqrt, sqrt);
+unary!(ln, log);
+unary!(log10, log10);
+unary!(exp, exp);
+unary!(cbrt, cbrt);
+unary!(atan, atan);
 
 #[inline]
 pub(crate) fn powf(x: f64, y: f64) -> f64 {
-    #[cfg(feature = "std")]
-    {
-        x.powf(y)
-    }
-    #[cfg(not(feature = "std"))]
-    {
-        libm::pow(x, y)
-    }
+    libm::pow(x, y)
 }
 
 #[inline]
 pub(crate) fn atan2(y: f64, x: f64) -> f64 {
-    #[cfg(feature = "std")]
-    {
-        y.atan2(x)
-    }
-    #[cfg(not(feature = "std"))]
-    {
-        libm::atan2(y, x)
-    }
+    libm::atan2(y, x)
 }

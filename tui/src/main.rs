@@ -8,11 +8,11 @@ mod codegen;
 mod commands;
 mod eps_file;
 mod explore;
-mod takeaway;
 mod output;
 mod progress;
 mod scene_io;
 mod spec;
+mod takeaway;
 
 use cli::Command;
 use scene_io::CliResult;

@@ -47,6 +47,12 @@ pub fn compute_frame(scene: &str, view: &str) -> Result<Frame, JsError> {
     })
 }
 
+/// The stick map's records from the frame's arrays (see [`explorer::map_records`]).
+#[wasm_bindgen(js_name = mapRecords)]
+pub fn map_records(g: &[f64], eps_t: &[f64], codes: &[u8]) -> Result<String, JsError> {
+    explorer::map_records(g, eps_t, codes).map_err(js)
+}
+
 /// The one colour palette of every surface (`rime_core::explorer::palette::palette_json`).
 #[wasm_bindgen]
 pub fn palette() -> String {

@@ -40,6 +40,38 @@ pub fn class_code(c: StickClass) -> u8 {
         .map_or(u8::MAX, |i| i as u8)
 }
 
+/// The stick map's records (`rime map --format csv`) from the frame's arrays: `g` (n speeds),
+/// `eps_t` and class codes (n² each, row-major). Formatted only when the page downloads them:
+/// 14 400 rows cost ~40 ms, too much for every frame.
+pub fn map_records(g: &[f64], eps_t: &[f64], codes: &[u8]) -> Result<String, String> {
+    let n = g.len();
+    if eps_t.len() != n * n || codes.len() != n * n {
+        return Err(format!(
+            "mapRecords: epsT and class must hold n² = {} values (got {} and {})",
+            n * n,
+            eps_t.len(),
+            codes.len()
+        ));
+    }
+    let class = codes
+        .iter()
+        .map(|&c| {
+            StickClass::ALL
+                .get(usize::from(c))
+                .copied()
+                .ok_or_else(|| format!("mapRecords: unknown class code {c}"))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let map = rime_core::sweep::StickMap {
+        g: g.to_vec(),
+        eps_n: Vec::new(),
+        class,
+        eps_t: eps_t.to_vec(),
+        rhs_evaluations: 0,
+    };
+    Ok(rime_core::explorer::records::map_csv(&map))
+}
+
 fn core_err(e: rime_core::Error) -> String {
     e.to_string()
 }

@@ -381,7 +381,8 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
         json!({
             "curve": records::frame_curve_csv(&f),
             "family": records::family_csv(&f),
-            "map": records::frame_map_csv(&f),
+            // The map's records are formatted on download (`mapRecords`), not every frame.
+            "map": Json::Null,
             "context": {
                 "curve": ctx("ε_N records of this scene (rime curve)"),
                 "family": ctx("every ε_N curve of the chart"),
@@ -500,11 +501,18 @@ mod tests {
                 .unwrap()
                 .contains("level precise, D")
         );
-        assert!(
-            j["records"]["map"]
-                .as_str()
-                .unwrap()
-                .starts_with("g_n [m/s],g_t [m/s]")
+        // The map's records come on download, from the frame's arrays, equal to the core's.
+        let m = &j["map"];
+        let codes = &f.codes[m["class"]["at"].as_u64().unwrap() as usize..][..36];
+        let csv = crate::explorer::map_records(get(&f, &m["g"]), get(&f, &m["epsT"]), codes);
+        let mut req = rime_core::explorer::frame::Request::new(scene, Accuracy::Precise);
+        req.speeds = Some((1e-6, 1.0));
+        req.points = 30;
+        req.map_n = 6;
+        let core = rime_core::explorer::frame::compute(&req, &|| false).unwrap();
+        assert_eq!(
+            csv.unwrap(),
+            rime_core::explorer::records::frame_map_csv(&core).unwrap()
         );
         let figs = j["figures"].as_array().unwrap();
         assert_eq!(figs.len(), 2);
