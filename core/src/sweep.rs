@@ -55,7 +55,7 @@ pub fn log_space(from: f64, to: f64, out: &mut [f64]) {
     out[n - 1] = to;
 }
 
-/// Fills `out` with speeds spaced evenly from 0 to `max` inclusive.
+/// Fills `out` with speeds spaced evenly from 0 to `max` inclusive, both ends exact.
 pub fn linear_space(max: f64, out: &mut [f64]) {
     let n = out.len();
     for (i, g) in out.iter_mut().enumerate() {
@@ -64,6 +64,11 @@ pub fn linear_space(max: f64, out: &mut [f64]) {
         } else {
             max * i as f64 / (n - 1) as f64
         };
+    }
+    // The last speed is `max` itself (max·(n−1)/(n−1) can miss it by an ulp), so the printed grid
+    // names its range exactly.
+    if let Some(last) = out.last_mut() {
+        *last = max;
     }
 }
 

@@ -2,7 +2,7 @@
 
 use super::limits::SPEED_MAX;
 use crate::contact::Contact;
-use crate::math::{log10, powf};
+use crate::math::log10;
 
 /// Multiple of the largest critical speed that the automatic stick-map range spans: the sticking
 /// corner (below g_s) then takes a fifth of each axis, and the regimes above it stay visible.
@@ -42,7 +42,8 @@ pub fn nice_ceil(v: f64) -> f64 {
     if !(v.is_finite() && v > 0.0) {
         return 1.0;
     }
-    let base = powf(10.0, libm::floor(log10(v)));
+    // The nearest double to the decade, so that 5 × 10^k is the double `5e{k}` a user would type.
+    let base = crate::sweep::exact_decade(libm::floor(log10(v)) as i32);
     for m in [1.0, 2.0, 5.0, 10.0] {
         if m * base >= v * (1.0 - 1e-12) {
             return m * base;
