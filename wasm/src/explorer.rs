@@ -72,6 +72,28 @@ pub fn map_records(g: &[f64], eps_t: &[f64], codes: &[u8]) -> Result<String, Str
     Ok(rime_core::explorer::records::map_csv(&map))
 }
 
+/// The appendix as JSON (`{input, result, paper}`) for `input`, or without one the paper's planet
+/// and distance with the scene's grain 1 radius, density and surface energy (the paper's 0.1 J/m²
+/// without adhesion). One builder for the frame and [`Explorer::tidal`].
+pub fn tidal_json(scene: &Scene, input: Option<TidalInput>) -> Result<Json, String> {
+    let input = input.unwrap_or_else(|| TidalInput {
+        radius: scene.grains.radius_1,
+        density: scene.grains.density,
+        surface_energy: scene
+            .adhesion
+            .map_or(TidalInput::default().surface_energy, |a| a.surface_energy),
+        ..TidalInput::default()
+    });
+    let r = tidal(&input).map_err(|e| format!("tidal.{e}"))?;
+    let q = PAPER_QUOTED;
+    Ok(json!({
+        "input": input,
+        "result": r,
+        "paper": {"delta_f": q.delta_f, "surface_force": q.surface_force, "d_roche": q.d_roche,
+                  "d_min": q.d_min, "r_max": q.r_max},
+    }))
+}
+
 fn core_err(e: rime_core::Error) -> String {
     e.to_string()
 }
@@ -351,32 +373,16 @@ impl Explorer {
     /// `TidalInput`; empty means the paper's planet and distance with the scene's grain 1 radius,
     /// density and surface energy (the paper's 0.1 J/m² without adhesion).
     pub fn tidal(&self, input_json: &str) -> Result<String, String> {
-        let input: TidalInput = if input_json.trim().is_empty() {
-            TidalInput {
-                radius: self.scene.grains.radius_1,
-                density: self.scene.grains.density,
-                surface_energy: self
-                    .scene
-                    .adhesion
-                    .map_or(TidalInput::default().surface_energy, |a| a.surface_energy),
-                ..TidalInput::default()
-            }
+        let input: Option<TidalInput> = if input_json.trim().is_empty() {
+            None
         } else {
             let de = &mut serde_json::Deserializer::from_str(input_json);
-            serde_path_to_error::deserialize(de).map_err(|e| {
+            Some(serde_path_to_error::deserialize(de).map_err(|e| {
                 let path = e.path().to_string();
                 format!("tidal.{path}: {}", e.into_inner())
-            })?
+            })?)
         };
-        let r = tidal(&input).map_err(|e| format!("tidal.{}", core_err(e)))?;
-        let q = PAPER_QUOTED;
-        Ok(json!({
-            "input": input,
-            "result": r,
-            "paper": {"delta_f": q.delta_f, "surface_force": q.surface_force, "d_roche": q.d_roche,
-                      "d_min": q.d_min, "r_max": q.r_max},
-        })
-        .to_string())
+        Ok(tidal_json(&self.scene, input)?.to_string())
     }
 }
 

@@ -8,12 +8,13 @@
 
 use crate::explorer::{
     MAX_MAP_SIDE, STATUSES, class_code, parse_accuracy, parse_scene, speeds, status_code,
+    tidal_json,
 };
 use rime_core::explorer::frame::{Curve, Overlay, Request, SWEEPS, compute};
 use rime_core::explorer::{figures, records};
 use rime_core::figure::Figure;
 use rime_core::params::{PARAMETERS, Value};
-use rime_core::tidal::{PAPER_QUOTED, TidalInput, tidal};
+use rime_core::tidal::TidalInput;
 use rime_core::{Scene, Status};
 use serde::Deserialize;
 use serde_json::{Value as Json, json};
@@ -237,25 +238,6 @@ fn values(scene: &Scene) -> Json {
     Json::Object(m)
 }
 
-fn tidal_part(scene: &Scene, input: Option<TidalInput>) -> Result<Json, String> {
-    let input = input.unwrap_or_else(|| TidalInput {
-        radius: scene.grains.radius_1,
-        density: scene.grains.density,
-        surface_energy: scene
-            .adhesion
-            .map_or(TidalInput::default().surface_energy, |a| a.surface_energy),
-        ..TidalInput::default()
-    });
-    let r = tidal(&input).map_err(|e| format!("tidal.{e}"))?;
-    let q = PAPER_QUOTED;
-    Ok(json!({
-        "input": input,
-        "result": r,
-        "paper": {"delta_f": q.delta_f, "surface_force": q.surface_force, "d_roche": q.d_roche,
-                  "d_min": q.d_min, "r_max": q.r_max},
-    }))
-}
-
 /// Computes the frame of `scene` as seen through `view`. Fails only for a request that is not
 /// valid (scene or view naming the field); a part that fails is listed in `errors` instead.
 pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
@@ -416,7 +398,7 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
         match if force("tidal") {
             Err(forced("tidal"))
         } else {
-            tidal_part(&scene, view.tidal)
+            tidal_json(&scene, view.tidal)
         } {
             Ok(t) => t,
             Err(e) => {
