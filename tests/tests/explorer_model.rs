@@ -2,9 +2,22 @@
 //! (`rime_core::explorer::frame::compute`) gives bit-identical numbers to the command line for the
 //! same scene, speeds and level.
 
-use rime_core::explorer::frame::{Request, compute};
+use rime_core::explorer::frame::{Frame, Request, compute};
 use rime_core::{Accuracy, Preset};
 use rime_tests::rime_json;
+
+/// The core's frame of a preset at `level` with `points` curve speeds and an `map_n`² stick map.
+fn frame(preset: &str, level: Accuracy, points: usize, map_n: usize) -> Frame {
+    let scene = Preset::ALL
+        .iter()
+        .find(|p| p.name() == preset)
+        .unwrap()
+        .scene();
+    let mut req = Request::new(scene, level);
+    req.points = points;
+    req.map_n = map_n;
+    compute(&req, &|| false).unwrap()
+}
 
 #[test]
 fn frame_and_command_line_give_bit_identical_numbers_issue_11() {
@@ -13,15 +26,7 @@ fn frame_and_command_line_give_bit_identical_numbers_issue_11() {
         ("ice-sticky", Accuracy::Precise),
         ("ice", Accuracy::Balanced),
     ] {
-        let scene = Preset::ALL
-            .iter()
-            .find(|p| p.name() == preset)
-            .unwrap()
-            .scene();
-        let mut req = Request::new(scene, level);
-        req.points = 25;
-        req.map_n = 9;
-        let f = compute(&req, &|| false).unwrap();
+        let f = frame(preset, level, 25, 9);
         assert!(f.errors.is_empty(), "{:?}", f.errors);
         let list: Vec<String> = f.g.iter().map(|g| format!("{g:?}")).collect();
         let level_name = level.name();
@@ -89,15 +94,7 @@ fn explorer_records_equal_the_command_lines_csv_issue_11() {
         ("ice-frost", Accuracy::Fast),
         ("ice-sticky", Accuracy::Precise),
     ] {
-        let scene = Preset::ALL
-            .iter()
-            .find(|p| p.name() == preset)
-            .unwrap()
-            .scene();
-        let mut req = Request::new(scene, level);
-        req.points = 31;
-        req.map_n = 7;
-        let f = compute(&req, &|| false).unwrap();
+        let f = frame(preset, level, 31, 7);
         let curve = records::frame_curve_csv(&f);
         let lines: Vec<&str> = curve.lines().collect();
         let first = lines[1].split(',').next().unwrap();

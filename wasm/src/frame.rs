@@ -366,9 +366,9 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
             // The map's records are formatted on download (`mapRecords`), not every frame.
             "map": Json::Null,
             "context": {
-                "curve": ctx("ε_N records of this scene (rime curve)"),
-                "family": ctx("every ε_N curve of the chart"),
-                "map": ctx("stick-map records (rime map)"),
+                "curve": ctx(records::CURVE_WHAT),
+                "family": ctx(records::FAMILY_WHAT),
+                "map": ctx(records::MAP_WHAT),
             },
         }),
     );

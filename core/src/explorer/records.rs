@@ -29,6 +29,13 @@ pub const CURVE_HEADER: [&str; 6] = [
 /// Header of stick-map records (`rime map`, the explorer's map).
 pub const MAP_HEADER: [&str; 4] = ["g_n [m/s]", "g_t [m/s]", "eps_t", "class"];
 
+/// What each file of records holds: the first context line of a download or export.
+pub const CURVE_WHAT: &str = "ε_N records of this scene (rime curve)";
+/// See [`CURVE_WHAT`].
+pub const FAMILY_WHAT: &str = "every ε_N curve of the chart";
+/// See [`CURVE_WHAT`].
+pub const MAP_WHAT: &str = "stick-map records (rime map)";
+
 /// The paper every record comes from.
 pub const CITATION: &str = "J.-M. Hertzsch (2002), A model for surface effects in slow collisions of icy grains, Planet. Space Sci. 50, 1387";
 

@@ -38,45 +38,47 @@ pub fn date(secs: u64) -> String {
 /// frame has a map) and the figures as SVG and PNG into `dir`, which must exist. Each CSV starts
 /// with `# ` context lines (version, level, scene, `date`, citation). Returns the files written.
 pub fn write_frame(dir: &Path, f: &Frame, view: &View, date: &str) -> CliResult<Vec<String>> {
-    let mut names = Vec::new();
-    let mut written = Vec::new();
-    let mut write = |name: &str, bytes: &[u8]| -> CliResult<()> {
-        write_atomic(&dir.join(name), bytes)?;
-        written.push(name.to_string());
-        Ok(())
-    };
-    write(
-        "scene.json",
-        (scene_json(&f.request.scene)? + "\n").as_bytes(),
-    )?;
     let context = |what: &str| records::context(f, what, VERSION, date);
-    write(
-        "eps_curve.csv",
-        (context("ε_N records of this scene (rime curve)") + &records::frame_curve_csv(f))
-            .as_bytes(),
-    )?;
-    write(
-        "eps_family.csv",
-        (context("every ε_N curve of the chart") + &records::family_csv(f)).as_bytes(),
-    )?;
+    let mut texts = vec![
+        (
+            "scene.json".to_string(),
+            scene_json(&f.request.scene)? + "\n",
+        ),
+        (
+            "eps_curve.csv".to_string(),
+            context(records::CURVE_WHAT) + &records::frame_curve_csv(f),
+        ),
+        (
+            "eps_family.csv".to_string(),
+            context(records::FAMILY_WHAT) + &records::family_csv(f),
+        ),
+    ];
     if let Some(map) = records::frame_map_csv(f) {
-        write(
-            "stick_map.csv",
-            (context("stick-map records (rime map)") + &map).as_bytes(),
-        )?;
+        texts.push((
+            "stick_map.csv".to_string(),
+            context(records::MAP_WHAT) + &map,
+        ));
     }
-    for fig in frame_figures(f, view, VERSION) {
-        let svg = rime_core::figure::render_svg(&fig, 1000, 650)?;
-        write(&format!("{}.svg", fig.name), svg.as_bytes())?;
+    let figures = frame_figures(f, view, VERSION);
+    for fig in &figures {
+        let svg = rime_core::figure::render_svg(fig, 1000, 650)?;
+        texts.push((format!("{}.svg", fig.name), svg));
+    }
+    let mut written = Vec::new();
+    for (name, text) in texts {
+        write_atomic(&dir.join(&name), text.as_bytes())?;
+        written.push(name);
+    }
+    for fig in &figures {
         // PNG via a temporary name, then renamed: never a half-written file.
         let tmp = dir.join(format!(".{}.tmp.png", fig.name));
-        rime_core::figure::render_png(&fig, &tmp, 1000, 650)?;
-        let png = dir.join(format!("{}.png", fig.name));
-        std::fs::rename(&tmp, &png).map_err(|e| CliError(format!("{}: {e}", png.display())))?;
-        names.push(format!("{}.png", fig.name));
+        rime_core::figure::render_png(fig, &tmp, 1000, 650)?;
+        let png = format!("{}.png", fig.name);
+        std::fs::rename(&tmp, dir.join(&png))
+            .map_err(|e| CliError(format!("{}: {e}", dir.join(&png).display())))?;
+        written.push(png);
     }
-    names.extend(written);
-    Ok(names)
+    Ok(written)
 }
 
 /// Writes the frame ([`write_frame`]) into a new folder `rime-export-<UTC timestamp>` under
