@@ -236,7 +236,7 @@ fn render(rows: &[Row], frame: &[(&str, f64)]) -> String {
     );
     for r in rows {
         s.push_str(&format!(
-            "{:<18} {:<9} {:>11.2e} {:>10.1} {:>13.3} {:>12.3}\n",
+            "{:<18} {:<10} {:>10.2e} {:>10.1} {:>13.3} {:>12.3}\n",
             r.model, r.level, r.max_rel_error, r.ns_per_eps, r.ms_per_curve, r.ms_per_map
         ));
     }
