@@ -99,7 +99,9 @@ function onFrame(msg, req) {
   const tm = [performance.now()];
   draw();
   tm.push(performance.now());
-  replayCollision();
+  // The collision card integrates one trajectory on this thread (up to ~12 ms at the precise
+  // levels): it follows in the next task, so the chart and the map reach the screen first.
+  scheduleReplay();
   tm.push(performance.now());
   showWarnings(res);
   showTidal(res);
@@ -193,6 +195,16 @@ function probe(g, accuracy) {
 
 /** One collision of the drawn scene at `app.collisionG` (main thread: one live integration). */
 let replayed = '';
+let replayTimer = null;
+/** Replays the collision of the newest drawn frame once the current task has painted. */
+function scheduleReplay() {
+  if (replayTimer !== null) return;
+  replayTimer = setTimeout(() => {
+    replayTimer = null;
+    replayCollision();
+  }, 0);
+}
+
 function replayCollision(g) {
   if (g !== undefined) app.collisionG = g;
   if (!app.drawn || !app.collisionView) return;
