@@ -8,8 +8,9 @@ if ! "$venv/bin/python" -c "import rebound, sys; sys.exit(rebound.__version__ !=
   python3 -m venv "$venv"
   "$venv/bin/pip" install -q "rebound==$version"
 fi
-cargo build -q --release -p rime-tui
 rime="${CARGO_TARGET_DIR:-target}/release/rime"
+# make test's build step built it; run alone, build it the same way (nothing is built twice)
+[ -x "$rime" ] || cargo build --locked -q --release --workspace
 out=target/rebound-check
 rm -rf "$out"
 "$rime" export --preset ice --accuracy precise --out "$out/ice" >/dev/null

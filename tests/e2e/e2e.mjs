@@ -17,6 +17,15 @@ const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '.
 const rime = process.env.RIME_BIN || path.join(root, 'target', 'release', 'rime');
 const outDir = path.join(root, 'target');
 fs.mkdirSync(outDir, { recursive: true });
+// Every wait below is a hang guard, never a speed check: it waits for a condition and gives up after
+// GUARD_MS. The slowest wait (the literal layer reading at precise, or the first load) takes about 1 s
+// on an idle machine, so 60 s is over 50× that; the run reports its slowest wait at the end.
+const GUARD_MS = 60000;
+let slowestWait = { ms: 0, what: '' };
+function notedWait(what, t0) {
+  const ms = Date.now() - t0;
+  if (ms > slowestWait.ms) slowestWait = { ms, what };
+}
 const FLAGS = [
   '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
   '--disable-background-networking', '--disable-component-update', '--disable-sync',
@@ -68,13 +77,17 @@ function watch(page, tag) {
   return page;
 }
 async function ready(page) {
-  await page.waitForFunction(() => window.rimeState && window.rimeState.ready === true, null, { timeout: 30000 });
+  const t0 = Date.now();
+  await page.waitForFunction(() => window.rimeState && window.rimeState.ready === true, null, { timeout: GUARD_MS });
+  notedWait('page ready', t0);
 }
 async function updates(page) {
   return page.evaluate(() => window.rimeState.updates);
 }
 async function waitUpdate(page, before) {
-  await page.waitForFunction((b) => window.rimeState.updates > b, before, { timeout: 10000 });
+  const t0 = Date.now();
+  await page.waitForFunction((b) => window.rimeState.updates > b, before, { timeout: GUARD_MS });
+  notedWait('a frame after an edit', t0);
 }
 /** Number of non-white pixels of a canvas (is anything drawn?). */
 async function inked(page, id) {
@@ -98,7 +111,14 @@ try {
   await check('page loads without console errors and draws both canvases', async () => {
     await page.goto(url, { waitUntil: 'load' });
     await ready(page);
-    await page.waitForTimeout(300);
+    // Both canvases are painted after the first frame arrives: wait for ink, not for a fixed time.
+    await page.waitForFunction(() => ['chart', 'map'].every((id) => {
+      const c = document.getElementById(id);
+      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let n = 0;
+      for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 0 && (d[i] < 240 || d[i + 1] < 240 || d[i + 2] < 240)) n++;
+      return n > 2000;
+    }), null, { timeout: GUARD_MS }).catch(() => {}); // the asserts below say what is missing
     const s = await page.evaluate(() => window.rimeState);
     assert(s.errors.length === 0, `app errors: ${s.errors.join('; ')}`);
     assert(s.eps.length > 10 && s.eps.every((v) => Number.isFinite(v)), 'curve values missing');
@@ -177,7 +197,7 @@ try {
   await check('URL hash round-trips the scene and view', async () => {
     const s = await page.evaluate(() => window.rimeState);
     // The hash is written shortly after the last input (coalesced).
-    await page.waitForFunction((scene) => decodeURIComponent(location.hash).includes(scene), s.sceneJson, { timeout: 5000 });
+    await page.waitForFunction((scene) => decodeURIComponent(location.hash).includes(scene), s.sceneJson, { timeout: GUARD_MS });
     const href = page.url();
     assert(href.includes('#s='), `no state in the URL: ${href}`);
     const p2 = watch(await context.newPage(), 'reload');
@@ -373,7 +393,7 @@ try {
     assert(!(await pf.locator('#banner').isVisible()), 'banner shown although nothing failed');
     const shown = await pf.locator('[id="p-layer.thickness"]').inputValue();
     assert(shown === '10 µm', `thickness field does not show the drawn scene: "${shown}"`);
-    await pf.waitForFunction((scene) => new URLSearchParams(location.hash.slice(1)).get('s') === scene, s.sceneJson, { timeout: 5000 });
+    await pf.waitForFunction((scene) => new URLSearchParams(location.hash.slice(1)).get('s') === scene, s.sceneJson, { timeout: GUARD_MS });
     return `"${noteText.trim()}"`;
   });
 
@@ -392,7 +412,7 @@ try {
     // The scene is applied and drawn; controls and link show it.
     assert(JSON.parse(s.sceneJson).layer.viscosity === 3000, `drawn scene: ${s.sceneJson}`);
     assert((await pf.locator('[id="p-layer.viscosity"]').inputValue()) === '3 kPa s', 'control does not show the drawn scene');
-    await pf.waitForFunction((scene) => new URLSearchParams(location.hash.slice(1)).get('s') === scene, s.sceneJson, { timeout: 5000 });
+    await pf.waitForFunction((scene) => new URLSearchParams(location.hash.slice(1)).get('s') === scene, s.sceneJson, { timeout: GUARD_MS });
     // What succeeded is drawn: the curve with gaps, the family, the clean curve, the layer marker, the tidal table.
     const gaps = s.eps.filter((v) => !Number.isFinite(v)).length;
     assert(gaps > 0 && gaps < 20 && s.eps.filter(Number.isFinite).length > 200, `curve: ${gaps} gaps`);
@@ -421,16 +441,16 @@ try {
     const t = await pf.evaluate(() => window.rimeState);
     assert(JSON.parse(t.sceneJson).layer.viscosity === 1500 && t.mapClasses && t.eps.every(Number.isFinite), 'later edit not drawn');
     assert(!(await banner.isVisible()), 'banner still shown after a clean frame');
-    await pf.waitForFunction((scene) => new URLSearchParams(location.hash.slice(1)).get('s') === scene, t.sceneJson, { timeout: 5000 });
+    await pf.waitForFunction((scene) => new URLSearchParams(location.hash.slice(1)).get('s') === scene, t.sceneJson, { timeout: GUARD_MS });
     return `banner: "${text.split('\n').slice(1, 3).join(' | ').slice(0, 160)}…"; ${gaps} gaps`;
   });
 
   await check('the worker: during a slow computation (a frame held 20 s in the worker) typing is handled at once; a newer edit supersedes it', async () => {
     await pf.selectOption('#preset', 'ice-frost');
-    await pf.waitForFunction(() => JSON.parse(window.rimeState.sceneJson).layer.thickness === 1e-6, null, { timeout: 10000 });
+    await pf.waitForFunction(() => JSON.parse(window.rimeState.sceneJson).layer.thickness === 1e-6, null, { timeout: GUARD_MS });
     await pf.selectOption('[id="p-layer.reading"]', 'literal');
     await pf.selectOption('#accuracy', 'precise');
-    await pf.waitForFunction(() => window.rimeState.view.accuracy === 'precise' && JSON.parse(window.rimeState.sceneJson).layer.reading === 'literal', null, { timeout: 20000 });
+    await pf.waitForFunction(() => window.rimeState.view.accuracy === 'precise' && JSON.parse(window.rimeState.sceneJson).layer.reading === 'literal', null, { timeout: GUARD_MS });
     const u = await updates(pf);
     // The literal reading with A from viscosities used to take a minute per frame; it is fast now
     // (issue 10), so the test holds the worker busy on purpose.
@@ -445,7 +465,9 @@ try {
     const still = await updates(pf);
     const busy = await pf.locator('#timing').evaluate((e) => e.classList.contains('busy'));
     assert(still === u, 'the slow frame already arrived: pick a slower scene for this check');
-    assert(shown === '917' && dt < 1000, `typed value took ${dt} ms to appear`);
+    // The value shows while the slow frame is still on its way (held for 20 s on purpose): the
+    // order is the check; the time it took is only reported.
+    assert(shown === '917', `typed value not shown while the worker computed: "${shown}"`);
     assert(busy, 'the page does not say it is computing');
     // Newer edits supersede the slow request (the worker restarts) and are drawn promptly.
     await pf.evaluate(() => { window.rimeTest.delayMs = 0; });
@@ -457,7 +479,7 @@ try {
       const s = window.rimeState;
       const sc = JSON.parse(s.sceneJson);
       return sc.grains.density === 917 && sc.layer.reading === 'offset' && sc.bulk.damping.time === 1e-4 && s.view.accuracy === 'fast';
-    }, null, { timeout: 15000 }).catch(async (e) => {
+    }, null, { timeout: GUARD_MS }).catch(async (e) => {
       const st = await pf.evaluate(() => ({ scene: window.rimeState.sceneJson, view: window.rimeState.view, timing: document.getElementById('timing').textContent }));
       throw new Error(`${e.message.split('\n')[0]}: drawn ${JSON.stringify(st)}`);
     });
@@ -468,12 +490,12 @@ try {
 
   await check('overlays: a measured law drawn only over its measured speeds with its score, another model with its g_cr (issues 15, 16)', async () => {
     await pf.selectOption('#preset', 'ice-sticky');
-    await pf.waitForFunction(() => JSON.parse(window.rimeState.sceneJson).adhesion !== null, null, { timeout: 10000 });
+    await pf.waitForFunction(() => JSON.parse(window.rimeState.sceneJson).adhesion !== null, null, { timeout: GUARD_MS });
     await pf.selectOption('#accuracy', 'fast');
     await pf.locator('#overlay-box summary').click();
     await pf.locator('#overlay-list input[value="atlas:bridges1984"]').check();
     await pf.locator('#overlay-list input[value="model:brilliantov2007"]').check();
-    await pf.waitForFunction(() => (window.rimeState.overlays || []).length === 2, null, { timeout: 60000 });
+    await pf.waitForFunction(() => (window.rimeState.overlays || []).length === 2, null, { timeout: GUARD_MS });
     const s = await pf.evaluate(() => window.rimeState);
     const law = s.overlays.find((o) => o.key === 'atlas:bridges1984');
     const model = s.overlays.find((o) => o.key === 'model:brilliantov2007');
@@ -485,26 +507,26 @@ try {
     const scores = await pf.locator('#overlay-scores').innerText();
     assert(/rms ε_N difference against/.test(scores), `scores: "${scores}"`);
     // The choice is kept in the link.
-    await pf.waitForFunction(() => decodeURIComponent(location.hash).includes('atlas:bridges1984'), null, { timeout: 5000 });
+    await pf.waitForFunction(() => decodeURIComponent(location.hash).includes('atlas:bridges1984'), null, { timeout: GUARD_MS });
     // "Fit this scene to that entry": A is fitted to the checked law and the fitted scene is drawn.
     const a0 = JSON.parse(s.sceneJson).bulk.damping.time;
     await pf.locator('#overlay-fit').click();
-    await pf.waitForFunction((a) => JSON.parse(window.rimeState.sceneJson).bulk.damping.time !== a, a0, { timeout: 20000 });
+    await pf.waitForFunction((a) => JSON.parse(window.rimeState.sceneJson).bulk.damping.time !== a, a0, { timeout: GUARD_MS });
     const fitted = await pf.locator('#overlay-fit-result').innerText();
     assert(/fitted to bridges1984/.test(fitted), `fit result: "${fitted}"`);
     await pf.locator('#overlay-list input[value="model:brilliantov2007"]').uncheck();
     await pf.locator('#overlay-list input[value="atlas:bridges1984"]').uncheck();
-    await pf.waitForFunction(() => (window.rimeState.overlays || []).length === 0, null, { timeout: 20000 });
+    await pf.waitForFunction(() => (window.rimeState.overlays || []).length === 0, null, { timeout: GUARD_MS });
     return `law over ${lo.toExponential(2)}…${hi.toExponential(2)} m/s, score ${law.score.toFixed(4)}; brilliantov2007 g_cr ${model.speeds.find((x) => x.name === 'g_cr').value.toExponential(3)} m/s`;
   });
 
   await check('inside one collision: clicking the chart replays that collision; t_c and ε_N as `rime collision`, ledger closed, reduced motion respected (issue 13)', async () => {
     await pf.selectOption('#accuracy', 'precise');
-    await pf.waitForFunction(() => window.rimeState.view.accuracy === 'precise', null, { timeout: 20000 });
+    await pf.waitForFunction(() => window.rimeState.view.accuracy === 'precise', null, { timeout: GUARD_MS });
     const before = await pf.evaluate(() => window.rimeState.collision && window.rimeState.collision.g);
     const box = await pf.locator('#chart').boundingBox();
     await pf.locator('#chart').click({ position: { x: box.width * 0.62, y: box.height * 0.5 } });
-    await pf.waitForFunction((g) => window.rimeState.collision && window.rimeState.collision.g !== g, before, { timeout: 10000 });
+    await pf.waitForFunction((g) => window.rimeState.collision && window.rimeState.collision.g !== g, before, { timeout: GUARD_MS });
     const c = await pf.evaluate(() => window.rimeState.collision);
     const scene = await pf.evaluate(() => window.rimeState.sceneJson);
     const sceneFile = path.join(os.tmpdir(), `rime-e2e-collision-${process.pid}.json`);
@@ -527,7 +549,7 @@ try {
     const pr = watch(await context.newPage(), 'reduced-motion');
     await pr.emulateMedia({ reducedMotion: 'reduce' });
     await pr.goto(url);
-    await pr.waitForFunction(() => window.rimeState.collision, null, { timeout: 30000 });
+    await pr.waitForFunction(() => window.rimeState.collision, null, { timeout: GUARD_MS });
     const r = await pr.evaluate(() => window.rimeState.collision);
     assert(r.reduced && !r.animating, `reduced motion: ${JSON.stringify(r)}`);
     await pr.screenshot({ path: path.join(root, 'target', 'www-collision-375.png'), fullPage: false }).catch(() => {});
@@ -749,7 +771,7 @@ try {
     // Readouts: a cursor on the chart (keyboard), then the scene changes under it (Ctrl+Z): the
     // readout shows the new frame's value there, computed at the chosen level.
     await pn.selectOption('#accuracy', 'precise');
-    await pn.waitForFunction(() => window.rimeState.view.accuracy === 'precise', null, { timeout: 20000 });
+    await pn.waitForFunction(() => window.rimeState.view.accuracy === 'precise', null, { timeout: GUARD_MS });
     await typeIn(pn, 'layer.viscosity', '3 kPa s');
     await pn.locator('#chart').focus();
     for (let k = 0; k < 6; k++) await pn.keyboard.press('ArrowRight');
@@ -762,7 +784,8 @@ try {
     let u = await updates(pn);
     await pn.keyboard.press('Control+z');
     await waitUpdate(pn, u);
-    await pn.waitForTimeout(50);
+    // The readout is redrawn with the frame: wait until it shows a new value (not a fixed time).
+    await pn.waitForFunction((b) => document.getElementById('chart-readout').innerText !== b, before.t, { timeout: GUARD_MS }).catch(() => {});
     const after = await readEps();
     const s = await pn.evaluate(() => window.rimeState);
     const k = Math.floor(s.g.length / 2) + 6;
@@ -782,7 +805,7 @@ try {
     await pn.locator('#t-distance').fill('2e5 km');
     await pn.locator('#t-distance').press('Enter');
     await waitUpdate(pn, u);
-    await pn.waitForFunction(() => /[?&#]?t=/.test(location.hash) && decodeURIComponent(location.hash).includes('200000000'), null, { timeout: 5000 });
+    await pn.waitForFunction(() => /[?&#]?t=/.test(location.hash) && decodeURIComponent(location.hash).includes('200000000'), null, { timeout: GUARD_MS });
     const q = watch(await context.newPage(), 'tidal-link');
     await q.goto(pn.url(), { waitUntil: 'load' });
     await ready(q);
@@ -818,7 +841,7 @@ try {
     const from = await pn.evaluate(() => window.rimeState.view.from);
     assert(from === 1e-6, `"1 um/s" gave from = ${from}`);
     await pn.selectOption('#accuracy', 'fast');
-    await pn.waitForFunction(() => window.rimeState.view.accuracy === 'fast', null, { timeout: 20000 });
+    await pn.waitForFunction(() => window.rimeState.view.accuracy === 'fast', null, { timeout: GUARD_MS });
     return `readout follows the scene (${gShown}: ε_N ${before.eps} → ${after.eps}, at precise); bad field named: "${kept.notice.slice(0, 90)}…"; 309 digits → "${h.notice.slice(-80)}"`;
   });
 
@@ -900,11 +923,14 @@ try {
   });
   await pn.close();
 
-  let med = NaN, medTotal = NaN;
-  await check('recompute + redraw within one animation frame at fast (median of 40 inputs)', async () => {
+  // Speed is reported, never asserted (a busy machine must not fail the suite): the median time
+  // from a slider's input to the redrawn frame at fast, and the worker's compute time within it,
+  // go to the log and to target/bench/page-frame.json.
+  let med = NaN, medTotal = NaN, maxTotal = NaN, frameScene = null;
+  await check('40 slider inputs at fast each give a recomputed, redrawn frame (timings reported)', async () => {
     if ((await page.evaluate(() => window.rimeState.view.accuracy)) !== 'fast') {
       await page.selectOption('#accuracy', 'fast');
-      await page.waitForFunction(() => window.rimeState.view.accuracy === 'fast', null, { timeout: 20000 });
+      await page.waitForFunction(() => window.rimeState.view.accuracy === 'fast', null, { timeout: GUARD_MS });
     }
     await page.evaluate(() => { window.rimeState.computeMs.length = 0; });
     const slider = page.locator('input[type=range][data-path="layer.viscosity"]');
@@ -915,10 +941,12 @@ try {
     }
     const s = await page.evaluate(() => window.rimeState);
     const c = s.computeMs.slice(-40), t = s.totalMs.slice(-40);
+    assert(c.length === 40 && t.length === 40 && [...c, ...t].every((x) => Number.isFinite(x) && x >= 0), `timings missing: ${c.length} compute, ${t.length} total`);
     med = median(c);
     medTotal = median(t);
-    assert(medTotal < 16.7, `median recompute+redraw ${medTotal.toFixed(2)} ms exceeds a 60 Hz frame`);
-    return `median recompute ${med.toFixed(2)} ms, with redraw ${medTotal.toFixed(2)} ms (max ${Math.max(...t).toFixed(1)} ms)`;
+    maxTotal = Math.max(...t);
+    frameScene = JSON.parse(s.sceneJson);
+    return `median recompute ${med.toFixed(2)} ms, with redraw ${medTotal.toFixed(2)} ms (max ${maxTotal.toFixed(1)} ms), reported in target/bench/page-frame.json`;
   });
 
   await check('screenshots saved (1280 px and 375 px wide); no horizontal overflow at 375 px', async () => {
@@ -946,7 +974,16 @@ try {
     const left = problems.filter((p) => !expected.some(([tag, re]) => p.startsWith(`${tag}: console error:`) && re.test(p)));
     assert(left.length === 0, left.join('; '));
   });
-  console.log(`browser-measured recompute (fast): median ${med.toFixed(3)} ms; with redraw: median ${medTotal.toFixed(3)} ms`);
+  const benchDir = path.join(outDir, 'bench');
+  fs.mkdirSync(benchDir, { recursive: true });
+  const cores = os.cpus().length;
+  const load = os.loadavg()[0];
+  fs.writeFileSync(path.join(benchDir, 'page-frame.json'), `${JSON.stringify([{
+    surface: 'page', scene: frameScene, edit: 'layer.viscosity slider', level: 'fast', viewport: '1280x1000',
+    inputs: 40, compute_ms: med, input_to_frame_ms: medTotal, input_to_frame_max_ms: maxTotal, cores, load_average: load,
+  }], null, 2)}\n`);
+  console.log(`report: page at fast (median of 40 slider inputs): recompute ${med.toFixed(2)} ms, input to redrawn frame ${medTotal.toFixed(2)} ms (max ${maxTotal.toFixed(1)} ms); ${cores} cores, load ${load.toFixed(2)}`);
+  console.log(`report: page e2e: slowest wait ${(slowestWait.ms / 1000).toFixed(2)} s (${slowestWait.what}); hang guard ${GUARD_MS / 1000} s`);
 } finally {
   await context.close();
   fs.rmSync(userDataDir, { recursive: true, force: true });

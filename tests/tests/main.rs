@@ -1,19 +1,10 @@
-//! The one integration-test binary of rime.
+//! The library-level integration tests of rime (one binary). Tests that run the `rime` binary are
+//! in `tui/tests/cli/`, where Cargo builds the binary with them.
 
-mod bad_input;
-mod batch;
-mod cli;
-mod cli_usability;
-mod collision;
 mod cost;
-mod explorer_model;
-mod exported;
 mod extremes;
 mod fuzz;
-mod measured;
-mod models;
 mod physics;
 mod properties;
 mod reference;
-mod takeaway;
 mod thresholds;

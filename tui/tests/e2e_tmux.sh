@@ -8,13 +8,16 @@
 # export folder and its CSVs, undoes and redoes the edit (`u`, `U`), scrolls the help, saves (`w`),
 # edits again and quits (`q`, which asks about the unsaved edit: `n` stays, `y` quits) and checks
 # exit code 0. Exits non-zero with a message on
-# any failure. Every wait is a polling loop with a timeout (≤ 20 s).
+# any failure. Nothing sleeps for a fixed time: every wait polls the screen (or a file) for a condition,
+# and its timeout is only a hang guard. GUARD = 30 s: the slowest wait takes under 1 s on an idle
+# machine (the first frame; every other wait is one key's redraw), so the guard is over 30× that and
+# a loaded machine still passes.
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 BIN="${1:-$ROOT/target/release/rime}"
 if [[ ! -x "$BIN" ]]; then
-    (cd "$ROOT" && cargo build --release -p rime-tui >&2)
+    (cd "$ROOT" && cargo build --locked --release --workspace >&2)
 fi
 BIN="$(cd "$(dirname "$BIN")" && pwd)/$(basename "$BIN")"
 command -v tmux >/dev/null || { echo "e2e_tmux: tmux is not installed" >&2; exit 1; }
@@ -37,11 +40,20 @@ fail() {
 screen() { tmux capture-pane -p -t "$SESSION"; }
 
 # wait_for TEXT [TIMEOUT]: polls the screen until it contains TEXT.
+GUARD=30
+SLOWEST=0 SLOWEST_WHAT=""
+# noted T0 WHAT: remembers the slowest wait (reported at the end, so the guard's margin is visible).
+noted() {
+    local dt
+    dt=$(awk -v a="$1" -v b="$(date +%s.%N)" 'BEGIN { printf "%.2f", b - a }')
+    if awk -v a="$dt" -v b="$SLOWEST" 'BEGIN { exit !(a > b) }'; then SLOWEST=$dt SLOWEST_WHAT=$2; fi
+}
 wait_for() {
-    local text="$1" timeout="${2:-20}" start=$SECONDS
+    local text="$1" timeout="${2:-$GUARD}" start=$SECONDS t0
+    t0=$(date +%s.%N)
     while (( SECONDS - start < timeout )); do
-        if screen | grep -qF -- "$text"; then return 0; fi
-        sleep 0.2
+        if screen | grep -qF -- "$text"; then noted "$t0" "$text"; return 0; fi
+        sleep 0.05
     done
     fail "timed out after ${timeout}s waiting for '$text'"
 }
@@ -66,7 +78,7 @@ wait_for "g_s(layer)"
 # Move the cursor to where the layer matters (≈ 20 µm/s, just above g_s), from the default 1 cm/s;
 # each { is 1/3 decade.
 for _ in 1 2 3 4 5 6 7 8; do tmux send-keys -t "$SESSION" '{'; done
-sleep 0.3
+# (No sleep: keys are handled in order, so once the row selected below shows, the cursor has moved.)
 # The panel starts on row 0; layer.viscosity is row 12 (0-based) of the parameter list.
 for _ in $(seq 12); do tmux send-keys -t "$SESSION" j; done
 wait_for "▸η* layer viscosity"
@@ -77,7 +89,7 @@ wait_for "1.25 kPa s"
 # Wait for the recomputed frame: the readout must change.
 start=$SECONDS
 after="$(readout)"
-while [[ "$after" == "$before" ]] && (( SECONDS - start < 20 )); do
+while [[ "$after" == "$before" ]] && (( SECONDS - start < GUARD )); do
     sleep 0.2
     after="$(readout)"
 done
@@ -90,7 +102,7 @@ tmux send-keys -t "$SESSION" x
 wait_for "exported"
 start=$SECONDS
 dir=""
-while [[ -z "$dir" ]] && (( SECONDS - start < 20 )); do
+while [[ -z "$dir" ]] && (( SECONDS - start < GUARD )); do
     dir="$(find "$WORK" -maxdepth 1 -type d -name 'rime-export-*' | head -1)"
     [[ -n "$dir" ]] || sleep 0.2
 done
@@ -122,7 +134,7 @@ echo "e2e_tmux: the export's curve ($points speeds) and map (${n}×${n}) equal r
 tmux send-keys -t "$SESSION" u
 wait_for "undone"
 start=$SECONDS
-while [[ "$(readout)" != "$before" ]] && (( SECONDS - start < 20 )); do sleep 0.2; done
+while [[ "$(readout)" != "$before" ]] && (( SECONDS - start < GUARD )); do sleep 0.2; done
 [[ "$(readout)" == "$before" ]] || fail "u did not restore the readout ('$before')"
 tmux send-keys -t "$SESSION" U
 wait_for "redone"
@@ -135,7 +147,8 @@ tmux send-keys -t "$SESSION" NPage
 wait_for "Glossary"
 tmux send-keys -t "$SESSION" Escape
 start=$SECONDS
-while screen | grep -qF "Glossary" && (( SECONDS - start < 20 )); do sleep 0.2; done
+while screen | grep -qF "Glossary" && (( SECONDS - start < GUARD )); do sleep 0.2; done
+screen | grep -qF "Glossary" && fail "Esc did not close the help"
 
 # w writes the scene file; a second session's w would ask before overwriting it.
 tmux send-keys -t "$SESSION" w
@@ -153,8 +166,9 @@ tmux send-keys -t "$SESSION" q
 wait_for "quit anyway?"
 tmux send-keys -t "$SESSION" y
 start=$SECONDS
-while [[ ! -s "$WORK/exit" ]] && (( SECONDS - start < 20 )); do sleep 0.2; done
+while [[ ! -s "$WORK/exit" ]] && (( SECONDS - start < GUARD )); do sleep 0.2; done
 [[ -s "$WORK/exit" ]] || fail "rime did not exit after q"
 code="$(cat "$WORK/exit")"
 [[ "$code" == "EXIT:0" ]] || fail "rime exited with '$code', expected EXIT:0"
 echo "e2e_tmux: ok (changed a parameter, exported to $(basename "$dir"), undo/redo, help scroll, save, asked before quitting, quit with 0)"
+echo "report: tmux e2e: slowest wait ${SLOWEST} s (for '${SLOWEST_WHAT}'); hang guard ${GUARD} s"

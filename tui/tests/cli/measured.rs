@@ -1,9 +1,10 @@
 //! Measured ice (issue 15): the data atlas on the command line, fits with standard errors checked
 //! against the Monte-Carlo spread of refits, and sticking thresholds exported as C.
 
+use crate::bin::{rime, rime_json as json};
 use rime_core::fit_scene::fit;
 use rime_core::{Accuracy, Contact, Preset, Scene};
-use rime_tests::{rel, rime, rime_json as json};
+use rime_tests::rel;
 use std::process::Command;
 
 fn scratch(name: &str) -> std::path::PathBuf {

@@ -1,8 +1,8 @@
 //! Batch ε_N (`rime_core::batch`) against `Contact::normal` at Precise, and `rime eps --g-file`.
 
+use crate::bin::rime_binary;
 use rime_core::batch::BatchLaw;
 use rime_core::{Accuracy, Adhesion, Contact, ContactEnd, Damping, Preset, Scene};
-use rime_tests::rime_binary;
 use std::process::Command;
 
 /// Every preset, plus damping times that move the speeds across the whole table and a scene with

@@ -230,7 +230,7 @@ fn oblique_impact_conserves_momentum_and_the_energy_identity_with_kappa_holds() 
 }
 
 mod cli {
-    use rime_tests::rime_binary;
+    use crate::bin::rime_binary;
     use std::process::Command;
 
     fn rime(args: &[&str]) -> (i32, String, String) {

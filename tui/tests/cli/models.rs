@@ -286,7 +286,7 @@ fn every_model_is_bounded_and_continuous_in_g() {
 }
 
 fn rime(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(rime_tests::rime_binary())
+    let out = Command::new(crate::bin::rime_binary())
         .args(args)
         .output()
         .unwrap();
@@ -379,7 +379,7 @@ fn compare_sets_the_atlas_laws_beside_the_models_issue_16() {
     // `--models` takes the atlas's empirical laws as `atlas:ID`: the same values as `rime data
     // --law ID` (the atlas's own evaluation), `measured` inside the measured speeds and
     // `extrapolated` outside, and the measured range as characteristic speeds.
-    let run = rime_tests::rime_json;
+    let run = crate::bin::rime_json;
     let g = "1e-4,1e-3,0.01,0.1";
     let both = run(&[
         "compare",
@@ -410,7 +410,7 @@ fn compare_sets_the_atlas_laws_beside_the_models_issue_16() {
     assert!(speeds.iter().any(|s| s["model"] == "bridges1984"
         && s["name"] == "valid_from"
         && s["value"].as_f64() == Some(entry.valid_speed[0])));
-    let out = Command::new(rime_tests::rime_binary())
+    let out = Command::new(crate::bin::rime_binary())
         .args(["compare", "--models", "atlas:nope", "--g", "0.01"])
         .output()
         .unwrap();

@@ -2,9 +2,9 @@
 //! (`rime_core::explorer::frame::compute`) gives bit-identical numbers to the command line for the
 //! same scene, speeds and level.
 
+use crate::bin::rime_json;
 use rime_core::explorer::frame::{Frame, Request, compute};
 use rime_core::{Accuracy, Preset};
-use rime_tests::rime_json;
 
 /// The core's frame of a preset at `level` with `points` curve speeds and an `map_n`² stick map.
 fn frame(preset: &str, level: Accuracy, points: usize, map_n: usize) -> Frame {
@@ -100,7 +100,7 @@ fn explorer_records_equal_the_command_lines_csv_issue_11() {
         let first = lines[1].split(',').next().unwrap();
         let last = lines[lines.len() - 1].split(',').next().unwrap();
         let points = (lines.len() - 1).to_string();
-        let (code, out, err) = rime_tests::rime(&[
+        let (code, out, err) = crate::bin::rime(&[
             "curve",
             "--preset",
             preset,
@@ -123,7 +123,7 @@ fn explorer_records_equal_the_command_lines_csv_issue_11() {
 
         let map = records::frame_map_csv(&f).expect("the presets have friction");
         let max = records::cell(f.map.as_ref().unwrap().max);
-        let (code, out, err) = rime_tests::rime(&[
+        let (code, out, err) = crate::bin::rime(&[
             "map",
             "--preset",
             preset,

@@ -2,7 +2,7 @@
 //! bare switches, `--format` refused where it would be ignored, units on speeds, the explorer
 //! without a terminal, exact decades, units in CSV headers, completions and man page.
 
-use rime_tests::rime_binary;
+use crate::bin::rime_binary;
 use std::path::PathBuf;
 use std::process::{Command, Stdio};
 

@@ -1,7 +1,8 @@
 //! What users take away (issue 6): exported laws compile and reproduce the table, fits recover
 //! known parameters, figures and the bench report are written.
 
-use rime_tests::{rel, rime_binary};
+use crate::bin::rime_binary;
+use rime_tests::rel;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 

@@ -1,6 +1,7 @@
 //! The `rime` binary's subcommands: the JSON/CSV contract of docs/cli.md and bad input.
 
-use rime_tests::{rel, rime, rime_json as json};
+use crate::bin::{rime, rime_json as json};
+use rime_tests::rel;
 
 #[test]
 fn eps_json_has_the_contract_fields_in_order_given() {

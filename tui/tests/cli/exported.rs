@@ -3,10 +3,11 @@
 //! negative speeds, NaN, every preset (the literal layer reading is refused), the runtime-parameter
 //! variant, ε_T with its class, and the exported kinematics (momentum conserved, the core's result).
 
+use crate::bin::rime_binary;
 use rime_core::kinematics::{GrainState, Vector3, collide};
 use rime_core::scene::{LayerReading, Preset};
 use rime_core::{Accuracy, Contact, Scene};
-use rime_tests::{rel, rime_binary};
+use rime_tests::rel;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
