@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Builds the web explorer: the wasm module into www/pkg (wasm-bindgen --target web). `make www`.
+# Builds the web explorer: the wasm module into www/pkg (wasm-bindgen --target web) and the physics
+# notes into www/physics.html. `make www`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cargo build --target wasm32-unknown-unknown --release -p rime-wasm
+cargo build --locked --target wasm32-unknown-unknown --release -p rime-wasm
 # Honour CARGO_TARGET_DIR (a worktree may build into its own target directory).
 target_dir=${CARGO_TARGET_DIR:-target}
 wasm-bindgen --target web --no-typescript --out-dir www/pkg \
@@ -10,3 +11,7 @@ wasm-bindgen --target web --no-typescript --out-dir www/pkg \
 raw=$(stat -c %s www/pkg/rime_wasm_bg.wasm)
 gz=$(gzip -9 -c www/pkg/rime_wasm_bg.wasm | wc -c)
 echo "www/pkg/rime_wasm_bg.wasm: $raw bytes raw, $gz bytes gzipped"
+# The physics notes, served beside the page: its "Eq. (N)" and "decision N" links point at their
+# anchors (www/physics.html#decision-2), so they work on any static server, offline included.
+cargo run --locked -q --release -p rime-docs-page -- docs/physics.md www/physics.html
+echo "www/physics.html: $(grep -c '<a id=' www/physics.html) anchors"

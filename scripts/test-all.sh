@@ -22,16 +22,29 @@ outcome() {
 record() { # record NAME SECONDS RESULT
   steps+=("$1"$'\t'"$2"$'\t'"$3")
 }
-step() { # step NAME COMMAND...: a check that counts as one test
+step() { # step NAME COMMAND...: a check that counts as one test, or as the tests it counts
   local name=$1; shift
   echo "==> $name"
-  local t0 rc dt res
+  local t0 rc dt res p f counted
   t0=$(date +%s.%N)
   "$@" >"$log/$name.out" 2>&1
   rc=$?
   dt=$(since "$t0"); res=$(outcome "$rc")
+  # A step that runs a suite of its own (pytest, the page's checks) prints "count: N passed, M
+  # failed" lines; its tests then count one by one. Otherwise the step counts as one test.
+  counted=$(grep -cE '^count: [0-9]+ passed, [0-9]+ failed' "$log/$name.out")
+  if [ "$counted" -gt 0 ]; then
+    p=$(awk '/^count: [0-9]+ passed, [0-9]+ failed/ { s += $2 } END { print s + 0 }' "$log/$name.out")
+    f=$(awk '/^count: [0-9]+ passed, [0-9]+ failed/ { s += $4 } END { print s + 0 }' "$log/$name.out")
+    if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; fi # a failure outside the suite still fails
+    passed=$((passed + p)); failed=$((failed + f))
+    res="$p passed, $f failed$([ "$rc" -ne 0 ] && echo "; $res")"
+  fi
   record "$name" "$dt" "$res"
-  if [ "$rc" -eq 0 ]; then
+  if [ "$counted" -gt 0 ]; then
+    echo "    $res ($dt s)"
+    [ "$rc" -ne 0 ] && tail -n 60 "$log/$name.out"
+  elif [ "$rc" -eq 0 ]; then
     passed=$((passed + 1)); echo "    ok ($dt s)"
   else
     failed=$((failed + 1)); echo "    $res: $name ($dt s)"; tail -n 60 "$log/$name.out"

@@ -8,7 +8,7 @@ import { Computer } from './compute.js';
 import { CollisionView } from './collision.js';
 import { $, errText, linkify, median } from './dom.js';
 import { CURVE_POINTS, MAP_N, START_PRESET, app, historySize } from './state.js';
-import { buildControls, edit, syncControls, wireToolbar, wireView } from './controls.js';
+import { buildControls, edit, showPreset, syncControls, wireToolbar, wireView } from './controls.js';
 import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, wireChart } from './chart.js';
 import { drawLegend, drawMapCanvas, wireMap } from './map.js';
 import { buildTidal, showTidal } from './tidal.js';
@@ -215,7 +215,7 @@ function replayCollision(g) {
   try {
     probe(app.collisionG, 'fast'); // points probeEx at the drawn scene
     const d = JSON.parse(app.probeEx.collision(app.collisionG, 300, app.drawn.view.accuracy));
-    app.collisionView.show(d);
+    app.collisionView.show(d, g !== undefined);
     window.rimeState.collision = {
       g: d.g, eps_n: d.eps_n, t_c: d.t_c, status: d.status, closure: d.ledger.closure,
       n: d.t.length, dynamic: d.dynamic !== null, animating: app.collisionView.animating,
@@ -242,6 +242,7 @@ async function main() {
   app.statusNames = JSON.parse(Explorer.statusNames());
   const version = Explorer.version();
   $('version').textContent = version;
+  $('project-version').textContent = `rime ${version}`;
   setVersion(version);
   app.experiments = JSON.parse(Explorer.experiments());
   app.overlayChoices = JSON.parse(Explorer.overlays());
@@ -273,11 +274,13 @@ async function main() {
   window.addEventListener('hashchange', () => {
     // Our own replaceState does not fire this; a pasted or edited link does.
     showNotice(loadHash(validateTidal));
+    showPreset();
     schedule();
   });
   app.computer = new Computer(module, onFrame, onBusy);
   app.wantScene = app.ex.toJson();
   showNotice(loadHash(validateTidal));
+  showPreset();
   calls.compute = 0;
   calls.format = 0;
   request();

@@ -187,6 +187,9 @@ export function wireChart(h) {
     else if (ev.key === 'ArrowLeft') app.hover.chart = Math.max(0, i - step);
     else if (ev.key === '+' || ev.key === '=') return zoom(0.5);
     else if (ev.key === '-') return zoom(2);
+    // `,` and `.` pan the speed range, as in the terminal; ←/→ move the readout cursor.
+    else if (ev.key === ',' || ev.key === '<') return zoom(1, -0.25);
+    else if (ev.key === '.' || ev.key === '>') return zoom(1, 0.25);
     else if (ev.key === 'Enter' || ev.key === ' ') { hooks.replay(app.res.g[i]); app.hover.chart = i; } else return;
     ev.preventDefault();
     drawChartCanvas();

@@ -17,6 +17,8 @@ const fmtNum = (v, d) => sig(v, d);
 const APPROACH = 0.2;
 const CONTACT = 0.6;
 const DURATION_MS = 3000;
+/** After a scene edit the replay waits this long for the edits to stop (a slider drag sends many). */
+const QUIET_MS = 400;
 
 export class CollisionView {
   constructor() {
@@ -24,6 +26,18 @@ export class CollisionView {
     this.u = 1; // where the replay stands, 0…1
     this.anim = null;
     this.reduced = window.matchMedia('(prefers-reduced-motion: reduce)').matches;
+    this.quiet = null; // the timer of a replay waiting for edits to stop
+    // Off screen the card is neither animated nor drawn; it is drawn when it scrolls into view.
+    this.visible = true;
+    this.stale = false;
+    const card = $('collision-card');
+    if (card && 'IntersectionObserver' in window) {
+      new IntersectionObserver((entries) => {
+        this.visible = entries.some((e) => e.isIntersecting);
+        if (this.visible && this.stale) { this.stale = false; this.u = 1; this.draw(); }
+        if (!this.visible) this.stop();
+      }).observe(card);
+    }
     $('collision-play').addEventListener('click', () => this.play());
     $('collision-scrub').addEventListener('input', () => {
       this.stop();
@@ -32,14 +46,24 @@ export class CollisionView {
     });
   }
 
-  get animating() { return this.anim !== null; }
+  get animating() { return this.anim !== null || this.quiet !== null; }
 
-  /** Shows a new collision (JSON of Explorer.collision) and replays it unless motion is reduced. */
-  show(data) {
+  /** Shows a new collision (JSON of Explorer.collision). Asked for (`requested`: a click on the
+   *  chart), it replays at once unless motion is reduced; after a scene edit it shows the end state
+   *  and replays only once the edits have stopped for QUIET_MS and only while the card is on screen. */
+  show(data, requested = false) {
     this.data = data;
     this.error = null;
     this.ledger();
-    if (this.reduced) { this.stop(); this.u = 1; this.draw(); } else this.play();
+    clearTimeout(this.quiet);
+    this.quiet = null;
+    if (this.reduced) { this.stop(); this.u = 1; this.draw(); return; }
+    if (requested) { this.play(); return; }
+    this.stop();
+    this.u = 1;
+    if (!this.visible) { this.stale = true; return; }
+    this.draw();
+    this.quiet = setTimeout(() => { this.quiet = null; if (this.visible) this.play(); }, QUIET_MS);
   }
 
   fail(message) {
@@ -120,14 +144,19 @@ export class CollisionView {
   }
 }
 
+/** The canvas at its layout size; its buffer is reallocated only when that size changes (setting
+ *  width or height, even to the same value, reallocates and clears it: not once per animation frame). */
 function sized(canvas) {
   const w = Math.max(150, Math.floor(canvas.parentElement.clientWidth / (window.innerWidth < 600 ? 1 : 2) - 8));
   const h = Math.round(w * 0.6);
   const dpr = window.devicePixelRatio || 1;
-  canvas.width = Math.round(w * dpr);
-  canvas.height = Math.round(h * dpr);
-  canvas.style.width = `${w}px`;
-  canvas.style.height = `${h}px`;
+  const bw = Math.round(w * dpr), bh = Math.round(h * dpr);
+  if (canvas.width !== bw || canvas.height !== bh) {
+    canvas.width = bw;
+    canvas.height = bh;
+    canvas.style.width = `${w}px`;
+    canvas.style.height = `${h}px`;
+  }
   const ctx = canvas.getContext('2d');
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
   ctx.clearRect(0, 0, w, h);

@@ -18,9 +18,24 @@ export function buildCompare(h) {
     });
     const t = c.temperature;
     const where = c.valid ? ` · ${speed(c.valid[0])}–${speed(c.valid[1])}, ${t[0] === t[1] ? qty(t[0], 'K', 3) : `${sig(t[0], 3)}–${qty(t[1], 'K', 3)}`}, ${c.geometry}` : '';
-    return el('label', { class: 'overlay-choice', title: c.label }, box, ` ${c.key.split(':')[1]} (${kinds[c.kind] || c.kind}${where})`);
+    const needs = c.needs ? el('span', { class: 'hint needs', 'data-needs': c.needs }, '') : '';
+    return el('label', { class: 'overlay-choice', title: c.label }, box, ` ${c.key.split(':')[1]} (${kinds[c.kind] || c.kind}${where})`, needs);
   }));
   $('overlay-fit').addEventListener('click', fitToEntry);
+  syncCompare();
+}
+
+/** A model that needs a scene section the scene lacks (thornton1997: plasticity) is not offered: its
+ *  box is disabled and says what it needs, instead of failing with a red banner once checked. */
+export function syncCompare() {
+  let scene = {};
+  try { scene = JSON.parse(app.wantScene || '{}'); } catch { /* treated as lacking every section */ }
+  for (const hint of document.querySelectorAll('#overlay-list .needs')) {
+    const box = hint.parentElement.querySelector('input');
+    const lacking = !scene[hint.dataset.needs];
+    box.disabled = lacking && !box.checked;
+    hint.textContent = lacking ? ` — needs a ${hint.dataset.needs} section (a yield pressure): not in this scene` : '';
+  }
 }
 
 /** "Fit this scene to that entry": A fitted to the first checked measured law, applied (undoable). */

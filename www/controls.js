@@ -2,8 +2,9 @@
 // announce values, greyed and disabled when their effect is off), the toolbar (preset, accuracy,
 // undo/redo) and the view fields (speed range with units, map range, experiments). Every edit goes
 // through the core (app.ex); a value it rejects is refused at the control, naming the field.
-import { HELP, editable, parseSpeed, qty, sig } from './core.js';
+import { HELP, editable, parseChartSpeed, parseSpeed, qty, sig } from './core.js';
 import { $, el, errText, linked } from './dom.js';
+import { syncCompare } from './compare.js';
 import { app, canRedo, canUndo, onHistory, redo, remember, undo } from './state.js';
 
 const SLIDER_STEPS = 1000;
@@ -43,13 +44,34 @@ function setErr(path, msg) {
   if (!row) return;
   row.err.textContent = msg || '';
   row.root.classList.toggle('invalid', !!msg);
+  if (!msg && row.typed) row.typed.dataset.refused = '';
   for (const input of [row.typed, row.sel, row.cb]) if (input) { if (msg) input.setAttribute('aria-invalid', 'true'); else input.removeAttribute('aria-invalid'); }
 }
 
 /** The scene as the editor holds it changed: ask for its frame. */
 function changed() {
   app.wantScene = app.ex.toJson();
+  showPreset();
   hooks.schedule();
+}
+
+let presetList = [];
+const sameJson = (a, b) => {
+  if (a === b) return true;
+  if (typeof a !== 'object' || typeof b !== 'object' || a === null || b === null) return false;
+  const ka = Object.keys(a).filter((k) => a[k] !== null), kb = Object.keys(b).filter((k) => b[k] !== null);
+  return ka.length === kb.length && ka.every((k) => sameJson(a[k], b[k]));
+};
+/** The preset menu names the scene shown: a preset's name, or "edited" once it differs from all;
+ *  Compare offers only the models the scene can run. */
+export function showPreset() {
+  syncCompare();
+  const first = $('preset').options[0];
+  if (!first) return;
+  let scene = null;
+  try { scene = JSON.parse(app.wantScene || app.ex.toJson()); } catch { /* shown as edited */ }
+  const match = presetList.find((p) => scene && sameJson(p.scene, scene));
+  first.textContent = match ? `${match.name} (this scene) — load a preset` : 'an edited scene — load a preset';
 }
 
 /** Applies one edit (`fn` on app.ex) of `key` through the core; records it for undo. A value the
@@ -62,31 +84,33 @@ export function edit(key, fn) {
     const after = app.ex.toJson();
     if (after !== before) remember(before, key);
     app.wantScene = after;
+    showPreset();
     setErr(key, '');
     hooks.schedule();
     return true;
   } catch (e) {
     let msg = errText(e);
     if (rows.has(key) && !msg.includes(key)) msg = `${key}: ${msg}`;
-    setErr(key, msg);
     console.error(`rime: refused: ${msg}`);
-    revertRow(key);
+    setErr(key, msg + keepRow(key));
     return false;
   }
 }
 
-/** Shows the drawn scene's value in the control of `path` again. */
-function revertRow(path) {
+/** After a refused value: a typed field keeps the user's text (marked invalid, so the typo can be
+ *  fixed) and says what the chart shows; a slider, menu or checkbox goes back to the drawn value.
+ *  Returns the words to append to the error ("" when there is no drawn value). */
+function keepRow(path) {
   const row = rows.get(path);
-  if (!row || !app.res) return;
+  if (!row || !app.res) return '';
   const v = app.res.values[path];
-  if (row.typed) {
-    row.typed.dataset.dirty = '';
-    row.typed.value = v === null || v === undefined ? '' : editable(v, row.p.unit);
-    if (v !== null && v !== undefined) row.slider.value = toSlider(row.p, v);
-  }
   if (row.sel) row.sel.value = v ?? '';
   if (row.cb) row.cb.checked = v === true;
+  if (!row.typed) return '';
+  row.typed.dataset.refused = '1';
+  if (v === null || v === undefined) return '';
+  row.slider.value = toSlider(row.p, v);
+  return ` — the chart shows ${editable(v, row.p.unit)}`;
 }
 
 function helpLine(path, id) {
@@ -188,7 +212,8 @@ export function syncControls() {
         row.typed.placeholder = '';
         row.slider.value = toSlider(row.p, v);
         row.slider.setAttribute('aria-valuetext', shown(row.p, v));
-        if (!typing) row.typed.value = editable(v, row.p.unit);
+        // A refused text stays until it is fixed (or the slider moves): the user's typo is not lost.
+        if (!typing && row.typed.dataset.refused !== '1') row.typed.value = editable(v, row.p.unit);
       }
     }
   }
@@ -229,8 +254,10 @@ function historyButtons() {
 }
 
 export function wireToolbar(presets) {
+  presetList = presets;
   $('preset').replaceChildren(el('option', { value: '' }, '— load a preset —'),
     ...presets.map((p) => el('option', { value: p.name }, `${p.name}: ${p.description}`)));
+  showPreset();
   $('preset').addEventListener('change', () => {
     const name = $('preset').value;
     if (!name) return;
@@ -272,8 +299,8 @@ export function wireView() {
   };
   const range = () => {
     let from, to;
-    try { from = parseSpeed('g from', $('view-from').value); } catch (e) { return refuse('view-err', errText(e)); }
-    try { to = parseSpeed('g to', $('view-to').value); } catch (e) { return refuse('view-err', errText(e)); }
+    try { from = parseChartSpeed('g from', $('view-from').value); } catch (e) { return refuse('view-err', errText(e)); }
+    try { to = parseChartSpeed('g to', $('view-to').value); } catch (e) { return refuse('view-err', errText(e)); }
     if (!(from < to)) return refuse('view-err', 'g from: must be below "to"');
     app.view.from = from; app.view.to = to;
     $('view-from').dataset.dirty = ''; $('view-to').dataset.dirty = '';

@@ -63,6 +63,12 @@ export function parseSpeed(field, text) {
   return wasm.parseSpeed(field, String(text));
 }
 
+/** A typed end of the chart's speed range, within the core's chart limits; throws naming the field. */
+export function parseChartSpeed(field, text) {
+  calls.format++;
+  return wasm.parseChartSpeed(field, String(text));
+}
+
 /** A typed quantity with units compatible with `unit`; throws naming the field. */
 export function parseQuantity(field, text, unit) {
   calls.format++;
@@ -80,9 +86,9 @@ export function counted(obj) {
   });
 }
 
-/** The physics notes on the repository, at `anchor`. */
+/** The physics notes served beside the page (docs/physics.md rendered by `make www`), at `anchor`. */
 export function physicsUrl(anchor = '') {
-  return `${HELP.repository}/blob/main/docs/physics.md${anchor ? `#${anchor}` : ''}`;
+  return `physics.html${anchor ? `#${anchor}` : ''}`;
 }
 
 /** The anchor of the physics notes where an equation ("4", "23", "A.5") is decided. */

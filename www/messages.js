@@ -65,9 +65,8 @@ export function intro() {
   for (const term of ['ε_N', 'g_N', 'g_T', 'this scene', 'g_s', 'ε_T', 'family', 'clean surface', 'stick map']) {
     if (glossary.has(term)) dl.append(el('dt', {}, term), el('dd', {}, ...linked(glossary.get(term))));
   }
+  // The full citation, without a link: rime has not verified the paper's DOI, and there is no
+  // public repository yet, so the notes are served beside the page and the project is named.
   $('citation').textContent = citation();
-  const q = encodeURIComponent(`${HELP.paper.authors} ${HELP.paper.year} ${HELP.paper.title}`);
-  $('doi-link').href = `https://search.crossref.org/?from_ui=yes&q=${q}`;
   for (const a of document.querySelectorAll('a[data-physics]')) a.href = physicsUrl(a.dataset.physics);
-  $('repo-link').href = HELP.repository;
 }

@@ -1,7 +1,7 @@
 // The tidal calculator (appendix, Eq. (A.1)–(A.7)): typed inputs parsed by the core's unit parser,
 // the core's numbers beside the paper's printed ones, compared by the core's one rule
 // (agreesToPrinted). The typed inputs live in the state and so in the link.
-import { HELP, agrees, editable, parseQuantity, printedDigits, sig } from './core.js';
+import { HELP, agrees, editable, parseQuantity, printedDigits, qty, sig } from './core.js';
 import { $, el, errText, linkify } from './dom.js';
 import { app } from './state.js';
 
@@ -46,7 +46,9 @@ export function buildTidal(h) {
       } catch (e) {
         let msg = errText(e);
         if (!msg.includes(f.key)) msg = `tidal.${f.key}: ${msg}`;
-        err.textContent = msg;
+        // As in the scene's fields: the typed text stays, and the value drawn is shown beside it.
+        const drawn = app.res && app.res.tidal ? app.res.tidal.input[f.key] : undefined;
+        err.textContent = Number.isFinite(drawn) ? `${msg} — the card shows ${qty(drawn, f.unit, 6)}` : msg;
         root.classList.add('invalid');
         typed.setAttribute('aria-invalid', 'true');
       }

@@ -1,6 +1,6 @@
 // The link: the drawn scene, view and typed tidal inputs in the URL hash, written shortly after the
 // last change; read field by field, so that one bad field is named and the good ones are kept.
-import { HELP, parseSpeed } from './core.js';
+import { HELP, parseChartSpeed, parseSpeed } from './core.js';
 import { errText } from './dom.js';
 import { DEFAULT_VIEW, START_PRESET, app } from './state.js';
 import { TIDAL_FIELDS } from './tidal.js';
@@ -30,12 +30,12 @@ function readView(text, problems) {
   if (obj === null || typeof obj !== 'object' || Array.isArray(obj)) { problems.push('view: not an object'); return v; }
   const known = new Set(Object.keys(DEFAULT_VIEW));
   for (const k of Object.keys(obj)) if (!known.has(k)) problems.push(`view.${k}: unknown field`);
-  const speedOf = (key) => {
+  const speedOf = (key, parse = parseSpeed) => {
     if (obj[key] === undefined || obj[key] === null) return;
-    try { v[key] = parseSpeed(`view.${key}`, String(obj[key])); } catch (e) { problems.push(errText(e)); }
+    try { v[key] = parse(`view.${key}`, String(obj[key])); } catch (e) { problems.push(errText(e)); }
   };
-  speedOf('from');
-  speedOf('to');
+  speedOf('from', parseChartSpeed);
+  speedOf('to', parseChartSpeed);
   if (!(v.from < v.to)) {
     problems.push('view.to: must be above view.from');
     v.from = DEFAULT_VIEW.from;
@@ -73,7 +73,9 @@ function readView(text, problems) {
 /** Sets the scene of the link on the editor: whole if valid, else field by field from the opening
  *  preset, naming each field that could not be kept. */
 function readScene(text, problems) {
-  try { app.ex.setJson(text); return; } catch (e) { void e; }
+  let whole = '';
+  try { app.ex.setJson(text); return; } catch (e) { whole = errText(e); }
+  const named = problems.length;
   app.ex.loadPreset(START_PRESET);
   let obj;
   try { obj = JSON.parse(text); } catch { problems.push('scene: not JSON'); return; }
@@ -105,6 +107,9 @@ function readScene(text, problems) {
     if (typeof v === 'object') { problems.push(`${p.path}: expected a value`); continue; }
     set(p.path, String(v));
   }
+  // The core refused the whole scene for a reason no field above names (an unknown nested field,
+  // `{"grains":{"radius":…}}`, was dropped without a word): say what it said.
+  if (problems.length === named && whole) problems.push(`scene: ${whole}`);
 }
 
 /** The typed tidal inputs of the link (null: follow the scene); bad fields named, kept at the
@@ -141,6 +146,19 @@ export function loadHash(validateTidal) {
   app.view = readView(q.get('v'), problems);
   app.tidalIn = readTidal(q.get('t'), problems, validateTidal);
   app.wantScene = app.ex.toJson();
-  for (const p of problems) console.error(`rime: link: ${p}`);
-  return problems;
+  const shown = capped(problems);
+  for (const p of shown) console.error(`rime: link: ${p}`);
+  return shown;
+}
+
+/** At most MAX_PROBLEMS distinct problems, each at most MAX_PROBLEM_CHARS long, then how many more
+ *  (a link with 20 000 bad overlays used to print 20 000 lines, one 100 000-character key whole). */
+const MAX_PROBLEMS = 12;
+const MAX_PROBLEM_CHARS = 160;
+export function capped(problems) {
+  const short = problems.map((p) => (p.length > MAX_PROBLEM_CHARS ? `${p.slice(0, MAX_PROBLEM_CHARS - 1)}…` : p));
+  const distinct = [...new Set(short)];
+  if (distinct.length <= MAX_PROBLEMS) return distinct;
+  const more = distinct.length - (MAX_PROBLEMS - 1);
+  return [...distinct.slice(0, MAX_PROBLEMS - 1), `… and ${more} more problems in the link`];
 }

@@ -148,7 +148,8 @@ try {
     const changed1 = s1.eps.filter((v, i) => v !== s0.eps[i]).length;
     assert(changed1 > 5, `only ${changed1} plotted values changed after typing`);
     // A value the core rejects: refused at the control with a message naming the field (and the
-    // rejected value), also in the console; the control goes back to the drawn scene's value.
+    // rejected value), also in the console; the typed text stays (issue 22: the typo is not thrown
+    // away) and the message says what the chart shows.
     u = s1.updates;
     expected.push(['main', /refused: layer\.viscosity/]);
     await typed.fill('-4 Pa s');
@@ -157,7 +158,8 @@ try {
     assert(/layer\.viscosity/.test(err) && /-4/.test(err), `no field error naming the field and value: "${err}"`);
     const s1b = await page.evaluate(() => window.rimeState.sceneJson);
     assert(s1b === s1.sceneJson, 'scene changed after an invalid value');
-    assert((await typed.inputValue()) === '2.5 kPa s', `control not back at the drawn value: "${await typed.inputValue()}"`);
+    assert((await typed.inputValue()) === '-4 Pa s', `the refused text was not kept: "${await typed.inputValue()}"`);
+    assert(/the chart shows 2\.5 kPa s/.test(err), `the error does not show the drawn value: "${err}"`);
     assert((consoleErrors.main || []).some((t) => /layer\.viscosity/.test(t)), 'the refusal did not reach the console');
     // The slider (input event).
     const slider = page.locator('input[type=range][data-path="layer.viscosity"]');
@@ -235,6 +237,26 @@ try {
     const sc = JSON.parse(s.sceneJson);
     assert(sc.layer === null && sc.adhesion && sc.adhesion.surface_energy === 0.1, 'not the opening scene (ice-sticky)');
     return `"${text2}"`;
+  });
+
+  await check('issue 22: hostile links — notices capped, deduplicated and short; unknown nested fields named; the chart range has a floor', async () => {
+    expected.push(['hostile', /rime: link:/]);
+    const p = watch(await context.newPage(), 'hostile');
+    const many = { from: 1e-300, overlays: Array.from({ length: 20000 }, (_, i) => `model:nope${i}`) };
+    many['k'.repeat(100000)] = 1;
+    const scene = JSON.stringify({ grains: { radius: 1e308 } });
+    await p.goto(new URL(`#s=${encodeURIComponent(scene)}&v=${encodeURIComponent(JSON.stringify(many))}`, url).href, { waitUntil: 'load' });
+    await ready(p);
+    const d = await p.evaluate(() => ({ notice: document.getElementById('notice').innerText, view: window.rimeState.view }));
+    const errors = (consoleErrors.hostile || []).filter((t) => /rime: link:/.test(t));
+    await p.close();
+    const lines = d.notice.split('\n').filter((l) => l.trim());
+    assert(errors.length <= 12, `${errors.length} console errors for one link`);
+    assert(d.notice.length < 4000 && lines.length <= 16, `notice of ${d.notice.length} characters, ${lines.length} lines`);
+    assert(/more problems in the link/.test(d.notice), `no "more problems" line: ${d.notice.slice(0, 300)}`);
+    assert(/grains/.test(d.notice) && /radius/.test(d.notice), `unknown nested field not named: ${d.notice.slice(0, 400)}`);
+    assert(/view\.from/.test(d.notice) && d.view.from >= 1e-12, `view.from 1e-300 accepted: ${d.view.from}`);
+    return `${lines.length} notice lines, ${errors.length} console errors, ${d.notice.length} characters`;
   });
 
   await check('downloads: chart SVG, map SVG, CSVs are well formed', async () => {
@@ -441,6 +463,8 @@ try {
     const t = await pf.evaluate(() => window.rimeState);
     assert(JSON.parse(t.sceneJson).layer.viscosity === 1500 && t.mapClasses && t.eps.every(Number.isFinite), 'later edit not drawn');
     assert(!(await banner.isVisible()), 'banner still shown after a clean frame');
+    const menuEdited = await pf.locator('#preset option').first().textContent();
+    assert(/^an edited scene/.test(menuEdited), `preset menu after an edit: "${menuEdited}"`);
     await pf.waitForFunction((scene) => new URLSearchParams(location.hash.slice(1)).get('s') === scene, t.sceneJson, { timeout: GUARD_MS });
     return `banner: "${text.split('\n').slice(1, 3).join(' | ').slice(0, 160)}…"; ${gaps} gaps`;
   });
@@ -631,14 +655,14 @@ try {
         const n = walker.currentNode;
         if (!/Eq\. \(/.test(n.data) || n.parentElement.closest('option, select, script, style, [hidden], .visually-hidden')) continue;
         const a = n.parentElement.closest('a');
-        if (a && /docs\/physics\.md/.test(a.href)) linked++;
+        if (a && /\/physics\.html#/.test(a.href)) linked++;
         else unlinked.push(n.data.trim().slice(0, 60));
       }
       return {
         terms, noHelp, raw, unlinked, linked,
         citation: document.getElementById('citation').textContent,
-        doi: document.getElementById('doi-link').href,
-        notes: [...document.querySelectorAll('a')].some((a) => /docs\/physics\.md$/.test(a.href)),
+        notes: [...document.querySelectorAll('a')].some((a) => /\/physics\.html$/.test(a.href)),
+        project: document.getElementById('project-version').textContent,
         intro: document.querySelector('.intro').textContent,
         contactEnd: [...document.querySelectorAll('[id="p-contact_end"] option')].map((o) => o.textContent),
       };
@@ -646,8 +670,8 @@ try {
     for (const t of ['ε_N', 'g_N', 'g_T', 'this scene']) assert(d.terms.includes(t), `glossary lacks ${t}: ${d.terms}`);
     assert(/this scene/.test(d.intro) && /ε/.test(d.intro), 'no intro');
     assert(/J\.-M\. Hertzsch \(2002\)/.test(d.citation) && /A model for surface effects in slow collisions of icy grains/.test(d.citation) && /Planetary and Space Science 50, 1387–1397/.test(d.citation), `citation: ${d.citation}`);
-    assert(/crossref\.org|doi\.org/.test(d.doi), `DOI link: ${d.doi}`);
-    assert(d.notes, 'no link to docs/physics.md');
+    assert(/^rime \d+\.\d+\.\d+/.test(d.project), `the project is not named with its version: "${d.project}"`);
+    assert(d.notes, 'no link to the physics notes (physics.html)');
     assert(d.noHelp.length === 0, `controls without help: ${d.noHelp.join(', ')}`);
     assert(d.raw.length === 0, `raw option names: ${d.raw.join(', ')}`);
     assert(!d.contactEnd.includes('force_zero') && d.contactEnd.length === 2, `contact end options: ${d.contactEnd}`);
@@ -655,10 +679,50 @@ try {
     return `${d.terms.length} glossary terms, ${d.linked} equation links, contact end: ${d.contactEnd.join(' / ')}`;
   });
 
+  await check('issue 22: every same-origin link answers 200 and every anchor it names exists (the physics notes ship with the page)', async () => {
+    const all = await pn.evaluate(() => [...document.querySelectorAll('a[href]')].map((a) => a.href));
+    const links = [...new Set(all)];
+    const origin = new URL(pn.url()).origin;
+    const own = links.filter((h) => new URL(h).origin === origin);
+    const pages = new Map(); // path -> html
+    const bad = [];
+    let anchors = 0;
+    for (const h of own) {
+      const u = new URL(h);
+      if (u.pathname === new URL(pn.url()).pathname) continue; // the page itself (its in-page anchors are below)
+      if (!pages.has(u.pathname)) {
+        const r = await pn.request.get(`${origin}${u.pathname}`);
+        if (r.status() !== 200) { bad.push(`${u.pathname}: HTTP ${r.status()}`); pages.set(u.pathname, ''); continue; }
+        pages.set(u.pathname, await r.text());
+      }
+      if (u.hash) {
+        anchors++;
+        const id = decodeURIComponent(u.hash.slice(1));
+        if (!pages.get(u.pathname).includes(`id="${id}"`)) bad.push(`${u.pathname}${u.hash}: no such anchor`);
+      }
+    }
+    // In-page anchors (the skip link, …) name elements of the page.
+    const missing = await pn.evaluate(() => [...document.querySelectorAll('a[href^="#"]')].map((a) => a.getAttribute('href')).filter((h) => h.length > 1 && !document.getElementById(decodeURIComponent(h.slice(1)))));
+    bad.push(...missing.map((h) => `page ${h}: no such element`));
+    const ownAll = all.filter((h) => new URL(h).origin === origin).length;
+    assert(ownAll > 30 && pages.size >= 1, `only ${ownAll} same-origin links`);
+    assert(bad.length === 0, bad.join('; '));
+    return `${ownAll} same-origin links (${own.length} distinct), ${pages.size} page(s) fetched, ${anchors} anchors found`;
+  });
+
   await check('issue 12 item 15: opens on a scene with a visible threshold and a sticking corner; artifact note beside the map, no banner; timing in the footer', async () => {
     const p = watch(await context.newPage(), 'open');
     await p.goto(url, { waitUntil: 'load' });
     await ready(p);
+    // Issue 22: the preset menu names the scene the page opened on, and says so once it is edited.
+    const menuOpen = await p.locator('#preset option').first().textContent();
+    assert(/^ice-sticky \(this scene\)/.test(menuOpen), `preset menu on open: "${menuOpen}"`);
+    // Issue 22: a model the scene cannot run (thornton1997 needs plasticity) is not offered.
+    const thornton = await p.evaluate(() => {
+      const box = document.querySelector('#overlay-list input[value="model:thornton1997"]');
+      return box && { disabled: box.disabled, text: box.parentElement.textContent };
+    });
+    assert(thornton && thornton.disabled && /needs a plasticity section/.test(thornton.text), `thornton1997 offered: ${JSON.stringify(thornton)}`);
     const s = await p.evaluate(() => window.rimeState);
     const classes = await p.evaluate(() => JSON.parse(window.rimeState.sceneJson) && window.rimeState.mapClasses);
     const names = await p.evaluate(() => [...document.querySelectorAll('#legend li')].map((li) => li.textContent));
@@ -761,10 +825,17 @@ try {
     await p.setViewportSize({ width: 375, height: 700 });
     await p.waitForTimeout(200);
     const v3 = await runAxe(p);
+    // The dark theme (issue 22) keeps every contrast: the same audit with the system set to dark.
+    await p.emulateMedia({ colorScheme: 'dark' });
+    await p.setViewportSize({ width: 1280, height: 1000 });
+    const dark = await p.evaluate(() => getComputedStyle(document.documentElement).backgroundColor);
+    const v4 = (await runAxe(p)).map((v) => `dark: ${v}`);
+    await p.screenshot({ path: path.join(outDir, 'www-screenshot-dark.png'), fullPage: false });
     await p.close();
-    const all = [...v1, ...v2, ...v3];
+    const all = [...v1, ...v2, ...v3, ...v4];
+    assert(/rgb\((\d{1,2}), (\d{1,2}), (\d{1,2})\)/.test(dark), `the page is not dark with a dark system theme: ${dark}`);
     assert(all.length === 0, `axe-core: ${all.join(' | ')}`);
-    return `slider reads "${vt}"; Tab, Enter, Tab reaches ${reached.path}; axe-core: 0 violations (3 states)`;
+    return `slider reads "${vt}"; Tab, Enter, Tab reaches ${reached.path}; axe-core: 0 violations (4 states, dark included)`;
   });
 
   await check('issue 12 item 18: readouts follow the drawn scene at the chosen level; greyed sliders disabled; tidal inputs in the link; one bad field named, the rest kept; huge numbers stay short; speed fields take units', async () => {
@@ -916,6 +987,16 @@ try {
     const head = d.csv.split('\n').filter((l) => l.startsWith('# ')).join('\n');
     assert(new RegExp(`rime ${d.version.replace(/\./g, '\\.')}`).test(head) && new RegExp(`level ${d.level}`).test(head) && /layer\.viscosity=2000/.test(head) && /Hertzsch \(2002\)/.test(head) && /\d{4}-\d\d-\d\d/.test(head), `CSV context: ${head}`);
     assert(/^g_n \[m\/s\],eps_n,status,t_c \[s\],xi_max \[m\]/m.test(d.csv), 'CSV header without units');
+    // Keys on the focused chart, as in the terminal (issue 22): `,` pans left, ←/→ only move the readout.
+    await pn.focus('#chart');
+    await pn.keyboard.press('ArrowRight');
+    const v2b = await pn.evaluate(() => window.rimeState.view);
+    assert(v2b.from === v2.from && v2b.to === v2.to, '→ changed the speed range (it moves the readout)');
+    u = await updates(pn);
+    await pn.keyboard.press(',');
+    await waitUpdate(pn, u);
+    const v3 = await pn.evaluate(() => window.rimeState.view);
+    assert(Math.abs(Math.log10(v2.from / v3.from) - span(v2) / 4) < 1e-3, `, did not pan left: ${v2.from} → ${v3.from}`);
     u = await updates(pn);
     await pn.click('#pin');
     await waitUpdate(pn, u);
@@ -990,4 +1071,5 @@ try {
 }
 const passed = results.filter((r) => r[1]).length;
 console.log(`e2e: ${passed} passed, ${failures} failed`);
+console.log(`count: ${passed} passed, ${failures} failed`); // counted one by one by make test
 process.exit(failures ? 1 : 0);

@@ -115,6 +115,12 @@ pub fn parse_speed(field: &str, text: &str) -> Result<f64, JsError> {
     explorer::parse_speed(field, text).map_err(js)
 }
 
+/// A typed end of the chart's speed range (see [`explorer::parse_chart_speed`]).
+#[wasm_bindgen(js_name = parseChartSpeed)]
+pub fn parse_chart_speed(field: &str, text: &str) -> Result<f64, JsError> {
+    explorer::parse_chart_speed(field, text).map_err(js)
+}
+
 /// A typed quantity with optional units compatible with `unit` (see [`explorer::parse_quantity`]).
 #[wasm_bindgen(js_name = parseQuantity)]
 pub fn parse_quantity(field: &str, text: &str, unit: &str) -> Result<f64, JsError> {

@@ -413,11 +413,15 @@ pub fn parameters_json() -> String {
     Json::from(list).to_string()
 }
 
-/// The presets as JSON: a list of `{name, description}`.
+/// The presets as JSON: a list of `{name, description, scene}` (the scene, so that the page can
+/// say which preset the scene it shows is).
 pub fn presets_json() -> String {
     let list: Vec<Json> = Preset::ALL
         .iter()
-        .map(|p| json!({"name": p.name(), "description": p.description()}))
+        .map(|p| {
+            let scene = serde_json::to_value(p.scene()).unwrap_or(Json::Null);
+            json!({"name": p.name(), "description": p.description(), "scene": scene})
+        })
         .collect();
     Json::from(list).to_string()
 }
@@ -441,7 +445,10 @@ pub fn overlays_json() -> String {
         Model::ALL
             .iter()
             .filter(|m| **m != Model::Hertzsch2002)
-            .map(|m| json!({"key": format!("model:{}", m.name()), "label": m.citation(), "kind": "model"})),
+            .map(|m| {
+                json!({"key": format!("model:{}", m.name()), "label": m.citation(), "kind": "model",
+                            "needs": m.needs_section()})
+            }),
     );
     Json::from(list).to_string()
 }
@@ -532,12 +539,38 @@ pub fn help_json() -> String {
 /// must be a speed the models accept (`(0, 1e6]` m/s). Errors name the field and show the value
 /// short (a 309-digit number reads `1e308`).
 pub fn parse_speed(field: &str, text: &str) -> Result<f64, String> {
+    speed_within(
+        field,
+        text,
+        rime_core::explorer::limits::speed_is_valid,
+        "(0, 1e6]",
+    )
+}
+
+/// Parses a typed end of the chart's speed range: as [`parse_speed`], within the core's chart
+/// limits `[1e-12, 1e6]` m/s (a link with `view.from = 1e-300` drew 301 decades).
+pub fn parse_chart_speed(field: &str, text: &str) -> Result<f64, String> {
+    speed_within(
+        field,
+        text,
+        rime_core::explorer::limits::chart_speed_is_valid,
+        "[1e-12, 1e6]",
+    )
+}
+
+/// A typed speed that `valid` accepts; the error names the field and the `domain`.
+fn speed_within(
+    field: &str,
+    text: &str,
+    valid: fn(f64) -> bool,
+    domain: &str,
+) -> Result<f64, String> {
     let v = parse_quantity(field, text, "m/s")?;
-    if rime_core::explorer::limits::speed_is_valid(v) {
+    if valid(v) {
         Ok(v)
     } else {
         Err(format!(
-            "{field}: must be a speed in (0, 1e6] m/s (got {})",
+            "{field}: must be a speed in {domain} m/s (got {})",
             rime_core::explorer::format::sig(v, 4)
         ))
     }

@@ -7,7 +7,7 @@
 //! explorer and the web page call [`compute`] with the same [`Request`] and so draw the same numbers.
 //! Pure: no I/O and no clock; cancellable between curves and every few points.
 
-use super::limits::{MAX_CURVE_POINTS, MAX_MAP_SIDE, speed_is_valid};
+use super::limits::{MAX_CURVE_POINTS, MAX_MAP_SIDE, chart_speed_is_valid, speed_is_valid};
 use super::range::{MapRange, auto_map_range, chart_decades};
 use crate::normal::{Normal, Status};
 use crate::params::Value;
@@ -246,11 +246,11 @@ impl Request {
     pub fn validate(&self) -> crate::Result<()> {
         if let Some((from, to)) = self.speeds {
             for (field, g) in [("from", from), ("to", to)] {
-                if !speed_is_valid(g) {
+                if !chart_speed_is_valid(g) {
                     return Err(Error::OutOfRange {
                         field,
                         value: g,
-                        expected: "a speed in (0, 1e6] m/s",
+                        expected: "a speed in [1e-12, 1e6] m/s",
                     });
                 }
             }

@@ -18,3 +18,23 @@ pub const MAX_SCENE_BYTES: usize = 1 << 20;
 pub fn speed_is_valid(g: f64) -> bool {
     g.is_finite() && g > 0.0 && g <= SPEED_MAX
 }
+
+/// Whether `g` may be an end of a chart's speed range: in [[`SPEED_MIN`], [`SPEED_MAX`]] (a chart
+/// from 1e-300 m/s would span 300 decades; single speeds keep the models' own domain).
+pub fn chart_speed_is_valid(g: f64) -> bool {
+    speed_is_valid(g) && g >= SPEED_MIN
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_chart_range_has_a_floor_that_single_speeds_do_not_issue_22() {
+        // A link with view.from = 1e-300 drew a 301-decade chart; a single speed may be that slow.
+        assert!(speed_is_valid(1e-300) && !chart_speed_is_valid(1e-300));
+        assert!(chart_speed_is_valid(SPEED_MIN) && !chart_speed_is_valid(SPEED_MIN / 2.0));
+        assert!(chart_speed_is_valid(SPEED_MAX) && !chart_speed_is_valid(SPEED_MAX * 2.0));
+        assert!(!chart_speed_is_valid(f64::NAN) && !chart_speed_is_valid(0.0));
+    }
+}

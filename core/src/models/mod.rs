@@ -71,6 +71,15 @@ impl Model {
         }
     }
 
+    /// The scene section the model needs beyond grains and bulk, if any (thornton1997 needs a yield
+    /// pressure, `plasticity`); the explorers offer a model only on scenes that have it.
+    pub fn needs_section(self) -> Option<&'static str> {
+        match self {
+            Model::Thornton1997 => Some("plasticity"),
+            _ => None,
+        }
+    }
+
     /// Looks a model up by name.
     pub fn from_name(name: &str) -> Option<Model> {
         Model::ALL.into_iter().find(|m| m.name() == name)
