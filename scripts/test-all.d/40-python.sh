@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# rime from Python (issue 23): builds the abi3 wheel with maturin (in the workspace's target
+# directory), installs it into target/venv and runs the pytest suite there: python/tests (against
+# the `rime` binary and REBOUND 5.2.2), the doctests of the installed package and the README's
+# Python examples. Ends with pytest's summary line.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+scripts/setup-python.sh
+venv=target/venv
+cargo build -q --release -p rime-tui   # the CLI: the tests' independent path to the core
+export RIME_BIN="${CARGO_TARGET_DIR:-target}/release/rime"
+wheels="${CARGO_TARGET_DIR:-target}/wheels"
+rm -f "$wheels"/rime_grains-*.whl
+start=$(date +%s.%N)
+(cd python && "../$venv/bin/maturin" build --release --quiet 2>&1 | grep -v '^📦 Including' || true)
+wheel=$(ls "$wheels"/rime_grains-*-cp39-abi3-*.whl)
+build=$(python3 -c "import sys; print(f'{float(sys.argv[2]) - float(sys.argv[1]):.1f}')" "$start" "$(date +%s.%N)")
+echo "wheel: $(basename "$wheel"), $(du -k "$wheel" | cut -f1) KiB, built in ${build} s"
+"$venv/bin/python" -m pip install -q --disable-pip-version-check --force-reinstall --no-deps "$wheel"
+# From the repository root: `python/` is not on sys.path, so the tests import the installed wheel.
+exec "$venv/bin/python" -m pytest -c python/pytest.ini --rootdir python python/tests \
+  --doctest-modules --pyargs rime_grains
