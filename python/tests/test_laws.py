@@ -191,3 +191,18 @@ def test_eps_t_needs_friction():
     scene.set("friction", "off")
     with pytest.raises(ValueError, match="^scene.friction"):
         rime.eps_t(0.01, 0.001, scene)
+
+
+def test_type_stubs_are_shipped_and_cover_the_api():
+    import ast
+    import pathlib
+
+    package = pathlib.Path(rime.__file__).parent
+    assert (package / "py.typed").exists()
+    for module, stub in ((rime, "__init__.pyi"), (rime.rebound, "rebound.pyi"), (rime.data, "data.pyi")):
+        tree = ast.parse((package / stub).read_text(encoding="utf-8"))
+        names = {n.name for n in tree.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))}
+        names |= {t.id for n in tree.body if isinstance(n, ast.AnnAssign) for t in [n.target]}
+        names |= {a.asname or a.name for n in tree.body if isinstance(n, ast.ImportFrom) for a in n.names}
+        missing = [name for name in module.__all__ if name not in names]
+        assert not missing, (stub, missing)

@@ -17,6 +17,9 @@ wheel=$(ls "$wheels"/rime_grains-*-cp39-abi3-*.whl)
 build=$(python3 -c "import sys; print(f'{float(sys.argv[2]) - float(sys.argv[1]):.1f}')" "$start" "$(date +%s.%N)")
 echo "wheel: $(basename "$wheel"), $(du -k "$wheel" | cut -f1) KiB, built in ${build} s"
 "$venv/bin/python" -m pip install -q --disable-pip-version-check --force-reinstall --no-deps "$wheel"
+# The benchmark reports (never asserts): 1e6 speeds at `fast` against the Rust batch path, and the
+# cost per collision against REBOUND's hard-sphere resolve with a compiled C Bridges law.
+"$venv/bin/python" python/bench/bench.py --quick || echo "benchmark failed (not a test)"
 # From the repository root: `python/` is not on sys.path, so the tests import the installed wheel.
 exec "$venv/bin/python" -m pytest -c python/pytest.ini --rootdir python python/tests \
   --doctest-modules --pyargs rime_grains
