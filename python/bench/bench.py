@@ -103,7 +103,7 @@ def step_cost(sim, reps, attachment=None):
     for _ in range(reps):
         ctypes.memmove(address, saved, size)
         if attachment is not None:
-            attachment._storage[0][:] = 0.0
+            attachment._link.storage[0][:] = 0.0
         start = time.perf_counter()
         sim.steps(1)
         total += time.perf_counter() - start

@@ -61,8 +61,19 @@ _DIMENSION = {
     "mass_unit": {"kg", "g", "mg", "t"},
 }
 
-# Simulations with a handler: address -> Attachment (keeps the spin array and handler alive).
+# Simulations with a handler: address -> _Link (keeps the handler and the spin arrays the particles'
+# ap point to alive while REBOUND may call the handler; not the simulation itself, so a simulation
+# nobody refers to is still freed).
 _ATTACHED = {}
+
+
+class _Link:
+    def __init__(self, handler):
+        self.handler = handler
+        self.storage = []  # spin arrays (the particles' ap point into them)
+
+    def owns(self, address):
+        return any(a.ctypes.data <= address < a.ctypes.data + a.nbytes for a in self.storage)
 
 
 def unit(field, value):
@@ -139,11 +150,15 @@ class Attachment:
     same simulation.
     """
 
-    def __init__(self, sim, handler, track_spins):
+    def __init__(self, sim, link, track_spins, description):
         self._sim = sim
-        self._handler = handler
+        self._link = link
+        self._handler = link.handler
         self._track = track_spins
-        self._storage = []  # spin arrays (the particles' ap point into them)
+        self._description = description
+
+    def __repr__(self):
+        return f"<rime_grains.rebound.Attachment: {self._description}>"
 
     @property
     def error(self):
@@ -177,7 +192,7 @@ class Attachment:
         base = storage.ctypes.data
         for k in range(n):
             sim.particles[k].ap = base + 24 * k
-        self._storage = [storage]  # older arrays are no longer pointed to
+        self._link.storage = [storage]  # older arrays are no longer pointed to
         return storage
 
     @property
@@ -271,9 +286,6 @@ def attach(sim, scene, *, length_unit, time_unit, mass_unit, density="particles"
             raise ValueError("spins: every value must be finite")
     address = ctypes.addressof(sim)
     previous = _ATTACHED.get(address)
-    ours = set()
-    if previous is not None:
-        ours = {int(a.ctypes.data) + 24 * k for a in previous._storage for k in range(len(a))}
     if track_spins:
         if sim.extras:
             raise ValueError(
@@ -282,18 +294,27 @@ def attach(sim, scene, *, length_unit, time_unit, mass_unit, density="particles"
                 "with track_spins=False (spins are then 0 and not updated)")
         for k in range(sim.N):
             ap = sim.particles[k].ap
-            if ap and ap not in ours:
+            if ap and not (previous is not None and previous.owns(ap)):
                 raise ValueError(
                     f"track_spins: particle {k} has an ap pointer rime did not set (REBOUNDx or user "
                     "data); attach with track_spins=False or clear it")
     handler = _native._attach(address, _layout(rebound), scene, units["length_unit"],
                               units["time_unit"], units["mass_unit"], density, sticking,
                               track_spins, accuracy)
-    attachment = Attachment(sim, handler, track_spins)
+    link = _Link(handler)
+    g = scene.get("grains.density")
+    description = (
+        f"eps_N and eps_T from the scene with each pair's own radii and "
+        + ("the particles' own density (m_eff of their masses)" if density == "particles"
+           else f"the scene's density {g:g} kg/m3 (impulses use the particles' masses)")
+        + f"; sticking={sticking!r}, accuracy={accuracy!r}, units: {units['length_unit']:g} m, "
+        f"{units['time_unit']:g} s, {units['mass_unit']:g} kg; spins "
+        + ("tracked through ap" if track_spins else "not tracked (0)"))
+    attachment = Attachment(sim, link, track_spins, description)
     if track_spins:
         if spins is None and previous is not None:
-            spins = previous.spins
+            spins = attachment.spins  # the previous attachment's, read through ap
         attachment.track_spins(spins if spins is not None else np.zeros((sim.N, 3)))
     sim.collision_resolve = handler.function_address
-    _ATTACHED[address] = attachment
+    _ATTACHED[address] = link
     return attachment

@@ -147,9 +147,10 @@ def test_density_400_gives_the_density_400_eps():
     assert abs(want_400 / want_900 - 1) > 1e-2  # the test can tell the two apart
     eps, _, _ = head_on_eps(ice, mass_400)
     assert eps == pytest.approx(want_400, rel=1e-12)
-    # density="scene" keeps the scene's 900 for ε_N (the impulses still use the masses).
-    eps_scene, _, _ = head_on_eps(ice, mass_400, density="scene")
+    # density="scene" keeps the scene's 900 for ε_N (the impulses still use the masses), and says so.
+    eps_scene, _, att = head_on_eps(ice, mass_400, density="scene")
     assert eps_scene == pytest.approx(want_900, rel=1e-12)
+    assert "the scene's density 900 kg/m3 (impulses use the particles' masses)" in repr(att)
 
 
 def test_particle_radii_are_used_not_the_scenes():
@@ -256,6 +257,14 @@ def ring(att_kwargs=None, n=36, orbits=1.0, seed=14, collision="tree"):
                               **(att_kwargs or {}))
     sim.integrate(orbits * 2 * math.pi / omega)
     return sim, att
+
+
+def test_reattaching_keeps_the_spins():
+    sim = pair_sim([-0.021, 0, 0], [0.005, 0, 0], [0.021, 0, 0], [-0.005, 0, 0])
+    spins = np.array([[1.0, 2.0, 3.0], [-1.0, 0.5, 0.25]])
+    first = rime.rebound.attach(sim, rime.Scene(), length_unit=1, time_unit=1, mass_unit=1, spins=spins)
+    second = rime.rebound.attach(sim, rime.Scene.preset("ice-frost"), length_unit=1, time_unit=1, mass_unit=1)
+    assert np.array_equal(second.spins, spins) and np.array_equal(first.spins, spins)
 
 
 def test_ring_patch_runs_and_spins_up():
