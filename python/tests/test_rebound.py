@@ -193,6 +193,29 @@ def test_merge_keeps_mass_volume_momentum_angular_momentum():
     assert np.linalg.norm(l1 - l0) <= 1e-12 * np.linalg.norm(l0)
 
 
+def test_merge_across_a_periodic_boundary_uses_the_ghost_shift():
+    """A sticky pair meets across the edge of a periodic box (REBOUND passes the ghost-box shift):
+    one grain at the pair's centre of mass, with their mass, volume and momentum."""
+    box = 1.0
+    sim = rebound.Simulation()
+    sim.gravity, sim.integrator, sim.collision, sim.boundary = "none", "leapfrog", "direct", "periodic"
+    sim.root_size = box
+    sim.N_ghost_x = 1
+    sim.dt = 1e-3
+    gap = 2e-8
+    edge = box / 2 - RADIUS - gap / 2
+    sim.add(m=MASS, r=RADIUS, x=edge, vx=1e-5, vy=3e-6)
+    sim.add(m=MASS, r=RADIUS, x=-edge, vx=-1e-5)
+    att = rime.rebound.attach(sim, rime.Scene.preset("ice-sticky"), length_unit=1, time_unit=1, mass_unit=1)
+    p0, v0 = np.array(sim.particles[0].vxyz) + np.array(sim.particles[1].vxyz), 2 * RADIUS**3
+    sim.integrate(0.05)
+    assert sim.N == 1 and att.counts()["merges"] == 1, att.counts()
+    q = sim.particles[0]
+    assert q.m == pytest.approx(2 * MASS, rel=1e-15) and q.r**3 == pytest.approx(v0, rel=1e-14)
+    assert np.linalg.norm(np.array(q.vxyz) * 2 - p0) <= 1e-15 * np.linalg.norm(p0) + 1e-22
+    assert abs(abs(q.x) - box / 2) < 1e-3  # on the edge, not in the middle of the box
+
+
 def test_stay_keeps_both_with_the_cores_tangential_outcome():
     g_n, g_t = 2e-5, 0.01
     sim, att = sticky_pair("stay", g_n=g_n, g_t=g_t)
