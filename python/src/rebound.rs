@@ -109,14 +109,6 @@ struct State {
 /// The simulations with a handler attached: (address, state). A handful at most, so a scan.
 static REGISTRY: RwLock<Vec<(usize, Arc<State>)>> = RwLock::new(Vec::new());
 
-fn lookup(sim: usize) -> Option<Arc<State>> {
-    let registry = REGISTRY.read().ok()?;
-    registry
-        .iter()
-        .find(|(a, _)| *a == sim)
-        .map(|(_, s)| Arc::clone(s))
-}
-
 /// A particle's fields, read from REBOUND's particle array.
 struct Particle {
     base: *mut u8,
@@ -391,7 +383,11 @@ impl State {
 extern "C" fn collision_resolve(sim: *mut c_void, c: RebCollision) -> c_int {
     // No panic may unwind into C: catch it and report it as an error of the simulation.
     let outcome = std::panic::catch_unwind(|| {
-        let Some(state) = lookup(sim as usize) else {
+        // The read guard is held while resolving (attach and detach write; collisions only read).
+        let Ok(registry) = REGISTRY.read() else {
+            return KEEP_BOTH;
+        };
+        let Some((_, state)) = registry.iter().find(|(a, _)| *a == sim as usize) else {
             return KEEP_BOTH;
         };
         match state.resolve(sim as *mut u8, &c) {
