@@ -35,6 +35,18 @@ __all__ = [
 ACCURACY_LEVELS = ("fast", "balanced", "precise", "integrated")
 
 
+def _scene(scene):
+    if not isinstance(scene, Scene):
+        raise ValueError(f"scene: expected a rime_grains.Scene, e.g. Scene.preset('ice') (got {type(scene).__name__})")
+    return scene
+
+
+def _accuracy(accuracy):
+    if not isinstance(accuracy, str):
+        raise ValueError(f"accuracy: expected a level name or a tolerance as a string (got {accuracy!r})")
+    return accuracy
+
+
 def eps_n(g, scene, accuracy="precise"):
     """Normal restitution ε_N = −g'_N/g_N at impact speeds ``g`` [m/s] (Eq. (4)–(17)).
 
@@ -56,7 +68,7 @@ def eps_n(g, scene, accuracy="precise"):
     ...
     ValueError: g[0]: a speed must be finite, >= 0 and at most 1e6 m/s (got -1)
     """
-    return _native.eps_n(g, scene, accuracy)
+    return _native.eps_n(g, _scene(scene), _accuracy(accuracy))
 
 
 def eps_t(g_n, g_t, scene, accuracy="precise"):
@@ -73,7 +85,7 @@ def eps_t(g_n, g_t, scene, accuracy="precise"):
     >>> rime.eps_t([0.01, 0.02], [0.001, 0.05], ice).shape
     (2,)
     """
-    return _native.eps_t(g_n, g_t, scene, accuracy)
+    return _native.eps_t(g_n, g_t, _scene(scene), _accuracy(accuracy))
 
 
 def tangential(g_n, g_t, scene, accuracy="precise"):
@@ -84,7 +96,7 @@ def tangential(g_n, g_t, scene, accuracy="precise"):
     >>> r["class"]
     ['rolling', 'sliding']
     """
-    return _native.tangential(g_n, g_t, scene, accuracy)
+    return _native.tangential(g_n, g_t, _scene(scene), _accuracy(accuracy))
 
 
 def collision(g, scene, g_t=None, points=400, accuracy="precise"):
@@ -98,7 +110,7 @@ def collision(g, scene, g_t=None, points=400, accuracy="precise"):
     >>> c["status"], bool(abs(c["ledger"]["closure"]) < 1e-6)   # the energy ledger closes
     ('rebound', True)
     """
-    return _native.collision(g, scene, g_t, points, accuracy)
+    return _native.collision(g, _scene(scene), g_t, points, _accuracy(accuracy))
 
 
 def thresholds(scene, accuracy="precise"):
@@ -118,7 +130,7 @@ def thresholds(scene, accuracy="precise"):
     >>> bool(abs(t["layer"] / g_s - 1) < 1e-14), t["adhesion"]
     (True, None)
     """
-    return _native.thresholds(scene, accuracy)
+    return _native.thresholds(_scene(scene), _accuracy(accuracy))
 
 
 def compare(models, g, scene, accuracy="precise"):
@@ -133,7 +145,7 @@ def compare(models, g, scene, accuracy="precise"):
     >>> bool(abs(out["hertzsch2002"][1] - rime.eps_n(1e-2, ice)) < 1e-12)
     True
     """
-    return _native.compare(list(models), g, scene, accuracy)
+    return _native.compare(list(models), g, _scene(scene), _accuracy(accuracy))
 
 
 from . import data  # noqa: E402

@@ -29,7 +29,14 @@ pub(crate) fn core_error(e: rime_core::Error) -> PyErr {
 
 /// Parses an accuracy name (`fast`, `balanced`, `precise`, `integrated`) or a tolerance (`1e-8`).
 pub(crate) fn accuracy(text: &str) -> PyResult<Accuracy> {
-    Accuracy::parse(text).map_err(|e| value_error("accuracy", e))
+    Accuracy::parse(text).map_err(|e| {
+        let message = e.to_string();
+        if message.starts_with("accuracy") {
+            PyValueError::new_err(message)
+        } else {
+            value_error("accuracy", message)
+        }
+    })
 }
 
 /// A collision scene: two grains, the bulk, and optional layer, adhesion and friction (SI units).
