@@ -290,6 +290,18 @@ def test_reattaching_keeps_the_spins():
     assert np.array_equal(second.spins, spins) and np.array_equal(first.spins, spins)
 
 
+def test_particles_added_later_get_a_spin_slot_from_track_spins():
+    sim = pair_sim([-0.021, 0, 0], [0.005, 0, 0], [0.021, 0, 0], [-0.005, 0, 0])
+    spins = np.array([[1.0, 2.0, 3.0], [-1.0, 0.5, 0.25]])
+    att = rime.rebound.attach(sim, rime.Scene(), length_unit=1, time_unit=1, mass_unit=1, spins=spins)
+    sim.add(m=MASS, r=RADIUS, x=1.0)
+    assert not sim.particles[2].ap and np.array_equal(att.spins[2], [0, 0, 0])
+    att.track_spins()
+    assert sim.particles[2].ap and np.array_equal(att.spins[:2], spins)
+    with pytest.raises(ValueError, match="^spins: expected shape"):
+        att.track_spins(np.zeros((2, 3)))
+
+
 def test_ring_patch_runs_and_spins_up():
     sim, att = ring()
     values = np.concatenate([np.array([(*p.xyz, *p.vxyz) for p in sim.particles]).ravel(), att.spins.ravel()])
