@@ -11,6 +11,20 @@ whose message starts with the field it is about.
 >>> eps.shape, bool(np.all((eps > 0) & (eps < 1)))
 ((5,), True)
 
+A ``Scene`` is built from a preset, the ``rime scene`` JSON or ``set`` with the keys and units of
+``rime --set``:
+
+>>> frost = rime.Scene.preset("ice-frost")
+>>> frost.set("layer.thickness", "2 um")
+>>> frost.get("layer.thickness")
+2e-06
+>>> rime.Scene.from_json(frost.to_json()) == frost
+True
+>>> frost.set("layer.thickness", "2 kg")
+Traceback (most recent call last):
+...
+ValueError: layer.thickness: expected a length, e.g. 1e-6, 1 um, 2 cm
+
 ``rime_grains.rebound.attach`` sets a REBOUND collision handler (native code in this wheel);
 ``rime_grains.data.law`` evaluates measured laws of ice.
 """
