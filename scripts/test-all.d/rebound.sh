@@ -1,13 +1,10 @@
 #!/usr/bin/env bash
-# rime's exported REBOUND collision handler checked inside REBOUND (pinned, in a local venv).
+# rime's exported REBOUND collision handler (the `rime export` C route) checked inside REBOUND
+# (pinned in python/requirements-test.txt, in the shared test venv target/venv).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-venv=target/venv-rebound
-version=5.2.2
-if ! "$venv/bin/python" -c "import rebound, sys; sys.exit(rebound.__version__ != '$version')" 2>/dev/null; then
-  python3 -m venv "$venv"
-  "$venv/bin/pip" install -q "rebound==$version"
-fi
+scripts/setup-python.sh
+venv=target/venv
 rime="${CARGO_TARGET_DIR:-target}/release/rime"
 # make test's build step built it; run alone, build it the same way (nothing is built twice)
 [ -x "$rime" ] || cargo build --locked -q --release --workspace

@@ -176,7 +176,72 @@ def ring():
     del spins
 
 
+def runtime_params():
+    """rime_rebound_set_params (the recipe's attach(..., damping_time=)) reaches the handler."""
+    recipe = load(ICE)
+    sim = rebound.Simulation()
+    sim.gravity, sim.integrator, sim.collision, sim.dt = "none", "leapfrog", "direct", 1e-3
+    sim.add(m=MASS, r=RADIUS, x=-0.021, vx=0.005)
+    sim.add(m=MASS, r=RADIUS, x=0.021, vx=-0.005)
+    recipe.attach(sim, damping_time=2e-4)
+    sim.integrate(10.0)
+    eps = (sim.particles[1].vx - sim.particles[0].vx) / 0.01
+    want = json.loads(subprocess.run([RIME, "eps", "--preset", "ice", "--set", "bulk.damping.time=2e-4",
+                                      "--g", "0.01", "--format", "json"], check=True, capture_output=True,
+                                     text=True).stdout)[0]["eps_n"]
+    check(f"runtime A = 2e-4 s reaches the handler: eps_N against rime ({want:.12f})", abs(eps - want), 1e-9)
+    try:
+        recipe.attach(sim, layer_viscosity=-1.0)
+    except ValueError as e:
+        print(f"ok: a bad runtime parameter is refused: {e}")
+    else:
+        sys.exit("FAILED: layer_viscosity=-1 was accepted")
+    recipe.attach(sim)  # back to the scene's values for the other checks (one set per library)
+
+
+# The declarations of REBOUND 5.2.2's rebound.h that rime_rebound.c and rime_rebound.h use (the pip
+# wheel has no header): the handler must match REBOUND's function-pointer type exactly (GCC 14 makes
+# a mismatch an error).
+REBOUND_H_DECLARATIONS = """
+#ifndef _MAIN_H
+#define _MAIN_H
+#include <stddef.h>
+struct reb_simulation;
+struct reb_vec6d { double x, y, z, vx, vy, vz; };
+struct reb_particle { double x, y, z, vx, vy, vz, ax, ay, az, m, r; const char *name; void *ap;
+                      struct reb_simulation *sim; };
+struct reb_collision { size_t p1; size_t p2; struct reb_vec6d gb; size_t ri; };
+enum REB_COLLISION_RESOLVE_OUTCOME {
+    REB_COLLISION_RESOLVE_OUTCOME_REMOVE_NONE = 0, REB_COLLISION_RESOLVE_OUTCOME_REMOVE_P1 = 1,
+    REB_COLLISION_RESOLVE_OUTCOME_REMOVE_P2 = 2, REB_COLLISION_RESOLVE_OUTCOME_REMOVE_BOTH = 3 };
+struct reb_simulation { struct reb_particle *particles;
+    enum REB_COLLISION_RESOLVE_OUTCOME (*collision_resolve)(struct reb_simulation *const r,
+                                                             struct reb_collision); };
+#endif
+"""
+
+
+def c_route():
+    """The C route: rime_rebound.c and a user's file compile against rebound.h with -Werror."""
+    import os
+    import tempfile
+    with tempfile.TemporaryDirectory() as d:
+        with open(os.path.join(d, "rebound.h"), "w") as f:
+            f.write(REBOUND_H_DECLARATIONS)
+        with open(os.path.join(d, "user.c"), "w") as f:
+            f.write('#include "rebound.h"\n#include "rime_rebound.h"\n'
+                    "int hook(struct reb_simulation *r) {\n"
+                    "    r->collision_resolve = rime_collision_resolve;\n"
+                    "    return rime_rebound_set_params(1e-4, 0.0, 0.0, 0.0);\n}\n")
+        for source in (os.path.join(ICE, "rime_rebound.c"), os.path.join(d, "user.c")):
+            subprocess.run(["cc", "-std=c99", "-Wall", "-Wextra", "-Werror", "-I", d, "-I", ICE, "-c",
+                            source, "-o", os.path.join(d, "out.o")], check=True)
+    print("ok: rime_rebound.c and a user of rime_rebound.h compile against rebound.h with -Werror")
+
+
 print(f"rebound {rebound.__version__}")
+c_route()
+runtime_params()
 bounce("head-on", "ice", ICE, [-0.021, 0, 0], [0.005, 0, 0], [0, 0, 0], [0.021, 0, 0], [-0.005, 0, 0],
        [0, 0, 0])
 # g_T < (mu/kappa) g_N: the rolling branch, eps_T = -eps_N(g_T) (Eq. (26), top).

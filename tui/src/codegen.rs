@@ -292,8 +292,18 @@ impl Law {
             .replace("@DEFAULT_GAMMA@", &format!("{:?}", d[5]))
     }
 
+    /// `rime_rebound.h`: the handler's prototypes, for C users (after REBOUND's `rebound.h`).
+    pub fn rebound_h(&self) -> String {
+        self.fill(include_str!("codegen/rime_rebound.h.in"), " * ")
+    }
+
     /// `rime_rebound.py`: the recipe that builds and attaches the handler.
     pub fn rebound_py(&self) -> String {
+        let d = self.runtime_defaults();
         self.fill(include_str!("codegen/rime_rebound.py.in"), "# ")
+            .replace("@DEFAULT_A@", &format!("{:?}", d[0]))
+            .replace("@DEFAULT_D@", &format!("{:?}", d[3]))
+            .replace("@DEFAULT_ETA@", &format!("{:?}", d[4]))
+            .replace("@DEFAULT_GAMMA@", &format!("{:?}", d[5]))
     }
 }

@@ -128,6 +128,7 @@ pub fn write_all(dir: &Path, e: &Export, scene_json: &str, law: &Law) -> CliResu
         ("rime_eps.c", c_source(e, law)),
         ("rime_eps.rs", rust_source(e, law)),
         ("rime_rebound.c", law.rebound_c()),
+        ("rime_rebound.h", law.rebound_h()),
         ("rime_rebound.py", law.rebound_py()),
     ];
     let mut names = Vec::new();

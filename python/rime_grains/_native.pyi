@@ -1,0 +1,6 @@
+"""The native module (use the rime_grains package instead)."""
+from typing import Any
+from . import Scene as Scene
+
+REBOUND_VERSION: str
+def __getattr__(name: str) -> Any: ...

@@ -1,0 +1,30 @@
+"""The README's "From Python" examples run as written (issue 23), against the installed wheel."""
+import pathlib
+import re
+import warnings
+
+import pytest
+
+README = pathlib.Path(__file__).resolve().parents[2] / "README.md"
+
+
+def snippets():
+    text = README.read_text(encoding="utf-8")
+    section = text.split("## From Python\n", 1)[1].split("\n## ", 1)[0]
+    return re.findall(r"```python\n(.*?)```", section, flags=re.S)
+
+
+def test_the_section_has_its_examples():
+    assert len(snippets()) == 3
+
+
+@pytest.mark.parametrize("index", range(3))
+def test_readme_example_runs(index, tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)  # the REBOUND example writes run.bin
+    with warnings.catch_warnings():
+        # REBOUND's reminder on loading a snapshot ("set function pointers again") is expected.
+        warnings.simplefilter("ignore", RuntimeWarning)
+        exec(compile(snippets()[index], f"README.md example {index + 1}", "exec"), {})
+    out = capsys.readouterr().out
+    if index == 2:
+        assert "'bounces': 1" in out

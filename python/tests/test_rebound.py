@@ -1,0 +1,390 @@
+"""rime_grains.rebound.attach inside REBOUND 5.2.2 (issue 23).
+
+REBOUND's integrator moves the grains and calls the native handler. Expected values come from the
+`rime` command line (`rime eps`, `rime tangential`: the core through its own parser), from
+conservation laws (momentum, angular momentum orbital + spin, mass, volume), from Eq. (2) (the
+spin change of an impulse at the contact point) and from unit conversion by hand.
+"""
+import ctypes
+import math
+
+import numpy as np
+import pytest
+import rebound
+
+import rime_grains as rime
+from conftest import cli
+
+DENSITY, RADIUS = 900.0, 0.02
+MASS = DENSITY * 4.0 / 3.0 * math.pi * RADIUS**3
+
+
+def pair_sim(x1, v1, x2, v2, mass=MASS, radius=RADIUS, dt=1e-3):
+    sim = rebound.Simulation()
+    sim.gravity = "none"
+    sim.integrator = "leapfrog"
+    sim.collision = "direct"
+    sim.dt = dt
+    for x, v in ((x1, v1), (x2, v2)):
+        sim.add(m=mass, r=radius, x=x[0], y=x[1], z=x[2], vx=v[0], vy=v[1], vz=v[2])
+    return sim
+
+
+def state(sim, att):
+    w = att.spins
+    return [(np.array(p.xyz), np.array(p.vxyz), w[k].copy(), p.m, p.r) for k, p in enumerate(sim.particles)]
+
+
+def arms(s1, s2):
+    """The lever arms: REBOUND finds the pair overlapping, and the contact point splits the line
+    of centres (length d) in the ratio of the radii, a_i d/(a_i + a_j) (the radii when touching)."""
+    d = np.linalg.norm(s1[0] - s2[0])
+    return s1[4] * d / (s1[4] + s2[4]), s2[4] * d / (s1[4] + s2[4])
+
+
+def surface_velocity(s1, s2, n, lever):
+    """Eq. (2): g = (v_i − ω_i × n a_i) − (v_j + ω_j × n a_j), with the lever arms a_i, a_j."""
+    return (s1[1] - np.cross(s1[2], n) * lever[0]) - (s2[1] + np.cross(s2[2], n) * lever[1])
+
+
+def step_to_collision(sim, att):
+    before = state(sim, att)
+    for _ in range(200000):
+        sim.steps(1)
+        after = state(sim, att)
+        if sim.N != len(before) or not np.array_equal(after[0][1], before[0][1]):
+            return before, after
+        before = after
+    pytest.fail("no collision")
+
+
+def momenta(sim, att):
+    p, l = np.zeros(3), np.zeros(3)
+    w = att.spins
+    for k, q in enumerate(sim.particles):
+        v, x = np.array(q.vxyz), np.array(q.xyz)
+        p += q.m * v
+        l += q.m * np.cross(x, v) + 0.4 * q.m * q.r**2 * w[k]
+    return p, l
+
+
+CASES = {
+    "head-on": ([-0.021, 0, 0], [0.005, 0, 0], [0, 0, 0], [0.021, 0, 0], [-0.005, 0, 0], [0, 0, 0]),
+    # g_T < (μ/κ) g_N: the rolling branch, ε_T = −ε_N(g_T) (Eq. (26), top).
+    "oblique, rolling": ([-0.021, 0.012, 0.003], [0.004, -0.0015, 0.0005], [0.02, -0.01, 0.03],
+                         [0.021, 0, 0], [-0.003, 0.001, 0.0], [-0.01, 0.04, 0.005]),
+    # g_T ~ 5 g_N: the sliding branch.
+    "oblique, sliding": ([-0.04, 0.0, 0.0], [0.002, 0.02, 0.004], [0.1, -0.2, 0.3],
+                         [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [-0.1, 0.2, 0.05]),
+    # Grazing: the centres pass at 0.995 of the contact distance, g_T ≫ g_N.
+    "grazing": ([-0.05, 0.0398, 0.0], [0.03, 0.0, 0.0], [0, 0, 0], [0, 0, 0], [0, 0, 0], [0, 0, 0]),
+}
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_two_body_hits_reproduce_rime(name):
+    x1, v1, w1, x2, v2, w2 = CASES[name]
+    sim = pair_sim(x1, v1, x2, v2)
+    att = rime.rebound.attach(sim, rime.Scene.preset("ice"), length_unit=1, time_unit=1, mass_unit=1,
+                              spins=np.array([w1, w2], dtype=float))
+    p0, l0 = momenta(sim, att)
+    before, after = step_to_collision(sim, att)
+    # REBOUND resolves at the end of the step: the normal is that of the positions there.
+    d = after[0][0] - after[1][0]
+    n = d / np.linalg.norm(d)
+    lever = arms(after[0], after[1])
+    g0, g1 = surface_velocity(before[0], before[1], n, lever), surface_velocity(after[0], after[1], n, lever)
+    gn0, gn1 = g0 @ n, g1 @ n
+    gt0, gt1 = g0 - gn0 * n, g1 - gn1 * n
+    want = cli("tangential", "--preset", "ice", "--gn", repr(float(abs(gn0))), "--gt",
+               repr(float(np.linalg.norm(gt0))), "--accuracy", "precise")[0]
+    assert -gn1 / gn0 == pytest.approx(want["eps_n"], rel=1e-12)
+    if np.linalg.norm(gt0) > 0:
+        assert np.linalg.norm(gt1 - want["eps_t"] * gt0) / np.linalg.norm(gt0) < 1e-12
+    # The spins: the torque of the contact impulse at the contact point, I Δω = (∓a n) × m Δv.
+    inertia = 0.4 * MASS * RADIUS**2
+    for k, arm in ((0, -lever[0]), (1, lever[1])):
+        dv = after[k][1] - before[k][1]
+        want_w = before[k][2] + np.cross(arm * n, MASS * dv) / inertia
+        change = np.linalg.norm(want_w - before[k][2])
+        assert np.linalg.norm(after[k][2] - want_w) <= 1e-12 * max(change, 1e-300) + 1e-300
+    p1, l1 = momenta(sim, att)
+    assert np.linalg.norm(p1 - p0) <= 1e-15 * MASS * np.linalg.norm(np.subtract(v1, v2))
+    assert np.linalg.norm(l1 - l0) <= 1e-12 * max(np.linalg.norm(l0), MASS * RADIUS * np.linalg.norm(v1))
+    assert att.counts()["bounces"] == 1 and att.error is None
+
+
+def head_on_eps(scene, mass, units=(1.0, 1.0, 1.0), speed=0.005, density="particles", radius=RADIUS):
+    L, T, M = (rime.rebound.unit(f, u) for f, u in zip(("length_unit", "time_unit", "mass_unit"), units))
+    sim = pair_sim([-(radius + 1e-3) / L, 0, 0], [speed * T / L, 0, 0],
+                   [(radius + 1e-3) / L, 0, 0], [-speed * T / L, 0, 0],
+                   mass=mass / M, radius=radius / L, dt=1e-3 / T)
+    att = rime.rebound.attach(sim, scene, length_unit=units[0], time_unit=units[1], mass_unit=units[2],
+                              density=density)
+    before, after = step_to_collision(sim, att)
+    return (after[1][1][0] - after[0][1][0]) / (before[0][1][0] - before[1][1][0]), sim, att
+
+
+def test_units_cm_minutes_grams_give_si_results():
+    ice = rime.Scene.preset("ice")
+    want = cli("eps", "--preset", "ice", "--g", "0.01")[0]["eps_n"]
+    eps_si, sim_si, _ = head_on_eps(ice, MASS)
+    eps_cgs, sim_cgs, _ = head_on_eps(ice, MASS, units=(0.01, 60.0, 1e-3))
+    eps_str, _, _ = head_on_eps(ice, MASS, units=("cm", "min", "g"))
+    assert eps_si == pytest.approx(want, rel=1e-12)
+    assert eps_cgs == pytest.approx(want, rel=1e-12)
+    assert eps_str == eps_cgs
+    # The velocities after, converted back to SI by hand, are the SI run's.
+    for p_si, p_cgs in zip(sim_si.particles, sim_cgs.particles):
+        assert p_cgs.vx * 0.01 / 60.0 == pytest.approx(p_si.vx, rel=1e-12)
+
+
+def test_density_400_gives_the_density_400_eps():
+    ice = rime.Scene.preset("ice")
+    mass_400 = 400.0 * 4.0 / 3.0 * math.pi * RADIUS**3
+    want_400 = cli("eps", "--preset", "ice", "--set", "grains.density=400", "--g", "0.01")[0]["eps_n"]
+    want_900 = cli("eps", "--preset", "ice", "--g", "0.01")[0]["eps_n"]
+    assert abs(want_400 / want_900 - 1) > 1e-2  # the test can tell the two apart
+    eps, _, _ = head_on_eps(ice, mass_400)
+    assert eps == pytest.approx(want_400, rel=1e-12)
+    # density="scene" keeps the scene's 900 for ε_N (the impulses still use the masses), and says so.
+    eps_scene, _, att = head_on_eps(ice, mass_400, density="scene")
+    assert eps_scene == pytest.approx(want_900, rel=1e-12)
+    assert "the scene's density 900 kg/m3 (impulses use the particles' masses)" in repr(att)
+
+
+def test_particle_radii_are_used_not_the_scenes():
+    ice = rime.Scene.preset("ice")  # grains.radius_* = 2 cm
+    r = 0.5
+    mass = 900.0 * 4.0 / 3.0 * math.pi * r**3
+    want = cli("eps", "--preset", "ice", "--set", "grains.radius_1=0.5", "--set", "grains.radius_2=0.5",
+               "--g", "0.01")[0]["eps_n"]
+    eps, _, att = head_on_eps(ice, mass, radius=r)
+    assert eps == pytest.approx(want, rel=1e-12)
+    assert att.cached_pairs == 1
+
+
+def sticky_pair(sticking, g_n=2e-5, g_t=0.0, **kw):
+    """A slow ice-sticky collision (stuck by adhesion) with spins, at tangential speed g_t."""
+    # Nearly touching (a 2e-8 m gap, the centres offset by (3, 1) mm in y, z), g_T perpendicular to
+    # the line of centres: contact after ~1 ms, before the tangential motion opens the gap.
+    x = math.sqrt(0.04000002**2 - 0.003**2 - 0.001**2) / 2
+    t = np.array([0.0, 1.0, -3.0]) / math.sqrt(10.0) * g_t / 2
+    sim = pair_sim([-x, 0.003, 0.001], [g_n / 2 + t[0], t[1], t[2]], [x, 0.0, 0.0], [-g_n / 2 - t[0], -t[1], -t[2]])
+    spins = np.array([[0.001, -0.002, 0.0005], [-0.001, 0.0005, 0.002]])
+    att = rime.rebound.attach(sim, rime.Scene.preset("ice-sticky"), length_unit=1, time_unit=1,
+                              mass_unit=1, sticking=sticking, spins=spins, **kw)
+    return sim, att
+
+
+def test_merge_keeps_mass_volume_momentum_angular_momentum():
+    status = cli("eps", "--preset", "ice-sticky", "--g", "2e-5")[0]["status"]
+    assert status == "stuck_by_adhesion"
+    sim, att = sticky_pair("merge", g_t=3e-6)
+    m0 = sum(p.m for p in sim.particles)
+    v0 = sum(p.r**3 for p in sim.particles)
+    p0, l0 = momenta(sim, att)
+    sim.integrate(50.0)
+    assert sim.N == 1 and att.counts()["merges"] == 1
+    p1, l1 = momenta(sim, att)
+    assert sim.particles[0].m == pytest.approx(m0, rel=1e-15)
+    assert sim.particles[0].r ** 3 == pytest.approx(v0, rel=1e-14)
+    assert np.linalg.norm(p1 - p0) <= 1e-15 * np.linalg.norm(p0) + 1e-25
+    assert np.linalg.norm(l1 - l0) <= 1e-12 * np.linalg.norm(l0)
+
+
+def test_merge_across_a_periodic_boundary_uses_the_ghost_shift():
+    """A sticky pair meets across the edge of a periodic box (REBOUND passes the ghost-box shift):
+    one grain at the pair's centre of mass, with their mass, volume and momentum."""
+    box = 1.0
+    sim = rebound.Simulation()
+    sim.gravity, sim.integrator, sim.collision, sim.boundary = "none", "leapfrog", "direct", "periodic"
+    sim.root_size = box
+    sim.N_ghost_x = 1
+    sim.dt = 1e-3
+    gap = 2e-8
+    edge = box / 2 - RADIUS - gap / 2
+    sim.add(m=MASS, r=RADIUS, x=edge, vx=1e-5, vy=3e-6)
+    sim.add(m=MASS, r=RADIUS, x=-edge, vx=-1e-5)
+    att = rime.rebound.attach(sim, rime.Scene.preset("ice-sticky"), length_unit=1, time_unit=1, mass_unit=1)
+    p0, v0 = np.array(sim.particles[0].vxyz) + np.array(sim.particles[1].vxyz), 2 * RADIUS**3
+    sim.integrate(0.05)
+    assert sim.N == 1 and att.counts()["merges"] == 1, att.counts()
+    q = sim.particles[0]
+    assert q.m == pytest.approx(2 * MASS, rel=1e-15) and q.r**3 == pytest.approx(v0, rel=1e-14)
+    assert np.linalg.norm(np.array(q.vxyz) * 2 - p0) <= 1e-15 * np.linalg.norm(p0) + 1e-22
+    assert abs(abs(q.x) - box / 2) < 1e-3  # on the edge, not in the middle of the box
+
+
+def test_stay_keeps_both_with_the_cores_tangential_outcome():
+    g_n, g_t = 2e-5, 0.01
+    sim, att = sticky_pair("stay", g_n=g_n, g_t=g_t)
+    p0, l0 = momenta(sim, att)
+    before, after = step_to_collision(sim, att)
+    assert sim.N == 2 and att.counts()["stays"] == 1 and att.counts()["bounces"] == 0
+    d = after[0][0] - after[1][0]
+    n = d / np.linalg.norm(d)
+    lever = arms(after[0], after[1])
+    g0, g1 = surface_velocity(before[0], before[1], n, lever), surface_velocity(after[0], after[1], n, lever)
+    gn0 = g0 @ n
+    gt0, gt1 = g0 - gn0 * n, g1 - (g1 @ n) * n
+    want = cli("tangential", "--preset", "ice-sticky", "--gn", repr(float(abs(gn0))), "--gt",
+               repr(float(np.linalg.norm(gt0))))[0]
+    assert want["eps_n"] == 0.0
+    assert abs(g1 @ n) <= 1e-12 * abs(gn0)  # ε_N = 0: no normal rebound
+    assert np.linalg.norm(gt1 - want["eps_t"] * gt0) <= 1e-12 * np.linalg.norm(gt0)
+    p1, l1 = momenta(sim, att)
+    assert np.linalg.norm(p1 - p0) <= 1e-15 * np.linalg.norm(p0)
+    assert np.linalg.norm(l1 - l0) <= 1e-12 * np.linalg.norm(l0)
+
+
+def test_stay_honours_minimum_collision_velocity():
+    sim, att = sticky_pair("stay")
+    sim.minimum_collision_velocity = 1e-6
+    before, after = step_to_collision(sim, att)
+    d = after[0][0] - after[1][0]
+    n = d / np.linalg.norm(d)
+    g1 = surface_velocity(after[0], after[1], n, arms(after[0], after[1]))
+    assert g1 @ n == pytest.approx(1e-6, rel=1e-9)
+
+
+def test_merge_if_slow_merges_only_below_the_sticking_speed():
+    scene = rime.Scene.preset("ice-sticky")
+    v_stick = rime.thresholds(scene)["stick"]  # the pair's radii are the scene's (2 cm)
+    slow_sim, slow = sticky_pair("merge_if_slow", g_t=0.5 * v_stick)
+    slow_sim.integrate(50.0)
+    assert slow_sim.N == 1 and slow.counts()["merges"] == 1
+    fast_sim, fast = sticky_pair("merge_if_slow", g_t=20 * v_stick)
+    fast_sim.integrate(50.0)
+    assert fast_sim.N == 2 and fast.counts()["stays"] >= 1 and fast.counts()["merges"] == 0
+
+
+def ring(att_kwargs=None, n=36, orbits=1.0, seed=14, collision="tree"):
+    rng = np.random.default_rng(seed)
+    omega = 0.00013143527  # Saturn's A ring [1/s]
+    sim = rebound.Simulation()
+    sim.OMEGA = omega
+    sim.dt = 1e-3 * 2 * math.pi / omega
+    box = 20.0
+    sim.root_size = box
+    sim.N_ghost_x, sim.N_ghost_y = 2, 2
+    sim.integrator, sim.boundary, sim.gravity, sim.collision = "sei", "shear", "none", collision
+    placed = []
+    while len(placed) < n:
+        x = [rng.uniform(-box / 2, box / 2), rng.uniform(-box / 2, box / 2), rng.normal(0, 1)]
+        if all(np.linalg.norm(np.subtract(x, q)) > 2.2 for q in placed):
+            placed.append(x)
+            sim.add(m=400 * 4 / 3 * math.pi, r=1.0, x=x[0], y=x[1], z=x[2], vx=rng.normal(0, 2e-3),
+                    vy=-1.5 * x[0] * omega + rng.normal(0, 2e-3), vz=rng.normal(0, 2e-3))
+    att = rime.rebound.attach(sim, rime.Scene.preset("ice"), length_unit=1, time_unit=1, mass_unit=1,
+                              **(att_kwargs or {}))
+    sim.integrate(orbits * 2 * math.pi / omega)
+    return sim, att
+
+
+def test_reattaching_keeps_the_spins():
+    sim = pair_sim([-0.021, 0, 0], [0.005, 0, 0], [0.021, 0, 0], [-0.005, 0, 0])
+    spins = np.array([[1.0, 2.0, 3.0], [-1.0, 0.5, 0.25]])
+    first = rime.rebound.attach(sim, rime.Scene(), length_unit=1, time_unit=1, mass_unit=1, spins=spins)
+    second = rime.rebound.attach(sim, rime.Scene.preset("ice-frost"), length_unit=1, time_unit=1, mass_unit=1)
+    assert np.array_equal(second.spins, spins) and np.array_equal(first.spins, spins)
+
+
+def test_particles_added_later_get_a_spin_slot_from_track_spins():
+    sim = pair_sim([-0.021, 0, 0], [0.005, 0, 0], [0.021, 0, 0], [-0.005, 0, 0])
+    spins = np.array([[1.0, 2.0, 3.0], [-1.0, 0.5, 0.25]])
+    att = rime.rebound.attach(sim, rime.Scene(), length_unit=1, time_unit=1, mass_unit=1, spins=spins)
+    sim.add(m=MASS, r=RADIUS, x=1.0)
+    assert not sim.particles[2].ap and np.array_equal(att.spins[2], [0, 0, 0])
+    att.track_spins()
+    assert sim.particles[2].ap and np.array_equal(att.spins[:2], spins)
+    with pytest.raises(ValueError, match="^spins: expected shape"):
+        att.track_spins(np.zeros((2, 3)))
+
+
+def test_ring_patch_runs_and_spins_up():
+    sim, att = ring()
+    values = np.concatenate([np.array([(*p.xyz, *p.vxyz) for p in sim.particles]).ravel(), att.spins.ravel()])
+    assert np.all(np.isfinite(values)) and sim.N == 36
+    assert np.count_nonzero(np.linalg.norm(att.spins, axis=1)) > 0
+    assert att.counts()["bounces"] > 0 and att.cached_pairs == 1 and att.error is None
+
+
+def test_save_and_reload_keep_spins(tmp_path):
+    sim, att = ring(orbits=0.5, collision="direct")
+    spins = att.spins
+    assert np.count_nonzero(spins) > 0
+    path = str(tmp_path / "ring.bin")
+    att.save(path)
+    with pytest.warns(RuntimeWarning, match="reset function pointers"):
+        loaded = rebound.Simulation(path)  # REBOUND's reminder: attach again
+    restored = rime.rebound.attach(loaded, rime.Scene.preset("ice"), length_unit=1, time_unit=1,
+                                   mass_unit=1, spins=rime.rebound.load_spins(path, loaded))
+    assert np.array_equal(restored.spins, spins)
+    # Both go on and stay identical: the reloaded run is the run.
+    t = sim.t + 0.25 * 2 * math.pi / sim.OMEGA
+    sim.integrate(t)
+    loaded.integrate(t)
+    assert np.array_equal(restored.spins, att.spins)
+    assert np.array_equal([p.vxyz for p in loaded.particles], [p.vxyz for p in sim.particles])
+
+
+def test_load_spins_refuses_a_mismatched_snapshot(tmp_path):
+    sim, att = ring(orbits=0.05)
+    path = str(tmp_path / "ring.bin")
+    att.save(path)
+    other = rebound.Simulation()
+    other.add(m=1.0)
+    with pytest.raises(ValueError, match="^filename"):
+        rime.rebound.load_spins(path, other)
+
+
+def test_collision_layout_matches_rebound_ctypes():
+    size, offsets = rime._native.collision_layout()
+    c = rebound.CollisionS
+    assert (size, list(offsets)) == (ctypes.sizeof(c), [c.p1.offset, c.p2.offset, c.gb.offset, c.ri.offset])
+
+
+def test_other_rebound_versions_are_refused(monkeypatch):
+    monkeypatch.setattr(rebound, "__version__", "5.3.0")
+    with pytest.raises(RuntimeError, match=r"supports rebound 5\.2\.2.*this is rebound 5\.3\.0"):
+        rime.rebound.attach(rebound.Simulation(), rime.Scene(), length_unit=1, time_unit=1, mass_unit=1)
+
+
+def test_extension_using_ap_is_refused_with_a_clear_message():
+    sim = pair_sim([-0.021, 0, 0], [0.005, 0, 0], [0.021, 0, 0], [-0.005, 0, 0])
+    dummy = (ctypes.c_double * 3)()
+    sim.particles[0].ap = ctypes.addressof(dummy)
+    with pytest.raises(ValueError, match="^track_spins: particle 0 has an ap pointer"):
+        rime.rebound.attach(sim, rime.Scene(), length_unit=1, time_unit=1, mass_unit=1)
+    # Without spins it works beside such an extension (and leaves ap alone).
+    att = rime.rebound.attach(sim, rime.Scene(), length_unit=1, time_unit=1, mass_unit=1, track_spins=False)
+    sim.integrate(1.0)
+    assert att.counts()["bounces"] == 1 and sim.particles[0].ap == ctypes.addressof(dummy)
+    sim.particles[0].ap = None
+
+
+def test_a_speed_beyond_the_models_stops_the_integration_with_a_message():
+    sim = pair_sim([-0.03, 0, 0], [2e6, 0, 0], [0.03, 0, 0], [-2e6, 0, 0], dt=1e-9)
+    att = rime.rebound.attach(sim, rime.Scene(), length_unit=1, time_unit=1, mass_unit=1)
+    with pytest.raises(rebound.GenericError):
+        sim.integrate(1e-7)
+    assert att.error.startswith("collision of particles ") and "g_N = 4e6 m/s" in att.error
+    assert "impact speed must lie in (0, 1e6] m/s" in att.error
+
+
+@pytest.mark.parametrize("kwargs,field", [
+    (dict(length_unit=0), "length_unit"),
+    (dict(time_unit="cm"), "time_unit"),
+    (dict(mass_unit=float("nan")), "mass_unit"),
+    (dict(density="water"), "density"),
+    (dict(sticking="glue"), "sticking"),
+    (dict(accuracy="best"), "accuracy"),
+    (dict(spins=np.zeros((3, 3))), "spins"),
+])
+def test_attach_bad_input_names_the_field(kwargs, field):
+    sim = pair_sim([-0.021, 0, 0], [0.005, 0, 0], [0.021, 0, 0], [-0.005, 0, 0])
+    args = dict(length_unit=1, time_unit=1, mass_unit=1)
+    args.update(kwargs)
+    with pytest.raises(ValueError, match=f"^{field}"):
+        rime.rebound.attach(sim, rime.Scene(), **args)

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# The Python test environment: one virtual environment at target/venv with every package of
+# python/requirements-test.txt at its pinned version. Idempotent: installs only what is missing or
+# at another version (pip is not even started when everything matches).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+venv=target/venv
+requirements=python/requirements-test.txt
+if [ ! -x "$venv/bin/python" ]; then
+  python3 -m venv "$venv"
+fi
+missing=$("$venv/bin/python" - "$requirements" <<'PY'
+import sys
+from importlib import metadata
+wanted = []
+for line in open(sys.argv[1], encoding="utf-8"):
+    line = line.split("#", 1)[0].strip()
+    if line:
+        name, version = line.split("==")
+        wanted.append((name.strip(), version.strip()))
+for name, version in wanted:
+    try:
+        ok = metadata.version(name) == version
+    except metadata.PackageNotFoundError:
+        ok = False
+    if not ok:
+        print(f"{name}=={version}")
+PY
+)
+if [ -n "$missing" ]; then
+  echo "setup-python: installing $(echo $missing | tr '\n' ' ')"
+  # shellcheck disable=SC2086
+  "$venv/bin/python" -m pip install -q --disable-pip-version-check $missing
+fi
