@@ -29,9 +29,9 @@ rc=0
 "$venv/bin/python" -m pytest -c python/pytest.ini --rootdir python python/tests \
   --doctest-modules --pyargs rime_grains 2>&1 | tee "$out" || rc=$?
 # Each pytest test counts as one test of make test: "count: N passed, M failed" from its summary.
-summary=$(grep -E '^=+ .*(passed|failed|error).* in [0-9.]+s' "$out" | tail -1)
-p=$(echo "$summary" | grep -oE '[0-9]+ passed' | grep -oE '[0-9]+' || echo 0)
-f=$(echo "$summary" | grep -oE '[0-9]+ (failed|errors?)' | awk '{ s += $1 } END { print s + 0 }')
+summary=$(grep -E '^=+ .*(passed|failed|error).* in [0-9.]+s' "$out" | tail -1 || true)
+p=$(echo "$summary" | { grep -oE '[0-9]+ passed' || true; } | awk '{ s += $1 } END { print s + 0 }')
+f=$(echo "$summary" | { grep -oE '[0-9]+ (failed|errors?)' || true; } | awk '{ s += $1 } END { print s + 0 }')
 echo "count: ${p:-0} passed, ${f:-0} failed"
 rm -f "$out"
 exit "$rc"
