@@ -8,7 +8,7 @@ use rime_core::{
     Accuracy, Adhesion, AdhesionModulus, Contact, ContactEnd, Damping, DampingFormula, Error,
     Friction, Layer, LayerReading, Preset, Scene, SlidingLaw, Status, StickClass, Viscosities,
 };
-use rime_tests::rel;
+use rime_tests::{rel, rime, rime_json};
 use std::f64::consts::PI;
 use std::time::{Duration, Instant};
 
@@ -963,4 +963,83 @@ fn regression_balanced_zero_overlap_meets_its_1e_6_bound() {
     let p = c.normal(1.0, Accuracy::Precise).unwrap().eps;
     let b = c.normal(1.0, Accuracy::Balanced).unwrap().eps;
     assert!(rel(b, p) <= 1e-6, "{b} vs {p}: {:e}", rel(b, p));
+}
+
+/// Issue 22: past δ = 1e7 `rime collision` answers where `rime eps` answers (it ran out of steps
+/// at δ ≈ 1.9e10); its t_c is the strong-damping asymptote and its energy ledger closes.
+#[test]
+fn collision_answers_past_the_tables_end_like_eps_issue_22() {
+    let args = ["--g", "1", "--set", "bulk.damping.time=1e6"];
+    let eps = rime_json(&[&["eps", "--format", "json"][..], &args[..]].concat());
+    let col = rime_json(
+        &[
+            &["collision", "--points", "20", "--format", "json"][..],
+            &args[..],
+        ]
+        .concat(),
+    );
+    let c = rime_core::Contact::new(&{
+        let mut s = rime_core::Scene::default();
+        s.bulk.damping = rime_core::Damping::Time(1e6);
+        s
+    })
+    .unwrap();
+    let delta = c.delta(1.0);
+    assert!(delta > 1e10, "δ = {delta}");
+    // docs/physics.md#decision-2: t_c = τ δ^(−2/3) ((20/9) ln δ + (2/3) ln(27/8) + ln 3 − π/(3√3)).
+    let scaled = 20.0 / 9.0 * delta.ln() + 2.0 / 3.0 * (27.0f64 / 8.0).ln() + 3.0f64.ln()
+        - std::f64::consts::PI / (3.0 * 3.0f64.sqrt());
+    let t_c = c.time_scale(1.0) * delta.powf(-2.0 / 3.0) * scaled;
+    assert!(rel(eps[0]["t_c"].as_f64().unwrap(), t_c) < 1e-9, "{eps}");
+    assert!(rel(col["t_c"].as_f64().unwrap(), t_c) < 1e-9, "{col}");
+    assert_eq!(col["eps_n"], eps[0]["eps_n"]);
+    // ε_N → (2/3) δ^(−5/3); the grains hold at ξ_max ≈ δ^(−2/3) ξ* until the force vanishes.
+    let e = col["eps_n"].as_f64().unwrap();
+    assert!(rel(e, 2.0 / 3.0 * delta.powf(-5.0 / 3.0)) < 1e-6, "ε {e}");
+    let xi: Vec<f64> = col["xi"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    let xi_max = c.length_scale(1.0) * delta.powf(-2.0 / 3.0);
+    assert!(
+        rel(*xi.last().unwrap(), xi_max) < 1e-6,
+        "{xi:?} vs {xi_max}"
+    );
+    assert!(
+        col["ledger"]["closure"].as_f64().unwrap().abs() < 1e-9,
+        "{col}"
+    );
+}
+
+/// Issue 22: at 1e-200 m/s the default scene is elastic (δ ∝ g^(1/5) → 0), so brilliantov2007
+/// answers ε = 1 (it divided two underflowed numbers and blamed bulk.damping).
+#[test]
+fn brilliantov2007_at_1e_minus_200_m_per_s_is_elastic_issue_22() {
+    let v = rime_json(&[
+        "compare",
+        "--g",
+        "1e-200",
+        "--models",
+        "brilliantov2007",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(v["records"][0]["eps_n"], 1.0, "{v}");
+    assert_eq!(v["records"][0]["status"], "rebound", "{v}");
+}
+
+/// Issue 22: error messages print 1e300 as `1e300`, not 301 digits.
+#[test]
+fn error_messages_print_huge_numbers_compactly_issue_22() {
+    for args in [
+        &["eps", "--g", "1e300"][..],
+        &["eps", "--set", "grains.radius_1=1e300"][..],
+    ] {
+        let (code, _, err) = rime(args);
+        assert_eq!(code, 2, "{args:?}");
+        assert!(err.contains("1e300"), "{args:?}: {err}");
+        assert!(!err.contains("000000000"), "{args:?}: {err}");
+    }
 }

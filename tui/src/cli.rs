@@ -112,7 +112,10 @@ pub(crate) fn speed(flag: &str, text: &str, allow_zero: bool) -> CliResult<f64> 
     let ok = if allow_zero { v >= 0.0 } else { v > 0.0 };
     if !ok || v > 1e6 {
         let range = if allow_zero { "[0, 1e6]" } else { "(0, 1e6]" };
-        return err(format!("{flag}: speed {v} must lie in {range} m/s"));
+        return err(format!(
+            "{flag}: speed {} must lie in {range} m/s",
+            rime_core::error::Number(v)
+        ));
     }
     Ok(v)
 }

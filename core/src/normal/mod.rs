@@ -86,7 +86,7 @@ fn viscoelastic(contact: &Contact, g: f64, accuracy: Accuracy) -> Result<(f64, f
 }
 
 /// δ above which every accuracy level uses the master curve's asymptote (the table's end, 1e7).
-const DELTA_ASYMPTOTIC: f64 = 1e7;
+pub(crate) const DELTA_ASYMPTOTIC: f64 = 1e7;
 
 /// An impact speed every model accepts: finite, positive, at most 1e6 m/s (errors name `g_n`).
 pub(crate) fn check_speed(g: f64) -> Result<f64> {

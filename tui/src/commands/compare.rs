@@ -4,6 +4,7 @@ use crate::cli::{Common, Format};
 use crate::output::{num, table};
 use crate::scene_io::{CliError, CliResult, err};
 use rime_core::Accuracy;
+use rime_core::error::Number;
 use rime_core::models::{Evaluator, Model};
 use serde::Serialize;
 
@@ -182,7 +183,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         for &g in &args.g {
             let r = e
                 .eps(g, common.accuracy)
-                .map_err(|x| CliError(format!("{name}, g_n = {g}: {x}")))?;
+                .map_err(|x| CliError(format!("{name}, g_n = {}: {x}", Number(g))))?;
             records.push(Record {
                 model: name,
                 g_n: g,
@@ -209,7 +210,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         for &g in &args.g {
             let v = law
                 .eval(g, radius)
-                .map_err(|x| CliError(format!("atlas:{}, g_n = {g}: {x}", law.id)))?;
+                .map_err(|x| CliError(format!("atlas:{}, g_n = {}: {x}", law.id, Number(g))))?;
             records.push(Record {
                 model: law.id,
                 g_n: g,
