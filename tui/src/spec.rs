@@ -256,7 +256,7 @@ pub const SUBS: &[Sub] = &[
             f(
                 "--data",
                 "FILE",
-                "measured points: g [m/s], ε[, σ] per line",
+                "measured points: g, ε[, σ] per line; header units read (g [cm/s]), else m/s",
             ),
             f(
                 "--law",

@@ -854,9 +854,8 @@ impl App {
                 ) {
                     Ok(f) => {
                         let before = self.scene.damping_time();
-                        self.scene = f.scene;
-                        self.preset = None;
-                        self.request();
+                        // An edit like any other: `u` undoes it.
+                        self.replace_scene(f.scene, None);
                         let p = &f.params[0];
                         self.info(format!(
                             "A fitted to {id}: {} (was {}){}, rms {} over its measured speeds",

@@ -899,6 +899,19 @@ fn fit_key_fits_a_to_the_first_measured_law_issue_15() {
 }
 
 #[test]
+fn fit_key_is_undoable_issue_22() {
+    let mut app = app_on(Preset::Ice.scene());
+    let before = app.scene;
+    update(&mut app, ch('f'));
+    assert_ne!(app.scene, before, "the fit changed nothing");
+    let fitted = app.scene;
+    update(&mut app, ch('u'));
+    assert_eq!(app.scene, before);
+    update(&mut app, ch('U'));
+    assert_eq!(app.scene, fitted);
+}
+
+#[test]
 fn stick_panel_tabulates_the_cores_thresholds_issue_15() {
     let mut app = app_on(Scene::default());
     update(&mut app, ch('v'));
