@@ -101,6 +101,15 @@ pub(crate) fn number(flag: &str, text: &str) -> CliResult<f64> {
     }
 }
 
+/// A value in the SI unit `unit`, with an optional unit (`1e-6`, `"1 um"`, `200 K`), parsed by
+/// [`rime_core::units::parse_quantity`] like `--set`.
+pub(crate) fn quantity(flag: &str, text: &str, unit: &str) -> CliResult<f64> {
+    rime_core::units::parse_quantity("", text, unit).map_err(|e| {
+        let shown: String = text.trim().chars().take(40).collect();
+        CliError(format!("{flag} {shown}{e}"))
+    })
+}
+
 /// A speed in m/s, with an optional unit (`0.01`, `"2 mm/s"`, `5cm/s`), parsed by
 /// [`rime_core::units::parse_quantity`] like `--set`.
 pub(crate) fn speed(flag: &str, text: &str, allow_zero: bool) -> CliResult<f64> {

@@ -1,7 +1,7 @@
 //! `rime fit`: scene parameters fitted to measured points or to an atlas law, with standard errors
 //! and correlations (rime_core::fit_scene).
 
-use crate::cli::{Common, Format, number};
+use crate::cli::{Common, Format, quantity};
 use crate::commands::data::law;
 use crate::scene_io::{CliError, CliResult, err};
 use rime_core::explorer::format::sig;
@@ -35,7 +35,7 @@ pub struct Args {
 /// Parses the flags of `rime fit`.
 pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
     let radius = get("--radius")
-        .map(|r| number("--radius", &r))
+        .map(|r| quantity("--radius", &r, "m"))
         .transpose()?;
     let source = match (get("--data"), get("--law")) {
         (Some(d), None) => {
