@@ -16,8 +16,9 @@ pub struct EpsRecord {
     pub t_c: Option<f64>,
     /// Maximum compression \[m\].
     pub xi_max: f64,
-    /// Bound on the relative error of `eps_n` at the chosen accuracy.
-    pub error_estimate: f64,
+    /// Bound on the relative error of `eps_n` at the chosen accuracy; `null` where ε_N < 1e-6,
+    /// outside the bound's domain.
+    pub error_estimate: Option<f64>,
 }
 
 impl EpsRecord {
@@ -29,10 +30,14 @@ impl EpsRecord {
             status: n.status.name(),
             t_c: n.t_c.is_finite().then_some(n.t_c),
             xi_max: n.xi_max,
-            error_estimate: n.error_estimate,
+            error_estimate: n.error_estimate.is_finite().then_some(n.error_estimate),
         }
     }
 }
+
+/// Why a table's error_estimate is empty.
+pub const EMPTY_ERROR_ESTIMATE: &str = "error_estimate empty: eps_n < 1e-6 lies outside the error \
+     bound's domain; only its order of magnitude is reliable";
 
 /// One tangential record.
 #[derive(Debug, Clone, Serialize)]
@@ -79,11 +84,24 @@ pub trait Rows {
     fn header() -> &'static [&'static str];
     /// Cells of one row.
     fn cells(&self) -> Vec<String>;
+    /// A line below a table that explains empty cells (none by default).
+    fn note(_records: &[Self]) -> Option<&'static str>
+    where
+        Self: Sized,
+    {
+        None
+    }
 }
 
 impl Rows for EpsRecord {
     fn header() -> &'static [&'static str] {
         &rime_core::explorer::records::CURVE_HEADER
+    }
+    fn note(records: &[Self]) -> Option<&'static str> {
+        records
+            .iter()
+            .any(|r| r.error_estimate.is_none())
+            .then_some(EMPTY_ERROR_ESTIMATE)
     }
     fn cells(&self) -> Vec<String> {
         vec![
@@ -92,7 +110,7 @@ impl Rows for EpsRecord {
             self.status.to_string(),
             opt(self.t_c),
             num(self.xi_max),
-            num(self.error_estimate),
+            opt(self.error_estimate),
         ]
     }
 }
@@ -129,7 +147,12 @@ pub fn render<T: Rows + Serialize>(records: &[T], format: Format) -> Result<Stri
         }
         Format::Table => {
             let rows: Vec<Vec<String>> = records.iter().map(|r| r.cells()).collect();
-            Ok(table(T::header(), &rows))
+            let mut out = table(T::header(), &rows);
+            if let Some(note) = T::note(records) {
+                out.push_str(note);
+                out.push('\n');
+            }
+            Ok(out)
         }
     }
 }

@@ -53,7 +53,9 @@ pub struct Normal {
     pub t_c: f64,
     /// Maximum compression ξ_max \[m\] (including the crushed layer).
     pub xi_max: f64,
-    /// Estimated bound on the relative error of `eps` at the requested accuracy.
+    /// Estimated bound on the relative error of `eps` at the requested accuracy; infinite (no
+    /// bound) where the rebound ε_N lies below [`crate::accuracy::ERROR_BOUND_DOMAIN`], outside the
+    /// bounds' domain (only its order of magnitude is promised there).
     pub error_estimate: f64,
     /// Right-hand-side evaluations of the integrator spent on this result (0 for table lookups and
     /// closed forms): what a scene costs.
@@ -201,6 +203,11 @@ impl Contact {
                 }
             },
         };
+        // Below the bounds' domain no relative error is promised: say so (infinite), rather than
+        // claim the level's bound (docs/physics.md#accuracy).
+        if eps_v < crate::accuracy::ERROR_BOUND_DOMAIN {
+            error_estimate = f64::INFINITY;
+        }
         let status = if eps < OVERDAMPED_THRESHOLD {
             Status::Overdamped
         } else {
