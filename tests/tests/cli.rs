@@ -307,3 +307,30 @@ fn fit_reports_residuals_misfit_and_two_digit_errors_issue_22() {
         .trim();
     assert!(value.len() <= 10, "{line}");
 }
+
+/// Issue 22: tables people read flag the sliding gap as the printed law's artifact; the map's
+/// legend uses the human label.
+#[test]
+fn tables_flag_the_sliding_gap_as_the_papers_artifact_issue_22() {
+    let (code, out, _) = rime(&[
+        "tangential",
+        "--gn",
+        "0.01",
+        "--gt",
+        "0.02",
+        "--format",
+        "table",
+    ]);
+    assert_eq!(code, 0);
+    assert!(
+        out.contains("sliding_gap: an artifact of the printed Eq. (23)"),
+        "{out}"
+    );
+    let (code, out, _) = rime(&["map", "--max", "0.02", "--n", "6", "--format", "table"]);
+    assert_eq!(code, 0);
+    assert!(
+        out.contains("sliding gap (artifact of the printed Eq. (23))"),
+        "{out}"
+    );
+    assert!(!out.contains("sliding_gap"), "{out}");
+}

@@ -119,6 +119,12 @@ impl Rows for TangentialRecord {
     fn header() -> &'static [&'static str] {
         &["g_n [m/s]", "g_t [m/s]", "eps_t", "eps_n", "class"]
     }
+    fn note(records: &[Self]) -> Option<&'static str> {
+        records
+            .iter()
+            .any(|r| r.class == rime_core::StickClass::SlidingGap.name())
+            .then_some(rime_core::explorer::help::ARTIFACT_NOTE_SHORT)
+    }
     fn cells(&self) -> Vec<String> {
         vec![
             num(self.g_n),

@@ -62,7 +62,7 @@ pub fn run(common: &Common, max: f64, n: usize) -> CliResult<String> {
                 s.push('\n');
             }
             for c in StickClass::ALL {
-                s.push_str(&format!("  {}  {}\n", c.letter(), c.name()));
+                s.push_str(&format!("  {}  {}\n", c.letter(), c.label()));
             }
             s
         }
