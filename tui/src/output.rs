@@ -187,3 +187,81 @@ pub fn table(header: &[&str], rows: &[Vec<String>]) -> String {
     }
     out
 }
+
+/// JSON for people and programs alike: objects and arrays of objects indented two spaces (as
+/// `serde_json::to_string_pretty`, what `rime eps` prints), arrays of numbers or strings on one
+/// line each, so a map or a trajectory stays readable (`rime map`, `rime collision`).
+pub fn pretty_json(v: &serde_json::Value) -> String {
+    let mut out = String::new();
+    write_json(v, 0, &mut out);
+    out.push('\n');
+    out
+}
+
+fn scalar(v: &serde_json::Value) -> bool {
+    !(v.is_array() || v.is_object())
+}
+
+fn write_json(v: &serde_json::Value, indent: usize, out: &mut String) {
+    use serde_json::Value;
+    let pad = |n: usize| " ".repeat(n);
+    match v {
+        Value::Array(a) if a.iter().all(scalar) => {
+            out.push('[');
+            for (k, x) in a.iter().enumerate() {
+                if k > 0 {
+                    out.push_str(", ");
+                }
+                out.push_str(&x.to_string());
+            }
+            out.push(']');
+        }
+        Value::Array(a) => {
+            out.push_str("[\n");
+            for (k, x) in a.iter().enumerate() {
+                out.push_str(&pad(indent + 2));
+                write_json(x, indent + 2, out);
+                out.push_str(if k + 1 < a.len() { ",\n" } else { "\n" });
+            }
+            out.push_str(&pad(indent));
+            out.push(']');
+        }
+        Value::Object(m) if m.is_empty() => out.push_str("{}"),
+        Value::Object(m) => {
+            out.push_str("{\n");
+            for (k, (key, x)) in m.iter().enumerate() {
+                out.push_str(&pad(indent + 2));
+                out.push_str(&Value::String(key.clone()).to_string());
+                out.push_str(": ");
+                write_json(x, indent + 2, out);
+                out.push_str(if k + 1 < m.len() { ",\n" } else { "\n" });
+            }
+            out.push_str(&pad(indent));
+            out.push('}');
+        }
+        _ => out.push_str(&v.to_string()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::pretty_json;
+
+    #[test]
+    fn pretty_json_reads_back_as_the_same_value_issue_22() {
+        let v = serde_json::json!({
+            "a": [1.0, 2.5e-300, -0.0],
+            "b": [[1, 2], [3, 4]],
+            "c": [{"x": "q\"uote", "y": null}, {}],
+            "d": {"e": [], "f": "µ ü"},
+            "g": true
+        });
+        let text = pretty_json(&v);
+        assert_eq!(serde_json::from_str::<serde_json::Value>(&text).unwrap(), v);
+        assert!(
+            text.contains("\n  \"a\": [1.0, 2.5e-300, -0.0],\n"),
+            "{text}"
+        );
+        assert!(text.contains("    [1, 2],\n"), "{text}");
+    }
+}
