@@ -17,6 +17,7 @@
 
 use crate::accuracy::Accuracy;
 use crate::contact::Contact;
+use crate::error::Number;
 use crate::explorer::format::sig;
 use crate::math::{exp, ln, sqrt};
 use crate::params::{Kind, Value, parameter};
@@ -202,15 +203,15 @@ pub fn parse_points(text: &str) -> core::result::Result<Points, ParseError> {
         let g = num(0, "g")? * factors[0];
         let e = num(1, "eps")? * factors[1];
         if g <= 0.0 {
-            return Err(err(format!("g = {g} must be > 0 [m/s]")));
+            return Err(err(format!("g = {} must be > 0 [m/s]", Number(g))));
         }
         if !(0.0..=1.0).contains(&e) {
-            return Err(err(format!("eps = {e} must lie in [0, 1]")));
+            return Err(err(format!("eps = {} must lie in [0, 1]", Number(e))));
         }
         if cells.len() == 3 {
             let s = num(2, "sigma")? * factors[2];
             if s <= 0.0 {
-                return Err(err(format!("sigma = {s} must be > 0")));
+                return Err(err(format!("sigma = {} must be > 0", Number(s))));
             }
             sigma.push(s);
         }

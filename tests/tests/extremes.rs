@@ -1047,6 +1047,15 @@ fn error_messages_print_huge_numbers_compactly_issue_22() {
         assert!(err.contains("1e300"), "{args:?}: {err}");
         assert!(!err.contains("000000000"), "{args:?}: {err}");
     }
+    let (code, _, err) = rime(&["curve", "--from", "1e-300", "--to", "1e-301"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--to: 1e-301 is below --from 1e-300"), "{err}");
+    let file = std::env::temp_dir().join(format!("rime-huge-{}.csv", std::process::id()));
+    std::fs::write(&file, "g,eps\n0.01,1e300\n0.02,0.3\n").unwrap();
+    let (code, _, err) = rime(&["fit", "--data", file.to_str().unwrap()]);
+    std::fs::remove_file(&file).unwrap();
+    assert_eq!(code, 2);
+    assert!(err.contains("eps = 1e300 must lie in [0, 1]"), "{err}");
 }
 
 /// Issue 22: where ε_N < 1e-6 `error_estimate` no longer claims the level's bound (outside its

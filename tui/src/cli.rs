@@ -328,7 +328,11 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             let from = speed("--from", get("--from").unwrap_or("1e-6"), false)?;
             let to = speed("--to", get("--to").unwrap_or("1"), false)?;
             if to <= from {
-                return err(format!("--to: {to} must exceed --from {from}"));
+                return err(format!(
+                    "--to: {} must exceed --from {}",
+                    rime_core::error::Number(to),
+                    rime_core::error::Number(from)
+                ));
             }
             let n = count("--points", get("--points").unwrap_or("200"), 8, 100_000)?;
             let out = PathBuf::from(require("--out")?);
@@ -342,7 +346,11 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
                     (Some(a), Some(b)) => {
                         let (from, to) = (speed("--from", a, false)?, speed("--to", b, false)?);
                         if to <= from {
-                            return err(format!("--to: {to} must exceed --from {from}"));
+                            return err(format!(
+                                "--to: {} must exceed --from {}",
+                                rime_core::error::Number(to),
+                                rime_core::error::Number(from)
+                            ));
                         }
                         Some((from, to))
                     }
@@ -423,7 +431,11 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             let from = speed("--from", require("--from")?, false)?;
             let to = speed("--to", require("--to")?, false)?;
             if to < from {
-                return err(format!("--to: {to} is below --from {from}"));
+                return err(format!(
+                    "--to: {} is below --from {}",
+                    rime_core::error::Number(to),
+                    rime_core::error::Number(from)
+                ));
             }
             let n = count("--points", get("--points").unwrap_or("400"), 1, 100_000)?;
             Command::Curve(common, from, to, n)
