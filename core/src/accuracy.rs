@@ -24,6 +24,10 @@ pub enum Accuracy {
     Tolerance(f64),
 }
 
+/// ε_N below which no accuracy level bounds the relative error (the tables and the integrator are
+/// verified against the independent reference where ε_N > 1e-6; below, to its magnitude).
+pub const ERROR_BOUND_DOMAIN: f64 = 1e-6;
+
 /// The tightest tolerance a user may ask for: at rtol 1e-14, the integrator's floor, the measured error
 /// against the independent reference stays below it.
 pub const TIGHTEST_TOLERANCE: f64 = 1e-11;
@@ -91,6 +95,9 @@ impl Accuracy {
     }
 
     /// The documented (and tested) bound on the relative error of ε_N.
+    ///
+    /// The bound holds where ε_N ≥ [`ERROR_BOUND_DOMAIN`]; below it only the order of magnitude of
+    /// ε_N is promised and [`crate::Normal::error_estimate`] is infinite (no bound).
     pub fn error_bound(self) -> f64 {
         match self {
             Accuracy::Fast => 1e-6,

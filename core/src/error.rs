@@ -60,6 +60,22 @@ pub enum Error {
     },
 }
 
+/// A number as messages print it: the shortest text that reads back as the same value, plain
+/// between 1e-4 and 1e6 and with an exponent outside (`1e300`, not 301 digits).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Number(pub f64);
+
+impl fmt::Display for Number {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let v = self.0;
+        if v == 0.0 || !v.is_finite() || (1e-4..1e6).contains(&v.abs()) {
+            write!(f, "{v}")
+        } else {
+            write!(f, "{v:e}")
+        }
+    }
+}
+
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -67,7 +83,7 @@ impl fmt::Display for Error {
                 field,
                 value,
                 expected,
-            } => write!(f, "{field}: {expected} (got {value})"),
+            } => write!(f, "{field}: {expected} (got {})", Number(*value)),
             Error::DerivedOutOfRange { quantity, fields } => write!(
                 f,
                 "{fields}: the derived quantity {quantity} is not a finite positive number"
@@ -81,7 +97,11 @@ impl fmt::Display for Error {
                 )
             }
             Error::StepSizeUnderflow { what, t } => {
-                write!(f, "{what}: integrator step size underflow at s = {t}")
+                write!(
+                    f,
+                    "{what}: integrator step size underflow at s = {}",
+                    Number(*t)
+                )
             }
             Error::Fit { reason } => write!(f, "fit: {reason}"),
             Error::Plot { reason } => write!(f, "figure: {reason}"),

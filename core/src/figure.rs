@@ -331,7 +331,12 @@ pub mod paper {
             palette::SERIES_CLEAN,
             true,
         )?);
-        series.push(experiments::bridges(1e-4, TO, palette::SERIES_EXPERIMENT));
+        // Only where it was measured (as the explorer and the page draw it).
+        series.extend(experiments::bridges_measured(
+            FROM,
+            TO,
+            palette::SERIES_EXPERIMENT,
+        ));
         Ok(Figure {
             name,
             title: title.to_string(),
@@ -462,7 +467,10 @@ pub mod paper {
                             speed_label(g_s)
                         )
                     } else {
-                        "Hard spheres never stick; the orange wedge is the negative radicand of Eq. (23) just above ψ0.".to_string()
+                        format!(
+                            "Hard spheres never stick; the {} wedge (sliding gap) is the negative radicand of Eq. (23) just above ψ0, an artifact of the printed law.",
+                            palette::class(StickClass::SlidingGap).name()
+                        )
                     }
                 );
                 out.push(Figure::stick_map(

@@ -1,8 +1,10 @@
 //! Fitting scene parameters to measured (g, ε) points, with standard errors (feature `alloc`).
 //!
-//! * [`parse_points`] — reads two or three numeric columns (g \[m/s\], ε, optional σ of ε); a header
+//! * [`parse_points`] — reads two or three numeric columns (g, ε, optional σ of ε); a header
 //!   line is accepted only when it is recognisably one (no cell is a number, every cell starts with
-//!   a letter); any other bad line is an error naming its line number.
+//!   a letter); any other bad line is an error naming its line number. Units in the header are read
+//!   (`g [cm/s]`, `v_n (mm/s)`, `eps [%]`) and a unit it does not know is refused, naming the column;
+//!   without one g is taken in m/s and [`Points::g_unit`] says so.
 //! * [`fit`] — least squares over one or several numeric scene parameters (Levenberg–Marquardt on
 //!   nalgebra, after a coarse scan of each parameter's range), weighted by 1/σ² when σ is given.
 //!   At the optimum the Jacobian J gives the covariance: s²(JᵀJ)⁻¹ with s² = Σr²/(n − p) without σ,
@@ -15,6 +17,8 @@
 
 use crate::accuracy::Accuracy;
 use crate::contact::Contact;
+use crate::error::Number;
+use crate::explorer::format::sig;
 use crate::math::{exp, ln, sqrt};
 use crate::params::{Kind, Value, parameter};
 use crate::scene::Scene;
@@ -41,6 +45,9 @@ pub struct Points {
     pub sigma: Option<Vec<f64>>,
     /// The header line, if the file had one.
     pub header: Option<String>,
+    /// The unit of g as the header gives it (`cm/s`; the values above are converted to m/s), or
+    /// `None`: no header or no unit in it, g taken in m/s.
+    pub g_unit: Option<String>,
 }
 
 /// A bad line in a points file.
@@ -70,13 +77,74 @@ fn is_header(cells: &[&str]) -> bool {
         && cells.iter().all(|c| c.parse::<f64>().is_err())
 }
 
+/// The cells of a header line: split at commas, semicolons or tabs when it has any, else at spaces
+/// with a bracketed unit kept with its name (`g [cm/s] eps`).
+fn header_cells(line: &str) -> Vec<String> {
+    if line.contains([',', ';', '\t']) {
+        return line
+            .split([',', ';', '\t'])
+            .map(|c| c.trim().to_string())
+            .filter(|c| !c.is_empty())
+            .collect();
+    }
+    let mut cells: Vec<String> = Vec::new();
+    for token in line.split(' ').filter(|t| !t.is_empty()) {
+        match cells.last_mut() {
+            Some(last) if token.starts_with(['[', '(']) => {
+                last.push(' ');
+                last.push_str(token);
+            }
+            _ => cells.push(token.to_string()),
+        }
+    }
+    cells
+}
+
+/// The unit a header cell gives in brackets or parentheses at its end (`g [cm/s]`, `v_n (mm/s)`).
+fn cell_unit(cell: &str) -> Option<&str> {
+    let cell = cell.trim();
+    let (open, close) = if cell.ends_with(']') {
+        ('[', ']')
+    } else if cell.ends_with(')') {
+        ('(', ')')
+    } else {
+        return None;
+    };
+    let start = cell.rfind(open)?;
+    Some(cell[start + 1..cell.len() - close.len_utf8()].trim())
+}
+
+/// Factor to m/s of the g column's unit, or an error naming the column.
+fn speed_factor(cell: &str, unit: &str) -> core::result::Result<f64, String> {
+    crate::units::parse_quantity("g", &format!("1 {unit}"), "m/s").map_err(|_| {
+        format!(
+            "column '{cell}': unknown unit '{unit}' for the impact speed (m/s, cm/s, mm/s, um/s, \
+             km/s)"
+        )
+    })
+}
+
+/// Factor of a dimensionless column's unit (ε, σ of ε): none, `1`, `-`, `%`.
+fn ratio_factor(cell: &str, unit: &str) -> core::result::Result<f64, String> {
+    match unit {
+        "" | "1" | "-" | "–" => Ok(1.0),
+        "%" => Ok(0.01),
+        _ => Err(format!(
+            "column '{cell}': unknown unit '{unit}' for a restitution coefficient \
+             (dimensionless: none, 1, -, or %)"
+        )),
+    }
+}
+
 /// Parses (g, ε[, σ]) points: cells separated by commas, semicolons, tabs or spaces; `#` comments
-/// and blank lines skipped.
+/// and blank lines skipped. Units in a header are applied (g to m/s, `%` to fractions).
 pub fn parse_points(text: &str) -> core::result::Result<Points, ParseError> {
     let mut p = Points::default();
     let mut sigma: Vec<f64> = Vec::new();
     let mut columns: Option<usize> = None;
     let mut first = true;
+    // Factors to SI of the columns g, ε, σ.
+    let mut factors = [1.0; 3];
     for (i, raw) in text.lines().enumerate() {
         let line = raw.trim();
         if line.is_empty() || line.starts_with('#') {
@@ -92,6 +160,18 @@ pub fn parse_points(text: &str) -> core::result::Result<Points, ParseError> {
             first = false;
             if is_header(&cells) {
                 p.header = Some(line.to_string());
+                for (k, cell) in header_cells(line).iter().take(3).enumerate() {
+                    let Some(unit) = cell_unit(cell) else {
+                        continue;
+                    };
+                    factors[k] = if k == 0 {
+                        p.g_unit = Some(unit.to_string());
+                        speed_factor(cell, unit)
+                    } else {
+                        ratio_factor(cell, unit)
+                    }
+                    .map_err(err)?;
+                }
                 continue;
             }
         }
@@ -120,18 +200,18 @@ pub fn parse_points(text: &str) -> core::result::Result<Points, ParseError> {
                 }),
             }
         };
-        let g = num(0, "g")?;
-        let e = num(1, "eps")?;
+        let g = num(0, "g")? * factors[0];
+        let e = num(1, "eps")? * factors[1];
         if g <= 0.0 {
-            return Err(err(format!("g = {g} must be > 0 [m/s]")));
+            return Err(err(format!("g = {} must be > 0 [m/s]", Number(g))));
         }
         if !(0.0..=1.0).contains(&e) {
-            return Err(err(format!("eps = {e} must lie in [0, 1]")));
+            return Err(err(format!("eps = {} must lie in [0, 1]", Number(e))));
         }
         if cells.len() == 3 {
-            let s = num(2, "sigma")?;
+            let s = num(2, "sigma")? * factors[2];
             if s <= 0.0 {
-                return Err(err(format!("sigma = {s} must be > 0")));
+                return Err(err(format!("sigma = {} must be > 0", Number(s))));
             }
             sigma.push(s);
         }
@@ -181,10 +261,97 @@ pub struct SceneFit {
     pub dof: usize,
     /// Whether σ weighted the fit.
     pub weighted: bool,
-    /// Degeneracies, parameters at the edge of their range, and the like.
+    /// Degeneracies, parameters at the edge of their range, a misfit (runs test, χ²), and the like.
     pub warnings: Vec<String>,
     /// The scene with the fitted values.
     pub scene: Scene,
+    /// ε − ε_model at each point, in the order given (unweighted).
+    pub residuals: Vec<f64>,
+    /// The runs test on the residuals' signs in order of g; `None` with fewer than two nonzero
+    /// residuals.
+    pub runs_test: Option<RunsTest>,
+}
+
+/// p below which [`runs_test`] reports a systematic misfit.
+pub const RUNS_TEST_LEVEL: f64 = 0.01;
+
+/// Reduced χ² range outside which a fit weighted by σ is reported as a misfit (> 10) or as having
+/// overestimated uncertainties (< 0.1).
+pub const REDUCED_CHI2_RANGE: [f64; 2] = [0.1, 10.0];
+
+/// A two-sided Wald–Wolfowitz runs test on the signs of residuals.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RunsTest {
+    /// Runs of equal sign observed.
+    pub runs: usize,
+    /// Runs expected for randomly ordered signs: 1 + 2 n₊ n₋ / (n₊ + n₋).
+    pub expected: f64,
+    /// Positive and negative residuals (zeros are left out).
+    pub positive: usize,
+    /// Negative residuals.
+    pub negative: usize,
+    /// Two-sided p: 2 min(P(R ≤ r), P(R ≥ r)) under the exact distribution of the number of runs
+    /// given n₊ and n₋ (capped at 1). With one sign only it is 2^(1−n), the chance that n fair
+    /// signs all agree.
+    pub p: f64,
+}
+
+fn ln_choose(n: usize, k: usize) -> f64 {
+    if k > n {
+        return f64::NEG_INFINITY;
+    }
+    let lg = |x: usize| libm::lgamma(x as f64 + 1.0);
+    lg(n) - lg(k) - lg(n - k)
+}
+
+/// The runs test on the signs of `residuals` taken in the order given (zeros skipped); `None` with
+/// fewer than two nonzero values.
+pub fn runs_test(residuals: &[f64]) -> Option<RunsTest> {
+    let signs: Vec<bool> = residuals
+        .iter()
+        .filter(|r| **r != 0.0 && r.is_finite())
+        .map(|r| *r > 0.0)
+        .collect();
+    let n = signs.len();
+    if n < 2 {
+        return None;
+    }
+    let runs = 1 + signs.windows(2).filter(|w| w[0] != w[1]).count();
+    let n1 = signs.iter().filter(|s| **s).count();
+    let n2 = n - n1;
+    let expected = 1.0 + 2.0 * n1 as f64 * n2 as f64 / n as f64;
+    let p = if n1 == 0 || n2 == 0 {
+        libm::pow(2.0, 1.0 - n as f64).min(1.0)
+    } else {
+        let total = ln_choose(n, n1);
+        let prob = |r: usize| -> f64 {
+            let k = r / 2;
+            let ways = if r.is_multiple_of(2) {
+                ln_choose(n1 - 1, k - 1) + ln_choose(n2 - 1, k - 1) + core::f64::consts::LN_2
+            } else {
+                let a = ln_choose(n1 - 1, k) + ln_choose(n2 - 1, k - 1);
+                let b = ln_choose(n1 - 1, k - 1) + ln_choose(n2 - 1, k);
+                let m = a.max(b);
+                if m == f64::NEG_INFINITY {
+                    m
+                } else {
+                    m + ln(exp(a - m) + exp(b - m))
+                }
+            };
+            exp(ways - total)
+        };
+        let max_runs = 2 * n1.min(n2) + usize::from(n1 != n2);
+        let low: f64 = (2..=runs).map(prob).sum();
+        let high: f64 = (runs..=max_runs).map(prob).sum();
+        (2.0 * low.min(high)).min(1.0)
+    };
+    Some(RunsTest {
+        runs,
+        expected,
+        positive: n1,
+        negative: n2,
+        p,
+    })
 }
 
 #[derive(Clone, Copy)]
@@ -478,6 +645,42 @@ pub fn fit(
         sqrt(unweighted / n as f64)
     };
     let mut warnings = Vec::new();
+    // ε − ε_model (r is (ε_model − ε)/σ), and their signs in order of g for the runs test.
+    let residuals: Vec<f64> = r
+        .iter()
+        .enumerate()
+        .map(|(i, x)| -x * sigma.map_or(1.0, |s| s[i]))
+        .collect();
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by(|&a, &b| g[a].total_cmp(&g[b]));
+    let in_order: Vec<f64> = order.iter().map(|&i| residuals[i]).collect();
+    let runs = runs_test(&in_order);
+    if let Some(t) = runs.filter(|t| t.p < RUNS_TEST_LEVEL) {
+        warnings.push(format!(
+            "systematic misfit: in order of g the residuals' signs form {} runs where {} are \
+             expected for random scatter (two-sided runs test p = {} < {RUNS_TEST_LEVEL}); the \
+             model does not follow these points and the standard errors understate the uncertainty",
+            t.runs,
+            sig(t.expected, 3),
+            sig(t.p, 2)
+        ));
+    }
+    if sigma.is_some() {
+        let [lo, hi] = REDUCED_CHI2_RANGE;
+        if reduced_chi2 > hi {
+            warnings.push(format!(
+                "misfit: reduced χ² = {} > {hi}: the model misses the points by far more than \
+                 their uncertainties (or the sigma column underestimates them)",
+                sig(reduced_chi2, 3)
+            ));
+        } else if reduced_chi2 < lo {
+            warnings.push(format!(
+                "reduced χ² = {} < {lo}: the points scatter far less than the sigma column says; \
+                 the uncertainties look overestimated and the standard errors with them",
+                sig(reduced_chi2, 3)
+            ));
+        }
+    }
     for (k, c) in problem.coords.iter().enumerate() {
         let span = c.hi - c.lo;
         if u[k] <= c.lo + 1e-9 * span || u[k] >= c.hi - 1e-9 * span {
@@ -573,6 +776,8 @@ pub fn fit(
         weighted: sigma.is_some(),
         warnings,
         scene: fitted_scene,
+        residuals,
+        runs_test: runs,
     })
 }
 
@@ -619,6 +824,174 @@ mod tests {
         let p = parse_points("g_n [m/s],eps_n\n0.01,0.3\n0.02,0.28\n").unwrap();
         assert_eq!(p.header.as_deref(), Some("g_n [m/s],eps_n"));
         assert!(parse_points("0.01 [m/s],0.3\n0.02,0.28\n").is_err());
+    }
+
+    #[test]
+    fn fit_reads_cm_per_s_from_the_header_issue_22() {
+        // The same measurements in cm/s, mm/s and m/s: one set of points in m/s.
+        let si = parse_points("g [m/s],eps\n0.01,0.3\n0.02,0.28\n").unwrap();
+        assert_eq!(si.g, vec![0.01, 0.02]);
+        assert_eq!(si.g_unit.as_deref(), Some("m/s"));
+        for text in [
+            "g [cm/s],eps\n1,0.3\n2,0.28\n",
+            "g (cm/s);eps\n1;0.3\n2;0.28\n",
+            "g [cm/s] eps\n1 0.3\n2 0.28\n",
+            "v_n (mm/s)\teps_n\n10\t0.3\n20\t0.28\n",
+            "v_n [µm/s],eps_n [%]\n1e4,30\n2e4,28\n",
+        ] {
+            let p = parse_points(text).unwrap();
+            for (a, b) in p.g.iter().zip(&si.g) {
+                assert!((a - b).abs() <= 1e-15 * b, "{text}: {:?}", p.g);
+            }
+            for (a, b) in p.eps.iter().zip(&si.eps) {
+                assert!((a - b).abs() <= 1e-15, "{text}: {:?}", p.eps);
+            }
+            assert!(p.g_unit.is_some(), "{text}");
+        }
+        // σ of ε in per cent.
+        let p = parse_points("g [cm/s],eps,sigma [%]\n1,0.3,2\n2,0.28,3\n").unwrap();
+        assert_eq!(p.sigma, Some(vec![0.02, 0.03]));
+        // No unit: taken in m/s, and the points say so.
+        let p = parse_points("g,eps\n0.01,0.3\n0.02,0.28\n").unwrap();
+        assert_eq!((p.g.clone(), p.g_unit), (vec![0.01, 0.02], None));
+        assert_eq!(parse_points("0.01,0.3\n0.02,0.28\n").unwrap().g_unit, None);
+    }
+
+    #[test]
+    fn fit_refuses_an_unknown_unit_naming_the_column_issue_22() {
+        for (text, column) in [
+            (
+                "g [furlong/fortnight],eps\n1,0.3\n2,0.28\n",
+                "g [furlong/fortnight]",
+            ),
+            ("g [cm],eps\n1,0.3\n2,0.28\n", "g [cm]"),
+            ("g [m/s],eps [m]\n1,0.3\n2,0.28\n", "eps [m]"),
+            (
+                "g [m/s],eps,sigma (cm/s)\n1,0.3,0.1\n2,0.28,0.1\n",
+                "sigma (cm/s)",
+            ),
+        ] {
+            let e = parse_points(text).unwrap_err();
+            assert_eq!(e.line, 1, "{text}");
+            assert!(e.reason.contains(&format!("column '{column}'")), "{e}");
+            assert!(e.reason.contains("unknown unit"), "{e}");
+        }
+    }
+
+    #[test]
+    fn runs_test_matches_the_enumerated_distribution_issue_22() {
+        // Every arrangement of n1 pluses and n2 minuses, counted: the exact null distribution of
+        // the number of runs, independent of the closed form the test uses.
+        for n1 in 1..=7usize {
+            for n2 in 1..=7usize {
+                let n = n1 + n2;
+                let mut count = vec![0u64; n + 2];
+                let mut example: Vec<Option<u32>> = vec![None; n + 2];
+                for mask in 0u32..(1 << n) {
+                    if mask.count_ones() as usize != n1 {
+                        continue;
+                    }
+                    let runs = 1
+                        + (0..n - 1)
+                            .filter(|&i| ((mask >> i) & 1) != ((mask >> (i + 1)) & 1))
+                            .count();
+                    count[runs] += 1;
+                    example[runs].get_or_insert(mask);
+                }
+                let total: u64 = count.iter().sum();
+                for r in 0..n + 2 {
+                    let Some(mask) = example[r] else { continue };
+                    let low: u64 = count[..=r].iter().sum();
+                    let high: u64 = count[r..].iter().sum();
+                    let expected = (2.0 * low.min(high) as f64 / total as f64).min(1.0);
+                    let signs: Vec<f64> = (0..n)
+                        .map(|i| if (mask >> i) & 1 == 1 { 0.5 } else { -0.25 })
+                        .collect();
+                    let t = runs_test(&signs).unwrap();
+                    assert_eq!((t.runs, t.positive, t.negative), (r, n1, n2));
+                    assert!(
+                        (t.p - expected).abs() < 1e-12,
+                        "{n1}+{n2}, r = {r}: {} vs {expected}",
+                        t.p
+                    );
+                    let mean = 1.0 + 2.0 * (n1 * n2) as f64 / n as f64;
+                    assert!((t.expected - mean).abs() < 1e-12);
+                }
+            }
+        }
+        // One sign only: the chance that n fair signs agree, 2^(1−n).
+        assert_eq!(runs_test(&[1.0; 8]).unwrap().p, 2.0f64.powi(-7));
+        assert!(runs_test(&[1.0, 0.0]).is_none());
+    }
+
+    fn model_points(a: f64, g: &[f64]) -> Vec<f64> {
+        let mut scene = Scene::default();
+        scene.bulk.damping = crate::scene::Damping::Time(a);
+        let c = Contact::new(&scene).unwrap();
+        g.iter()
+            .map(|&x| c.eps_n(x, Accuracy::Fast).unwrap())
+            .collect()
+    }
+
+    #[test]
+    fn fit_warns_on_systematic_residuals_and_bad_chi2_issue_22() {
+        let mut g = vec![0.0; 16];
+        crate::sweep::log_space(1e-4, 1.0, &mut g);
+        let model = model_points(1e-4, &g);
+        let fit_a = |eps: &[f64], sigma: Option<&[f64]>| {
+            fit(
+                &Scene::default(),
+                &["bulk.damping.time"],
+                &g,
+                eps,
+                sigma,
+                Accuracy::Fast,
+            )
+            .unwrap()
+        };
+        // A smooth bow across the speeds: few long runs of one sign.
+        let bowed: Vec<f64> = model
+            .iter()
+            .enumerate()
+            .map(|(i, e)| e * (1.0 + 0.3 * ((i as f64 - 7.5) / 7.5).powi(2)))
+            .collect();
+        let f = fit_a(&bowed, None);
+        let t = f.runs_test.unwrap();
+        assert!(t.p < RUNS_TEST_LEVEL, "{t:?}");
+        assert!(
+            f.warnings.iter().any(|w| w.contains("systematic misfit")),
+            "{f:?}"
+        );
+        assert_eq!(f.residuals.len(), g.len());
+        // The residuals are ε − ε_model: they add back to the points.
+        let fitted = model_points(f.params[0].value, &g);
+        for ((r, e), m) in f.residuals.iter().zip(&bowed).zip(&fitted) {
+            assert!((r - (e - m)).abs() < 1e-12, "{r} vs {}", e - m);
+        }
+        // Scatter without a trend (a sign pattern with 10 runs in 16, 9 expected): no warning.
+        let pattern = [
+            1., -1., -1., 1., 1., -1., 1., 1., 1., -1., -1., 1., -1., -1., 1., -1.,
+        ];
+        let scattered: Vec<f64> = model
+            .iter()
+            .zip(pattern)
+            .map(|(e, s)| e + 0.01 * s)
+            .collect();
+        let f = fit_a(&scattered, None);
+        assert!(f.runs_test.unwrap().p > 0.1, "{:?}", f.runs_test);
+        assert!(f.warnings.is_empty(), "{:?}", f.warnings);
+        // With σ: reduced χ² = Σ(r/σ)²/(n−1) ≈ (0.01/σ)² — 100 for σ = 1e-3, 1e-2 for σ = 0.1.
+        for (s, what) in [(1e-3, "> 10"), (0.1, "< 0.1")] {
+            let sigma = vec![s; g.len()];
+            let f = fit_a(&scattered, Some(&sigma));
+            assert!(
+                f.warnings.iter().any(|w| w.contains(what)),
+                "σ = {s}: {:?}",
+                f.warnings
+            );
+        }
+        let f = fit_a(&scattered, Some(&vec![0.01; g.len()]));
+        assert!(f.warnings.is_empty(), "{:?}", f.warnings);
     }
 
     #[test]

@@ -23,6 +23,8 @@ use crate::scene::{Adhesion, AdhesionModulus, Scene};
 
 /// How to read the source's γ.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Convention {
     /// γ is the surface energy of one surface; the paper's γ is w = 2γ (default).
     #[default]
@@ -57,6 +59,7 @@ pub const SEARCH_MAX: f64 = 1e6;
 
 /// Sticking thresholds of two equal grains.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Threshold {
     /// Grain radius \[m\] (both grains).
     pub radius: f64,
@@ -141,6 +144,156 @@ pub fn threshold(
         v_elastic,
         v_stick,
     })
+}
+
+/// Radii of the explorer's table \[m\].
+pub const TABLE_RADII: [f64; 5] = [1e-6, 1e-5, 1e-4, 1e-3, 1e-2];
+/// Temperatures of the explorer's table \[K\].
+pub const TABLE_TEMPERATURES: [f64; 3] = [150.0, 180.0, 200.0];
+
+/// One cell of a [`ThresholdTable`]: the thresholds, or why they could not be computed.
+#[cfg(feature = "alloc")]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct ThresholdCell {
+    /// The thresholds.
+    pub threshold: Option<Threshold>,
+    /// The error, when there are none.
+    pub error: Option<alloc::string::String>,
+}
+
+/// A column of a [`ThresholdTable`]: its name, SI unit, and where it does not use the scene's own
+/// value, which value it uses instead.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Column {
+    /// Name (JSON key, CSV column).
+    pub name: &'static str,
+    /// SI unit (empty: none).
+    pub unit: &'static str,
+    /// What it uses instead of the scene's value (empty: the scene's values throughout).
+    pub note: &'static str,
+}
+
+/// The columns of `rime stick` and the explorer's `v` panel, in order.
+pub const COLUMNS: [Column; 6] = [
+    Column {
+        name: "radius",
+        unit: "m",
+        note: "both grains: the row's radius, not the scene's",
+    },
+    Column {
+        name: "temperature",
+        unit: "K",
+        note: "",
+    },
+    Column {
+        name: "gamma_source",
+        unit: "J/m²",
+        note: "γ(T) of Musiolik & Wurm 2019, not the scene's γ",
+    },
+    Column {
+        name: "gamma",
+        unit: "J/m²",
+        note: "the paper's γ from gamma_source (convention), not the scene's γ",
+    },
+    Column {
+        name: "v_elastic",
+        unit: "m/s",
+        note: "Eq. (15) alone: A = 0 and no layer, not the scene's",
+    },
+    Column {
+        name: "v_stick",
+        unit: "m/s",
+        note: "",
+    },
+];
+
+/// Sticking thresholds of a scene's material over radii × temperatures: what the explorer's `v`
+/// panel and `rime stick` show. Computed from the scene itself (its damping time A, layer,
+/// modulus reading), with γ(T) and the row's radius in place of the scene's ([`COLUMNS`] says
+/// which column uses what).
+#[cfg(feature = "alloc")]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct ThresholdTable {
+    /// The scene it was computed from.
+    pub scene: Scene,
+    /// The scene's damping time A \[s\] (what `v_stick` uses).
+    pub damping_time: f64,
+    /// Whether the scene's soft layer enters `v_stick`.
+    pub layer: bool,
+    /// Radii \[m\].
+    pub radii: alloc::vec::Vec<f64>,
+    /// Temperatures \[K\].
+    pub temperatures: alloc::vec::Vec<f64>,
+    /// How γ(T) was read.
+    pub convention: Convention,
+    /// Radius-major: the cell of radius `i`, temperature `j` is `cells[i * temperatures.len() + j]`.
+    pub cells: alloc::vec::Vec<ThresholdCell>,
+}
+
+#[cfg(feature = "alloc")]
+impl ThresholdTable {
+    /// Every (radius, temperature) of `scene`'s material; a cell that fails keeps its error.
+    pub fn compute(
+        scene: &Scene,
+        radii: &[f64],
+        temperatures: &[f64],
+        convention: Convention,
+        accuracy: Accuracy,
+    ) -> Self {
+        use alloc::string::ToString;
+        let mut cells = alloc::vec::Vec::with_capacity(radii.len() * temperatures.len());
+        for &r in radii {
+            for &t in temperatures {
+                cells.push(match threshold(scene, r, t, convention, accuracy) {
+                    Ok(th) => ThresholdCell {
+                        threshold: Some(th),
+                        error: None,
+                    },
+                    Err(e) => ThresholdCell {
+                        threshold: None,
+                        error: Some(e.to_string()),
+                    },
+                });
+            }
+        }
+        ThresholdTable {
+            scene: *scene,
+            damping_time: scene.damping_time(),
+            layer: scene.layer.is_some_and(|l| l.thickness > 0.0),
+            radii: radii.into(),
+            temperatures: temperatures.into(),
+            convention,
+            cells,
+        }
+    }
+
+    /// The explorer's table ([`TABLE_RADII`] × [`TABLE_TEMPERATURES`], surface convention).
+    pub fn explorer(scene: &Scene, accuracy: Accuracy) -> Self {
+        Self::compute(
+            scene,
+            &TABLE_RADII,
+            &TABLE_TEMPERATURES,
+            Convention::SurfaceEnergy,
+            accuracy,
+        )
+    }
+
+    /// The cell of radius `i`, temperature `j`.
+    pub fn cell(&self, i: usize, j: usize) -> Option<&ThresholdCell> {
+        self.cells.get(i * self.temperatures.len() + j)
+    }
+
+    /// What `v_stick` uses from the scene, for its column header: `A = 1e-4 s` (and the layer).
+    pub fn v_stick_note(&self) -> alloc::string::String {
+        let a = crate::explorer::format::qty3(self.damping_time, "s");
+        if self.layer {
+            alloc::format!("the scene's A = {a} and layer")
+        } else {
+            alloc::format!("the scene's A = {a}")
+        }
+    }
 }
 
 #[cfg(test)]

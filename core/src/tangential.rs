@@ -87,6 +87,20 @@ impl StickClass {
         }
     }
 
+    /// A short human label for legends and tables people read (`rolling stop`); the sliding gap
+    /// is flagged as the printed law's artifact. Data files keep [`name`](Self::name).
+    pub fn label(self) -> &'static str {
+        match self {
+            StickClass::Rolling => "rolling",
+            StickClass::Sliding => "sliding",
+            StickClass::RollingStop => "rolling stop",
+            StickClass::SlidingGap => "sliding gap (artifact of the printed Eq. (23))",
+            StickClass::Aggregation => "aggregation",
+            StickClass::NormalStickOnly => "normal stick only",
+            StickClass::Undefined => "undefined (g_N = g_T = 0)",
+        }
+    }
+
     /// A short human-readable description for legends.
     pub fn description(self) -> &'static str {
         match self {

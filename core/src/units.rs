@@ -112,7 +112,13 @@ pub fn parse_quantity(field: &'static str, text: &str, unit: &str) -> Result<f64
             && given.starts_with(p.as_bytes())
             && &given[p.len()..] == si
         {
-            return Ok(value * factor);
+            // Divide by the exact power of ten for sub-unit prefixes: 100 µs is then the double
+            // nearest 1e-4, as typed (100 × 1e-6 is 9.999999999999999e-5).
+            return Ok(if factor < 1.0 {
+                value / libm::round(1.0 / factor)
+            } else {
+                value * factor
+            });
         }
     }
     Err(wrong_unit)
@@ -128,6 +134,7 @@ fn unit_expectation(unit: &str) -> &'static str {
         "J/m²" => "a surface energy, e.g. 0.1, 100 mJ/m^2",
         "kg/m³" => "a density, e.g. 900, 0.9 g/cm^3",
         "kg" => "a mass, e.g. 5.688e26",
+        "K" => "a temperature, e.g. 200, 200 K",
         "" => "a plain number without unit",
         _ => "a number in SI units",
     }
@@ -163,6 +170,21 @@ mod tests {
             900.0
         ));
         assert!(close(parse_quantity("x", "-2.5e-3", "").unwrap(), -2.5e-3));
+    }
+
+    #[test]
+    fn sub_unit_prefixes_give_the_double_nearest_the_typed_value_issue_22() {
+        // The decimal value typed, correctly rounded once: 100 µs is 1e-4, not 100 × 1e-6.
+        for (text, unit, want) in [
+            ("100 us", "s", 1e-4),
+            ("3 cm/s", "m/s", 0.03),
+            ("300 um", "m", 3e-4),
+            ("7 nm", "m", 7e-9),
+            ("30 mm/s", "m/s", 0.03),
+            ("1 um", "m", 1e-6),
+        ] {
+            assert_eq!(parse_quantity("x", text, unit).unwrap(), want, "{text}");
+        }
     }
 
     #[test]

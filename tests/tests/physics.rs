@@ -265,3 +265,168 @@ fn paper_figures_show_what_their_captions_say() {
         );
     }
 }
+
+/// `(x, y, content)` of every `<text>` element of an SVG.
+fn svg_texts(svg: &str) -> Vec<(f64, f64, String)> {
+    let mut out = Vec::new();
+    for part in svg.split("<text").skip(1) {
+        let attr = |name: &str| -> f64 {
+            let key = format!(" {name}=\"");
+            let start = part.find(&key).unwrap() + key.len();
+            part[start..].split('"').next().unwrap().parse().unwrap()
+        };
+        let content = part
+            .split('>')
+            .nth(1)
+            .unwrap_or("")
+            .split('<')
+            .next()
+            .unwrap_or("");
+        out.push((attr("x"), attr("y"), content.trim().to_string()));
+    }
+    out
+}
+
+/// `[x0, y0, x1, y1]` of every `<rect>` filled with `fill`.
+fn svg_rects(svg: &str, fill: &str) -> Vec<[f64; 4]> {
+    let mut out = Vec::new();
+    for part in svg.split("<rect").skip(1) {
+        let part = part.split('>').next().unwrap();
+        if !part.contains(&format!("fill=\"{fill}\"")) {
+            continue;
+        }
+        let attr = |name: &str| -> f64 {
+            let key = format!(" {name}=\"");
+            let start = part.find(&key).unwrap() + key.len();
+            part[start..].split('"').next().unwrap().parse().unwrap()
+        };
+        let (x, y) = (attr("x"), attr("y"));
+        out.push([x, y, x + attr("width"), y + attr("height")]);
+    }
+    out
+}
+
+/// The largest x of every polyline point of an SVG.
+fn svg_polyline_right(svg: &str) -> f64 {
+    let mut right = f64::NEG_INFINITY;
+    for part in svg.split("<polyline").skip(1) {
+        let points = part
+            .split("points=\"")
+            .nth(1)
+            .unwrap()
+            .split('"')
+            .next()
+            .unwrap();
+        for p in points.split_whitespace() {
+            right = right.max(p.split(',').next().unwrap().parse::<f64>().unwrap());
+        }
+    }
+    right
+}
+
+/// Issue 22 (`rime figures`): legends never cover data (they sit in their own column), the Bridges
+/// law is drawn only over its measured speeds (0.15–20 mm/s, Bridges et al. 1984), the Fig. 4
+/// caption names the colour the sliding gap is drawn in, and the gap is labelled for people and
+/// flagged as the printed law's artifact.
+#[test]
+fn figures_legends_beside_the_data_bridges_over_its_speeds_gap_labelled_issue_22() {
+    use rime_core::StickClass;
+    use rime_core::explorer::palette;
+    use rime_core::figure::paper;
+    let mut figures = paper::fig2(Accuracy::Fast).unwrap();
+    figures.extend(paper::fig3(Accuracy::Fast).unwrap());
+    let fig4 = paper::fig4(Accuracy::Fast, 40).unwrap();
+    for f in &figures {
+        let bridges = f
+            .series
+            .iter()
+            .find(|s| s.name.starts_with("Bridges"))
+            .expect("Bridges drawn");
+        for &(g, _) in &bridges.points {
+            assert!(
+                (1.5e-4..=2e-2).contains(&g),
+                "{}: Bridges at {g} m/s",
+                f.name
+            );
+        }
+        // Every legend label starts right of every point of every curve.
+        let svg = rime_core::figure::render_svg(f, 1000, 680).unwrap();
+        let right = svg_polyline_right(&svg);
+        let labels: Vec<String> = f.series.iter().map(|s| s.name.clone()).collect();
+        let mut found = 0;
+        for (x, _, text) in svg_texts(&svg) {
+            let first = text.split_whitespace().next().unwrap_or("");
+            if !text.is_empty()
+                && labels
+                    .iter()
+                    .any(|l| l.starts_with(&text) || (l.starts_with(first) && first.len() > 3))
+            {
+                found += 1;
+                assert!(
+                    x > right,
+                    "{}: legend '{text}' at x = {x} over a curve (right end {right})",
+                    f.name
+                );
+            }
+        }
+        assert!(
+            found >= labels.len(),
+            "{}: {found} legend labels found",
+            f.name
+        );
+    }
+    let hard = &fig4[0];
+    let gap = palette::class(StickClass::SlidingGap);
+    assert_eq!(gap, palette::GREY_LIGHT);
+    assert!(
+        hard.caption.contains("light grey wedge"),
+        "{}",
+        hard.caption
+    );
+    assert!(!hard.caption.contains("orange"), "{}", hard.caption);
+    for f in &fig4 {
+        let svg = rime_core::figure::render_svg(f, 1000, 680).unwrap();
+        assert!(
+            !svg.contains("sliding_gap"),
+            "{}: snake_case in a figure",
+            f.name
+        );
+        let map = f.map.as_ref().unwrap();
+        let mut cells = Vec::new();
+        for c in StickClass::ALL
+            .into_iter()
+            .filter(|c| map.classes.contains(c))
+        {
+            let (r, g, b) = rime_core::figure::class_color(c);
+            cells.extend(svg_rects(&svg, &format!("#{r:02X}{g:02X}{b:02X}")));
+        }
+        let texts = svg_texts(&svg);
+        for c in StickClass::ALL
+            .into_iter()
+            .filter(|c| map.classes.contains(c))
+        {
+            let first = c.label().split(' ').next().unwrap();
+            let (x, y, _) = texts
+                .iter()
+                .find(|(_, _, t)| c.label().starts_with(t.as_str()) && t.starts_with(first))
+                .unwrap_or_else(|| panic!("{}: no legend for {}", f.name, c.label()));
+            let width = 7.0 * c.label().chars().count().min(45) as f64;
+            for r in &cells {
+                let overlaps = r[0] < x + width && r[2] > *x && r[1] < y + 13.0 && r[3] > *y;
+                assert!(
+                    !overlaps,
+                    "{}: legend '{}' covers the map cell {r:?}",
+                    f.name,
+                    c.label()
+                );
+            }
+        }
+        if map.classes.contains(&StickClass::SlidingGap) {
+            assert!(
+                svg.contains("sliding gap (artifact of the printed Eq."),
+                "{}",
+                f.name
+            );
+        }
+    }
+}

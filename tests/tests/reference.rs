@@ -188,3 +188,81 @@ fn scenes_match_the_mpmath_reference_at_precise() {
     }
     assert!(checked > 100, "only {checked} scene rows");
 }
+
+/// The force-zero contact duration of strong damping grows with ln δ (issue 22): checked against the
+/// independent integration in scaled variables (`tests/reference/strong_damping.py`, RK4 with
+/// Richardson extrapolation in mpmath, ≤ 6e-12) from δ = 1e3 to 1e12, at every level, and through a
+/// scene at δ = 1e8 (the issue's `--set bulk.damping.time=13348 --g 0.01`: t_c ≈ 2.63e-8 s, not
+/// the 2.300e-8 s of the pure δ^(−2/3) law).
+#[test]
+fn force_zero_duration_grows_with_ln_delta_up_to_1e12_issue_22() {
+    let rows = read_csv("strong_damping.csv");
+    assert!(rows.len() >= 10, "reference table too short");
+    let mut beyond_table = 0;
+    for row in &rows {
+        let delta = num(row, "delta");
+        let s_c = num(row, "s_c");
+        let fine = master::lookup(delta, ContactEnd::ForceZero, Resolution::Fine);
+        let coarse = master::lookup(delta, ContactEnd::ForceZero, Resolution::Coarse);
+        // Inside the table an overdamped force-zero end is ill-conditioned (docs/physics.md#decision-2:
+        // 1e-5); beyond it the closed form is exact to O(δ^(−5/3) ln² δ).
+        let bound = if delta > 1e7 { 1e-9 } else { 1e-5 };
+        assert!(
+            rel(fine.s_c, s_c) <= bound,
+            "δ = {delta}: fine s_c {} vs {s_c}",
+            fine.s_c
+        );
+        assert!(
+            rel(coarse.s_c, s_c) <= bound.max(1e-6),
+            "δ = {delta}: coarse s_c {}",
+            coarse.s_c
+        );
+        assert!(
+            rel(fine.eps, num(row, "eps")) <= 1e-6,
+            "δ = {delta}: ε {}",
+            fine.eps
+        );
+        assert!(
+            rel(fine.x_max, num(row, "x_max")) <= 1e-6,
+            "δ = {delta}: x_max {}",
+            fine.x_max
+        );
+        if delta <= 1e7 {
+            let live = dimensionless(delta, ContactEnd::ForceZero, 1e-12).unwrap();
+            assert!(
+                rel(live.s_c, s_c) <= 1e-5,
+                "δ = {delta}: live s_c {}",
+                live.s_c
+            );
+        } else {
+            beyond_table += 1;
+        }
+    }
+    assert!(beyond_table >= 5, "only {beyond_table} rows past the table");
+
+    // Through a scene, at every level: δ = 1e8 at 1 cm/s for A = 13348 s (default ice).
+    let mut scene = Scene::default();
+    scene.bulk.damping = Damping::Time(13348.0);
+    let c = Contact::new(&scene).unwrap();
+    let g = 0.01;
+    let delta = c.delta(g);
+    assert!(rel(delta, 1e8) < 1e-3, "δ = {delta}");
+    // (20/9) ln δ + (2/3) ln(27/8) + ln 3 − π/(3√3): the asymptote of docs/physics.md#decision-2.
+    let scaled = 20.0 / 9.0 * delta.ln() + 2.0 / 3.0 * (27.0f64 / 8.0).ln() + 3.0f64.ln()
+        - std::f64::consts::PI / (3.0 * 3.0f64.sqrt());
+    let expected = c.time_scale(g) * delta.powf(-2.0 / 3.0) * scaled;
+    assert!(rel(expected, 2.63e-8) < 0.01, "t_c {expected}");
+    for acc in [
+        Accuracy::Fast,
+        Accuracy::Precise,
+        Accuracy::Balanced,
+        Accuracy::Tolerance(1e-8),
+    ] {
+        let n = c.normal(g, acc).unwrap();
+        assert!(
+            rel(n.t_c, expected) < 1e-9,
+            "{acc:?}: t_c {} vs {expected}",
+            n.t_c
+        );
+    }
+}

@@ -101,6 +101,15 @@ pub(crate) fn number(flag: &str, text: &str) -> CliResult<f64> {
     }
 }
 
+/// A value in the SI unit `unit`, with an optional unit (`1e-6`, `"1 um"`, `200 K`), parsed by
+/// [`rime_core::units::parse_quantity`] like `--set`.
+pub(crate) fn quantity(flag: &str, text: &str, unit: &str) -> CliResult<f64> {
+    rime_core::units::parse_quantity("", text, unit).map_err(|e| {
+        let shown: String = text.trim().chars().take(40).collect();
+        CliError(format!("{flag} {shown}{e}"))
+    })
+}
+
 /// A speed in m/s, with an optional unit (`0.01`, `"2 mm/s"`, `5cm/s`), parsed by
 /// [`rime_core::units::parse_quantity`] like `--set`.
 pub(crate) fn speed(flag: &str, text: &str, allow_zero: bool) -> CliResult<f64> {
@@ -112,7 +121,10 @@ pub(crate) fn speed(flag: &str, text: &str, allow_zero: bool) -> CliResult<f64> 
     let ok = if allow_zero { v >= 0.0 } else { v > 0.0 };
     if !ok || v > 1e6 {
         let range = if allow_zero { "[0, 1e6]" } else { "(0, 1e6]" };
-        return err(format!("{flag}: speed {v} must lie in {range} m/s"));
+        return err(format!(
+            "{flag}: speed {} must lie in {range} m/s",
+            rime_core::error::Number(v)
+        ));
     }
     Ok(v)
 }
@@ -316,7 +328,11 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             let from = speed("--from", get("--from").unwrap_or("1e-6"), false)?;
             let to = speed("--to", get("--to").unwrap_or("1"), false)?;
             if to <= from {
-                return err(format!("--to: {to} must exceed --from {from}"));
+                return err(format!(
+                    "--to: {} must exceed --from {}",
+                    rime_core::error::Number(to),
+                    rime_core::error::Number(from)
+                ));
             }
             let n = count("--points", get("--points").unwrap_or("200"), 8, 100_000)?;
             let out = PathBuf::from(require("--out")?);
@@ -330,7 +346,11 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
                     (Some(a), Some(b)) => {
                         let (from, to) = (speed("--from", a, false)?, speed("--to", b, false)?);
                         if to <= from {
-                            return err(format!("--to: {to} must exceed --from {from}"));
+                            return err(format!(
+                                "--to: {} must exceed --from {}",
+                                rime_core::error::Number(to),
+                                rime_core::error::Number(from)
+                            ));
                         }
                         Some((from, to))
                     }
@@ -411,7 +431,11 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             let from = speed("--from", require("--from")?, false)?;
             let to = speed("--to", require("--to")?, false)?;
             if to < from {
-                return err(format!("--to: {to} is below --from {from}"));
+                return err(format!(
+                    "--to: {} is below --from {}",
+                    rime_core::error::Number(to),
+                    rime_core::error::Number(from)
+                ));
             }
             let n = count("--points", get("--points").unwrap_or("400"), 1, 100_000)?;
             Command::Curve(common, from, to, n)

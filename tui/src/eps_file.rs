@@ -5,6 +5,7 @@ use crate::cli::{self, Common, Format};
 use crate::output;
 use crate::scene_io::{CliError, CliResult, err};
 use rime_core::batch::BatchLaw;
+use rime_core::error::Number;
 use rime_core::{Contact, Status};
 use std::io::{BufRead, BufReader, ErrorKind, Write};
 use std::path::Path;
@@ -115,7 +116,7 @@ fn status(contact: &Contact, g: f64, eps: f64, common: &Common) -> CliResult<Sta
         // Stuck (layer or adhesion): which one is `normal`'s call (cheap when stuck).
         let n = contact
             .normal(g, common.accuracy)
-            .map_err(|e| CliError(format!("g_n = {g}: {e}")))?;
+            .map_err(|e| CliError(format!("g_n = {}: {e}", Number(g))))?;
         return Ok(match n.status {
             Status::Rebound if contact.adhesion.is_some() => Status::StuckByAdhesion,
             Status::Rebound => Status::Overdamped,

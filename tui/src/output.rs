@@ -16,8 +16,9 @@ pub struct EpsRecord {
     pub t_c: Option<f64>,
     /// Maximum compression \[m\].
     pub xi_max: f64,
-    /// Bound on the relative error of `eps_n` at the chosen accuracy.
-    pub error_estimate: f64,
+    /// Bound on the relative error of `eps_n` at the chosen accuracy; `null` where ε_N < 1e-6,
+    /// outside the bound's domain.
+    pub error_estimate: Option<f64>,
 }
 
 impl EpsRecord {
@@ -29,10 +30,14 @@ impl EpsRecord {
             status: n.status.name(),
             t_c: n.t_c.is_finite().then_some(n.t_c),
             xi_max: n.xi_max,
-            error_estimate: n.error_estimate,
+            error_estimate: n.error_estimate.is_finite().then_some(n.error_estimate),
         }
     }
 }
+
+/// Why a table's error_estimate is empty.
+pub const EMPTY_ERROR_ESTIMATE: &str = "error_estimate empty: eps_n < 1e-6 lies outside the error \
+     bound's domain; only its order of magnitude is reliable";
 
 /// One tangential record.
 #[derive(Debug, Clone, Serialize)]
@@ -79,11 +84,24 @@ pub trait Rows {
     fn header() -> &'static [&'static str];
     /// Cells of one row.
     fn cells(&self) -> Vec<String>;
+    /// A line below a table that explains empty cells (none by default).
+    fn note(_records: &[Self]) -> Option<&'static str>
+    where
+        Self: Sized,
+    {
+        None
+    }
 }
 
 impl Rows for EpsRecord {
     fn header() -> &'static [&'static str] {
         &rime_core::explorer::records::CURVE_HEADER
+    }
+    fn note(records: &[Self]) -> Option<&'static str> {
+        records
+            .iter()
+            .any(|r| r.error_estimate.is_none())
+            .then_some(EMPTY_ERROR_ESTIMATE)
     }
     fn cells(&self) -> Vec<String> {
         vec![
@@ -92,7 +110,7 @@ impl Rows for EpsRecord {
             self.status.to_string(),
             opt(self.t_c),
             num(self.xi_max),
-            num(self.error_estimate),
+            opt(self.error_estimate),
         ]
     }
 }
@@ -100,6 +118,12 @@ impl Rows for EpsRecord {
 impl Rows for TangentialRecord {
     fn header() -> &'static [&'static str] {
         &["g_n [m/s]", "g_t [m/s]", "eps_t", "eps_n", "class"]
+    }
+    fn note(records: &[Self]) -> Option<&'static str> {
+        records
+            .iter()
+            .any(|r| r.class == rime_core::StickClass::SlidingGap.name())
+            .then_some(rime_core::explorer::help::ARTIFACT_NOTE_SHORT)
     }
     fn cells(&self) -> Vec<String> {
         vec![
@@ -129,7 +153,12 @@ pub fn render<T: Rows + Serialize>(records: &[T], format: Format) -> Result<Stri
         }
         Format::Table => {
             let rows: Vec<Vec<String>> = records.iter().map(|r| r.cells()).collect();
-            Ok(table(T::header(), &rows))
+            let mut out = table(T::header(), &rows);
+            if let Some(note) = T::note(records) {
+                out.push_str(note);
+                out.push('\n');
+            }
+            Ok(out)
         }
     }
 }
@@ -157,4 +186,82 @@ pub fn table(header: &[&str], rows: &[Vec<String>]) -> String {
         out.push_str(&line(r.clone()));
     }
     out
+}
+
+/// JSON for people and programs alike: objects and arrays of objects indented two spaces (as
+/// `serde_json::to_string_pretty`, what `rime eps` prints), arrays of numbers or strings on one
+/// line each, so a map or a trajectory stays readable (`rime map`, `rime collision`).
+pub fn pretty_json(v: &serde_json::Value) -> String {
+    let mut out = String::new();
+    write_json(v, 0, &mut out);
+    out.push('\n');
+    out
+}
+
+fn scalar(v: &serde_json::Value) -> bool {
+    !(v.is_array() || v.is_object())
+}
+
+fn write_json(v: &serde_json::Value, indent: usize, out: &mut String) {
+    use serde_json::Value;
+    let pad = |n: usize| " ".repeat(n);
+    match v {
+        Value::Array(a) if a.iter().all(scalar) => {
+            out.push('[');
+            for (k, x) in a.iter().enumerate() {
+                if k > 0 {
+                    out.push_str(", ");
+                }
+                out.push_str(&x.to_string());
+            }
+            out.push(']');
+        }
+        Value::Array(a) => {
+            out.push_str("[\n");
+            for (k, x) in a.iter().enumerate() {
+                out.push_str(&pad(indent + 2));
+                write_json(x, indent + 2, out);
+                out.push_str(if k + 1 < a.len() { ",\n" } else { "\n" });
+            }
+            out.push_str(&pad(indent));
+            out.push(']');
+        }
+        Value::Object(m) if m.is_empty() => out.push_str("{}"),
+        Value::Object(m) => {
+            out.push_str("{\n");
+            for (k, (key, x)) in m.iter().enumerate() {
+                out.push_str(&pad(indent + 2));
+                out.push_str(&Value::String(key.clone()).to_string());
+                out.push_str(": ");
+                write_json(x, indent + 2, out);
+                out.push_str(if k + 1 < m.len() { ",\n" } else { "\n" });
+            }
+            out.push_str(&pad(indent));
+            out.push('}');
+        }
+        _ => out.push_str(&v.to_string()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::pretty_json;
+
+    #[test]
+    fn pretty_json_reads_back_as_the_same_value_issue_22() {
+        let v = serde_json::json!({
+            "a": [1.0, 2.5e-300, -0.0],
+            "b": [[1, 2], [3, 4]],
+            "c": [{"x": "q\"uote", "y": null}, {}],
+            "d": {"e": [], "f": "µ ü"},
+            "g": true
+        });
+        let text = pretty_json(&v);
+        assert_eq!(serde_json::from_str::<serde_json::Value>(&text).unwrap(), v);
+        assert!(
+            text.contains("\n  \"a\": [1.0, 2.5e-300, -0.0],\n"),
+            "{text}"
+        );
+        assert!(text.contains("    [1, 2],\n"), "{text}");
+    }
 }

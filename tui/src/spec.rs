@@ -256,7 +256,7 @@ pub const SUBS: &[Sub] = &[
             f(
                 "--data",
                 "FILE",
-                "measured points: g [m/s], ε[, σ] per line",
+                "measured points: g, ε[, σ] per line; header units read (g [cm/s]), else m/s",
             ),
             f(
                 "--law",
@@ -586,9 +586,28 @@ fn all_flags(sub: &Sub) -> Vec<Flag> {
     v
 }
 
+/// The words a flag's value completes to (`--preset` → the preset names), if it has a fixed set.
+fn value_words(flag: &str) -> Option<String> {
+    Some(match flag {
+        "--preset" => rime_core::Preset::ALL
+            .iter()
+            .map(|p| p.name())
+            .collect::<Vec<_>>()
+            .join(" "),
+        "--accuracy" => "fast precise integrated".to_string(),
+        "--format" => "json csv table".to_string(),
+        "--gamma" => "surface adhesion".to_string(),
+        _ => return None,
+    })
+}
+
+/// Flags whose value is a path.
+const PATH_FLAGS: [&str; 4] = ["--scene", "--data", "--out", "--g-file"];
+
 /// `rime completions bash|zsh|fish`.
 pub fn completions(shell: &str) -> Option<String> {
     let names = sub_names();
+    let valued = ["--preset", "--accuracy", "--format", "--gamma"];
     Some(match shell {
         "bash" => {
             let mut s = String::from(
@@ -597,8 +616,21 @@ pub fn completions(shell: &str) -> Option<String> {
                  if [ \"$COMP_CWORD\" -eq 1 ] && [[ \"$cur\" != -* ]]; then\n",
             );
             s.push_str(&format!(
-                "    COMPREPLY=($(compgen -W \"{}\" -- \"$cur\"))\n    return\n  fi\n  case \"$sub\" in\n",
+                "    COMPREPLY=($(compgen -W \"{}\" -- \"$cur\"))\n    return\n  fi\n",
                 names.join(" ")
+            ));
+            // A flag's value first: preset names after --preset, paths after --scene, …
+            s.push_str("  case \"${COMP_WORDS[COMP_CWORD-1]}\" in\n");
+            for flag in valued {
+                if let Some(words) = value_words(flag) {
+                    s.push_str(&format!(
+                        "    {flag}) COMPREPLY=($(compgen -W \"{words}\" -- \"$cur\")); return ;;\n"
+                    ));
+                }
+            }
+            s.push_str(&format!(
+                "    {}) COMPREPLY=($(compgen -f -- \"$cur\")); return ;;\n  esac\n  case \"$sub\" in\n",
+                PATH_FLAGS.join("|")
             ));
             for sub in SUBS.iter().filter(|s| !s.name.is_empty()) {
                 let flags: Vec<&str> = all_flags(sub).iter().map(|f| f.name).collect();
@@ -642,16 +674,15 @@ pub fn completions(shell: &str) -> Option<String> {
             for sub in SUBS.iter().filter(|s| !s.name.is_empty()) {
                 s.push_str(&format!("    {})\n      _arguments \\\n", sub.name));
                 for fl in all_flags(sub) {
-                    let action = match fl.value {
-                        Some("FILE") | Some("DIR") => ":file:_files",
-                        Some(v) => {
-                            if v == "FORMAT" {
-                                ":format:(json csv table)"
-                            } else {
-                                ":value: "
-                            }
+                    let words = value_words(fl.name);
+                    let action = match (fl.value, &words) {
+                        (Some(_), Some(w)) => format!(":value:({w})"),
+                        (Some("FILE") | Some("DIR"), _) => ":file:_files".to_string(),
+                        (Some(_), None) if PATH_FLAGS.contains(&fl.name) => {
+                            ":file:_files".to_string()
                         }
-                        None => "",
+                        (Some(_), None) => ":value: ".to_string(),
+                        (None, _) => String::new(),
                     };
                     s.push_str(&format!(
                         "        '{}[{}]{action}' \\\n",
@@ -685,11 +716,12 @@ pub fn completions(shell: &str) -> Option<String> {
                     format!("'__fish_seen_subcommand_from {}'", sub.name)
                 };
                 for fl in all_flags(sub) {
-                    let req = match fl.value {
-                        Some("FILE") | Some("DIR") => " -r -F",
-                        Some("FORMAT") => " -x -a 'json csv table'",
-                        Some(_) => " -x",
-                        None => "",
+                    let req = match (fl.value, value_words(fl.name)) {
+                        (Some(_), Some(w)) => format!(" -x -a '{w}'"),
+                        (Some("FILE") | Some("DIR"), None) => " -r -F".to_string(),
+                        (Some(_), None) if PATH_FLAGS.contains(&fl.name) => " -r -F".to_string(),
+                        (Some(_), None) => " -x".to_string(),
+                        (None, _) => String::new(),
                     };
                     s.push_str(&format!(
                         "complete -c rime -n {cond} -l {}{req} -d '{}'\n",

@@ -9,7 +9,7 @@
 
 use super::frame::{Frame, SWEEPS};
 use super::palette;
-use super::records::{CITATION, cell, scene_line};
+use super::records::{CITATION, scene_line};
 use crate::figure::{Axis, Band, Figure, Marker, Series, experiments, speed_label};
 use alloc::format;
 use alloc::string::{String, ToString};
@@ -79,7 +79,11 @@ fn member_name(frame: &Frame, value: f64, is_scene: bool) -> String {
         format!(" {unit}")
     };
     let mark = if is_scene { " (this scene)" } else { "" };
-    format!("{symbol} = {}{unit}{mark}", cell(value))
+    // Text people read: a few significant digits (data files keep the shortest round-trip).
+    format!(
+        "{symbol} = {}{unit}{mark}",
+        crate::explorer::format::sig(value, 4)
+    )
 }
 
 /// The caption every figure of a frame carries: level, scene, program and model — enough to

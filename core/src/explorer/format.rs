@@ -35,6 +35,16 @@ pub fn sig(v: f64, digits: i32) -> String {
     }
 }
 
+/// `v` rounded to `digits` significant decimal digits, as the nearest double (`3.0000000000000003e-4`
+/// → `3e-4` at 12 digits); non-finite values and 0 unchanged.
+pub fn round_sig(v: f64, digits: usize) -> f64 {
+    if !v.is_finite() || v == 0.0 {
+        return v;
+    }
+    let d = digits.clamp(1, 17) - 1;
+    format!("{v:.d$e}").parse().unwrap_or(v)
+}
+
 /// Removes trailing zeros (and a trailing point) from a decimal string.
 fn trim(s: &str) -> String {
     if s.contains('.') {
@@ -229,6 +239,10 @@ mod tests {
 
     #[test]
     fn shortest_round_trips() {
+        assert_eq!(round_sig(3.0 * 1e-4, 12), 3e-4);
+        assert_eq!(round_sig(0.1 * 1e-4, 12), 1e-5);
+        assert_eq!(round_sig(1.0 / 3.0, 3), 0.333);
+        assert_eq!(round_sig(0.0, 3), 0.0);
         assert_eq!(shortest(2e-4), "0.0002");
         assert_eq!(shortest(1e-7), "1e-7");
         assert_eq!(shortest(6.6e-6), "6.6e-6");

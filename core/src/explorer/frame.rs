@@ -123,7 +123,12 @@ impl Sweep {
         }
         let c = self.current(scene);
         if c.is_finite() && c > 0.0 {
-            RELATIVE.iter().map(|f| f * c).collect()
+            // Rounded to 12 significant digits: 3 × 1e-4 is the 3e-4 a user would type, not
+            // 3.0000000000000003e-4 (which data files and legends would then show).
+            RELATIVE
+                .iter()
+                .map(|f| crate::explorer::format::round_sig(f * c, 12))
+                .collect()
         } else {
             alloc::vec![1e-5, 1e-4, 1e-3, 1e-2]
         }

@@ -158,6 +158,11 @@ pub fn class_is_artifact(c: crate::tangential::StickClass) -> bool {
     c == crate::tangential::StickClass::SlidingGap
 }
 
+/// The artifact class flagged in one line, for tables and data files that name it `sliding_gap`.
+pub const ARTIFACT_NOTE_SHORT: &str = "sliding_gap: an artifact of the printed Eq. (23) (its \
+radicand is negative just above tan ψ0 and ε_T is clamped to 0), not a regime; Walton's law has no \
+gap (docs/physics.md#decision-6)";
+
 /// What the artifact class means, for the note beside the map.
 pub const ARTIFACT_NOTE: &str = "Grey \"sliding gap\" cells are an artifact of the printed law, not \
 a regime: just above tan ψ₀ the radicand of Eq. (23) is negative, and ε_T is clamped to 0 there; \

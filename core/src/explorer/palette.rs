@@ -94,6 +94,32 @@ pub const GREY_DARK: Rgb = Rgb::hex(0x555555);
 /// White `#FFFFFF`.
 pub const WHITE: Rgb = Rgb::hex(0xFFFFFF);
 
+/// The palette's colours with the word a caption uses for them.
+const NAMES: [(Rgb, &str); 11] = [
+    (BLACK, "black"),
+    (ORANGE, "orange"),
+    (SKY_BLUE, "sky-blue"),
+    (BLUISH_GREEN, "bluish-green"),
+    (YELLOW, "yellow"),
+    (BLUE, "blue"),
+    (VERMILLION, "vermillion"),
+    (REDDISH_PURPLE, "reddish-purple"),
+    (GREY_LIGHT, "light grey"),
+    (GREY_DARK, "dark grey"),
+    (WHITE, "white"),
+];
+
+impl Rgb {
+    /// The word for this colour in captions (`light grey`), so that a caption names the colour
+    /// actually drawn; `colour` for one outside the palette.
+    pub fn name(self) -> &'static str {
+        NAMES
+            .iter()
+            .find(|(c, _)| *c == self)
+            .map_or("colour", |(_, n)| *n)
+    }
+}
+
 /// This scene's ε_N curve.
 pub const SCENE: Rgb = ORANGE;
 /// Critical-speed markers (g_s) of this scene: the colour of its curve.

@@ -34,7 +34,7 @@ pub const CURVE_WHAT: &str = "ε_N records of this scene (rime curve)";
 /// See [`CURVE_WHAT`].
 pub const FAMILY_WHAT: &str = "every ε_N curve of the chart";
 /// See [`CURVE_WHAT`].
-pub const MAP_WHAT: &str = "stick-map records (rime map)";
+pub const MAP_WHAT: &str = "stick-map records (rime map); class sliding_gap is an artifact of the printed Eq. (23), not a regime (docs/physics.md#decision-6)";
 
 /// The paper every record comes from.
 pub const CITATION: &str = "J.-M. Hertzsch (2002), A model for surface effects in slow collisions of icy grains, Planet. Space Sci. 50, 1387";

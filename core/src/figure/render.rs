@@ -73,6 +73,110 @@ fn tick_label(v: f64, log: bool) -> String {
     }
 }
 
+/// How a legend entry shows its series.
+#[derive(Clone, Copy)]
+enum Swatch {
+    /// A filled box (stick-map class, measured range) with its opacity.
+    Box(RGBColor, f64),
+    /// A line, dashed or solid.
+    Line(RGBColor, bool),
+}
+
+/// The legend's entries in drawing order: map classes present, measured ranges, curves.
+fn legend_entries(fig: &Figure) -> Vec<(String, Swatch)> {
+    let mut out = Vec::new();
+    if let Some(map) = &fig.map {
+        for c in crate::tangential::StickClass::ALL {
+            if map.classes.contains(&c) {
+                out.push((c.label().to_string(), Swatch::Box(rgb(class_color(c)), 1.0)));
+            }
+        }
+    }
+    for band in &fig.bands {
+        let color = rgb(PALETTE[band.color % PALETTE.len()]);
+        out.push((band.label.clone(), Swatch::Box(color, 0.3)));
+    }
+    for s in &fig.series {
+        let drawable = s.points.iter().any(|&(x, y)| {
+            x.is_finite() && y.is_finite() && (!fig.x.log || x > 0.0) && (!fig.y.log || y > 0.0)
+        });
+        if drawable {
+            let color = rgb(PALETTE[s.color % PALETTE.len()]);
+            out.push((s.name.clone(), Swatch::Line(color, s.dashed)));
+        }
+    }
+    out
+}
+
+/// The legend's lines: each label wrapped at word boundaries to at most `max_chars` characters
+/// (never cut), the swatch on its first line. Returns the widest line and the lines.
+fn wrap_legend(
+    entries: &[(String, Swatch)],
+    max_chars: usize,
+) -> (usize, Vec<(String, Option<Swatch>)>) {
+    let max_chars = max_chars.max(16);
+    let mut lines = Vec::new();
+    let mut widest = 0;
+    for (label, swatch) in entries {
+        let mut current = String::new();
+        let mut first = true;
+        for word in label.split_whitespace() {
+            if !current.is_empty() && current.chars().count() + 1 + word.chars().count() > max_chars
+            {
+                widest = widest.max(current.chars().count());
+                lines.push((core::mem::take(&mut current), first.then_some(*swatch)));
+                first = false;
+            }
+            if !current.is_empty() {
+                current.push(' ');
+            }
+            current.push_str(word);
+        }
+        widest = widest.max(current.chars().count());
+        lines.push((current, first.then_some(*swatch)));
+    }
+    (widest, lines)
+}
+
+fn draw_legend<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    lines: &[(String, Option<Swatch>)],
+) -> Result<()> {
+    let top = 44;
+    for (k, (text, swatch)) in lines.iter().enumerate() {
+        let y = top + 16 * k as i32;
+        match swatch {
+            Some(Swatch::Box(color, alpha)) => {
+                area.draw(&Rectangle::new(
+                    [(4, y - 5), (20, y + 6)],
+                    color.mix(*alpha).filled(),
+                ))
+                .map_err(plot_err)?;
+            }
+            Some(Swatch::Line(color, dashed)) => {
+                let style = color.stroke_width(if *dashed { 1 } else { 2 });
+                if *dashed {
+                    for x in [2, 10, 18] {
+                        area.draw(&PathElement::new(vec![(x, y), (x + 5, y)], style))
+                            .map_err(plot_err)?;
+                    }
+                } else {
+                    area.draw(&PathElement::new(vec![(2, y), (22, y)], style))
+                        .map_err(plot_err)?;
+                }
+            }
+            None => {}
+        }
+        area.draw(&Text::new(
+            text.clone(),
+            (28, y - 7),
+            ("sans-serif", 13).into_font().color(&BLACK),
+        ))
+        .map_err(plot_err)?;
+    }
+    Ok(())
+}
+
 fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Result<()> {
     root.fill(&WHITE).map_err(plot_err)?;
     // Caption: wrapped over at most five lines; the figure gives up the height they need.
@@ -115,7 +219,18 @@ fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Resul
         ),
         to_axis(fig.y.max, fig.y.log),
     );
-    let mut chart = ChartBuilder::on(&body)
+    // The legend sits in its own column right of the plot, so it never covers data (a stick map
+    // fills its whole plot; curves reach every corner of a log chart).
+    let entries = legend_entries(fig);
+    let width = body.dim_in_pixel().0 as i32;
+    let (label_width, legend_lines) = wrap_legend(&entries, (width as f64 * 0.3) as usize / 7);
+    let legend_width = if entries.is_empty() {
+        0
+    } else {
+        (7 * label_width as i32 + 40).min(width * 2 / 5)
+    };
+    let (plot_area, legend_area) = body.split_horizontally(width - legend_width);
+    let mut chart = ChartBuilder::on(&plot_area)
         .caption(&fig.title, ("sans-serif", 22))
         .margin(12)
         .x_label_area_size(44)
@@ -259,14 +374,7 @@ fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Resul
             .map_err(plot_err)?;
     }
 
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .label_font(("sans-serif", 13))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .draw()
-        .map_err(plot_err)?;
+    draw_legend(&legend_area, &legend_lines)?;
 
     for (k, l) in lines.iter().enumerate() {
         caption_area

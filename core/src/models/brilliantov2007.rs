@@ -346,15 +346,16 @@ impl Dynamic {
         })
     }
 
-    /// `ξ* = (g²/α)^(2/5)` \[m\].
+    /// `ξ* = (g²/α)^(2/5)` \[m\], as `g^(4/5) α^(−2/5)`: g² underflows below 1e-154 m/s.
     fn length_scale(&self, g: f64) -> f64 {
-        powf(g * g / self.alpha, 0.4)
+        powf(g, 0.8) * powf(self.alpha, -0.4)
     }
 
     /// `(δ, κ)` at impact speed `g`.
     pub fn parameters(&self, g: f64) -> (f64, f64) {
         let xi_star = self.length_scale(g);
-        let delta = self.damping_time * g / xi_star;
+        // δ = A g/ξ* = A α^(2/5) g^(1/5), without the ratio of two underflowing numbers.
+        let delta = self.damping_time * powf(self.alpha, 0.4) * powf(g, 0.2);
         let kappa = sqrt(2.0 * core::f64::consts::PI * self.work_of_adhesion / self.modulus)
             * sqrt(sqrt(self.r_eff))
             / powf(xi_star, 0.75);

@@ -53,7 +53,9 @@ pub struct Normal {
     pub t_c: f64,
     /// Maximum compression ξ_max \[m\] (including the crushed layer).
     pub xi_max: f64,
-    /// Estimated bound on the relative error of `eps` at the requested accuracy.
+    /// Estimated bound on the relative error of `eps` at the requested accuracy; infinite (no
+    /// bound) where the rebound ε_N lies below [`crate::accuracy::ERROR_BOUND_DOMAIN`], outside the
+    /// bounds' domain (only its order of magnitude is promised there).
     pub error_estimate: f64,
     /// Right-hand-side evaluations of the integrator spent on this result (0 for table lookups and
     /// closed forms): what a scene costs.
@@ -86,7 +88,7 @@ fn viscoelastic(contact: &Contact, g: f64, accuracy: Accuracy) -> Result<(f64, f
 }
 
 /// δ above which every accuracy level uses the master curve's asymptote (the table's end, 1e7).
-const DELTA_ASYMPTOTIC: f64 = 1e7;
+pub(crate) const DELTA_ASYMPTOTIC: f64 = 1e7;
 
 /// An impact speed every model accepts: finite, positive, at most 1e6 m/s (errors name `g_n`).
 pub(crate) fn check_speed(g: f64) -> Result<f64> {
@@ -201,6 +203,11 @@ impl Contact {
                 }
             },
         };
+        // Below the bounds' domain no relative error is promised: say so (infinite), rather than
+        // claim the level's bound (docs/physics.md#accuracy).
+        if eps_v < crate::accuracy::ERROR_BOUND_DOMAIN {
+            error_estimate = f64::INFINITY;
+        }
         let status = if eps < OVERDAMPED_THRESHOLD {
             Status::Overdamped
         } else {

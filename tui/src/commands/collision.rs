@@ -111,7 +111,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                     "spin_change": o.spin_change,
                 });
             }
-            serde_json::to_string(&v).map_err(|e| CliError(e.to_string()))? + "\n"
+            crate::output::pretty_json(&v)
         }
         Format::Csv => {
             let mut s = String::from("t [s],xi [m],xi_dot [m/s],force [N]\n");

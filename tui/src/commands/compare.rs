@@ -4,6 +4,7 @@ use crate::cli::{Common, Format};
 use crate::output::{num, table};
 use crate::scene_io::{CliError, CliResult, err};
 use rime_core::Accuracy;
+use rime_core::error::Number;
 use rime_core::models::{Evaluator, Model};
 use serde::Serialize;
 
@@ -120,6 +121,42 @@ fn evaluators(common: &Common, args: &Args) -> CliResult<Vec<Evaluator>> {
         .collect()
 }
 
+/// Width of `compare --list`'s table: an 80-column terminal.
+pub const LIST_WIDTH: usize = 80;
+
+/// The models and laws, names left, citations wrapped at word boundaries to `width` columns.
+fn list_table(rows: &[Listing], width: usize) -> String {
+    let name = rows
+        .iter()
+        .map(|r| r.model.chars().count())
+        .max()
+        .unwrap_or(5)
+        .max(5);
+    let text_width = width.saturating_sub(name + 2).max(20);
+    let mut s = format!("{:<name$}  citation\n", "model");
+    for r in rows {
+        let mut line = String::new();
+        let mut first = true;
+        let flush = |line: &mut String, first: &mut bool, s: &mut String| {
+            let label = if *first { r.model } else { "" };
+            s.push_str(&format!("{label:<name$}  {line}\n"));
+            line.clear();
+            *first = false;
+        };
+        for word in r.citation.split_whitespace() {
+            if !line.is_empty() && line.chars().count() + 1 + word.chars().count() > text_width {
+                flush(&mut line, &mut first, &mut s);
+            }
+            if !line.is_empty() {
+                line.push(' ');
+            }
+            line.push_str(word);
+        }
+        flush(&mut line, &mut first, &mut s);
+    }
+    s
+}
+
 /// Runs `rime compare`.
 pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     if args.list {
@@ -155,13 +192,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                 }
                 s
             }
-            Format::Table => table(
-                &["model", "citation"],
-                &rows
-                    .iter()
-                    .map(|r| vec![r.model.to_string(), r.citation.clone()])
-                    .collect::<Vec<_>>(),
-            ),
+            Format::Table => list_table(&rows, LIST_WIDTH),
         });
     }
     let evaluators = if args.models.is_empty() && !args.laws.is_empty() {
@@ -182,7 +213,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         for &g in &args.g {
             let r = e
                 .eps(g, common.accuracy)
-                .map_err(|x| CliError(format!("{name}, g_n = {g}: {x}")))?;
+                .map_err(|x| CliError(format!("{name}, g_n = {}: {x}", Number(g))))?;
             records.push(Record {
                 model: name,
                 g_n: g,
@@ -209,7 +240,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         for &g in &args.g {
             let v = law
                 .eval(g, radius)
-                .map_err(|x| CliError(format!("atlas:{}, g_n = {g}: {x}", law.id)))?;
+                .map_err(|x| CliError(format!("atlas:{}, g_n = {}: {x}", law.id, Number(g))))?;
             records.push(Record {
                 model: law.id,
                 g_n: g,

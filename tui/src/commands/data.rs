@@ -1,6 +1,6 @@
 //! `rime data`: the atlas of measured ice (rime_core::atlas), listed or evaluated.
 
-use crate::cli::{Common, Format, number, speed_list};
+use crate::cli::{Common, Format, quantity, speed_list};
 use crate::output::{num, table};
 use crate::scene_io::{CliError, CliResult, err};
 use rime_core::atlas::{ENTRIES, Entry, Kind, find};
@@ -41,7 +41,7 @@ pub fn law(flag: &str, id: &str) -> CliResult<&'static Entry> {
 /// Parses the flags of `rime data`.
 pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
     let radius = get("--radius")
-        .map(|r| number("--radius", &r))
+        .map(|r| quantity("--radius", &r, "m"))
         .transpose()?;
     if radius.is_some_and(|r| r <= 0.0) {
         return err("--radius: must be a radius > 0 [m]");

@@ -3,6 +3,7 @@
 use crate::cli::{self, Common};
 use crate::output::{EpsRecord, render};
 use crate::scene_io::{CliError, CliResult};
+use rime_core::error::Number;
 use std::path::Path;
 
 /// ε_N records at the speeds, in the order given.
@@ -12,7 +13,7 @@ pub fn run(common: &Common, speeds: &[f64]) -> CliResult<String> {
     for &g in speeds {
         let n = contact
             .normal(g, common.accuracy)
-            .map_err(|e| CliError(format!("g_n = {g}: {e}")))?;
+            .map_err(|e| CliError(format!("g_n = {}: {e}", Number(g))))?;
         records.push(EpsRecord::new(g, &n));
     }
     render(&records, common.format).map_err(CliError)

@@ -1,10 +1,10 @@
 //! `rime fit`: scene parameters fitted to measured points or to an atlas law, with standard errors
 //! and correlations (rime_core::fit_scene).
 
-use crate::cli::{Common, Format, number};
+use crate::cli::{Common, Format, quantity};
 use crate::commands::data::law;
-use crate::output::num;
 use crate::scene_io::{CliError, CliResult, err};
+use rime_core::explorer::format::sig;
 use rime_core::fit_scene::{Points, SceneFit, fit, parse_points};
 use std::path::{Path, PathBuf};
 
@@ -35,7 +35,7 @@ pub struct Args {
 /// Parses the flags of `rime fit`.
 pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
     let radius = get("--radius")
-        .map(|r| number("--radius", &r))
+        .map(|r| quantity("--radius", &r, "m"))
         .transpose()?;
     let source = match (get("--data"), get("--law")) {
         (Some(d), None) => {
@@ -93,7 +93,13 @@ fn render(common: &Common, f: &SceneFit, points: &Points, what: &str) -> CliResu
                 "source": what, "params": params, "correlation": f.correlation,
                 "rms_error": f.rms_error, "reduced_chi2": f.reduced_chi2, "dof": f.dof,
                 "points": n, "weighted": f.weighted, "header": points.header,
-                "warnings": f.warnings,
+                "g_unit": points.g_unit.as_deref().unwrap_or("m/s"),
+                "g_unit_assumed": points.g_unit.is_none(),
+                "warnings": f.warnings, "residuals": f.residuals,
+                "runs_test": f.runs_test.map(|t| serde_json::json!({"runs": t.runs,
+                    "expected": t.expected, "positive": t.positive, "negative": t.negative,
+                    "p": t.p})),
+                "chi2_scaled": f.weighted,
                 "scene": serde_json::to_value(f.scene).map_err(|e| CliError(e.to_string()))?,
             });
             if let ([p], Some(obj)) = (f.params.as_slice(), v.as_object_mut()) {
@@ -107,18 +113,22 @@ fn render(common: &Common, f: &SceneFit, points: &Points, what: &str) -> CliResu
         _ => {
             let mut s = format!("fit to {what} ({n} points");
             if let Some(h) = &points.header {
-                s.push_str(&format!(", header line '{h}' skipped"));
+                s.push_str(&format!(", header '{h}'"));
             }
             s.push_str(if f.weighted {
                 ", weighted by the sigma column)\n"
             } else {
                 ", unweighted)\n"
             });
+            s.push_str(&match (&points.g_unit, &points.header) {
+                (Some(u), _) if u == "m/s" => "g in m/s (from the header)\n".to_string(),
+                (Some(u), _) => format!("g in {u} (from the header), converted to m/s\n"),
+                (None, Some(_)) => "g taken in m/s: the header gives no unit\n".to_string(),
+                (None, None) => "g taken in m/s: the file has no header with units\n".to_string(),
+            });
             for p in &f.params {
-                let se = p
-                    .standard_error
-                    .map_or("(not determined)".into(), |e| format!("± {}", num(e)));
-                s.push_str(&format!("{} = {} {se} {}\n", p.path, num(p.value), p.unit));
+                let (value, se) = with_error(p.value, p.standard_error);
+                s.push_str(&format!("{} = {value} {se} {}\n", p.path, p.unit));
             }
             if let (Some(c), true) = (&f.correlation, f.params.len() > 1) {
                 s.push_str("correlation:\n");
@@ -128,15 +138,80 @@ fn render(common: &Common, f: &SceneFit, points: &Points, what: &str) -> CliResu
                 }
             }
             s.push_str(&format!(
-                "rms error of eps_n {:.3e}, reduced chi^2 {:.3e} ({} degrees of freedom)\n",
-                f.rms_error, f.reduced_chi2, f.dof
+                "rms error of eps_n {}, reduced chi^2 {} ({} degrees of freedom{})\n",
+                sig(f.rms_error, 3),
+                sig(f.reduced_chi2, 3),
+                f.dof,
+                if f.weighted {
+                    ""
+                } else {
+                    "; unscaled: without a sigma column it is the mean squared residual, not a \
+                     goodness of fit"
+                }
             ));
+            if let Some(t) = &f.runs_test {
+                s.push_str(&format!(
+                    "runs test on the residuals' signs in order of g: {} runs, {} expected, p = {}\n",
+                    t.runs,
+                    sig(t.expected, 3),
+                    sig(t.p, 2)
+                ));
+            }
+            s.push_str(&residual_table(points, &f.residuals));
             for w in &f.warnings {
                 s.push_str(&format!("warning: {w}\n"));
             }
             s
         }
     })
+}
+
+/// Residual rows printed in the table format (all of them in JSON).
+pub const SHOWN_RESIDUALS: usize = 40;
+
+/// A value and its standard error as people read them: the error to 2 significant digits, the
+/// value to the same decimal place.
+pub fn with_error(value: f64, se: Option<f64>) -> (String, String) {
+    match se {
+        Some(e) if e > 0.0 && e.is_finite() && value.is_finite() => {
+            let last = e.log10().floor() as i32 - 1;
+            let digits = if value == 0.0 {
+                2
+            } else {
+                (value.abs().log10().floor() as i32 - last + 1).clamp(2, 17)
+            };
+            (sig(value, digits), format!("± {}", sig(e, 2)))
+        }
+        Some(e) => (sig(value, 6), format!("± {}", sig(e, 2))),
+        None => (sig(value, 6), "(not determined)".into()),
+    }
+}
+
+/// The residuals ε − ε_model in order of g (at most [`SHOWN_RESIDUALS`] rows).
+fn residual_table(points: &Points, residuals: &[f64]) -> String {
+    let mut order: Vec<usize> = (0..points.g.len()).collect();
+    order.sort_by(|&a, &b| points.g[a].total_cmp(&points.g[b]));
+    let mut s = format!(
+        "residuals eps - model:\n  {:>12} {:>10} {:>10} {:>11}\n",
+        "g [m/s]", "eps", "model", "residual"
+    );
+    for &i in order.iter().take(SHOWN_RESIDUALS) {
+        let r = residuals.get(i).copied().unwrap_or(f64::NAN);
+        s.push_str(&format!(
+            "  {:>12} {:>10} {:>10} {:>11}\n",
+            sig(points.g[i], 4),
+            sig(points.eps[i], 4),
+            sig(points.eps[i] - r, 4),
+            sig(r, 2)
+        ));
+    }
+    if order.len() > SHOWN_RESIDUALS {
+        s.push_str(&format!(
+            "  ({} more: --format json lists every residual)\n",
+            order.len() - SHOWN_RESIDUALS
+        ));
+    }
+    s
 }
 
 /// Runs `rime fit`.
@@ -165,6 +240,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                 eps,
                 sigma: None,
                 header: None,
+                g_unit: Some("m/s".into()),
             };
             let note = "fitted to a law's curve over its measured speeds: the standard errors \
                         measure the model's misfit to the law, not measurement noise";

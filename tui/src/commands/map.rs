@@ -4,12 +4,11 @@ use crate::cli::{self, Common, Format};
 use crate::output::{self, MapRecord};
 use crate::scene_io::{CliError, CliResult};
 use rime_core::sweep;
-use std::io::IsTerminal;
 
 /// Grids at least this large announce themselves on a terminal's stderr.
 const BIG: usize = 400;
 
-/// The map in the chosen format; JSON is pretty-printed on a terminal and compact when piped.
+/// The map in the chosen format; JSON pretty-printed like every command's, rows on one line.
 pub fn run(common: &Common, max: f64, n: usize) -> CliResult<String> {
     let contact = cli::contact(common)?;
     if contact.friction.is_none() {
@@ -39,12 +38,8 @@ pub fn run(common: &Common, max: f64, n: usize) -> CliResult<String> {
                 eps_t: rows(&|k| map.eps_t[k]),
                 eps_n: map.eps_n.clone(),
             };
-            let text = if std::io::stdout().is_terminal() {
-                serde_json::to_string_pretty(&record)
-            } else {
-                serde_json::to_string(&record)
-            };
-            text.map_err(|e| CliError(e.to_string()))? + "\n"
+            let value = serde_json::to_value(&record).map_err(|e| CliError(e.to_string()))?;
+            output::pretty_json(&value)
         }
         Format::Csv => rime_core::explorer::records::map_csv(&map),
         Format::Table => {
@@ -62,7 +57,7 @@ pub fn run(common: &Common, max: f64, n: usize) -> CliResult<String> {
                 s.push('\n');
             }
             for c in StickClass::ALL {
-                s.push_str(&format!("  {}  {}\n", c.letter(), c.name()));
+                s.push_str(&format!("  {}  {}\n", c.letter(), c.label()));
             }
             s
         }

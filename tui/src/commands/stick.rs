@@ -1,10 +1,12 @@
 //! `rime stick`: sticking thresholds v_stick(radius, temperature) for dust codes
 //! (rime_core::stick), as a table and a standalone C function.
 
-use crate::cli::{Common, Format, number};
+use crate::cli::{Common, Format, quantity};
 use crate::output::{num, table};
 use crate::scene_io::{CliError, CliResult, err, write_atomic};
-use rime_core::stick::{Convention, MEASURED_UM_ICE, Threshold, threshold};
+use rime_core::error::Number;
+use rime_core::explorer::format::{qty, sig};
+use rime_core::stick::{COLUMNS, Column, Convention, MEASURED_UM_ICE, Threshold, ThresholdTable};
 use rime_core::{AdhesionModulus, Scene};
 use std::path::PathBuf;
 
@@ -22,15 +24,21 @@ pub struct Args {
 }
 
 fn list(flag: &str, text: &str, lo: f64, hi: f64, unit: &str) -> CliResult<Vec<f64>> {
-    let v: Vec<f64> = text
-        .split(',')
-        .map(|s| number(flag, s))
+    let items: Vec<&str> = text.split(',').collect();
+    if items.len() > 10_000 {
+        return err(format!("{flag}: at most 10000 values"));
+    }
+    let v: Vec<f64> = items
+        .iter()
+        .map(|s| quantity(flag, s, unit))
         .collect::<CliResult<_>>()?;
     if let Some(x) = v.iter().find(|x| !(**x >= lo && **x <= hi)) {
-        return err(format!("{flag}: {x} must lie in [{lo}, {hi}] {unit}"));
-    }
-    if v.len() > 10_000 {
-        return err(format!("{flag}: at most 10000 values"));
+        return err(format!(
+            "{flag}: {} must lie in [{}, {}] {unit}",
+            Number(*x),
+            Number(lo),
+            Number(hi)
+        ));
     }
     Ok(v)
 }
@@ -39,7 +47,8 @@ fn list(flag: &str, text: &str, lo: f64, hi: f64, unit: &str) -> CliResult<Vec<f
 pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
     let radius = list(
         "--radius",
-        &get("--radius").ok_or_else(|| CliError("--radius: required (m)".into()))?,
+        &get("--radius")
+            .ok_or_else(|| CliError("--radius: required (m, or with a unit: 1 um)".into()))?,
         1e-9,
         1e4,
         "m",
@@ -110,38 +119,54 @@ pub fn c_source(scene: &Scene, convention: Convention) -> String {
     )
 }
 
+/// The column header of a table or CSV: `name [unit]` (`v_stick [m/s]`).
+fn column_header(c: &Column) -> String {
+    if c.unit.is_empty() {
+        c.name.to_string()
+    } else {
+        format!("{} [{}]", c.name, c.unit)
+    }
+}
+
 /// Runs `rime stick`.
 pub fn run(common: &Common, args: &Args) -> CliResult<String> {
-    let mut rows: Vec<Threshold> = Vec::new();
-    for &r in &args.radius {
-        for &t in &args.temperature {
-            rows.push(
-                threshold(&common.scene, r, t, args.convention, common.accuracy)
-                    .map_err(|e| CliError(format!("--radius {r}, --temperature {t}: {e}")))?,
-            );
+    let table_data = ThresholdTable::compute(
+        &common.scene,
+        &args.radius,
+        &args.temperature,
+        args.convention,
+        common.accuracy,
+    );
+    let mut rows: Vec<Threshold> = Vec::with_capacity(table_data.cells.len());
+    for (k, c) in table_data.cells.iter().enumerate() {
+        let (i, j) = (k / args.temperature.len(), k % args.temperature.len());
+        match (&c.threshold, &c.error) {
+            (Some(t), _) => rows.push(*t),
+            (None, e) => {
+                return err(format!(
+                    "--radius {}, --temperature {}: {}",
+                    Number(args.radius[i]),
+                    Number(args.temperature[j]),
+                    e.as_deref().unwrap_or("no threshold")
+                ));
+            }
         }
     }
-    let cells = |t: &Threshold| {
+    // Data files: shortest round-trip numbers; the table people read: 4 significant digits.
+    let cells = |t: &Threshold, cell: fn(f64) -> String| {
         vec![
-            num(t.radius),
-            num(t.temperature),
-            num(t.gamma_source),
-            num(t.gamma),
-            num(t.v_elastic),
-            t.v_stick.map(num).unwrap_or_else(|| "always".into()),
+            cell(t.radius),
+            cell(t.temperature),
+            cell(t.gamma_source),
+            cell(t.gamma),
+            cell(t.v_elastic),
+            t.v_stick.map(cell).unwrap_or_else(|| "always".into()),
         ]
     };
-    let header = [
-        "radius",
-        "temperature",
-        "gamma_source",
-        "gamma",
-        "v_elastic",
-        "v_stick",
-    ];
+    let header: Vec<String> = COLUMNS.iter().map(column_header).collect();
     let mut csv = header.join(",") + "\n";
     for t in &rows {
-        let mut c = cells(t);
+        let mut c = cells(t, num);
         if t.v_stick.is_none() {
             c[5] = String::new();
         }
@@ -161,6 +186,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
             dir.display()
         );
     }
+    let people = |v: f64| sig(v, 4);
     let gap: Vec<String> = rows
         .iter()
         .filter(|t| in_measured_regime(t))
@@ -169,19 +195,19 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                 "the full model sticks at every speed (it over-closes the gap)".into(),
                 |v| {
                     format!(
-                        "the full model {} m/s (factor {:.3})",
-                        num(v),
-                        MEASURED_UM_ICE / v
+                        "the full model {} (factor {})",
+                        qty(v, "m/s"),
+                        sig(MEASURED_UM_ICE / v, 3)
                     )
                 },
             );
             format!(
-                "r = {} m, T = {} K: measured {MEASURED_UM_ICE} m/s (Gundlach & Blum 2015); elastic \
-                 Eq. (15) {} m/s (factor {:.1} short); {full}\n",
-                num(t.radius),
-                num(t.temperature),
-                num(t.v_elastic),
-                MEASURED_UM_ICE / t.v_elastic
+                "r = {}, T = {} K: measured {MEASURED_UM_ICE} m/s (Gundlach & Blum 2015); elastic \
+                 Eq. (15) {} (factor {} short); {full}\n",
+                qty(t.radius, "m"),
+                people(t.temperature),
+                qty(t.v_elastic, "m/s"),
+                sig(MEASURED_UM_ICE / t.v_elastic, 2)
             )
         })
         .collect();
@@ -193,6 +219,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                     serde_json::json!({"radius": t.radius, "temperature": t.temperature,
                     "gamma_source": t.gamma_source, "gamma": t.gamma, "convention": args.convention.name(),
                     "v_elastic": t.v_elastic, "v_stick": t.v_stick,
+                    "damping_time": table_data.damping_time,
                     "measured_v_stick": in_measured_regime(t).then_some(MEASURED_UM_ICE)})
                 })
                 .collect();
@@ -200,11 +227,21 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         }
         Format::Csv => csv,
         Format::Table => {
-            let mut s = table(&header, &rows.iter().map(cells).collect::<Vec<_>>());
-            s.push_str(
-                "v_elastic: Eq. (15) alone (elastic JKR); v_stick: first rebound of the scene's full \
-                 model (viscous damping, layer, adhesion); gamma: the paper's gamma (work of adhesion).\n",
+            let head: Vec<&str> = header.iter().map(String::as_str).collect();
+            let mut s = table(
+                &head,
+                &rows.iter().map(|t| cells(t, people)).collect::<Vec<_>>(),
             );
+            for c in &COLUMNS {
+                if !c.note.is_empty() {
+                    s.push_str(&format!("{}: {}\n", c.name, c.note));
+                }
+            }
+            s.push_str(&format!(
+                "v_stick: first rebound of the full model with {} (viscous damping{}, adhesion)\n",
+                table_data.v_stick_note(),
+                if table_data.layer { ", layer" } else { "" }
+            ));
             for g in &gap {
                 s.push_str(g);
             }

@@ -3,6 +3,7 @@
 use crate::cli::{self, Common};
 use crate::output::{TangentialRecord, render};
 use crate::scene_io::{CliError, CliResult};
+use rime_core::error::Number;
 
 /// Every (g_N, g_T) combination, g_N outer.
 pub fn run(common: &Common, gn: &[f64], gt: &[f64]) -> CliResult<String> {
@@ -18,7 +19,7 @@ pub fn run(common: &Common, gn: &[f64], gt: &[f64]) -> CliResult<String> {
         for &t in gt {
             let r = contact
                 .tangential(n, t, common.accuracy)
-                .map_err(|e| CliError(format!("g_n = {n}, g_t = {t}: {e}")))?;
+                .map_err(|e| CliError(format!("g_n = {}, g_t = {}: {e}", Number(n), Number(t))))?;
             records.push(TangentialRecord {
                 g_n: n,
                 g_t: t,

@@ -94,7 +94,7 @@ pub struct App {
     /// recomputed whenever the scene, level or cursor changes.
     pub inside: Option<(f64, Result<rime_core::collision::Trajectory, String>)>,
     /// The sticking-thresholds panel (`v`): the table for this scene's material, when open.
-    pub stick: Option<Vec<Vec<Result<rime_core::stick::Threshold, String>>>>,
+    pub stick: Option<rime_core::stick::ThresholdTable>,
     /// What is drawn over the ε_N chart (`c`): index into the compute module's `OVERLAY_SETS`.
     pub overlay_set: usize,
     /// The scene and level the panel's trajectory belongs to.
@@ -261,6 +261,13 @@ impl App {
 
     /// Queues a computation of the current state (superseding any earlier request).
     pub fn request(&mut self) {
+        // The thresholds panel follows the scene (its A, its layer), as the chart does.
+        if self.stick.as_ref().is_some_and(|t| t.scene != self.scene) {
+            self.stick = Some(rime_core::stick::ThresholdTable::explorer(
+                &self.scene,
+                Accuracy::Fast,
+            ));
+        }
         self.generation += 1;
         self.pending = Some(Request {
             generation: self.generation,
@@ -854,9 +861,8 @@ impl App {
                 ) {
                     Ok(f) => {
                         let before = self.scene.damping_time();
-                        self.scene = f.scene;
-                        self.preset = None;
-                        self.request();
+                        // An edit like any other: `u` undoes it.
+                        self.replace_scene(f.scene, None);
                         let p = &f.params[0];
                         self.info(format!(
                             "A fitted to {id}: {} (was {}){}, rms {} over its measured speeds",
@@ -875,7 +881,10 @@ impl App {
                 if self.stick.take().is_some() {
                     self.info("sticking thresholds closed");
                 } else {
-                    self.stick = Some(super::view::stick::table(&self.scene, Accuracy::Fast));
+                    self.stick = Some(rime_core::stick::ThresholdTable::explorer(
+                        &self.scene,
+                        Accuracy::Fast,
+                    ));
                     self.info("sticking thresholds of this material, γ(T) of Musiolik & Wurm 2019 · v closes");
                 }
             }

@@ -899,10 +899,23 @@ fn fit_key_fits_a_to_the_first_measured_law_issue_15() {
 }
 
 #[test]
+fn fit_key_is_undoable_issue_22() {
+    let mut app = app_on(Preset::Ice.scene());
+    let before = app.scene;
+    update(&mut app, ch('f'));
+    assert_ne!(app.scene, before, "the fit changed nothing");
+    let fitted = app.scene;
+    update(&mut app, ch('u'));
+    assert_eq!(app.scene, before);
+    update(&mut app, ch('U'));
+    assert_eq!(app.scene, fitted);
+}
+
+#[test]
 fn stick_panel_tabulates_the_cores_thresholds_issue_15() {
     let mut app = app_on(Scene::default());
     update(&mut app, ch('v'));
-    let rows = app.stick.clone().expect("panel open");
+    let table = app.stick.clone().expect("panel open");
     let t = rime_core::stick::threshold(
         &Scene::default(),
         1e-6,
@@ -911,11 +924,14 @@ fn stick_panel_tabulates_the_cores_thresholds_issue_15() {
         Accuracy::Fast,
     )
     .expect("threshold");
-    assert_eq!(rows[0][2].as_ref().expect("cell"), &t);
+    assert_eq!(
+        table.cell(0, 2).and_then(|c| c.threshold.as_ref()),
+        Some(&t)
+    );
     let s = text(&screen(&app, 80, 24));
     for needle in [
         "sticking thresholds",
-        "v_stick (model)",
+        "v_stick, the scene's A",
         "Eq. (15)",
         "9.6 m/s",
     ] {
@@ -923,6 +939,52 @@ fn stick_panel_tabulates_the_cores_thresholds_issue_15() {
     }
     update(&mut app, ch('v'));
     assert!(app.stick.is_none());
+}
+
+/// Issue 22: the `v` panel is computed for the scene's A (it kept the A it was opened with): at
+/// A = 0 the full model sticks exactly up to Eq. (15)'s g_s, evaluated here from the closed form;
+/// at A = 100 µs damping raises the threshold; the titles say which A each table uses.
+#[test]
+fn thresholds_panel_follows_the_scenes_damping_time_issue_22() {
+    let mut elastic = Scene::default();
+    elastic.bulk.damping = rime_core::Damping::Time(0.0);
+    let mut app = app_on(elastic);
+    update(&mut app, ch('v'));
+    // Eq. (15) for two 1 µm ice grains at 200 K (γ_s = 0.19 J/m², w = 2γ_s, E = Y/(1 − ν²),
+    // as printed): g_s = (14.18/m_eff)^(1/2) (w⁵ R_eff⁴/E²)^(1/6).
+    let (r, rho, y, nu, w): (f64, f64, f64, f64, f64) = (1e-6, 900.0, 1e10, 0.3, 0.38);
+    let m_eff = 0.5 * 4.0 / 3.0 * std::f64::consts::PI * r.powi(3) * rho;
+    let e = y / (1.0 - nu * nu);
+    let g_s = (14.18 / m_eff).sqrt() * (w.powi(5) * (0.5 * r).powi(4) / (e * e)).powf(1.0 / 6.0);
+    let at_zero = app.stick.clone().expect("panel open");
+    let cell = at_zero.cell(0, 2).and_then(|c| c.threshold).expect("cell");
+    assert!(
+        (cell.v_elastic / g_s - 1.0).abs() < 1e-9,
+        "{cell:?} vs {g_s}"
+    );
+    assert!(
+        (cell.v_stick.expect("rebounds") / g_s - 1.0).abs() < 1e-6,
+        "{cell:?}"
+    );
+    assert!(text(&screen(&app, 100, 30)).contains("the scene's A = 0 s"));
+    // An edit of A with the panel open: the table follows it.
+    select(&mut app, "bulk.damping.time");
+    update(&mut app, ch('e'));
+    for c in "100 us".chars() {
+        update(&mut app, ch(c));
+    }
+    update(&mut app, key(KeyCode::Enter));
+    assert_eq!(number(&app, "bulk.damping.time"), 1e-4);
+    let at_a = app.stick.clone().expect("panel open");
+    assert_eq!(at_a.damping_time, 1e-4);
+    let cell = at_a.cell(3, 2).and_then(|c| c.threshold).expect("cell");
+    assert!(
+        cell.v_stick.is_none_or(|v| v > 1.01 * cell.v_elastic),
+        "{cell:?}"
+    );
+    let s = text(&screen(&app, 100, 30));
+    assert!(s.contains("the scene's A = 100 µs"), "{s}");
+    assert!(s.contains("A = 0, no layer"), "{s}");
 }
 
 fn click(column: u16, row: u16) -> Event {

@@ -209,3 +209,129 @@ fn bad_input_is_one_line_naming_the_field_with_exit_code_2() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+fn write_points(name: &str, text: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("rime-fit-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("points.csv");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// Issue 22: a `g [cm/s]` column is read as cm/s (it was fitted as m/s, 100× off, silently); the
+/// same points in m/s give the same A; a file without units says what it assumed.
+#[test]
+fn fit_reads_cm_per_s_from_the_header_issue_22() {
+    let si = write_points(
+        "si",
+        "g [m/s],eps\n0.001,0.55\n0.01,0.36\n0.1,0.22\n1,0.12\n",
+    );
+    let cm = write_points("cm", "g [cm/s],eps\n0.1,0.55\n1,0.36\n10,0.22\n100,0.12\n");
+    let bare = write_points("bare", "0.001,0.55\n0.01,0.36\n0.1,0.22\n1,0.12\n");
+    let fit =
+        |p: &std::path::Path| json(&["fit", "--data", p.to_str().unwrap(), "--format", "json"]);
+    let (a, b, c) = (fit(&si), fit(&cm), fit(&bare));
+    let value = |v: &serde_json::Value| v["value"].as_f64().unwrap();
+    assert!(rel(value(&a), value(&b)) < 1e-9, "{a} vs {b}");
+    assert_eq!(value(&a), value(&c));
+    assert_eq!(
+        (b["g_unit"].as_str(), b["g_unit_assumed"].as_bool()),
+        (Some("cm/s"), Some(false))
+    );
+    assert_eq!(
+        (c["g_unit"].as_str(), c["g_unit_assumed"].as_bool()),
+        (Some("m/s"), Some(true))
+    );
+    let (code, out, _) = rime(&["fit", "--data", cm.to_str().unwrap(), "--format", "table"]);
+    assert_eq!(code, 0);
+    assert!(
+        out.contains("g in cm/s (from the header), converted to m/s"),
+        "{out}"
+    );
+    let (code, out, _) = rime(&["fit", "--data", bare.to_str().unwrap(), "--format", "table"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("g taken in m/s"), "{out}");
+    // A unit it does not know: refused, naming the column.
+    let bad = write_points("bad", "g [ft/s],eps\n0.1,0.55\n1,0.36\n10,0.22\n");
+    let (code, _, err) = rime(&["fit", "--data", bad.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("column 'g [ft/s]'") && err.contains("unknown unit"),
+        "{err}"
+    );
+}
+
+/// Issue 22: the fit gives its residuals, a runs test, says χ² is unscaled without σ and prints
+/// the standard error to 2 significant digits (the value to the same place).
+#[test]
+fn fit_reports_residuals_misfit_and_two_digit_errors_issue_22() {
+    let p = write_points(
+        "misfit",
+        "g,eps\n1e-4,0.9\n3e-4,0.85\n1e-3,0.8\n3e-3,0.5\n0.01,0.3\n0.03,0.2\n0.1,0.15\n0.3,0.12\n1,0.1\n",
+    );
+    let v = json(&["fit", "--data", p.to_str().unwrap(), "--format", "json"]);
+    let residuals = v["residuals"].as_array().unwrap();
+    assert_eq!(residuals.len(), 9);
+    assert_eq!(v["chi2_scaled"], false);
+    assert!(v["runs_test"]["p"].as_f64().unwrap() <= 1.0);
+    let (code, out, _) = rime(&["fit", "--data", p.to_str().unwrap(), "--format", "table"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("unscaled"), "{out}");
+    assert!(out.contains("residuals eps - model"), "{out}");
+    let line = out
+        .lines()
+        .find(|l| l.starts_with("bulk.damping.time"))
+        .unwrap();
+    // "bulk.damping.time = 9.87e-5 ± 1.2e-6 s": two significant digits after ±.
+    let se = line
+        .split('±')
+        .nth(1)
+        .unwrap()
+        .split_whitespace()
+        .next()
+        .unwrap();
+    let mantissa: String = se
+        .split('e')
+        .next()
+        .unwrap()
+        .chars()
+        .filter(char::is_ascii_digit)
+        .collect();
+    assert!(mantissa.trim_start_matches('0').len() <= 2, "{line}");
+    let value = line
+        .split('=')
+        .nth(1)
+        .unwrap()
+        .split('±')
+        .next()
+        .unwrap()
+        .trim();
+    assert!(value.len() <= 10, "{line}");
+}
+
+/// Issue 22: tables people read flag the sliding gap as the printed law's artifact; the map's
+/// legend uses the human label.
+#[test]
+fn tables_flag_the_sliding_gap_as_the_papers_artifact_issue_22() {
+    let (code, out, _) = rime(&[
+        "tangential",
+        "--gn",
+        "0.01",
+        "--gt",
+        "0.02",
+        "--format",
+        "table",
+    ]);
+    assert_eq!(code, 0);
+    assert!(
+        out.contains("sliding_gap: an artifact of the printed Eq. (23)"),
+        "{out}"
+    );
+    let (code, out, _) = rime(&["map", "--max", "0.02", "--n", "6", "--format", "table"]);
+    assert_eq!(code, 0);
+    assert!(
+        out.contains("sliding gap (artifact of the printed Eq. (23))"),
+        "{out}"
+    );
+    assert!(!out.contains("sliding_gap"), "{out}");
+}

@@ -404,3 +404,84 @@ fn the_default_level_is_the_tightest_named_bound_issue_12() {
     let help = ok(&["help", "eps"]);
     assert!(help.contains("precise (default"), "{help}");
 }
+
+/// Issue 22: the shell completion offers preset names after `--preset` (it offered flags), run
+/// in a real bash with the generated script; zsh and fish list them too.
+#[test]
+fn completion_offers_preset_names_after_preset_issue_22() {
+    let script = ok(&["completions", "bash"]);
+    let presets: Vec<&str> = rime_core::Preset::ALL.iter().map(|p| p.name()).collect();
+    let probe = format!(
+        "{script}\nCOMP_WORDS=(rime eps --preset ice-); COMP_CWORD=3; _rime; echo \"${{COMPREPLY[*]}}\"\n\
+         COMP_WORDS=(rime eps --preset ''); COMP_CWORD=3; _rime; echo \"${{COMPREPLY[*]}}\"\n\
+         COMP_WORDS=(rime eps --accuracy ''); COMP_CWORD=3; _rime; echo \"${{COMPREPLY[*]}}\"\n\
+         COMP_WORDS=(rime eps --); COMP_CWORD=2; _rime; echo \"${{COMPREPLY[*]}}\"\n"
+    );
+    let out = std::process::Command::new("bash")
+        .arg("-c")
+        .arg(&probe)
+        .output()
+        .expect("bash is needed for this test");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(
+        lines[0], "ice-frost ice-sticky ice-paper-viscosities",
+        "{text}"
+    );
+    assert_eq!(lines[1], presets.join(" "), "{text}");
+    assert_eq!(lines[2], "fast precise integrated", "{text}");
+    assert!(
+        lines[3].contains("--preset") && lines[3].contains("--g"),
+        "{text}"
+    );
+    for sh in ["zsh", "fish"] {
+        let s = ok(&["completions", sh]);
+        assert!(s.contains(&presets.join(" ")), "{sh}: no preset names");
+    }
+}
+
+/// Issue 22: `map` and `collision` JSON are pretty-printed like `eps` (they came out on one line
+/// when piped), with arrays of numbers on one line; `compare --list` fits 80 columns.
+#[test]
+fn map_and_collision_json_are_pretty_like_eps_and_list_fits_80_columns_issue_22() {
+    for args in [
+        &["eps", "--g", "0.01", "--format", "json"][..],
+        &["map", "--max", "0.02", "--n", "4", "--format", "json"][..],
+        &[
+            "collision",
+            "--g",
+            "0.01",
+            "--points",
+            "4",
+            "--format",
+            "json",
+        ][..],
+    ] {
+        let text = ok(args);
+        assert!(text.lines().count() > 5, "{args:?}: {text}");
+        assert!(
+            text.lines().nth(1).unwrap().starts_with("  "),
+            "{args:?}: {text}"
+        );
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+        assert!(v.is_object() || v.is_array());
+    }
+    let map = ok(&["map", "--max", "0.02", "--n", "4", "--format", "json"]);
+    assert!(map.contains("\n  \"g\": [0.0, "), "{map}");
+    let list = ok(&["compare", "--list", "--format", "table"]);
+    for line in list.lines() {
+        assert!(
+            line.chars().count() <= 80,
+            "{} columns: {line}",
+            line.chars().count()
+        );
+    }
+    for m in ["hertzsch2002", "brilliantov2007", "bridges1984"] {
+        assert!(list.contains(m), "{m} missing\n{list}");
+    }
+}

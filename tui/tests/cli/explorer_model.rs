@@ -143,3 +143,25 @@ fn explorer_records_equal_the_command_lines_csv_issue_11() {
         );
     }
 }
+
+/// Issue 22: one number rule. The family around A = 1e-4 s is 1e-5, 3e-5, 3e-4, 1e-3 s exactly (3 ×
+/// 1e-4 is 3.0000000000000003e-4 in doubles): the legend reads `A = 3e-4 s`, the CSV header
+/// `A = 3e-4 s`, and no float noise reaches either.
+#[test]
+fn family_values_legends_and_csv_headers_carry_no_float_noise_issue_22() {
+    let f = frame("ice", Accuracy::Fast, 20, 4);
+    let values: Vec<f64> = f.family.iter().map(|m| m.value).collect();
+    assert_eq!(values, vec![1e-5, 3e-5, 3e-4, 1e-3]);
+    let fig = rime_core::explorer::figures::eps_figure(&f, &Default::default(), "test");
+    let names: Vec<&str> = fig.series.iter().map(|s| s.name.as_str()).collect();
+    assert!(
+        names.iter().any(|n| n.starts_with("A = 3e-4 s")),
+        "{names:?}"
+    );
+    let csv = rime_core::explorer::records::family_csv(&f);
+    let header = csv.lines().find(|l| l.starts_with("g_n")).unwrap();
+    assert!(header.contains("A = 3e-4 s"), "{header}");
+    for text in names.iter().copied().chain([header]) {
+        assert!(!text.contains("0000000"), "float noise in '{text}'");
+    }
+}

@@ -302,3 +302,77 @@ fn stick_exports_a_c_function_that_reproduces_the_table() {
     assert_eq!(csv.lines().count(), 7);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Issue 22: `rime stick` takes units like every other flag ("1 um", "200 K") and prints them, and
+/// says which A its v_stick column uses (the scene's) and that v_elastic uses A = 0.
+#[test]
+fn stick_takes_units_and_prints_them_issue_22() {
+    let plain = json(&[
+        "stick",
+        "--radius",
+        "1e-6,2e-3",
+        "--temperature",
+        "180,200",
+        "--accuracy",
+        "fast",
+    ]);
+    let units = json(&[
+        "stick",
+        "--radius",
+        "1 um,2 mm",
+        "--temperature",
+        "180 K,200K",
+        "--accuracy",
+        "fast",
+    ]);
+    assert_eq!(plain, units);
+    assert_eq!(plain[0]["damping_time"], 1e-4);
+    let (code, out, _) = rime(&[
+        "stick",
+        "--radius",
+        "1 um",
+        "--temperature",
+        "200",
+        "--format",
+        "table",
+    ]);
+    assert_eq!(code, 0);
+    for needle in [
+        "radius [m]",
+        "temperature [K]",
+        "v_elastic [m/s]",
+        "v_stick [m/s]",
+        "the scene's A = 100 µs",
+        "A = 0 and no layer",
+    ] {
+        assert!(out.contains(needle), "missing {needle}\n{out}");
+    }
+    let (code, out, _) = rime(&[
+        "stick",
+        "--radius",
+        "1 um",
+        "--set",
+        "bulk.damping.time=2 ms",
+        "--format",
+        "table",
+    ]);
+    assert_eq!(code, 0);
+    assert!(out.contains("the scene's A = 2 ms"), "{out}");
+    let (code, _, err) = rime(&["stick", "--radius", "1 ft"]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("--radius 1 ft") && err.contains("a length"),
+        "{err}"
+    );
+    let (code, csv, _) = rime(&[
+        "stick",
+        "--radius",
+        "1 um",
+        "--temperature",
+        "200",
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(code, 0);
+    assert!(csv.starts_with("radius [m],temperature [K],"), "{csv}");
+}

@@ -20,7 +20,8 @@
 //! Below `U_MIN` the curve is linear in δ (ε = 1 − 1.5 C1 δ + O(δ²), Schwager & Pöschel 1998) and at
 //! δ = 0 exactly elastic. Above the table's end ε follows the strong-damping asymptotes
 //! ε ≈ (2/3) δ^(-5/3) (force zero; below 1e-11 there) and ε = K δ⁻⁵ (zero overlap, see
-//! [`crate::normal::viscoelastic::creep_eps`]).
+//! [`crate::normal::viscoelastic::creep_eps`]); the force-zero duration is
+//! [`strong_damping_duration`], which grows with ln δ.
 
 use crate::math::{exp, log10, powf};
 use crate::normal::viscoelastic::Dimensionless;
@@ -134,6 +135,18 @@ macro_rules! with_table {
     };
 }
 
+/// `C` of [`strong_damping_duration`]: `(2/3) ln(27/8) + ln 3 − π/(3√3)`
+/// (mpmath: 1.3049427168063658…).
+pub const STRONG_DAMPING_DURATION_OFFSET: f64 = 1.304_942_716_806_366;
+
+/// The force-zero contact duration s_c = t_c/τ for strong damping (δ ≫ 1):
+/// `δ^(−2/3) ((20/9) ln δ + C)`, [`STRONG_DAMPING_DURATION_OFFSET`] = C, relative error
+/// O(δ^(−5/3) ln² δ) (below 1e-10 from δ = 1e7; derivation in docs/physics.md#decision-2, checked
+/// against the independent integration `tests/reference/strong_damping.py`).
+pub fn strong_damping_duration(delta: f64) -> f64 {
+    powf(delta, -2.0 / 3.0) * (20.0 / 9.0 * crate::math::ln(delta) + STRONG_DAMPING_DURATION_OFFSET)
+}
+
 /// Evaluates the master curve at `delta ≥ 0` (no integration).
 #[inline]
 pub fn lookup(delta: f64, end: ContactEnd, resolution: Resolution) -> Dimensionless {
@@ -220,19 +233,19 @@ impl<const D: usize> Table<D> {
     ///
     /// ε: `(2/3) δ^(−5/3)` continued from the end (force zero) or `K δ⁻⁵` (zero overlap).
     /// x_max: the maximum compression comes before either end rule applies, so both rules share it;
-    /// past the force-zero table (δ > 1e7) it scales as δ^(−2/3). s_c: for force zero the contact ends
-    /// one relaxation time after the maximum, which scales as δ^(−2/3) too; for zero overlap it is
-    /// unresolved (ε < 1e-9 beyond the table).
+    /// past the force-zero table (δ > 1e7) it scales as δ^(−2/3). s_c: for force zero the closed
+    /// form [`strong_damping_duration`] (it grows with ln δ: both the approach to the turning point
+    /// and the relaxation of the force after it are exponential, docs/physics.md#decision-2); for
+    /// zero overlap it is unresolved (ε < 1e-9 beyond the table).
     fn tail(&self, delta: f64, u: f64) -> Dimensionless {
         let eps = self.tail_eps(delta, u - self.u_max);
         let (x_max, s_c) = if self.end == ContactEnd::ZeroOverlap && u < FORCE_ZERO_FINE.u_max {
             (FORCE_ZERO_FINE.lookup(delta).x_max, f64::INFINITY)
         } else {
-            let beyond = u - self.u_max;
-            let shrink = powf(10.0, -2.0 / 3.0 * beyond);
+            let shrink = powf(10.0, -2.0 / 3.0 * (u - self.u_max));
             (
                 exp(self.ln_at(self.u_max, 2)) * shrink,
-                exp(self.ln_at(self.u_max, 1)) * shrink,
+                strong_damping_duration(delta),
             )
         };
         Dimensionless {

@@ -8,69 +8,53 @@ use ratatui::layout::Rect;
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph, Wrap};
-use rime_core::stick::{Convention, MEASURED_UM_ICE, Threshold, threshold};
-use rime_core::{Accuracy, Scene};
-
-/// Radii of the table \[m\].
-pub const RADII: [f64; 5] = [1e-6, 1e-5, 1e-4, 1e-3, 1e-2];
-/// Temperatures of the table \[K\].
-pub const TEMPERATURES: [f64; 3] = [150.0, 180.0, 200.0];
-
-/// The table: one row per radius, one threshold (or the error) per temperature.
-pub fn table(scene: &Scene, accuracy: Accuracy) -> Vec<Vec<Result<Threshold, String>>> {
-    RADII
-        .iter()
-        .map(|&r| {
-            TEMPERATURES
-                .iter()
-                .map(|&t| {
-                    threshold(scene, r, t, Convention::SurfaceEnergy, accuracy)
-                        .map_err(|e| e.to_string())
-                })
-                .collect()
-        })
-        .collect()
-}
+use rime_core::stick::{MEASURED_UM_ICE, Threshold, ThresholdTable};
 
 /// How a table shows one threshold.
 type CellText = fn(&Threshold) -> String;
 
 /// The panel's lines: two narrow tables (they fit an 80×24 terminal) and the gap to the measurement.
-pub fn lines(rows: &[Vec<Result<Threshold, String>>]) -> Vec<Line<'static>> {
+/// Each table's title says which values it uses: v_stick the scene's A (and layer), v_el A = 0.
+pub fn lines(table: &ThresholdTable) -> Vec<Line<'static>> {
     let dim = Style::new().fg(Color::Gray);
     let mut out = vec![Line::from(Span::styled(
-        "γ(T) of Musiolik & Wurm 2019, this scene's material",
+        "γ(T) of Musiolik & Wurm 2019 and the row's radius, this scene's material",
         dim,
     ))];
-    let tables: [(&str, CellText); 2] = [
-        ("v_stick (model)", |t| {
+    let tables: [(String, CellText); 2] = [
+        (format!("v_stick, {}", table.v_stick_note()), |t| {
             t.v_stick.map_or("always".into(), |v| qty3(v, "m/s"))
         }),
-        ("v_el (Eq. (15))", |t| qty3(t.v_elastic, "m/s")),
+        ("v_el, Eq. (15): A = 0, no layer".into(), |t| {
+            qty3(t.v_elastic, "m/s")
+        }),
     ];
     for (title, cell) in tables {
-        let mut head = vec![Span::styled(
-            format!("{title:<17}"),
+        out.push(Line::from(Span::styled(
+            title,
             Style::new().fg(Color::White),
-        )];
-        for t in TEMPERATURES {
+        )));
+        let mut head = vec![Span::styled(format!("{:>17}", "radius"), dim)];
+        for t in &table.temperatures {
             head.push(Span::styled(format!("{:>10}", format!("{t} K")), dim));
         }
         out.push(Line::from(head));
-        for (r, row) in RADII.iter().zip(rows) {
+        for (i, r) in table.radii.iter().enumerate() {
             let mut spans = vec![Span::raw(format!("{:>17}", qty3(*r, "m")))];
-            for c in row {
-                let text = match c {
-                    Ok(t) => cell(t),
-                    Err(_) => "error".into(),
+            for j in 0..table.temperatures.len() {
+                let text = match table.cell(i, j).and_then(|c| c.threshold.as_ref()) {
+                    Some(t) => cell(t),
+                    None => "error".into(),
                 };
                 spans.push(Span::raw(format!("{text:>10}")));
             }
             out.push(Line::from(spans));
         }
     }
-    // The gap to the measurement, plainly (1 µm at 200 K, where γ is largest).
-    if let Some(Ok(t)) = rows.first().and_then(|r| r.last()) {
+    // The gap to the measurement, plainly (the smallest radius at the warmest temperature, where
+    // γ is largest).
+    let last = table.temperatures.len().saturating_sub(1);
+    if let Some(t) = table.cell(0, last).and_then(|c| c.threshold.as_ref()) {
         out.push(Line::from(Span::styled(
             format!(
                 "µm ice sticks up to {MEASURED_UM_ICE} m/s (Gundlach & Blum 2015); JKR alone gives {}, {:.1}× short",
@@ -84,7 +68,7 @@ pub fn lines(rows: &[Vec<Result<Threshold, String>>]) -> Vec<Line<'static>> {
 }
 
 /// Draws the panel over `area`.
-pub fn render(frame: &mut Frame, area: Rect, rows: &[Vec<Result<Threshold, String>>]) {
+pub fn render(frame: &mut Frame, area: Rect, table: &ThresholdTable) {
     frame.render_widget(Clear, area);
     let block = Block::bordered()
         .border_style(Style::new().fg(Color::White))
@@ -96,7 +80,7 @@ pub fn render(frame: &mut Frame, area: Rect, rows: &[Vec<Result<Threshold, Strin
     let inner = block.inner(area);
     frame.render_widget(block, area);
     frame.render_widget(
-        Paragraph::new(lines(rows)).wrap(Wrap { trim: false }),
+        Paragraph::new(lines(table)).wrap(Wrap { trim: false }),
         inner,
     );
 }
