@@ -16,4 +16,5 @@ mod explorer_model;
 mod exported;
 mod measured;
 mod models;
+mod silent_numbers;
 mod takeaway;
