@@ -59,6 +59,15 @@ def prediction(radius, tau, scale, friction):
     return json.loads(subprocess.run(args, check=True, capture_output=True, text=True).stdout)
 
 
+def eps_bar(c, scene):
+    """ε̄ = √(⟨ε_N² g²⟩/⟨g²⟩) of smooth impacts over the Rayleigh(√2 c) law (numpy quadrature,
+    independent of the core's): the effective ε_cr the N-body ring settled at."""
+    x = np.linspace(0, 8, 4001)[1:]
+    w = x**3 * np.exp(-x * x / 2)
+    e = np.asarray(rime.eps_n(math.sqrt(2) * c * x, scene))
+    return float(math.sqrt(np.sum(w * e * e) / np.sum(w)))
+
+
 def scene_for(radius, scale, friction):
     scene = rime.Scene.preset("ice")
     if scale:
@@ -123,7 +132,7 @@ def main():
     print(f"{n} particles, {orbits:g} orbits, {a.seeds} seeds, Ω = {OMEGA} 1/s; "
           f"tolerance |ln ratio| <= ln 2")
     header = ("case", "verdict", "c_pred", "c_nbody", "ratio", "±", "H_pred", "H_nbody", "ratio",
-              "±", "s/orbit", "ok")
+              "±", "drift", "ε̄ pred→nbody", "s/orbit", "ok")
     print(" | ".join(header))
     failures = 0
     for index, (name, radius, tau, scale, friction, start, expect) in enumerate(CASES):
@@ -143,16 +152,26 @@ def main():
             growth = np.array([r[2][-1] / r[2][0] for r in results])
             ok = pred["verdict"] == "heats" and bool(np.all(growth > 2.0))
             print(f"{name} | {pred['verdict']} | heats | c grows ×{growth.mean():.3g} "
-                  f"(min ×{growth.min():.3g}) over {orbits:g} orbits | | | | | | "
+                  f"(min ×{growth.min():.3g}) over {orbits:g} orbits | | | | | | | | "
                   f"{cost:.2f} | {'yes' if ok else 'NO'}")
         else:
             rc, rh = c_nb / c_pred, h_nb / h_pred
             ok = bool(abs(math.log(rc.mean())) <= TOLERANCE and abs(math.log(rh.mean())) <= TOLERANCE)
             sc = rc.std(ddof=1) if len(rc) > 1 else float("nan")
             sh = rh.std(ddof=1) if len(rh) > 1 else float("nan")
+            # c at the end over c at mid-run: 1 when settled.
+            drift = float(np.mean([r[2][-1] / r[2][len(r[2]) // 2] for r in results]))
+            smooth = rime.Scene.preset("ice")
+            smooth.set("friction", "off")
+            smooth.set("grains.radius_1", radius)
+            smooth.set("grains.radius_2", radius)
+            if scale:
+                smooth.set("bulk.damping.time", 1e-4 * radius / 0.02)
+            e_pred, e_nb = eps_bar(c_pred, smooth), eps_bar(c_nb.mean(), smooth)
             print(f"{name} | {pred['verdict']} | {c_pred:.3g} | {c_nb.mean():.3g} | "
                   f"{rc.mean():.2f} | {sc:.2f} | {h_pred:.3g} | {h_nb.mean():.3g} | {rh.mean():.2f} | "
-                  f"{sh:.2f} | {cost:.2f} | {'yes' if ok else 'NO'}")
+                  f"{sh:.2f} | {drift:.2f} | {e_pred:.3f}→{e_nb:.3f} | {cost:.2f} | "
+                  f"{'yes' if ok else 'NO'}")
         sys.stdout.flush()
         failures += not ok
     return 1 if failures else 0
