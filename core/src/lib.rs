@@ -58,6 +58,7 @@ pub mod models;
 pub mod normal;
 pub mod ode;
 pub mod params;
+pub mod ring;
 pub mod scene;
 pub mod stick;
 pub mod sweep;

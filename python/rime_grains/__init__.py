@@ -42,6 +42,7 @@ __all__ = [
     "compare",
     "data",
     "rebound",
+    "ring",
     "ACCURACY_LEVELS",
 ]
 
@@ -163,4 +164,5 @@ def compare(models, g, scene, accuracy="precise"):
 
 
 from . import data  # noqa: E402
+from . import ring  # noqa: E402
 from . import rebound  # noqa: E402

@@ -6,6 +6,7 @@ import numpy.typing as npt
 
 from . import data as data
 from . import rebound as rebound
+from . import ring as ring
 
 Accuracy = Union[Literal["fast", "balanced", "precise", "integrated"], str]
 ArrayLike = npt.ArrayLike

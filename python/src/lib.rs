@@ -6,6 +6,7 @@
 //! Python: the crate denies `unwrap`/`expect`/`panic` like the rest of the workspace).
 
 mod rebound;
+mod ring;
 
 use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::exceptions::PyValueError;
@@ -664,6 +665,7 @@ fn bench_batch(
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyScene>()?;
     m.add_function(wrap_pyfunction!(eps_n, m)?)?;
+    m.add_function(wrap_pyfunction!(ring::ring_equilibrium, m)?)?;
     m.add_function(wrap_pyfunction!(eps_t, m)?)?;
     m.add_function(wrap_pyfunction!(tangential, m)?)?;
     m.add_function(wrap_pyfunction!(collision, m)?)?;

@@ -15,10 +15,10 @@ def snippets():
 
 
 def test_the_section_has_its_examples():
-    assert len(snippets()) == 3
+    assert len(snippets()) == 4
 
 
-@pytest.mark.parametrize("index", range(3))
+@pytest.mark.parametrize("index", range(4))
 def test_readme_example_runs(index, tmp_path, monkeypatch, capsys):
     monkeypatch.chdir(tmp_path)  # the REBOUND example writes run.bin
     with warnings.catch_warnings():
@@ -28,3 +28,5 @@ def test_readme_example_runs(index, tmp_path, monkeypatch, capsys):
     out = capsys.readouterr().out
     if index == 2:
         assert "'bounces': 1" in out
+    if index == 3:  # the ring (issue 24): 2 cm ice in the A ring sits at the monolayer floor
+        assert out.startswith("monolayer_floor ")

@@ -73,6 +73,8 @@ pub enum Command {
     Fit(Common, crate::commands::fit::Args),
     /// `rime data [--law ID --g LIST [--radius R]]`.
     Data(Common, crate::commands::data::Args),
+    /// `rime ring --tau T (--omega W | --planet-mass M --distance D) [--radius R] [--scale-damping]`.
+    Ring(Common, crate::commands::ring::Args),
     /// `rime stick --radius LIST [--temperature LIST] [--gamma surface|adhesion] [--out DIR]`.
     Stick(Common, crate::commands::stick::Args),
     /// `rime collision --g G [--gt G] [--points N]`.
@@ -398,6 +400,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
         "fit" => Command::Fit(common, crate::commands::fit::parse(&owned)?),
         "data" => Command::Data(common, crate::commands::data::parse(&owned)?),
         "stick" => Command::Stick(common, crate::commands::stick::parse(&owned)?),
+        "ring" => Command::Ring(common, crate::commands::ring::parse(&owned)?),
         "collision" => Command::Collision(common, crate::commands::collision::parse(&owned)?),
         "bench" => {
             let out = PathBuf::from(get("--out").unwrap_or("target/bench"));

@@ -202,6 +202,38 @@ pub const SUBS: &[Sub] = &[
         example: "tidal --distance 1.2e8 --radius \"1 cm\"",
     },
     Sub {
+        name: "ring",
+        usage: "ring --tau T (--omega W | --planet-mass M --distance D) [--radius R] [--scale-damping] [OPTIONS]",
+        about: "What the scene's law does to a ring: equilibrium velocity dispersion, thickness and \
+                verdict (equilibrium, monolayer_floor, aggregates, heats), smooth and rough.",
+        flags: &[
+            f("--tau", "T", "normal optical depth, in (0, 5]"),
+            f("--omega", "W", "orbital frequency, 1/s"),
+            f(
+                "--planet-mass",
+                "M",
+                "planet mass, kg (with --distance, instead of --omega)",
+            ),
+            f(
+                "--distance",
+                "D",
+                "distance from the planet's centre; units allowed (m, km…)",
+            ),
+            f(
+                "--radius",
+                "R",
+                "both grains' radius; units allowed (m, cm…)",
+            ),
+            switch(
+                "--scale-damping",
+                "use A' = A·R/R_scene (keeps ε_N(g); a different material)",
+            ),
+        ],
+        scene: true,
+        formats: ALL_FORMATS,
+        example: "ring --preset ice --tau 0.5 --radius 0.02 --omega 1.3143527e-4",
+    },
+    Sub {
         name: "scene",
         usage: "scene [--out FILE] [OPTIONS]",
         about: "Print the scene JSON (after --scene/--preset/--set), or write it atomically with --out. \

@@ -13,6 +13,7 @@ pub mod figures;
 pub mod fit;
 pub mod help;
 pub mod map;
+pub mod ring;
 pub mod scene;
 pub mod stick;
 pub mod tangential;

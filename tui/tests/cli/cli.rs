@@ -335,3 +335,97 @@ fn tables_flag_the_sliding_gap_as_the_papers_artifact_issue_22() {
     );
     assert!(!out.contains("sliding_gap"), "{out}");
 }
+
+/// Issue 24: the A-ring patch of 2 cm `ice` balances (at the monolayer floor with the scene's
+/// friction, above it for smooth grains); the metre-size patch heats unless A is scaled with R.
+#[test]
+fn issue_24_ring_verdicts_and_the_a_over_r_note() {
+    let base = [
+        "ring",
+        "--preset",
+        "ice",
+        "--tau",
+        "0.5",
+        "--omega",
+        "1.3143527e-4",
+    ];
+    let with = |extra: &[&str]| {
+        let mut a: Vec<&str> = base.to_vec();
+        a.extend_from_slice(extra);
+        json(&a)
+    };
+    let small = with(&["--radius", "0.02"]);
+    assert_eq!(small["verdict"], "monolayer_floor");
+    assert_eq!(small["smooth"]["verdict"], "equilibrium");
+    assert!(small["damping_note"].is_null());
+    // The floor is 2RΩ; thickness = c_z/Ω with c_z/c = √(1 − 1.5/(ω̂² + 5.5)), ω̂ = 8τ/π·Y(φ).
+    let r_omega = 0.02 * 1.3143527e-4;
+    assert!(
+        rel(
+            small["velocity_dispersion"].as_f64().unwrap(),
+            2.0 * r_omega
+        ) < 1e-12
+    );
+    // Smooth balance: ε̄ = ε_cr at the printed dispersion.
+    let s = &small["smooth"];
+    assert!(
+        rel(
+            s["eps_effective"].as_f64().unwrap(),
+            s["eps_cr"].as_f64().unwrap()
+        ) < 1e-6
+    );
+    assert!(
+        rel(
+            s["mean_impact_speed"].as_f64().unwrap(),
+            std::f64::consts::PI.sqrt() * s["velocity_dispersion"].as_f64().unwrap()
+        ) < 1e-12
+    );
+    let big = with(&["--radius", "1"]);
+    assert_eq!(big["verdict"], "heats");
+    assert_eq!(big["scaled_damping_time"], 5e-3);
+    assert!(
+        big["damping_note"]
+            .as_str()
+            .unwrap()
+            .contains("a different material")
+    );
+    let scaled = with(&["--radius", "1", "--scale-damping"]);
+    assert_ne!(scaled["verdict"], "heats");
+    assert_eq!(scaled["damping_time"], 5e-3);
+    assert!(
+        scaled["damping_note"]
+            .as_str()
+            .unwrap()
+            .contains("different material")
+    );
+    // The planet form gives Ω = √(GM/d³).
+    let planet = json(&[
+        "ring",
+        "--tau",
+        "0.5",
+        "--planet-mass",
+        "5.688e26",
+        "--distance",
+        "1.336e8",
+    ]);
+    let omega = (6.672e-11 * 5.688e26 / 1.336e8f64.powi(3)).sqrt();
+    assert!(rel(planet["omega"].as_f64().unwrap(), omega) < 1e-15);
+    for (args, field) in [
+        (vec!["ring", "--omega", "1e-4"], "--tau"),
+        (vec!["ring", "--tau", "0.5"], "--omega"),
+        (vec!["ring", "--tau", "-1", "--omega", "1e-4"], "tau"),
+        (vec!["ring", "--tau", "0.5", "--omega", "0"], "omega"),
+        (
+            vec!["ring", "--tau", "0.5", "--planet-mass", "1e26"],
+            "--distance",
+        ),
+        (
+            vec!["ring", "--tau", "0.5", "--omega", "1e-4", "--scale-damping"],
+            "--scale-damping",
+        ),
+    ] {
+        let (code, _, err) = rime(&args);
+        assert_eq!(code, 2, "{args:?}");
+        assert!(err.contains(field), "{args:?}: {err}");
+    }
+}

@@ -106,6 +106,21 @@ fn documented() -> Vec<(&'static str, Vec<&'static str>)> {
                 true,
             ),
         ),
+        (
+            "ring",
+            with(
+                &[
+                    "--tau",
+                    "--omega",
+                    "--planet-mass",
+                    "--distance",
+                    "--radius",
+                    "--scale-damping",
+                ],
+                true,
+                true,
+            ),
+        ),
         ("figures", vec!["--out", "--accuracy"]),
         (
             "compare",

@@ -1,0 +1,61 @@
+"""What the scene's law does to a ring: equilibrium velocity dispersion, thickness and verdict.
+
+The model (a Krook-moment kinetic closure of the non-gravitating shearing sheet with the Enskog
+collision rate, impacts averaged over a Gaussian velocity distribution, a 2RΩ monolayer floor) and
+where it stops holding are in docs/physics.md#ring of the repository; the fields are those of
+``rime ring --format json`` (docs/cli.md#ring).
+
+>>> import rime_grains as rime
+>>> ice = rime.Scene.preset("ice")
+>>> a_ring = rime.ring.equilibrium(ice, tau=0.5, omega=1.3143527e-4, radius=0.02)
+>>> a_ring["verdict"], a_ring["smooth"]["verdict"]
+('monolayer_floor', 'equilibrium')
+>>> round(a_ring["velocity_dispersion_r_omega"], 6)
+2.0
+>>> metre = rime.ring.equilibrium(ice, tau=0.5, omega=1.3143527e-4, radius=1.0)
+>>> metre["verdict"], metre["scaled_damping_time"]
+('heats', 0.005)
+>>> "different material" in metre["damping_note"]
+True
+>>> rime.ring.equilibrium(ice, tau=0.5, omega=1.3143527e-4, radius=1.0, scale_damping=True)["verdict"]
+'monolayer_floor'
+>>> rime.ring.equilibrium(ice, tau=0.0, omega=1e-4)
+Traceback (most recent call last):
+...
+ValueError: tau: must lie in (0, 5] (got 0)
+"""
+
+from . import _native
+
+__all__ = ["equilibrium", "scaled_damping_time"]
+
+
+def equilibrium(scene, *, tau, omega=None, planet_mass=None, distance=None, radius=None,
+                scale_damping=False):
+    """The ring's equilibrium for ``scene`` at optical depth ``tau``.
+
+    Give ``omega`` [1/s], or ``planet_mass`` [kg] and ``distance`` [m] (Ω = √(GM/d³)). ``radius``
+    [m] sets both grains. ``scale_damping=True`` replaces A by A′ = A·R/R_scene, which keeps the
+    scene's ε_N(g) for the new size: **a different material** (the result's ``damping_note`` says
+    so). Without it, when ``radius`` differs from the scene's, ``scaled_damping_time`` reports A′.
+
+    Returns a dict: ``verdict`` (``equilibrium``, ``monolayer_floor``, ``aggregates``, ``heats``),
+    ``velocity_dispersion`` [m/s], ``thickness`` [m], ``mean_impact_speed`` [m/s], ``eps_cr``,
+    ``eps_effective``, ``equilibration_orbits`` and the ``smooth`` and ``rough`` predictions.
+    """
+    from . import _scene
+    return _native.ring_equilibrium(_scene(scene), tau=tau, omega=omega, planet_mass=planet_mass,
+                                    distance=distance, radius=radius, scale_damping=scale_damping)
+
+
+def scaled_damping_time(damping_time, radius, new_radius):
+    """A′ = A·R′/R [s]: the damping time grains of ``new_radius`` need to keep the ε_N(g) of grains
+    of ``radius`` with ``damping_time``. A is a material constant: A′ describes a different material.
+
+    >>> scaled_damping_time(1e-4, 0.02, 1.0)
+    0.005
+    """
+    for name, v in (("damping_time", damping_time), ("radius", radius), ("new_radius", new_radius)):
+        if not (isinstance(v, (int, float)) and v > 0 and v < float("inf")):
+            raise ValueError(f"{name}: must be a finite number > 0 (got {v!r})")
+    return damping_time * (new_radius / radius)

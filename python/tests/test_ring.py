@@ -1,0 +1,73 @@
+"""Issue 24: `rime_grains.ring.equilibrium` against `rime ring`, and a reduced shearing-sheet check
+(scripts/ring-nbody.py with 100 particles, 4 orbits, 3 seeds) with the script's tolerance."""
+import importlib.util
+import math
+
+import numpy as np
+import pytest
+
+import rime_grains as rime
+from conftest import ROOT, cli
+
+spec = importlib.util.spec_from_file_location("ring_nbody", ROOT / "scripts" / "ring-nbody.py")
+nbody = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(nbody)
+
+OMEGA = nbody.OMEGA
+
+
+def test_python_and_cli_agree_to_the_digit():
+    for radius, extra, kwargs in [(0.02, [], {}), (1.0, [], {}),
+                                  (1.0, ["--scale-damping"], {"scale_damping": True})]:
+        py = rime.ring.equilibrium(rime.Scene.preset("ice"), tau=0.5, omega=OMEGA, radius=radius,
+                                   **kwargs)
+        js = cli("ring", "--preset", "ice", "--tau", 0.5, "--omega", OMEGA, "--radius", radius,
+                 *extra)
+        for key in ("verdict", "velocity_dispersion", "thickness", "eps_cr", "scaled_damping_time"):
+            assert py[key] == js[key], key
+        # The note names the flag or the keyword: the same statement.
+        assert (py["damping_note"] is None) == (js["damping_note"] is None)
+        if py["damping_note"]:
+            assert "different material" in py["damping_note"] and "different material" in js["damping_note"]
+        assert py["smooth"] == js["smooth"] and py["rough"] == js["rough"]
+
+
+def test_bad_input_names_the_field():
+    ice = rime.Scene.preset("ice")
+    with pytest.raises(ValueError, match="^omega: required"):
+        rime.ring.equilibrium(ice, tau=0.5)
+    with pytest.raises(ValueError, match="^distance: required"):
+        rime.ring.equilibrium(ice, tau=0.5, planet_mass=5.7e26)
+    with pytest.raises(ValueError, match="^scale_damping"):
+        rime.ring.equilibrium(ice, tau=0.5, omega=OMEGA, scale_damping=True)
+    with pytest.raises(ValueError, match="^new_radius"):
+        rime.ring.scaled_damping_time(1e-4, 0.02, -1.0)
+
+
+def measure(index, n=100, orbits=6.0, seeds=3):
+    name, radius, tau, scale, friction, start, expect = nbody.CASES[index]
+    pred = rime.ring.equilibrium(nbody.scene_for(0.02, False, friction), tau=tau, omega=OMEGA,
+                                 radius=radius, scale_damping=scale)
+    scene = nbody.scene_for(radius, scale, friction)
+    c0 = pred["velocity_dispersion"] * start if start else 2 * radius * OMEGA
+    room = 10.0 if expect == "stay" else 400.0
+    runs = [nbody.run(radius, tau, scene, c0, n, orbits, 1000 + s, room) for s in range(seeds)]
+    return pred, runs
+
+
+# Index into scripts/ring-nbody.py's CASES: the dense patches that settle within a few orbits (at
+# the floor). Not here: the dilute patch (equilibrates over ~10² orbits) and the 2 cm smooth patch,
+# which after 10 orbits sits at 0.44 of the prediction (the closure's ε_cr(0.5) is low, a known miss
+# shown by scripts/ring-nbody.py and docs/physics.md#ring).
+@pytest.mark.parametrize("index", [1, 3, 4])
+def test_shearing_sheet_matches_the_prediction_within_a_factor_two(index):
+    pred, runs = measure(index)
+    c = np.mean([r[0] for r in runs]) / pred["velocity_dispersion"]
+    h = np.mean([r[1] for r in runs]) / pred["thickness"]
+    assert abs(math.log(c)) <= nbody.TOLERANCE and abs(math.log(h)) <= nbody.TOLERANCE, (c, h)
+
+
+def test_the_metre_patch_with_the_preset_a_heats():
+    pred, runs = measure(5)
+    assert pred["verdict"] == "heats"
+    assert all(r[2][-1] / r[2][0] > 2.0 for r in runs)

@@ -1,0 +1,233 @@
+//! `rime ring`: what the scene's collision law does to a ring — equilibrium velocity dispersion,
+//! thickness and verdict (docs/physics.md#ring).
+
+use crate::cli::{Common, Format};
+use crate::output;
+use crate::scene_io::{CliError, CliResult, err};
+use rime_core::ring::{Orbit, Prediction, RingInput, equilibrium};
+use rime_core::scene::Damping;
+
+/// Parsed arguments.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Args {
+    /// Optical depth τ.
+    pub tau: f64,
+    /// Ω, or a planet and a distance.
+    pub orbit: Orbit,
+    /// `--radius`: both grains' radius \[m\].
+    pub radius: Option<f64>,
+    /// `--scale-damping`: replace A by A′ = A·R′/R (a different material).
+    pub scale_damping: bool,
+}
+
+/// Reads `--tau`, `--omega | --planet-mass --distance`, `--radius`, `--scale-damping`.
+pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
+    let q = |name: &'static str, unit: &str| -> CliResult<Option<f64>> {
+        get(name)
+            .map(|v| rime_core::units::parse_quantity(name, &v, unit).map_err(CliError::from))
+            .transpose()
+    };
+    let tau = q("--tau", "1")?.ok_or_else(|| CliError("--tau: required (optical depth)".into()))?;
+    let orbit = match (
+        q("--omega", "1/s")?,
+        q("--planet-mass", "kg")?,
+        q("--distance", "m")?,
+    ) {
+        (Some(o), None, None) => Orbit::Omega(o),
+        (None, Some(m), Some(d)) => Orbit::Planet {
+            planet_mass: m,
+            distance: d,
+        },
+        (Some(_), _, _) => return err("--omega: cannot be combined with --planet-mass/--distance"),
+        (None, Some(_), None) => return err("--distance: required with --planet-mass"),
+        (None, None, Some(_)) => return err("--planet-mass: required with --distance"),
+        (None, None, None) => {
+            return err("--omega: required (or --planet-mass and --distance)");
+        }
+    };
+    Ok(Args {
+        tau,
+        orbit,
+        radius: q("--radius", "m")?,
+        scale_damping: get("--scale-damping").as_deref() == Some("true"),
+    })
+}
+
+/// The ring's record in the chosen format.
+pub fn run(common: &Common, args: &Args) -> CliResult<String> {
+    let mut scene = common.scene;
+    let set_for = scene.grains.radius_1;
+    if let Some(r) = args.radius {
+        scene.grains.radius_1 = r;
+        scene.grains.radius_2 = r;
+    }
+    let radius = scene.grains.radius_1;
+    let scaled = args.scale_damping && radius != set_for;
+    if args.scale_damping && !scaled {
+        return err("--scale-damping: only with a --radius other than the scene's");
+    }
+    if scaled {
+        let a = rime_core::ring::scaled_damping_time(scene.damping_time(), set_for, radius)?;
+        scene.bulk.damping = Damping::Time(a);
+    }
+    let input = RingInput {
+        tau: args.tau,
+        orbit: args.orbit,
+        damping_set_for_radius: (radius != set_for && !scaled).then_some(set_for),
+    };
+    let rec = equilibrium(&scene, &input)?;
+    let p = rec.prediction();
+    let note = if scaled {
+        Some(format!(
+            "A scaled to {} s = A·R/R_set for R = {} m (A was set for {} m grains): this keeps \
+             ε_N(g) of the {} m grains and describes a different material",
+            output::num(rec.damping_time),
+            output::num(radius),
+            output::num(set_for),
+            output::num(set_for)
+        ))
+    } else {
+        rec.scaled_damping_time.map(|a2| {
+            format!(
+                "the scene's A = {} s was set for {} m grains; grains of {} m keep that ε_N(g) \
+                 with A' = {} s (--scale-damping), a different material",
+                output::num(rec.damping_time),
+                output::num(set_for),
+                output::num(radius),
+                output::num(a2)
+            )
+        })
+    };
+    let mut values: Vec<(String, Option<f64>, &str)> = vec![
+        ("tau".into(), Some(rec.tau), "1"),
+        ("omega".into(), Some(rec.omega), "1/s"),
+        ("radius".into(), Some(rec.radius), "m"),
+        ("eps_cr_dilute".into(), Some(rec.eps_cr), "1"),
+        ("eps_cr".into(), Some(p.eps_cr), "1"),
+        (
+            "velocity_dispersion".into(),
+            Some(p.velocity_dispersion),
+            "m/s",
+        ),
+        (
+            "velocity_dispersion_r_omega".into(),
+            Some(p.velocity_dispersion / (rec.radius * rec.omega)),
+            "1",
+        ),
+        ("thickness".into(), Some(p.thickness), "m"),
+        ("mean_impact_speed".into(), Some(p.mean_impact_speed), "m/s"),
+        ("eps_effective".into(), Some(p.eps_effective), "1"),
+        (
+            "equilibration_orbits".into(),
+            Some(p.equilibration_orbits),
+            "orbits",
+        ),
+        ("floor_dispersion".into(), Some(rec.floor_dispersion), "m/s"),
+        ("damping_time".into(), Some(rec.damping_time), "s"),
+        ("scaled_damping_time".into(), rec.scaled_damping_time, "s"),
+    ];
+    for (label, pred) in [("smooth", &rec.smooth), ("rough", &rec.rough)] {
+        let fields: [(&str, f64, &str); 7] = [
+            ("velocity_dispersion", pred.velocity_dispersion, "m/s"),
+            ("thickness", pred.thickness, "m"),
+            ("mean_impact_speed", pred.mean_impact_speed, "m/s"),
+            ("eps_effective", pred.eps_effective, "1"),
+            ("eps_cr", pred.eps_cr, "1"),
+            ("sticking_fraction", pred.sticking_fraction, "1"),
+            ("equilibration_orbits", pred.equilibration_orbits, "orbits"),
+        ];
+        for (k, v, u) in fields {
+            values.push((format!("{label}.{k}"), Some(v), u));
+        }
+    }
+    let verdicts = [
+        ("verdict", p.verdict.name()),
+        ("smooth.verdict", rec.smooth.verdict.name()),
+        ("rough.verdict", rec.rough.verdict.name()),
+        ("prediction", if rec.friction { "rough" } else { "smooth" }),
+    ];
+    Ok(match common.format {
+        Format::Json => {
+            use serde_json::{Map, Value};
+            let mut map = Map::new();
+            let mut nested: [(&str, Map<String, Value>); 2] =
+                [("smooth", Map::new()), ("rough", Map::new())];
+            for (k, v, _) in &values {
+                let value = v.map_or(Value::Null, Value::from);
+                match k.split_once('.') {
+                    Some((outer, inner)) => {
+                        if let Some((_, m)) = nested.iter_mut().find(|(n, _)| *n == outer) {
+                            m.insert(inner.to_string(), value);
+                        }
+                    }
+                    None => {
+                        map.insert(k.clone(), value);
+                    }
+                }
+            }
+            for (k, v) in verdicts {
+                match k.split_once('.') {
+                    Some((outer, inner)) => {
+                        if let Some((_, m)) = nested.iter_mut().find(|(n, _)| *n == outer) {
+                            m.insert(inner.to_string(), Value::from(v));
+                        }
+                    }
+                    None => {
+                        map.insert(k.to_string(), Value::from(v));
+                    }
+                }
+            }
+            for (n, m) in nested {
+                map.insert(n.to_string(), Value::Object(m));
+            }
+            map.insert("damping_note".into(), note.map_or(Value::Null, Value::from));
+            serde_json::to_string_pretty(&map).map_err(|e| CliError(e.to_string()))? + "\n"
+        }
+        Format::Csv => {
+            let mut s = String::from("name,value,unit\n");
+            for (k, v) in verdicts {
+                s.push_str(&format!("{k},{v},\n"));
+            }
+            for (k, v, u) in &values {
+                s.push_str(&format!(
+                    "{k},{},{u}\n",
+                    v.map(output::num).unwrap_or_default()
+                ));
+            }
+            if let Some(n) = &note {
+                s.push_str(&format!("damping_note,\"{}\",\n", n.replace('"', "'")));
+            }
+            s
+        }
+        Format::Table => {
+            let mut rows: Vec<Vec<String>> = verdicts
+                .iter()
+                .map(|(k, v)| vec![k.to_string(), v.to_string(), String::new()])
+                .collect();
+            rows.extend(values.iter().map(|(k, v, u)| {
+                vec![
+                    k.clone(),
+                    v.map(output::num).unwrap_or_else(|| "none".into()),
+                    u.to_string(),
+                ]
+            }));
+            let mut s = output::table(&["name", "value", "unit"], &rows);
+            if let Some(n) = note {
+                s.push_str(&format!("note: {n}\n"));
+            }
+            s.push_str(&summary(p, rec.radius * rec.omega));
+            s
+        }
+    })
+}
+
+fn summary(p: &Prediction, r_omega: f64) -> String {
+    format!(
+        "{}: c = {} m/s ({:.1} RΩ), H = {} m, mean impact speed {} m/s\n",
+        p.verdict.name(),
+        output::num(p.velocity_dispersion),
+        p.velocity_dispersion / r_omega,
+        output::num(p.thickness),
+        output::num(p.mean_impact_speed)
+    )
+}
