@@ -204,19 +204,20 @@ fn figure_json(pack: &mut Pack, fig: &Figure) -> Json {
         .map(|s| {
             let x: Vec<f64> = s.points.iter().map(|p| p.0).collect();
             let y: Vec<f64> = s.points.iter().map(|p| p.1).collect();
-            json!({"name": s.name, "color": s.color, "dashed": s.dashed,
+            json!({"name": s.name, "short": s.short, "color": s.color,
+                   "dashed": s.stroke.is_broken(), "stroke": s.stroke.name(),
                    "x": pack.f(&x), "y": pack.f(&y)})
         })
         .collect();
     let markers: Vec<Json> = fig
         .markers
         .iter()
-        .map(|m| json!({"x": m.x, "label": m.label, "color": m.color}))
+        .map(|m| json!({"x": m.x, "label": m.label, "short": m.short, "color": m.color}))
         .collect();
     let bands: Vec<Json> = fig
         .bands
         .iter()
-        .map(|b| json!({"x": [b.x.0, b.x.1], "y": [b.y.0, b.y.1], "label": b.label, "color": b.color}))
+        .map(|b| json!({"x": [b.x.0, b.x.1], "y": [b.y.0, b.y.1], "label": b.label, "short": b.short, "color": b.color}))
         .collect();
     json!({"name": fig.name, "title": fig.title, "caption": fig.caption, "x": axis(&fig.x),
            "y": axis(&fig.y), "series": series, "markers": markers, "bands": bands,

@@ -4,8 +4,10 @@
 use super::compute::{CURVE_POINTS, FrameData, MAP_POINTS, Request, SWEEPS, Sweep};
 use super::frame_export;
 use super::keymap::{self, Action};
+use super::view::plot::Colors;
 use crate::scene_io;
 use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseEvent, MouseEventKind};
+use rime_core::explorer::figures::Pinned;
 use rime_core::params::{Kind, PARAMETERS, Value};
 use rime_core::{Accuracy, Preset, Scene};
 use std::path::PathBuf;
@@ -131,6 +133,8 @@ pub struct App {
     pub cursor_at: Option<f64>,
     /// Where the last frame drew what the mouse can click (written by the renderer).
     pub drawn: std::cell::Cell<Drawn>,
+    /// The terminal's colours (24-bit, 16, or none with `NO_COLOR`).
+    pub colors: Colors,
 }
 
 /// The part of the state that undo and redo restore.
@@ -140,17 +144,6 @@ pub struct SceneState {
     pub scene: Scene,
     /// The preset it was chosen as, if any.
     pub preset: Option<usize>,
-}
-
-/// A pinned ε_N curve.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Pinned {
-    /// What the legend calls it (the swept parameter's value when it was pinned).
-    pub label: String,
-    /// Speeds \[m/s\].
-    pub g: Vec<f64>,
-    /// ε_N at those speeds (0 stuck, NaN unknown).
-    pub eps: Vec<f64>,
 }
 
 /// A yes/no question on the message line.
@@ -166,7 +159,7 @@ pub enum Confirm {
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Drawn {
     /// The chart's log speed axis.
-    pub chart_axis: Option<super::view::chart::LogAxis>,
+    pub chart_axis: Option<super::layout::LogAxis>,
     /// The stick map's grid cells: (x, y, width, height) in cells.
     pub map_plot: Option<ratatui::layout::Rect>,
     /// The parameter panel: first row of the list and index of the first parameter shown.
@@ -254,6 +247,7 @@ impl App {
             wrote_scene_file: false,
             cursor_at: None,
             drawn: std::cell::Cell::new(Drawn::default()),
+            colors: Colors::Rgb,
         };
         app.request();
         app
@@ -586,14 +580,7 @@ impl App {
         let view = rime_core::explorer::figures::View {
             y_log: self.y_log,
             experiments: self.experiments,
-            pinned: self
-                .pinned
-                .as_ref()
-                .map(|p| rime_core::explorer::figures::Pinned {
-                    label: p.label.clone(),
-                    g: p.g.clone(),
-                    eps: p.eps.clone(),
-                }),
+            pinned: self.pinned.clone(),
         };
         match frame_export::export(&self.out_dir, data, &view) {
             Ok(dir) => self.info(format!(
@@ -1097,7 +1084,7 @@ impl App {
             inside(layout.map)
         };
         let on_chart = inside(layout.chart) && !on_map;
-        let axis_speed = |axis: &super::view::chart::LogAxis| -> Option<f64> {
+        let axis_speed = |axis: &super::layout::LogAxis| -> Option<f64> {
             if axis.width == 0 || m.column < axis.x || m.column >= axis.x + axis.width {
                 return None;
             }
@@ -1105,7 +1092,7 @@ impl App {
             Some(10f64.powf(axis.lo + t * (axis.hi - axis.lo)))
         };
         let on_axis =
-            |axis: &super::view::chart::LogAxis| m.row == axis.axis_row || m.row == axis.label_row;
+            |axis: &super::layout::LogAxis| m.row == axis.axis_row || m.row == axis.label_row;
         let ctrl = m.modifiers.contains(KeyModifiers::CONTROL);
         match m.kind {
             MouseEventKind::Down(crossterm::event::MouseButton::Left) => {

@@ -97,6 +97,7 @@ fn event_loop(
     }
     drop(event_tx);
     let mut app = App::new(scene, accuracy);
+    app.colors = view::plot::Colors::from_env();
     let size = terminal.size()?;
     app.size = (size.width, size.height);
     loop {

@@ -1,5 +1,6 @@
 //! The stick map: one terminal cell per grid cell, the class letter on the class colour.
 
+use super::plot::Colors;
 use crate::explore::compute::FrameData;
 use crate::explore::format::{num3, qty3};
 use ratatui::buffer::Buffer;
@@ -10,14 +11,10 @@ use ratatui::widgets::{Block, Borders, Paragraph, Widget, Wrap};
 use rime_core::StickClass;
 use rime_core::explorer::palette;
 
-/// Colour of each stick-map class (the one palette, [`palette::class`]).
-pub fn class_color(c: StickClass) -> Color {
-    super::rgb(palette::class(c))
-}
-
-/// The letter colour on a class's cell (black or white, whichever reads better).
-fn class_ink(c: StickClass) -> Color {
-    super::rgb(palette::class(c).text_on())
+/// A class's cell: its colour ([`palette::class`]) with the letter colour that reads on it,
+/// through the one palette mapping ([`Colors`]).
+fn class_cell(c: StickClass, colors: Colors) -> Style {
+    colors.cell(palette::class(c))
 }
 
 /// Legend name of a class (the JSON name with spaces).
@@ -49,6 +46,7 @@ pub fn map(
     cursor: (usize, usize),
     focused: bool,
     shared: bool,
+    colors: Colors,
 ) -> Option<Rect> {
     let focus = focused;
     let mut title = vec![
@@ -81,7 +79,7 @@ pub fn map(
         .border_type(kind)
         .border_style(style)
         .title(Line::from(title))
-        .title_bottom(map_readout(data, cursor));
+        .title_bottom(map_readout(data, cursor, colors));
     let inner = block.inner(area);
     block.render(area, buf);
     let data = data?;
@@ -153,8 +151,7 @@ pub fn map(
             };
             if let Some(cell) = buf.cell_mut((px + c, py + r)) {
                 cell.set_char(class.letter())
-                    .set_fg(class_ink(class))
-                    .set_bg(class_color(class));
+                    .set_style(class_cell(class, colors));
             }
         }
     }
@@ -174,10 +171,7 @@ pub fn map(
         let mut spans = Vec::new();
         for c in StickClass::ALL {
             let artifact = super::help::class_meaning(c).1;
-            spans.push(Span::styled(
-                c.letter().to_string(),
-                Style::new().fg(class_ink(c)).bg(class_color(c)),
-            ));
+            spans.push(Span::styled(c.letter().to_string(), class_cell(c, colors)));
             let name = if artifact {
                 format!(
                     "\u{a0}{}\u{a0}(artifact) ",
@@ -213,12 +207,7 @@ pub fn map(
             if y >= inner.y + inner.height {
                 break;
             }
-            buf.set_string(
-                lx,
-                y,
-                format!("{}", c.letter()),
-                Style::new().fg(class_ink(*c)).bg(class_color(*c)),
-            );
+            buf.set_string(lx, y, format!("{}", c.letter()), class_cell(*c, colors));
             let artifact = super::help::class_meaning(*c).1;
             buf.set_stringn(
                 lx + 2,
@@ -257,7 +246,7 @@ pub fn map(
 }
 
 /// The map's readout at the cursor: speeds, ε_T and the class.
-fn map_readout(data: Option<&FrameData>, cursor: (usize, usize)) -> Line<'static> {
+fn map_readout(data: Option<&FrameData>, cursor: (usize, usize), colors: Colors) -> Line<'static> {
     let Some(m) = data.and_then(|d| d.map.as_ref()) else {
         return Line::default();
     };
@@ -280,7 +269,7 @@ fn map_readout(data: Option<&FrameData>, cursor: (usize, usize)) -> Line<'static
         )),
         Span::styled(
             format!("{} ", class_label(*class)),
-            Style::new().fg(class_color(*class)),
+            colors.fg(palette::class(*class)),
         ),
         Span::styled(
             if *class == StickClass::SlidingGap {

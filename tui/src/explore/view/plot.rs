@@ -1,0 +1,775 @@
+//! The one adapter from the core's figure descriptions ([`rime_core::figure::Figure`]) to the
+//! terminal: series by their role's colour and their stroke, bands, markers, axes with the core's
+//! ticks and labels, and the legend; and the one mapping of the palette to terminal colours
+//! ([`Colors::color`]), which degrades to the 16 ANSI colours and to none (`NO_COLOR`), where the
+//! strokes and marks carry every difference. What this draws is what `x` exports.
+
+use crate::explore::layout::LogAxis;
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::{Color, Modifier, Style};
+use ratatui::symbols::Marker as Dots;
+use ratatui::widgets::Widget;
+use ratatui::widgets::canvas::{Canvas, Line as CanvasLine};
+use rime_core::explorer::palette::{self, Rgb};
+use rime_core::figure::{Axis, Corner, Figure, Stroke};
+
+/// How many colours the terminal shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Colors {
+    /// 24-bit colour: the palette as it is.
+    #[default]
+    Rgb,
+    /// The 16 ANSI colours: each palette colour mapped to a fixed one.
+    Ansi16,
+    /// No colour (`NO_COLOR`, https://no-color.org): strokes and marks carry the differences.
+    None,
+}
+
+impl Colors {
+    /// What the environment asks for: none when `NO_COLOR` is set (and not empty), 24-bit when
+    /// `COLORTERM` says `truecolor`/`24bit` or `TERM` names a 256-colour or direct-colour terminal
+    /// (tmux and the common terminals map 24-bit colour there), else the 16 ANSI colours.
+    pub fn from_env() -> Colors {
+        let var = |k: &str| std::env::var(k).unwrap_or_default();
+        Colors::from_vars(&var("NO_COLOR"), &var("COLORTERM"), &var("TERM"))
+    }
+
+    /// [`Colors::from_env`] on given values (for tests).
+    pub fn from_vars(no_color: &str, colorterm: &str, term: &str) -> Colors {
+        if !no_color.is_empty() {
+            Colors::None
+        } else if matches!(colorterm, "truecolor" | "24bit")
+            || term.contains("256color")
+            || term.contains("direct")
+        {
+            Colors::Rgb
+        } else {
+            Colors::Ansi16
+        }
+    }
+
+    /// A palette colour on this terminal (`Color::Reset`, the terminal's own, without colour).
+    pub fn color(self, c: Rgb) -> Color {
+        match self {
+            Colors::Rgb => Color::Rgb(c.r, c.g, c.b),
+            Colors::None => Color::Reset,
+            Colors::Ansi16 => ansi16(c),
+        }
+    }
+
+    /// A style in palette colour `c`.
+    pub fn fg(self, c: Rgb) -> Style {
+        Style::new().fg(self.color(c))
+    }
+
+    /// A palette colour as a background, with the letter colour that reads on it.
+    pub fn cell(self, bg: Rgb) -> Style {
+        match self {
+            Colors::None => Style::new().add_modifier(Modifier::REVERSED),
+            _ => Style::new().fg(self.color(bg.text_on())).bg(self.color(bg)),
+        }
+    }
+}
+
+/// The 16-colour stand-in of each palette colour: fixed for the palette's hues (each hue its own
+/// ANSI colour), the nearest of the xterm defaults for any other.
+fn ansi16(c: Rgb) -> Color {
+    let fixed = [
+        (palette::ORANGE, Color::Yellow),
+        (palette::YELLOW, Color::LightYellow),
+        (palette::SKY_BLUE, Color::LightCyan),
+        (palette::BLUISH_GREEN, Color::Green),
+        (palette::BLUE, Color::Blue),
+        (palette::VERMILLION, Color::Red),
+        (palette::REDDISH_PURPLE, Color::Magenta),
+        (palette::GREY_LIGHT, Color::Gray),
+        (palette::GREY_DARK, Color::DarkGray),
+        (palette::WHITE, Color::White),
+        (palette::BLACK, Color::Black),
+    ];
+    if let Some((_, a)) = fixed.iter().find(|(p, _)| *p == c) {
+        return *a;
+    }
+    let xterm = [
+        (Rgb::hex(0x000000), Color::Black),
+        (Rgb::hex(0xCD0000), Color::Red),
+        (Rgb::hex(0x00CD00), Color::Green),
+        (Rgb::hex(0xCDCD00), Color::Yellow),
+        (Rgb::hex(0x0000EE), Color::Blue),
+        (Rgb::hex(0xCD00CD), Color::Magenta),
+        (Rgb::hex(0x00CDCD), Color::Cyan),
+        (Rgb::hex(0xE5E5E5), Color::Gray),
+        (Rgb::hex(0x7F7F7F), Color::DarkGray),
+        (Rgb::hex(0xFF0000), Color::LightRed),
+        (Rgb::hex(0x00FF00), Color::LightGreen),
+        (Rgb::hex(0xFFFF00), Color::LightYellow),
+        (Rgb::hex(0x5C5CFF), Color::LightBlue),
+        (Rgb::hex(0xFF00FF), Color::LightMagenta),
+        (Rgb::hex(0x00FFFF), Color::LightCyan),
+        (Rgb::hex(0xFFFFFF), Color::White),
+    ];
+    let d = |a: Rgb| {
+        let s = |x: u8, y: u8| (i32::from(x) - i32::from(y)).pow(2);
+        s(a.r, c.r) + s(a.g, c.g) + s(a.b, c.b)
+    };
+    xterm
+        .iter()
+        .min_by_key(|(p, _)| d(*p))
+        .map_or(Color::Reset, |(_, a)| *a)
+}
+
+/// A series' colour: its role in the one palette.
+pub fn series_rgb(index: usize) -> Rgb {
+    palette::SERIES[index % palette::SERIES.len()]
+}
+
+/// The legend's sample of a stroke.
+pub fn swatch(stroke: Stroke) -> &'static str {
+    match stroke {
+        Stroke::Solid => "━━",
+        Stroke::Dashed => "╍╍",
+        Stroke::Dotted => "┈┈",
+        Stroke::Points => "×",
+    }
+}
+
+/// Marks that tell series apart without colour (drawn along a line that shares its stroke with
+/// another series).
+const TAGS: [char; 10] = ['○', '△', '□', '◇', '▽', '☆', '+', '*', '#', '%'];
+
+/// How the figure is drawn.
+#[derive(Debug, Clone, Copy)]
+pub struct Options {
+    /// The terminal's colours.
+    pub colors: Colors,
+    /// A vertical cursor at this x value.
+    pub cursor: Option<f64>,
+    /// Most rows the legend may take above the plot when it does not fit inside it.
+    pub legend_rows: u16,
+    /// The series drawn bold (this scene's curve).
+    pub bold: Option<usize>,
+}
+
+/// One legend entry.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Entry {
+    /// Swatch (stroke sample, band or marker glyph, and the tag without colour).
+    pub swatch: String,
+    /// The core's short label.
+    pub text: String,
+    /// Its colour.
+    pub rgb: Rgb,
+    /// Further members of a group, each its value and colour (`η* = 500 Pa s  1 kPa s  2 kPa s`:
+    /// series whose labels share `symbol = ` and a stroke).
+    pub more: Vec<(String, Rgb)>,
+}
+
+impl Entry {
+    /// Width in cells.
+    pub fn width(&self) -> usize {
+        self.swatch.chars().count()
+            + 1
+            + self.text.chars().count()
+            + self
+                .more
+                .iter()
+                .map(|(t, _)| 1 + t.chars().count())
+                .sum::<usize>()
+    }
+}
+
+/// The legend of `fig`, most telling first (a short legend drops the end): this scene, the
+/// pinned curve, the markers, the comparisons, the other series in draw order, the bands.
+pub fn legend(fig: &Figure, tags: &[Option<char>]) -> Vec<Entry> {
+    let rank = |i: usize| {
+        let s = &fig.series[i];
+        if s.color == palette::SERIES_SCENE && s.stroke == Stroke::Solid {
+            0
+        } else if s.color == palette::SERIES_PINNED {
+            1
+        } else if s.stroke == Stroke::Dotted {
+            2
+        } else {
+            3
+        }
+    };
+    let mut order: Vec<usize> = (0..fig.series.len()).collect();
+    order.sort_by_key(|&i| rank(i));
+    let lead = order.iter().take_while(|&&i| rank(i) < 2).count();
+    let entry = |i: usize| {
+        let s = &fig.series[i];
+        let tag = tags.get(i).copied().flatten();
+        Entry {
+            swatch: match tag {
+                Some(t) => format!("{}{t}", swatch(s.stroke)),
+                None => swatch(s.stroke).to_string(),
+            },
+            text: s.short.clone(),
+            rgb: series_rgb(s.color),
+            more: Vec::new(),
+        }
+    };
+    // Consecutive series of one stroke labelled `symbol = value` share one entry (without colour
+    // each keeps its own, tagged, entry).
+    let group = |entries: Vec<Entry>| -> Vec<Entry> {
+        let mut out: Vec<Entry> = Vec::new();
+        for e in entries {
+            let prefix = |t: &str| t.split_once(" = ").map(|(p, _)| p.to_string());
+            if let Some(last) = out.last_mut()
+                && last.swatch == e.swatch
+                && prefix(&last.text).is_some()
+                && prefix(&last.text) == prefix(&e.text)
+                && let Some((_, value)) = e.text.split_once(" = ")
+            {
+                last.more.push((value.to_string(), e.rgb));
+                continue;
+            }
+            out.push(e);
+        }
+        out
+    };
+    let mut out: Vec<Entry> = order.iter().take(lead).map(|&i| entry(i)).collect();
+    out.extend(fig.markers.iter().map(|m| Entry {
+        swatch: "┊".to_string(),
+        text: m.short.clone(),
+        rgb: series_rgb(m.color),
+        more: Vec::new(),
+    }));
+    let bands = fig.bands.iter().map(|b| Entry {
+        swatch: "▭".to_string(),
+        text: b.short.clone(),
+        rgb: series_rgb(b.color),
+        more: Vec::new(),
+    });
+    // With comparisons, their ranges (bands) follow their laws; else the bands come last.
+    let compared = order.iter().filter(|&&i| rank(i) == 2).count();
+    out.extend(order.iter().skip(lead).take(compared).map(|&i| entry(i)));
+    if compared > 0 {
+        out.extend(bands.clone());
+    }
+    out.extend(group(
+        order
+            .iter()
+            .skip(lead + compared)
+            .map(|&i| entry(i))
+            .collect(),
+    ));
+    if compared == 0 {
+        out.extend(bands);
+    }
+    out
+}
+
+/// Where a figure went on screen.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Drawn {
+    /// The graph's cells (inside the axes).
+    pub graph: Rect,
+    /// The x axis in drawing units (log₁₀ on a log axis), for mouse hits.
+    pub x_axis: LogAxis,
+}
+
+/// `v` in drawing units (log₁₀ on a log axis).
+fn unit(axis: &Axis, v: f64) -> Option<f64> {
+    if axis.log {
+        (v > 0.0 && v.is_finite()).then(|| v.log10())
+    } else {
+        v.is_finite().then_some(v)
+    }
+}
+
+/// The row of `v` on a graph of `rows` rows from `top`, as ratatui's canvas draws it (four dots a
+/// cell, rounded): tick labels sit on the row their value is drawn on.
+fn row_of(v: f64, lo: f64, hi: f64, top: u16, rows: u16) -> Option<u16> {
+    let dots = f64::from(rows) * 4.0 - 1.0;
+    let d = ((hi - v) * dots / (hi - lo)).round();
+    (d >= 0.0 && d <= dots).then(|| top + (d as u16) / 4)
+}
+
+/// Splits a polyline (drawing units) into the pieces a stroke draws: dashes of two cells with a
+/// one-cell gap, dots of half a cell every cell and a half, or the whole line.
+fn pieces(pts: &[(f64, f64)], stroke: Stroke, scale: (f64, f64)) -> Vec<((f64, f64), (f64, f64))> {
+    let (on, off) = match stroke {
+        Stroke::Dashed => (2.0, 1.0),
+        Stroke::Dotted => (0.5, 1.0),
+        _ => (f64::INFINITY, 0.0),
+    };
+    let mut out = Vec::new();
+    let mut phase = 0.0;
+    for w in pts.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        // Length in cells (a cell is about twice as tall as wide: y counts double).
+        let len = ((b.0 - a.0) * scale.0).hypot((b.1 - a.1) * scale.1 * 2.0);
+        if !len.is_finite() || len == 0.0 {
+            continue;
+        }
+        let mut s = 0.0;
+        while s < len {
+            let in_on = phase < on;
+            let left = if in_on { on - phase } else { on + off - phase };
+            let step = left.min(len - s);
+            if in_on {
+                let (t0, t1) = (s / len, (s + step) / len);
+                let p = |t: f64| (a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t);
+                out.push((p(t0), p(t1)));
+            }
+            s += step;
+            phase += step;
+            if phase >= on + off {
+                phase = 0.0;
+            }
+        }
+    }
+    out
+}
+
+/// The tags of series that share a stroke with another (only without colour: with colour, colour
+/// and stroke tell every pair apart).
+pub fn tags(fig: &Figure, colors: Colors) -> Vec<Option<char>> {
+    let mut next = 0;
+    fig.series
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let shared = fig
+                .series
+                .iter()
+                .enumerate()
+                .any(|(j, t)| j != i && t.stroke == s.stroke);
+            if colors == Colors::None && shared && s.stroke != Stroke::Points {
+                let t = TAGS[next % TAGS.len()];
+                next += 1;
+                Some(t)
+            } else {
+                None
+            }
+        })
+        .collect()
+}
+
+/// Lays out legend entries in rows of at most `width` cells; entries that do not fit in `rows`
+/// rows are counted, not drawn.
+fn flow(entries: &[Entry], width: u16, rows: u16) -> (Vec<Vec<usize>>, usize) {
+    let mut lines: Vec<Vec<usize>> = vec![Vec::new()];
+    let mut used = 0usize;
+    let mut left_out = 0;
+    for (k, e) in entries.iter().enumerate() {
+        let w = e.width() + 2;
+        if used > 0 && used + w > width as usize {
+            if lines.len() as u16 >= rows {
+                left_out = entries.len() - k;
+                break;
+            }
+            lines.push(Vec::new());
+            used = 0;
+        }
+        if let Some(l) = lines.last_mut() {
+            l.push(k);
+        }
+        used += w;
+    }
+    (lines, left_out)
+}
+
+fn put_entry(buf: &mut Buffer, x: u16, y: u16, e: &Entry, max_x: u16, colors: Colors) -> u16 {
+    let style = colors.fg(e.rgb);
+    let mut x = x;
+    for (text, st) in [
+        (e.swatch.as_str(), style),
+        (" ", Style::new()),
+        (e.text.as_str(), style),
+    ] {
+        if x >= max_x {
+            break;
+        }
+        let (nx, _) = buf.set_stringn(x, y, text, (max_x - x) as usize, st);
+        x = nx;
+    }
+    for (text, rgb) in &e.more {
+        if x + 1 >= max_x {
+            break;
+        }
+        let (nx, _) = buf.set_stringn(x + 1, y, text, (max_x - x - 1) as usize, colors.fg(*rgb));
+        x = nx;
+    }
+    x
+}
+
+/// Draws `fig` in `area`: the legend (inside the graph in the corner the core picks when it fits
+/// there, else in rows above), the y axis title, the graph with its axes, ticks and labels.
+pub fn draw(buf: &mut Buffer, area: Rect, fig: &Figure, opts: &Options) -> Option<Drawn> {
+    if area.width < 12 || area.height < 5 {
+        return None;
+    }
+    let colors = opts.colors;
+    let tags = tags(fig, colors);
+    let entries = legend(fig, &tags);
+    let axis_style = Style::new().fg(Color::Gray);
+    let dim = Style::new().fg(Color::DarkGray);
+    let (Some(x_lo), Some(x_hi), Some(y_lo), Some(y_hi)) = (
+        unit(&fig.x, fig.x.min),
+        unit(&fig.x, fig.x.max),
+        unit(&fig.y, fig.y.min),
+        unit(&fig.y, fig.y.max),
+    ) else {
+        return None;
+    };
+
+    // Rows: [legend rows above] [y title] graph… [x axis] [x labels]; the x title goes at the
+    // right end of the label row.
+    let legend_w: u16 = entries.iter().map(|e| e.width() as u16).max().unwrap_or(0) + 1;
+    // Axis titles get rows of their own on tall plots; else the x title shares the labels' row
+    // (as much of its end as fits) and the pane's title names the y axis.
+    let title_row = area.height >= 24;
+    let x_title_row = area.height >= 16;
+    // The y labels' width: the widest label of the ticks that fit.
+    let rough_rows = area
+        .height
+        .saturating_sub(3 + u16::from(title_row) + u16::from(x_title_row));
+    let y_ticks = fig.y.ticks(usize::from((rough_rows / 3).max(3)));
+    let y_label_w = y_ticks
+        .iter()
+        .filter_map(|t| t.label.as_ref())
+        .map(|l| l.chars().count() as u16)
+        .max()
+        .unwrap_or(1);
+    let graph_x = area.x + y_label_w + 1;
+    let graph_w = area.right().saturating_sub(graph_x);
+    // Inside the graph when it covers at most a third of its width and half its rows.
+    let inside = !entries.is_empty()
+        && legend_w <= graph_w / 3 + 4
+        && (entries.len() as u16) <= rough_rows / 2;
+    let (above, left_out) = if inside || entries.is_empty() {
+        (Vec::new(), 0)
+    } else {
+        flow(&entries, area.width, opts.legend_rows.max(1))
+    };
+    let above_rows = above.len() as u16;
+    let top = area.y + above_rows + u16::from(title_row);
+    let axis_row = area.bottom().checked_sub(2 + u16::from(x_title_row))?;
+    if axis_row <= top + 1 || graph_w < 4 {
+        return None;
+    }
+    let graph = Rect::new(graph_x, top, graph_w, axis_row - top);
+
+    // Legend above.
+    for (r, line) in above.iter().enumerate() {
+        let y = area.y + r as u16;
+        let mut x = area.x;
+        for &k in line {
+            x = put_entry(buf, x, y, &entries[k], area.right(), colors) + 2;
+        }
+        if r + 1 == above.len() && left_out > 0 {
+            buf.set_stringn(
+                x,
+                y,
+                format!("+{left_out} more (x exports all)"),
+                area.right().saturating_sub(x) as usize,
+                dim,
+            );
+        }
+    }
+    if title_row {
+        buf.set_stringn(
+            area.x,
+            area.y + above_rows,
+            &fig.y.label,
+            area.width as usize,
+            axis_style,
+        );
+    }
+
+    // The graph: bands, series, markers, cursor, each in its own layer (later on top).
+    let scale = (
+        f64::from(graph.width) / (x_hi - x_lo),
+        f64::from(graph.height) / (y_hi - y_lo),
+    );
+    let clip = |v: f64, lo: f64, hi: f64| v.clamp(lo, hi);
+    let marks: std::cell::RefCell<Vec<(f64, f64, char, Rgb)>> = std::cell::RefCell::default();
+    let canvas = Canvas::default()
+        .marker(Dots::Braille)
+        .x_bounds([x_lo, x_hi])
+        .y_bounds([y_lo, y_hi])
+        .paint(|ctx| {
+            for b in &fig.bands {
+                let (Some(x0), Some(x1), Some(b0), Some(b1)) = (
+                    unit(&fig.x, b.x.0),
+                    unit(&fig.x, b.x.1),
+                    unit(&fig.y, b.y.0),
+                    unit(&fig.y, b.y.1),
+                ) else {
+                    continue;
+                };
+                let (x0, x1) = (clip(x0, x_lo, x_hi), clip(x1, x_lo, x_hi));
+                let (y0, y1) = (clip(b0, y_lo, y_hi), clip(b1, y_lo, y_hi));
+                let color = colors.color(series_rgb(b.color));
+                for (a, c) in [
+                    ((x0, y0), (x1, y0)),
+                    ((x1, y0), (x1, y1)),
+                    ((x1, y1), (x0, y1)),
+                    ((x0, y1), (x0, y0)),
+                ] {
+                    ctx.draw(&CanvasLine::new(a.0, a.1, c.0, c.1, color));
+                }
+                ctx.layer();
+            }
+            for (i, s) in fig.series.iter().enumerate() {
+                let color = colors.color(series_rgb(s.color));
+                // Runs of drawable points (a NaN, or a value off a log axis, breaks the line).
+                let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
+                for &(x, y) in &s.points {
+                    match (unit(&fig.x, x), unit(&fig.y, y)) {
+                        (Some(x), Some(y)) if x >= x_lo && x <= x_hi => {
+                            if let Some(r) = runs.last_mut() {
+                                r.push((x, y.clamp(y_lo, y_hi)));
+                            }
+                        }
+                        _ => runs.push(Vec::new()),
+                    }
+                }
+                if s.stroke == Stroke::Points {
+                    for r in &runs {
+                        for &(x, y) in r {
+                            marks.borrow_mut().push((x, y, '×', series_rgb(s.color)));
+                        }
+                    }
+                } else {
+                    for r in &runs {
+                        for (a, b) in pieces(r, s.stroke, scale) {
+                            ctx.draw(&CanvasLine::new(a.0, a.1, b.0, b.1, color));
+                        }
+                    }
+                    // Without colour, a tag every dozen cells along the line.
+                    if let Some(t) = tags.get(i).copied().flatten() {
+                        let every = 12.0 / scale.0;
+                        let mut next = x_lo + every * (0.3 + 0.1 * i as f64);
+                        for r in &runs {
+                            for &(x, y) in r {
+                                if x >= next {
+                                    marks.borrow_mut().push((x, y, t, series_rgb(s.color)));
+                                    next = x + every;
+                                }
+                            }
+                        }
+                    }
+                }
+                ctx.layer();
+            }
+            for m in &fig.markers {
+                if let Some(x) = unit(&fig.x, m.x).filter(|x| *x > x_lo && *x < x_hi) {
+                    let color = colors.color(series_rgb(m.color));
+                    for (a, b) in pieces(&[(x, y_lo), (x, y_hi)], Stroke::Dashed, scale) {
+                        ctx.draw(&CanvasLine::new(a.0, a.1, b.0, b.1, color));
+                    }
+                }
+            }
+            ctx.layer();
+            if let Some(x) = opts.cursor.and_then(|c| unit(&fig.x, c)) {
+                ctx.draw(&CanvasLine::new(x, y_lo, x, y_hi, Color::White));
+            }
+        });
+    canvas.render(graph, buf);
+    // The scene's curve bold: its cells, in its colour.
+    if let Some(k) = opts.bold
+        && let Some(s) = fig.series.get(k)
+        && colors != Colors::None
+    {
+        let c = colors.color(series_rgb(s.color));
+        for y in graph.top()..graph.bottom() {
+            for x in graph.left()..graph.right() {
+                if let Some(cell) = buf.cell_mut((x, y))
+                    && cell.fg == c
+                {
+                    cell.modifier.insert(Modifier::BOLD);
+                }
+            }
+        }
+    }
+    for (x, y, ch, rgb) in marks.into_inner() {
+        let col = graph.x as f64
+            + ((x - x_lo) * (f64::from(graph.width) * 2.0 - 1.0) / (x_hi - x_lo)).round() / 2.0;
+        if let Some(row) = row_of(y, y_lo, y_hi, graph.y, graph.height)
+            && let Some(cell) = buf.cell_mut((col as u16, row))
+        {
+            cell.set_char(ch).set_style(colors.fg(rgb));
+        }
+    }
+
+    // Axes: the y line with its ticks, the x line with its ticks, the labels at their values.
+    for y in graph.top()..axis_row {
+        buf.set_string(graph.x - 1, y, "│", axis_style);
+    }
+    buf.set_string(graph.x - 1, axis_row, "└", axis_style);
+    for x in graph.left()..graph.right() {
+        buf.set_string(x, axis_row, "─", axis_style);
+    }
+    let y_budget = usize::from((graph.height / 3).max(3));
+    let mut taken_rows: Vec<u16> = Vec::new();
+    for t in fig.y.ticks(y_budget) {
+        let (Some(v), Some(label)) = (unit(&fig.y, t.value), t.label) else {
+            continue;
+        };
+        let Some(row) = row_of(v, y_lo, y_hi, graph.y, graph.height) else {
+            continue;
+        };
+        if taken_rows.contains(&row) {
+            continue;
+        }
+        taken_rows.push(row);
+        let w = label.chars().count() as u16;
+        buf.set_string(
+            graph.x - 1 - w.min(graph.x - 1 - area.x),
+            row,
+            &label,
+            axis_style,
+        );
+        buf.set_string(graph.x - 1, row, "┤", axis_style);
+    }
+    let x_axis = LogAxis {
+        x: graph.x,
+        width: graph.width,
+        axis_row,
+        label_row: axis_row + 1,
+        left: area.x,
+        lo: x_lo,
+        hi: x_hi,
+    };
+    // x labels: as many as fit with a gap of two cells, from the core's ticks.
+    let label_row = axis_row + 1;
+    let widest = 5.0;
+    let x_budget = (f64::from(graph.width) / (widest + 2.0)).floor().max(2.0) as usize;
+    let ticks = fig.x.ticks(x_budget);
+    let per_unit = f64::from(graph.width) / (x_hi - x_lo);
+    let mut taken: Vec<(u16, u16)> = Vec::new();
+    for t in &ticks {
+        let Some(v) = unit(&fig.x, t.value) else {
+            continue;
+        };
+        let Some(c) = x_axis.column(v) else {
+            continue;
+        };
+        let minor_room = per_unit >= 12.0
+            || (per_unit >= 5.0 && {
+                let m = t.value / 10f64.powf(v.floor());
+                (m - 2.0).abs() < 1e-6 || (m - 5.0).abs() < 1e-6
+            });
+        match &t.label {
+            Some(label) => {
+                buf.set_string(c, axis_row, "┼", axis_style);
+                let w = label.chars().count() as u16;
+                let start = c.saturating_sub(w / 2).max(area.x);
+                let free = start + w <= area.right()
+                    && taken.iter().all(|(a, b)| start + w < *a || start > *b);
+                if free {
+                    buf.set_string(start, label_row, label, axis_style);
+                    taken.push((start, start + w));
+                }
+            }
+            // Minor ticks where a decade has room for them: all of 2…9, or 2 and 5.
+            None if minor_room
+                && buf
+                    .cell((c, axis_row))
+                    .is_some_and(|cell| cell.symbol() == "─") =>
+            {
+                buf.set_string(c, axis_row, "┴", dim);
+            }
+            None => {}
+        }
+    }
+    // The x title at the right end of the label row, where it does not cover a label.
+    let title = &fig.x.label;
+    let tw = title.chars().count() as u16;
+    if x_title_row {
+        let start = area.right().saturating_sub(tw).max(area.x);
+        buf.set_stringn(start, label_row + 1, title, area.width as usize, axis_style);
+    } else {
+        // The longest end of the title (whole words: `g_N [m/s]`) right of the last label.
+        let free_from = taken.iter().map(|(_, b)| *b + 2).max().unwrap_or(area.x);
+        let room = area.right().saturating_sub(free_from) as usize;
+        let words: Vec<&str> = title.split(' ').collect();
+        if let Some(tail) = (0..words.len())
+            .map(|k| words[k..].join(" "))
+            .find(|t| t.chars().count() <= room)
+        {
+            let start = area.right() - tail.chars().count() as u16;
+            buf.set_string(start, label_row, &tail, axis_style);
+        }
+    }
+
+    // Legend inside the graph, in the corner the core picks.
+    if inside {
+        let h = entries.len() as u16;
+        let corner = fig.legend_corner(
+            (f64::from(graph.width), f64::from(graph.height)),
+            (f64::from(legend_w + 1), f64::from(h)),
+        );
+        let x = match corner {
+            Corner::TopLeft | Corner::BottomLeft => graph.x + 1,
+            Corner::TopRight | Corner::BottomRight => graph.right().saturating_sub(legend_w),
+        };
+        let y = match corner {
+            Corner::TopLeft | Corner::TopRight => graph.y,
+            Corner::BottomLeft | Corner::BottomRight => graph.bottom().saturating_sub(h),
+        };
+        for (k, e) in entries.iter().enumerate() {
+            let row = y + k as u16;
+            for cx in x.saturating_sub(1)..graph.right().min(x + legend_w) {
+                if let Some(cell) = buf.cell_mut((cx, row)) {
+                    cell.reset();
+                }
+            }
+            put_entry(buf, x, row, e, graph.right(), colors);
+        }
+    }
+    Some(Drawn { graph, x_axis })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn no_color_and_16_colours_follow_the_environment() {
+        assert_eq!(
+            Colors::from_vars("1", "truecolor", "xterm-256color"),
+            Colors::None
+        );
+        assert_eq!(Colors::from_vars("", "truecolor", "xterm"), Colors::Rgb);
+        assert_eq!(Colors::from_vars("", "", "tmux-256color"), Colors::Rgb);
+        assert_eq!(Colors::from_vars("", "", "xterm"), Colors::Ansi16);
+        assert_eq!(Colors::from_vars("", "", "linux"), Colors::Ansi16);
+    }
+
+    #[test]
+    fn every_palette_hue_keeps_its_own_ansi_colour() {
+        let hues = [
+            palette::ORANGE,
+            palette::YELLOW,
+            palette::SKY_BLUE,
+            palette::BLUISH_GREEN,
+            palette::BLUE,
+            palette::VERMILLION,
+            palette::REDDISH_PURPLE,
+            palette::GREY_LIGHT,
+            palette::GREY_DARK,
+        ];
+        for (i, a) in hues.iter().enumerate() {
+            for b in &hues[i + 1..] {
+                assert_ne!(ansi16(*a), ansi16(*b), "{a:?} and {b:?}");
+            }
+        }
+        assert_eq!(Colors::None.color(palette::ORANGE), Color::Reset);
+    }
+
+    #[test]
+    fn dashes_alternate_on_and_off() {
+        // A horizontal line 10 cells long: dashes of 2 cells, gaps of 1 → 4 dashes (2+1+2+1+2+1+1).
+        let p = pieces(&[(0.0, 0.0), (10.0, 0.0)], Stroke::Dashed, (1.0, 1.0));
+        assert_eq!(p.len(), 4, "{p:?}");
+        assert_eq!(p[0], ((0.0, 0.0), (2.0, 0.0)));
+        assert_eq!(p[1], ((3.0, 0.0), (5.0, 0.0)));
+        let solid = pieces(&[(0.0, 0.0), (10.0, 0.0)], Stroke::Solid, (1.0, 1.0));
+        assert_eq!(solid, [((0.0, 0.0), (10.0, 0.0))]);
+    }
+}
