@@ -225,8 +225,56 @@ pub struct Request {
     pub overlays: Vec<Overlay>,
 }
 
+/// The comparisons a surface cycles through (the terminal's `c`): nothing, the measured laws and
+/// ranges of the data atlas (each only over the speeds it was measured at, with the scene's rms
+/// score), the other collision models on the same grains (with their characteristic speeds).
+pub const COMPARISONS: [(&str, &[&str]); 3] = [
+    ("no comparison", &[]),
+    (
+        "measured ice",
+        &[
+            "atlas:bridges1984",
+            "atlas:hatzes1988_frost",
+            "atlas:supulver1995",
+            "atlas:heisselmann2010",
+            "atlas:hill2015",
+        ],
+    ),
+    (
+        "other models",
+        &[
+            "model:brilliantov2007",
+            "model:muller_poschel2011",
+            "model:thornton1997",
+        ],
+    ),
+];
+
+/// The overlays of comparison `set` ([`COMPARISONS`]) for `scene`: thornton1997 only where the
+/// scene has the plasticity section it needs (elsewhere it is left out, not an error).
+pub fn comparison(set: usize, scene: &Scene) -> Vec<Overlay> {
+    COMPARISONS
+        .get(set)
+        .map(|(_, keys)| {
+            keys.iter()
+                .filter_map(|k| Overlay::parse(k).ok())
+                .filter(|o| {
+                    !matches!(o, Overlay::Model(crate::models::Model::Thornton1997))
+                        || scene.plasticity.is_some()
+                })
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
 impl Request {
-    /// The default view of a scene at an accuracy: 241 points on the chart's decades, an 81×81 map.
+    /// Points per ε_N curve of the default view.
+    pub const POINTS: usize = 241;
+    /// Stick-map side of the default view (`MAP_N²` cells).
+    pub const MAP_N: usize = 81;
+
+    /// The default view of a scene at an accuracy: [`Request::POINTS`] points on the chart's
+    /// decades, a [`Request::MAP_N`]² map.
     pub fn new(scene: Scene, accuracy: Accuracy) -> Request {
         Request {
             scene,
@@ -234,9 +282,9 @@ impl Request {
             sweep: None,
             family: true,
             speeds: None,
-            points: 241,
+            points: Request::POINTS,
             map_max: None,
-            map_n: 81,
+            map_n: Request::MAP_N,
             fail: Vec::new(),
             overlays: Vec::new(),
         }
@@ -387,6 +435,40 @@ pub struct Frame {
     pub overlays: Vec<OverlayCurve>,
     /// Parts that failed.
     pub errors: Vec<PartError>,
+}
+
+impl Frame {
+    /// This scene's result at speed index `i` (`None` in a gap or without a curve).
+    pub fn point(&self, i: usize) -> Option<Normal> {
+        self.curve.as_ref()?.points.get(i).copied().flatten()
+    }
+
+    /// The stick map, when there is one.
+    pub fn stick_map(&self) -> Option<&StickMap> {
+        self.map.as_ref()?.map.as_ref()
+    }
+
+    /// Upper end of the stick map's axes \[m/s\], when there is a map part.
+    pub fn map_max(&self) -> Option<f64> {
+        self.map.as_ref().map(|m| m.max)
+    }
+
+    /// The first problem, in one line: the scene's own error when the contact cannot be derived
+    /// (a surface shows it in place of the curves), else `part: message`.
+    pub fn problem(&self) -> Option<String> {
+        self.errors.first().map(|e| {
+            if e.part == "scene" {
+                e.message.clone()
+            } else {
+                format!("{}: {}", e.part, e.message)
+            }
+        })
+    }
+
+    /// Notes to show beside the views (a map range cut to the speed limit).
+    pub fn notes(&self) -> Option<&'static str> {
+        self.map.as_ref()?.auto.as_ref()?.note()
+    }
 }
 
 fn part_error(part: impl Into<String>, message: impl Into<String>) -> PartError {

@@ -278,7 +278,7 @@ fn stale_results_are_dropped() {
 #[test]
 fn cancelled_computation_returns_nothing() {
     let app = App::new(Preset::IceFrost.scene(), Accuracy::Fast);
-    let req = app.pending.expect("request");
+    let req = app.pending.clone().expect("request");
     assert!(compute(&req, &|| true).is_none());
 }
 
@@ -369,7 +369,7 @@ fn export_writes_csvs_and_scene() {
         curve[0],
         "g_n [m/s],eps_n,status,t_c [s],xi_max [m],error_estimate"
     );
-    assert_eq!(curve.len(), 1 + super::compute::CURVE_POINTS);
+    assert_eq!(curve.len(), 1 + rime_core::explorer::frame::Request::POINTS);
     let family = data("eps_family.csv");
     assert!(
         family[0].starts_with("g_n [m/s],eps_n,eps_n clean surfaces,eps_n [η* = 500 Pa s]"),
@@ -837,7 +837,7 @@ fn collision_panel_follows_the_cursor_and_its_ledger_closes_issue_13() {
         Event::Key(KeyEvent::new(KeyCode::Up, KeyModifiers::NONE)),
     );
     let (g3, _) = app.inside.clone().expect("still open");
-    let map = app.data.as_ref().and_then(|d| d.map.as_ref()).expect("map");
+    let map = app.data.as_ref().and_then(|d| d.stick_map()).expect("map");
     assert_eq!(g3, map.g[app.map_cursor.0]);
     update(&mut app, ch('i'));
     assert!(app.inside.is_none());
@@ -873,7 +873,7 @@ fn compare_key_overlays_measured_ice_then_other_models_issues_15_16() {
     assert!(model.speeds.iter().any(|(n, g)| *n == "g_cr" && *g > 0.0));
     assert_eq!(model.g, data.g);
     // No plasticity section in the preset: thornton1997 is left out, not an error.
-    assert!(data.error.is_none(), "{:?}", data.error);
+    assert!(data.problem().is_none(), "{:?}", data.problem());
     update(&mut app, ch('c'));
     assert_eq!(app.overlay_set, 0);
 }
@@ -1013,7 +1013,7 @@ fn stick_classes_explained_gap_is_an_artifact_walton_one_key_issue_12_item_6() {
     }
     assert!(help.contains("an artifact of the printed law, not a regime"));
     let gaps = |app: &App| {
-        let m = app.data.as_ref().and_then(|d| d.map.as_ref()).expect("map");
+        let m = app.data.as_ref().and_then(|d| d.stick_map()).expect("map");
         m.class
             .iter()
             .filter(|c| **c == StickClass::SlidingGap)
@@ -1034,7 +1034,11 @@ fn stick_classes_explained_gap_is_an_artifact_walton_one_key_issue_12_item_6() {
     );
     // The readout at a gap cell says so.
     settle(&mut app);
-    let m = app.data.as_ref().and_then(|d| d.map.clone()).expect("map");
+    let m = app
+        .data
+        .as_ref()
+        .and_then(|d| d.stick_map().cloned())
+        .expect("map");
     let k = m
         .class
         .iter()
@@ -1214,7 +1218,7 @@ fn mouse_clicks_focus_select_and_place_cursors_issue_12_item_11() {
     assert_eq!(app.map_cursor, (80, 80));
     // `+` zooms the map in (range halves), `-` out.
     settle(&mut app);
-    let before = app.data.as_ref().expect("data").map_max;
+    let before = app.data.as_ref().and_then(|d| d.map_max()).expect("data");
     update(&mut app, ch('+'));
     assert!((app.map_max.expect("set") - before / 2.0).abs() < 1e-12 * before);
     update(&mut app, ch('-'));
@@ -1251,13 +1255,13 @@ fn y_axis_toggle_and_speed_zoom_pan_issue_12_item_4() {
     );
     // Zoom in around the cursor: half the decades, in the request, computed.
     app.focus = Focus::Chart;
-    let (lo, hi) = super::compute::auto_speeds(app.data.as_ref().expect("data"));
+    let (lo, hi) = super::compute::auto_speeds(app.data.as_deref().expect("data"));
     let g = app.data.as_ref().expect("data").g[app.cursor];
     update(&mut app, ch('+'));
     let (zlo, zhi) = app.speeds.expect("zoomed");
     assert!(((zhi / zlo).log10() - (hi / lo).log10() / 2.0).abs() < 1e-9);
     assert_eq!(
-        app.pending.as_ref().and_then(|r| r.speeds),
+        app.pending.as_ref().and_then(|r| r.request.speeds),
         Some((zlo, zhi))
     );
     settle(&mut app);
@@ -1287,7 +1291,7 @@ fn y_axis_toggle_and_speed_zoom_pan_issue_12_item_4() {
     assert_eq!(app.speeds, None);
     settle(&mut app);
     assert_eq!(
-        super::compute::auto_speeds(app.data.as_ref().expect("data")),
+        super::compute::auto_speeds(app.data.as_deref().expect("data")),
         (lo, hi)
     );
 }

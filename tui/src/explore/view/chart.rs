@@ -3,7 +3,7 @@
 //! readout.
 
 use super::plot::{self, Colors};
-use crate::explore::compute::{FrameData, Sweep};
+use crate::explore::compute::{Computed, Sweep};
 use crate::explore::format::{num3, qty3};
 use crate::explore::layout::LogAxis;
 use ratatui::Frame;
@@ -30,7 +30,7 @@ pub fn status_text(s: Status) -> &'static str {
 #[derive(Debug, Clone, Copy)]
 pub struct ChartView<'a> {
     /// The latest frame (None before the first one).
-    pub data: Option<&'a FrameData>,
+    pub data: Option<&'a Computed>,
     /// The swept parameter of the family of curves.
     pub sweep: Sweep,
     /// Cursor: index into the curve speeds.
@@ -50,7 +50,7 @@ pub struct ChartView<'a> {
 }
 
 /// The figure this chart shows: the core's, for the same view `x` exports.
-pub fn figure(data: &FrameData, app: &ChartView) -> rime_core::figure::Figure {
+pub fn figure(data: &Computed, app: &ChartView) -> rime_core::figure::Figure {
     let view = figures::View {
         y_log: app.y_log,
         experiments: app.experiments,
@@ -78,12 +78,12 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) -> Option<LogAxis> 
                 format!("{axis_word} axis ")
             } else {
                 let sweep = app.sweep;
-                match app.data.filter(|d| sweep.available(&d.scene)) {
+                match app.data.filter(|d| sweep.available(&d.request.scene)) {
                     Some(d) => {
                         let value = format!(
                             "this scene: {} {}",
                             sweep.symbol,
-                            qty3(sweep.current(&d.scene), sweep.unit)
+                            qty3(sweep.current(&d.request.scene), sweep.unit)
                         );
                         // What the family is, where the title has room for it.
                         let long = figures::family_meaning(&d.frame)
@@ -119,7 +119,7 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) -> Option<LogAxis> 
     if inner.height < 4 {
         return None;
     }
-    if let Some(e) = &data.error
+    if let Some(e) = data.problem()
         && data.contact.is_none()
     {
         frame.render_widget(
@@ -154,7 +154,12 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) -> Option<LogAxis> 
             .any(|(_, e)| e.is_finite() && (!fig.y.log || *e > 0.0))
     });
     if !shown {
-        let msg = match data.current.iter().flatten().next().map(|n| n.status) {
+        let first = data
+            .curve
+            .iter()
+            .flat_map(|c| c.points.iter().flatten())
+            .next();
+        let msg = match first.map(|n| n.status) {
             Some(Status::Overdamped) => "overdamped everywhere: ε_N below the plotted range",
             Some(Status::StuckInLayer | Status::StuckByAdhesion) => "stuck at every speed shown",
             _ => "no rebound to plot",
@@ -175,7 +180,7 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) -> Option<LogAxis> 
 }
 
 /// The chart's readout at the cursor: speed, ε_N, status, contact time and δ.
-fn chart_readout(data: Option<&FrameData>, cursor: usize, colors: Colors) -> Line<'static> {
+fn chart_readout(data: Option<&Computed>, cursor: usize, colors: Colors) -> Line<'static> {
     let Some(data) = data else {
         return Line::default();
     };
@@ -186,7 +191,7 @@ fn chart_readout(data: Option<&FrameData>, cursor: usize, colors: Colors) -> Lin
         Span::styled(" ▸ ", Style::new().fg(Color::White)),
         Span::raw(format!("{}  ", qty3(g, "m/s"))),
     ];
-    match data.current.get(cursor).copied().flatten() {
+    match data.point(cursor) {
         Some(n) => {
             let eps = match n.status {
                 Status::StuckInLayer | Status::StuckByAdhesion => "0".to_string(),

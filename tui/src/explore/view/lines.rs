@@ -1,7 +1,7 @@
 //! The one-line views: derived quantities, status (accuracy, timing, warnings), message or input.
 
 use crate::explore::app::{Confirm, LineInput, SCENE_FILE, Tone};
-use crate::explore::compute::FrameData;
+use crate::explore::compute::Computed;
 use crate::explore::format::{num3, qty3};
 use ratatui::style::{Color, Style};
 use ratatui::text::{Line, Span};
@@ -11,13 +11,13 @@ use rime_core::{Accuracy, Scene, Status};
 use std::time::Duration;
 
 /// The derived quantities of the frame's contact (δ at the chart cursor when there is room).
-pub fn derived_line(data: Option<&FrameData>, cursor: usize, width: u16) -> Line<'static> {
+pub fn derived_line(data: Option<&Computed>, cursor: usize, width: u16) -> Line<'static> {
     let Some(data) = data else {
         return Line::from("computing…");
     };
     let Some(c) = data.contact.as_ref() else {
         return Line::from(Span::styled(
-            data.error.clone().unwrap_or_default(),
+            data.problem().unwrap_or_default(),
             Style::new().fg(Color::Red),
         ));
     };
@@ -85,7 +85,7 @@ pub struct StatusView<'a> {
     /// Accuracy level.
     pub accuracy: Accuracy,
     /// The latest frame.
-    pub data: Option<&'a FrameData>,
+    pub data: Option<&'a Computed>,
     /// Compute time to show instead of the measured one.
     pub elapsed: Option<Duration>,
     /// Whether a newer frame is being computed.
@@ -122,15 +122,15 @@ pub fn status_line(app: &StatusView, width: u16) -> Line<'static> {
     }
     let warn = Style::new().fg(Color::LightRed);
     if let Some(d) = app.data {
-        if let Some(Some(n)) = d.current.get(app.cursor)
+        if let Some(n) = d.point(app.cursor)
             && n.status == Status::Overdamped
         {
             spans.push(Span::styled("│ ⚠ overdamped at cursor ", warn));
         }
-        if let (Some(e), Some(_)) = (&d.error, &d.contact) {
+        if let (Some(e), Some(_)) = (d.problem(), &d.contact) {
             spans.push(Span::styled(format!("│ ⚠ {e} "), warn));
         }
-        for note in &d.notes {
+        if let Some(note) = d.notes() {
             spans.push(Span::styled(format!("│ {note} "), warn));
         }
     }

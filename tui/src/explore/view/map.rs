@@ -1,7 +1,7 @@
 //! The stick map: one terminal cell per grid cell, the class letter on the class colour.
 
 use super::plot::Colors;
-use crate::explore::compute::FrameData;
+use crate::explore::compute::Computed;
 use crate::explore::format::{num3, qty3};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -42,7 +42,7 @@ pub fn legend_label(c: StickClass, w: usize) -> String {
 pub fn map(
     buf: &mut Buffer,
     area: Rect,
-    data: Option<&FrameData>,
+    data: Option<&Computed>,
     cursor: (usize, usize),
     focused: bool,
     shared: bool,
@@ -83,8 +83,8 @@ pub fn map(
     let inner = block.inner(area);
     block.render(area, buf);
     let data = data?;
-    let Some(m) = data.map.as_ref() else {
-        let text = if data.scene.friction.is_none() {
+    let Some(m) = data.stick_map() else {
+        let text = if data.request.scene.friction.is_none() {
             "friction is off: no tangential restitution (select 'friction', press Enter)"
         } else {
             "no stick map"
@@ -100,7 +100,7 @@ pub fn map(
         return None;
     }
     let legend_w: u16 = if inner.width >= 60 { 24 } else { 20 };
-    let max_label = qty3(data.map_max, "m/s");
+    let max_label = qty3(data.map_max().unwrap_or(1.0), "m/s");
     let axis_w: u16 = (max_label.chars().count() as u16 + 1).max(6);
     let show_legend = inner.width >= axis_w + legend_w + 12;
     let plot_w = inner.width - axis_w - if show_legend { legend_w + 1 } else { 0 };
@@ -246,8 +246,8 @@ pub fn map(
 }
 
 /// The map's readout at the cursor: speeds, ε_T and the class.
-fn map_readout(data: Option<&FrameData>, cursor: (usize, usize), colors: Colors) -> Line<'static> {
-    let Some(m) = data.and_then(|d| d.map.as_ref()) else {
+fn map_readout(data: Option<&Computed>, cursor: (usize, usize), colors: Colors) -> Line<'static> {
+    let Some(m) = data.and_then(|d| d.stick_map()) else {
         return Line::default();
     };
     let n = m.n();
