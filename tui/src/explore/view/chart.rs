@@ -145,6 +145,7 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) -> Option<LogAxis> 
             2
         },
         bold,
+        y_title: false,
     };
     let drawn = plot::draw(frame.buffer_mut(), inner, &fig, &opts)?;
     // Nothing of this scene on the axis: say why rather than show an empty chart.

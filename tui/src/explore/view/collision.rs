@@ -119,6 +119,7 @@ pub fn render(frame: &mut Frame, area: Rect, view: &CollisionView) {
         cursor: None,
         legend_rows: 2,
         bold: None,
+        y_title: true,
     };
     for (fig, area) in figs.iter().zip([left, right]) {
         plot::draw(frame.buffer_mut(), area, fig, &opts);

@@ -149,6 +149,9 @@ pub struct Options {
     pub legend_rows: u16,
     /// The series drawn bold (this scene's curve).
     pub bold: Option<usize>,
+    /// Whether the y axis' title gets a row above the graph at any height (else only on tall
+    /// plots: the ε_N chart's pane title names its axis).
+    pub y_title: bool,
 }
 
 /// One legend entry.
@@ -421,7 +424,7 @@ pub fn draw(buf: &mut Buffer, area: Rect, fig: &Figure, opts: &Options) -> Optio
     let legend_w: u16 = entries.iter().map(|e| e.width() as u16).max().unwrap_or(0) + 1;
     // Axis titles get rows of their own on tall plots; else the x title shares the labels' row
     // (as much of its end as fits) and the pane's title names the y axis.
-    let title_row = area.height >= 24;
+    let title_row = area.height >= 24 || (opts.y_title && area.height >= 8);
     let x_title_row = area.height >= 16;
     // The y labels' width: the widest label of the ticks that fit.
     let rough_rows = area
