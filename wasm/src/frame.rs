@@ -316,7 +316,18 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
         .map(|m| json!({"key": m.key, "label": m.label, "value": m.value}))
         .collect();
     out.insert("critical".into(), Json::from(critical));
-    out.insert("warnings".into(), Json::from(f.warnings.clone()));
+    // The core's warnings: their sentences, and each with its short text, help and equation.
+    let texts: Vec<String> = f.warnings.iter().map(|w| w.text()).collect();
+    out.insert("warnings".into(), Json::from(texts));
+    let details: Vec<Json> = f
+        .warnings
+        .iter()
+        .map(|w| {
+            json!({"key": w.key(), "short": w.short(), "text": w.text(), "help": w.help(),
+                   "equation": w.equation()})
+        })
+        .collect();
+    out.insert("warningDetails".into(), Json::from(details));
     let map = match &f.map {
         None => Json::Null,
         Some(part) => {

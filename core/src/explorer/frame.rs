@@ -12,9 +12,7 @@ use super::range::{MapRange, auto_map_range, chart_decades};
 use crate::normal::{Normal, Status};
 use crate::params::Value;
 use crate::sweep::{StickMap, log_space};
-use crate::{
-    Accuracy, AdhesionModulus, Contact, ContactEnd, Damping, DampingFormula, LayerReading,
-};
+use crate::{Accuracy, Contact};
 use crate::{Scene, error::Error};
 use alloc::format;
 use alloc::string::String;
@@ -430,7 +428,7 @@ pub struct Frame {
     /// The stick map (`None` without friction).
     pub map: Option<MapPart>,
     /// Warnings about the scene (options that deviate from the paper, overdamped ranges).
-    pub warnings: Vec<String>,
+    pub warnings: Vec<super::warning::Warning>,
     /// The requested overlays that could be computed (the others are named in `errors`).
     pub overlays: Vec<OverlayCurve>,
     /// Parts that failed.
@@ -547,56 +545,6 @@ pub fn stick_threshold(contact: &Contact, accuracy: Accuracy) -> crate::Result<O
         }
     }
     Ok(Some(hi))
-}
-
-/// Warnings about the scene: overdamped collisions on the curve, and options that deviate from (or
-/// expose inconsistencies of) the paper.
-pub fn warnings(scene: &Scene, curve: Option<&Curve>, damping_time: Option<f64>) -> Vec<String> {
-    let mut w = Vec::new();
-    if let Some(c) = curve {
-        let over = c
-            .points
-            .iter()
-            .filter(|p| p.is_some_and(|n| n.status == Status::Overdamped))
-            .count();
-        if over > 0 {
-            let a = damping_time.map_or(String::from("?"), |a| format!("{a:.3e}"));
-            w.push(format!(
-                "overdamped: ε_N < 1e-9 over {} of the plotted range (A = {a} s); Eq. (4) never \
-                 sticks, the rebound is negligible (the stick map counts it as a rebound)",
-                if over == c.points.len() {
-                    "all"
-                } else {
-                    "part"
-                }
-            ));
-        }
-    }
-    if let Damping::Viscosities(v) = scene.bulk.damping
-        && v.formula == DampingFormula::AsPrinted
-    {
-        w.push(
-            "A formula as printed: the paper omits the factor (1−2ν) of Brilliantov et al.".into(),
-        );
-    }
-    if scene.contact_end == ContactEnd::ZeroOverlap {
-        w.push("contact end zero_overlap: Eq. (5) read literally, a tensile viscoelastic force acts while separating".into());
-    }
-    if scene
-        .layer
-        .is_some_and(|l| l.reading == LayerReading::Literal)
-    {
-        w.push("Eq. (8) literal reading: threshold ≈ 2 g_s and ε_N can exceed the clean value, contradicting the paper's text".into());
-    }
-    if scene
-        .adhesion
-        .is_some_and(|a| a.modulus == AdhesionModulus::Consistent)
-    {
-        w.push(
-            "adhesion modulus consistent: E = Y/(2(1−ν²)) instead of the printed Y/(1−ν²)".into(),
-        );
-    }
-    w
 }
 
 /// Points on an atlas law's measured speeds.
@@ -821,7 +769,14 @@ pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<Frame> {
         Ok(None) => {}
         Err(e) => frame.errors.push(part_error("marker \"sticks below\"", e)),
     }
-    frame.warnings = warnings(&scene, frame.curve.as_ref(), Some(contact.damping_time));
+    frame.warnings = super::warning::warnings(
+        &scene,
+        frame
+            .curve
+            .iter()
+            .flat_map(|c| c.points.iter().map(|p| p.map(|n| n.status))),
+        Some(contact.damping_time),
+    );
     for overlay in &req.overlays {
         if cancelled() {
             return None;

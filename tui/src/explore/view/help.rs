@@ -224,6 +224,19 @@ pub fn content(inner_w: usize) -> Vec<Line<'static>> {
         lines.extend(entry(name, keys, text, plain, gw, inner_w));
     }
     lines.push(Line::default());
+    // The core's warnings, as the status line names them (the page and the CLI say the same).
+    lines.push(heading("Warnings (status line)"));
+    let ww = rime_core::explorer::warning::Warning::ALL
+        .iter()
+        .map(|w| w.short().chars().count())
+        .max()
+        .unwrap_or(8)
+        .min(inner_w / 3);
+    for w in rime_core::explorer::warning::Warning::ALL {
+        let text = format!("{} ({})", w.help(), w.equation());
+        lines.extend(entry(w.short(), keys, &text, plain, ww, inner_w));
+    }
+    lines.push(Line::default());
     lines.push(heading("Sources"));
     for part in wrap(SOURCES, inner_w) {
         lines.push(Line::from(Span::styled(part, dim)));

@@ -92,7 +92,6 @@ pub fn render(app: &App, frame: &mut Frame) {
     );
     app.drawn.set(drawn);
     let status = lines::StatusView {
-        scene: &app.scene,
         accuracy: app.accuracy,
         data,
         elapsed: app.fixed_elapsed,
