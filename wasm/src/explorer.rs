@@ -89,6 +89,7 @@ pub fn tidal_json(scene: &Scene, input: Option<TidalInput>) -> Result<Json, Stri
     Ok(json!({
         "input": input,
         "result": r,
+        "verdict": {"holds": r.holds(), "margin": r.margin(), "text": r.verdict()},
         "paper": {"delta_f": q.delta_f, "surface_force": q.surface_force, "d_roche": q.d_roche,
                   "d_min": q.d_min, "r_max": q.r_max},
     }))
