@@ -451,7 +451,10 @@ pub fn overlays_json() -> String {
 pub fn classes_json() -> String {
     let list: Vec<Json> = StickClass::ALL
         .iter()
-        .map(|c| json!({"name": c.name(), "letter": c.letter().to_string(), "description": c.description()}))
+        .map(|c| {
+            json!({"name": c.name(), "letter": c.letter().to_string(), "label": c.label(),
+                        "description": c.description(), "meaning": c.meaning()})
+        })
         .collect();
     Json::from(list).to_string()
 }

@@ -386,7 +386,7 @@ pub fn collision_figures(
         "One collision at g_N = {}: ε_N = {}, {}.",
         speed_label(g),
         super::format::sig(t.eps_n, 4),
-        t.status.name()
+        t.status.label()
     );
     let overlap = Figure {
         name: "collision_overlap".to_string(),

@@ -16,16 +16,6 @@ use rime_core::explorer::figures::{self, Pinned};
 use rime_core::explorer::palette;
 use rime_core::figure::Stroke;
 
-/// Describes ε_N at one point for readouts: `0.3602 rebound`, `0 stuck in layer`.
-pub fn status_text(s: Status) -> &'static str {
-    match s {
-        Status::Rebound => "rebound",
-        Status::StuckInLayer => "stuck in layer",
-        Status::StuckByAdhesion => "stuck by adhesion",
-        Status::Overdamped => "overdamped",
-    }
-}
-
 /// What the ε_N chart shows.
 #[derive(Debug, Clone, Copy)]
 pub struct ChartView<'a> {
@@ -206,10 +196,7 @@ fn chart_readout(data: Option<&Computed>, cursor: usize, colors: Colors) -> Line
                 Status::Rebound => Color::Green,
                 _ => Color::Red,
             };
-            spans.push(Span::styled(
-                status_text(n.status),
-                Style::new().fg(st_color),
-            ));
+            spans.push(Span::styled(n.status.label(), Style::new().fg(st_color)));
             let t_c = if n.t_c.is_finite() {
                 qty3(n.t_c, "s")
             } else {

@@ -98,7 +98,7 @@ pub fn render(frame: &mut Frame, area: Rect, view: &CollisionView) {
             Span::raw(format!(
                 "ε_N {} {} · t_c {} · ξ_max {} │ ",
                 sig(t.eps_n, 4),
-                t.status.name(),
+                t.status.label(),
                 if t.t_c.is_finite() {
                     qty3(t.t_c, "s")
                 } else {

@@ -18,9 +18,9 @@ fn class_cell(c: StickClass, colors: Colors) -> Style {
     colors.cell(palette::class(c))
 }
 
-/// Legend name of a class (the JSON name with spaces).
+/// Legend name of a class (the core's words).
 pub fn class_label(c: StickClass) -> String {
-    c.name().replace('_', " ")
+    c.label().to_string()
 }
 
 /// The legend's name of a class, marking the artifact (`sliding gap: artifact`), within `w` cells.
