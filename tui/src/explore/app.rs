@@ -170,10 +170,6 @@ pub struct Drawn {
 /// Default file that `o` offers (the one `w` writes).
 pub const SCENE_FILE: &str = "rime-scene.json";
 
-/// The slowest and fastest speeds the chart's range may reach \[m/s\] (the core's speed limit).
-pub const SPEED_MIN: f64 = 1e-12;
-/// See [`SPEED_MIN`].
-pub const SPEED_MAX: f64 = 1e6;
 /// The narrowest speed range, in decades.
 pub const MIN_SPAN_DECADES: f64 = 0.25;
 
@@ -799,7 +795,7 @@ impl App {
                 } else {
                     shown / 2.0
                 };
-                self.map_max = Some(next.clamp(1e-9, 1e6));
+                self.map_max = Some(next.clamp(1e-9, rime_core::explorer::limits::SPEED_MAX));
                 self.info(format!(
                     "stick map range 0 … {}",
                     super::format::qty(next, "m/s")
@@ -955,6 +951,8 @@ impl App {
     /// Sets the chart's speed range (clamped to the core's limits, at least a quarter decade wide)
     /// and keeps the cursor on the same speed.
     fn set_speeds(&mut self, lo: f64, hi: f64) {
+        // The core's limits (the same the request's validation enforces).
+        use rime_core::explorer::limits::{SPEED_MAX, SPEED_MIN};
         let (min, max) = (SPEED_MIN.log10(), SPEED_MAX.log10());
         let span = (hi - lo).clamp(MIN_SPAN_DECADES, max - min);
         let lo = lo.clamp(min, max - span);
