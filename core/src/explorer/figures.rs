@@ -473,6 +473,42 @@ mod tests {
         }
     }
 
+    /// Issue 21: the y axis was not rescaled on zoom. The log axis' floor is a decade below the
+    /// smallest ε_N drawn over the speeds shown, so zooming to slow speeds (ε_N near 1) lifts it.
+    #[test]
+    fn the_log_axis_follows_a_zoom_issue_21() {
+        let scene = Preset::Ice.scene();
+        let view = View {
+            y_log: true,
+            ..View::default()
+        };
+        let full = eps_figure(&frame(scene), &view, "test");
+        let mut req = Request::new(scene, Accuracy::Fast);
+        req.points = 40;
+        req.map_n = 8;
+        req.speeds = Some((1e-6, 1e-4));
+        let zoomed_frame = compute(&req, &|| false).expect("not cancelled");
+        let zoomed = eps_figure(&zoomed_frame, &view, "test");
+        // The floor from the curves themselves: the smallest positive ε_N of every model curve.
+        let floor = |f: &Figure| {
+            let min = f
+                .series
+                .iter()
+                .flat_map(|s| s.points.iter().map(|p| p.1))
+                .filter(|e| e.is_finite() && *e > 0.0)
+                .fold(f64::INFINITY, f64::min);
+            crate::sweep::exact_decade((libm::floor(crate::math::log10(min)) as i32).clamp(-12, -1))
+        };
+        assert_eq!(zoomed.y.min, floor(&zoomed));
+        assert!(
+            zoomed.y.min > full.y.min,
+            "{} vs {}",
+            zoomed.y.min,
+            full.y.min
+        );
+        assert_eq!((zoomed.x.min, zoomed.x.max), (1e-6, 1e-4));
+    }
+
     #[test]
     fn the_y_axis_follows_the_view_issue_12() {
         let f = frame(Preset::IceSticky.scene());
