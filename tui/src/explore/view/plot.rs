@@ -399,96 +399,153 @@ fn put_entry(buf: &mut Buffer, x: u16, y: u16, e: &Entry, max_x: u16, colors: Co
     x
 }
 
+/// Where the parts of a figure go in its area.
+struct Frame {
+    /// The whole area.
+    area: Rect,
+    /// The graph's cells (inside the axes).
+    graph: Rect,
+    /// The x axis' row (the labels are on the next one, the title on the one after when
+    /// `x_title_row`).
+    axis_row: u16,
+    /// Whether the x title has a row of its own.
+    x_title_row: bool,
+    /// Whether the y title has a row above the graph.
+    y_title_row: bool,
+    /// Legend rows above the graph (indices into the entries) and how many entries did not fit.
+    above: (Vec<Vec<usize>>, usize),
+    /// Whether the legend goes inside the graph (where the core says).
+    inside: bool,
+    /// The legend's width in cells.
+    legend_w: u16,
+    /// The axes' ends in drawing units (log₁₀ on log axes): x lo, x hi, y lo, y hi.
+    bounds: (f64, f64, f64, f64),
+}
+
+impl Frame {
+    /// The rows: [legend rows above] [y title] graph… [x axis] [x labels] [x title]. Axis titles
+    /// get rows of their own on tall plots; else the x title shares the labels' row (as much of
+    /// its end as fits) and the pane's title names the y axis.
+    fn lay_out(area: Rect, fig: &Figure, entries: &[Entry], opts: &Options) -> Option<Frame> {
+        if area.width < 12 || area.height < 5 {
+            return None;
+        }
+        let bounds = (
+            unit(&fig.x, fig.x.min)?,
+            unit(&fig.x, fig.x.max)?,
+            unit(&fig.y, fig.y.min)?,
+            unit(&fig.y, fig.y.max)?,
+        );
+        let legend_w: u16 = entries.iter().map(|e| e.width() as u16).max().unwrap_or(0) + 1;
+        let y_title_row = area.height >= 24 || (opts.y_title && area.height >= 8);
+        let x_title_row = area.height >= 16;
+        // The y labels' width: the widest label of the ticks that fit.
+        let rough_rows = area
+            .height
+            .saturating_sub(3 + u16::from(y_title_row) + u16::from(x_title_row));
+        let y_label_w = fig
+            .y
+            .ticks(usize::from((rough_rows / 3).max(3)))
+            .iter()
+            .filter_map(|t| t.label.as_ref())
+            .map(|l| l.chars().count() as u16)
+            .max()
+            .unwrap_or(1);
+        let graph_x = area.x + y_label_w + 1;
+        let graph_w = area.right().saturating_sub(graph_x);
+        // Inside the graph when it covers at most a third of its width and half its rows.
+        let inside = !entries.is_empty()
+            && legend_w <= graph_w / 3 + 4
+            && (entries.len() as u16) <= rough_rows / 2;
+        let above = if inside || entries.is_empty() {
+            (Vec::new(), 0)
+        } else {
+            flow(entries, area.width, opts.legend_rows.max(1))
+        };
+        let top = area.y + above.0.len() as u16 + u16::from(y_title_row);
+        let axis_row = area.bottom().checked_sub(2 + u16::from(x_title_row))?;
+        if axis_row <= top + 1 || graph_w < 4 {
+            return None;
+        }
+        Some(Frame {
+            area,
+            graph: Rect::new(graph_x, top, graph_w, axis_row - top),
+            axis_row,
+            x_title_row,
+            y_title_row,
+            above,
+            inside,
+            legend_w,
+            bounds,
+        })
+    }
+
+    /// The x axis as drawn (for mouse hits and tick columns).
+    fn x_axis(&self) -> LogAxis {
+        LogAxis {
+            x: self.graph.x,
+            width: self.graph.width,
+            axis_row: self.axis_row,
+            label_row: self.axis_row + 1,
+            left: self.area.x,
+            lo: self.bounds.0,
+            hi: self.bounds.1,
+        }
+    }
+}
+
+const AXIS: Style = Style::new().fg(Color::Gray);
+const DIM: Style = Style::new().fg(Color::DarkGray);
+
 /// Draws `fig` in `area`: the legend (inside the graph in the corner the core picks when it fits
 /// there, else in rows above), the y axis title, the graph with its axes, ticks and labels.
 pub fn draw(buf: &mut Buffer, area: Rect, fig: &Figure, opts: &Options) -> Option<Drawn> {
-    if area.width < 12 || area.height < 5 {
-        return None;
-    }
-    let colors = opts.colors;
-    let tags = tags(fig, colors);
+    let tags = tags(fig, opts.colors);
     let entries = legend(fig, &tags);
-    let axis_style = Style::new().fg(Color::Gray);
-    let dim = Style::new().fg(Color::DarkGray);
-    let (Some(x_lo), Some(x_hi), Some(y_lo), Some(y_hi)) = (
-        unit(&fig.x, fig.x.min),
-        unit(&fig.x, fig.x.max),
-        unit(&fig.y, fig.y.min),
-        unit(&fig.y, fig.y.max),
-    ) else {
-        return None;
-    };
-
-    // Rows: [legend rows above] [y title] graph… [x axis] [x labels]; the x title goes at the
-    // right end of the label row.
-    let legend_w: u16 = entries.iter().map(|e| e.width() as u16).max().unwrap_or(0) + 1;
-    // Axis titles get rows of their own on tall plots; else the x title shares the labels' row
-    // (as much of its end as fits) and the pane's title names the y axis.
-    let title_row = area.height >= 24 || (opts.y_title && area.height >= 8);
-    let x_title_row = area.height >= 16;
-    // The y labels' width: the widest label of the ticks that fit.
-    let rough_rows = area
-        .height
-        .saturating_sub(3 + u16::from(title_row) + u16::from(x_title_row));
-    let y_ticks = fig.y.ticks(usize::from((rough_rows / 3).max(3)));
-    let y_label_w = y_ticks
-        .iter()
-        .filter_map(|t| t.label.as_ref())
-        .map(|l| l.chars().count() as u16)
-        .max()
-        .unwrap_or(1);
-    let graph_x = area.x + y_label_w + 1;
-    let graph_w = area.right().saturating_sub(graph_x);
-    // Inside the graph when it covers at most a third of its width and half its rows.
-    let inside = !entries.is_empty()
-        && legend_w <= graph_w / 3 + 4
-        && (entries.len() as u16) <= rough_rows / 2;
-    let (above, left_out) = if inside || entries.is_empty() {
-        (Vec::new(), 0)
-    } else {
-        flow(&entries, area.width, opts.legend_rows.max(1))
-    };
-    let above_rows = above.len() as u16;
-    let top = area.y + above_rows + u16::from(title_row);
-    let axis_row = area.bottom().checked_sub(2 + u16::from(x_title_row))?;
-    if axis_row <= top + 1 || graph_w < 4 {
-        return None;
+    let f = Frame::lay_out(area, fig, &entries, opts)?;
+    legend_above(buf, &f, &entries, opts.colors);
+    if f.y_title_row {
+        let y = area.y + f.above.0.len() as u16;
+        buf.set_stringn(area.x, y, &fig.y.label, area.width as usize, AXIS);
     }
-    let graph = Rect::new(graph_x, top, graph_w, axis_row - top);
+    graph(buf, &f, fig, opts, &tags);
+    y_axis(buf, &f, fig);
+    x_axis(buf, &f, fig);
+    if f.inside {
+        legend_inside(buf, &f, fig, &entries, opts.colors);
+    }
+    Some(Drawn {
+        graph: f.graph,
+        x_axis: f.x_axis(),
+    })
+}
 
-    // Legend above.
-    for (r, line) in above.iter().enumerate() {
-        let y = area.y + r as u16;
-        let mut x = area.x;
+/// The legend's rows above the graph, with a count of what did not fit.
+fn legend_above(buf: &mut Buffer, f: &Frame, entries: &[Entry], colors: Colors) {
+    let (rows, left_out) = &f.above;
+    for (r, line) in rows.iter().enumerate() {
+        let y = f.area.y + r as u16;
+        let mut x = f.area.x;
         for &k in line {
-            x = put_entry(buf, x, y, &entries[k], area.right(), colors) + 2;
+            x = put_entry(buf, x, y, &entries[k], f.area.right(), colors) + 2;
         }
-        if r + 1 == above.len() && left_out > 0 {
-            buf.set_stringn(
-                x,
-                y,
-                format!("+{left_out} more (x exports all)"),
-                area.right().saturating_sub(x) as usize,
-                dim,
-            );
+        if r + 1 == rows.len() && *left_out > 0 {
+            let room = f.area.right().saturating_sub(x) as usize;
+            buf.set_stringn(x, y, format!("+{left_out} more (x exports all)"), room, DIM);
         }
     }
-    if title_row {
-        buf.set_stringn(
-            area.x,
-            area.y + above_rows,
-            &fig.y.label,
-            area.width as usize,
-            axis_style,
-        );
-    }
+}
 
-    // The graph: bands, series, markers, cursor, each in its own layer (later on top).
+/// The graph: bands, series (by stroke), markers and the cursor, each in its own canvas layer
+/// (later on top); this scene's curve bold; point marks and tags over it.
+fn graph(buf: &mut Buffer, f: &Frame, fig: &Figure, opts: &Options, tags: &[Option<char>]) {
+    let (x_lo, x_hi, y_lo, y_hi) = f.bounds;
+    let colors = opts.colors;
+    let g = f.graph;
     let scale = (
-        f64::from(graph.width) / (x_hi - x_lo),
-        f64::from(graph.height) / (y_hi - y_lo),
+        f64::from(g.width) / (x_hi - x_lo),
+        f64::from(g.height) / (y_hi - y_lo),
     );
-    let clip = |v: f64, lo: f64, hi: f64| v.clamp(lo, hi);
     let marks: std::cell::RefCell<Vec<(f64, f64, char, Rgb)>> = std::cell::RefCell::default();
     let canvas = Canvas::default()
         .marker(Dots::Braille)
@@ -504,38 +561,21 @@ pub fn draw(buf: &mut Buffer, area: Rect, fig: &Figure, opts: &Options) -> Optio
                 ) else {
                     continue;
                 };
-                let (x0, x1) = (clip(x0, x_lo, x_hi), clip(x1, x_lo, x_hi));
-                let (y0, y1) = (clip(b0, y_lo, y_hi), clip(b1, y_lo, y_hi));
+                let (x0, x1) = (x0.clamp(x_lo, x_hi), x1.clamp(x_lo, x_hi));
+                let (y0, y1) = (b0.clamp(y_lo, y_hi), b1.clamp(y_lo, y_hi));
                 let color = colors.color(series_rgb(b.color));
-                for (a, c) in [
-                    ((x0, y0), (x1, y0)),
-                    ((x1, y0), (x1, y1)),
-                    ((x1, y1), (x0, y1)),
-                    ((x0, y1), (x0, y0)),
-                ] {
-                    ctx.draw(&CanvasLine::new(a.0, a.1, c.0, c.1, color));
+                let corners = [(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)];
+                for w in corners.windows(2) {
+                    ctx.draw(&CanvasLine::new(w[0].0, w[0].1, w[1].0, w[1].1, color));
                 }
                 ctx.layer();
             }
             for (i, s) in fig.series.iter().enumerate() {
                 let color = colors.color(series_rgb(s.color));
-                // Runs of drawable points (a NaN, or a value off a log axis, breaks the line).
-                let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
-                for &(x, y) in &s.points {
-                    match (unit(&fig.x, x), unit(&fig.y, y)) {
-                        (Some(x), Some(y)) if x >= x_lo && x <= x_hi => {
-                            if let Some(r) = runs.last_mut() {
-                                r.push((x, y.clamp(y_lo, y_hi)));
-                            }
-                        }
-                        _ => runs.push(Vec::new()),
-                    }
-                }
+                let runs = runs(fig, s, f.bounds);
                 if s.stroke == Stroke::Points {
-                    for r in &runs {
-                        for &(x, y) in r {
-                            marks.borrow_mut().push((x, y, '×', series_rgb(s.color)));
-                        }
+                    for &(x, y) in runs.iter().flatten() {
+                        marks.borrow_mut().push((x, y, '×', series_rgb(s.color)));
                     }
                 } else {
                     for r in &runs {
@@ -547,12 +587,10 @@ pub fn draw(buf: &mut Buffer, area: Rect, fig: &Figure, opts: &Options) -> Optio
                     if let Some(t) = tags.get(i).copied().flatten() {
                         let every = 12.0 / scale.0;
                         let mut next = x_lo + every * (0.3 + 0.1 * i as f64);
-                        for r in &runs {
-                            for &(x, y) in r {
-                                if x >= next {
-                                    marks.borrow_mut().push((x, y, t, series_rgb(s.color)));
-                                    next = x + every;
-                                }
+                        for &(x, y) in runs.iter().flatten() {
+                            if x >= next {
+                                marks.borrow_mut().push((x, y, t, series_rgb(s.color)));
+                                next = x + every;
                             }
                         }
                     }
@@ -572,48 +610,66 @@ pub fn draw(buf: &mut Buffer, area: Rect, fig: &Figure, opts: &Options) -> Optio
                 ctx.draw(&CanvasLine::new(x, y_lo, x, y_hi, Color::White));
             }
         });
-    canvas.render(graph, buf);
+    canvas.render(g, buf);
     // The scene's curve bold: its cells, in its colour.
-    if let Some(k) = opts.bold
-        && let Some(s) = fig.series.get(k)
+    if let Some(s) = opts.bold.and_then(|k| fig.series.get(k))
         && colors != Colors::None
     {
         let c = colors.color(series_rgb(s.color));
-        for y in graph.top()..graph.bottom() {
-            for x in graph.left()..graph.right() {
-                if let Some(cell) = buf.cell_mut((x, y))
-                    && cell.fg == c
-                {
-                    cell.modifier.insert(Modifier::BOLD);
-                }
+        for (x, y) in (g.top()..g.bottom()).flat_map(|y| (g.left()..g.right()).map(move |x| (x, y)))
+        {
+            if let Some(cell) = buf.cell_mut((x, y))
+                && cell.fg == c
+            {
+                cell.modifier.insert(Modifier::BOLD);
             }
         }
     }
     for (x, y, ch, rgb) in marks.into_inner() {
-        let col = graph.x as f64
-            + ((x - x_lo) * (f64::from(graph.width) * 2.0 - 1.0) / (x_hi - x_lo)).round() / 2.0;
-        if let Some(row) = row_of(y, y_lo, y_hi, graph.y, graph.height)
+        let col = f64::from(g.x)
+            + ((x - x_lo) * (f64::from(g.width) * 2.0 - 1.0) / (x_hi - x_lo)).round() / 2.0;
+        if let Some(row) = row_of(y, y_lo, y_hi, g.y, g.height)
             && let Some(cell) = buf.cell_mut((col as u16, row))
         {
             cell.set_char(ch).set_style(colors.fg(rgb));
         }
     }
+}
 
-    // Axes: the y line with its ticks, the x line with its ticks, the labels at their values.
-    for y in graph.top()..axis_row {
-        buf.set_string(graph.x - 1, y, "│", axis_style);
+/// A series' runs of drawable points in drawing units (a NaN, or a value off a log axis or off
+/// the x range, breaks the line); y clamped to the axis.
+fn runs(
+    fig: &Figure,
+    s: &rime_core::figure::Series,
+    (x_lo, x_hi, y_lo, y_hi): (f64, f64, f64, f64),
+) -> Vec<Vec<(f64, f64)>> {
+    let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
+    for &(x, y) in &s.points {
+        match (unit(&fig.x, x), unit(&fig.y, y)) {
+            (Some(x), Some(y)) if x >= x_lo && x <= x_hi => {
+                if let Some(r) = runs.last_mut() {
+                    r.push((x, y.clamp(y_lo, y_hi)));
+                }
+            }
+            _ => runs.push(Vec::new()),
+        }
     }
-    buf.set_string(graph.x - 1, axis_row, "└", axis_style);
-    for x in graph.left()..graph.right() {
-        buf.set_string(x, axis_row, "─", axis_style);
+    runs
+}
+
+/// The y axis line and its labelled ticks, each label on the row its value is drawn on.
+fn y_axis(buf: &mut Buffer, f: &Frame, fig: &Figure) {
+    let (g, area) = (f.graph, f.area);
+    let (_, _, y_lo, y_hi) = f.bounds;
+    for y in g.top()..f.axis_row {
+        buf.set_string(g.x - 1, y, "│", AXIS);
     }
-    let y_budget = usize::from((graph.height / 3).max(3));
     let mut taken_rows: Vec<u16> = Vec::new();
-    for t in fig.y.ticks(y_budget) {
+    for t in fig.y.ticks(usize::from((g.height / 3).max(3))) {
         let (Some(v), Some(label)) = (unit(&fig.y, t.value), t.label) else {
             continue;
         };
-        let Some(row) = row_of(v, y_lo, y_hi, graph.y, graph.height) else {
+        let Some(row) = row_of(v, y_lo, y_hi, g.y, g.height) else {
             continue;
         };
         if taken_rows.contains(&row) {
@@ -621,37 +677,33 @@ pub fn draw(buf: &mut Buffer, area: Rect, fig: &Figure, opts: &Options) -> Optio
         }
         taken_rows.push(row);
         let w = label.chars().count() as u16;
-        buf.set_string(
-            graph.x - 1 - w.min(graph.x - 1 - area.x),
-            row,
-            &label,
-            axis_style,
-        );
-        buf.set_string(graph.x - 1, row, "┤", axis_style);
+        buf.set_string(g.x - 1 - w.min(g.x - 1 - area.x), row, &label, AXIS);
+        buf.set_string(g.x - 1, row, "┤", AXIS);
     }
-    let x_axis = LogAxis {
-        x: graph.x,
-        width: graph.width,
-        axis_row,
-        label_row: axis_row + 1,
-        left: area.x,
-        lo: x_lo,
-        hi: x_hi,
-    };
-    // x labels: as many as fit with a gap of two cells, from the core's ticks.
+}
+
+/// The x axis line, its ticks (major labelled, minor where a decade has room), the labels that
+/// fit, and the axis title (a row of its own, else as much of its end as fits).
+fn x_axis(buf: &mut Buffer, f: &Frame, fig: &Figure) {
+    let (g, area, axis_row) = (f.graph, f.area, f.axis_row);
+    let axis = f.x_axis();
+    buf.set_string(g.x - 1, axis_row, "└", AXIS);
+    for x in g.left()..g.right() {
+        buf.set_string(x, axis_row, "─", AXIS);
+    }
     let label_row = axis_row + 1;
-    let widest = 5.0;
-    let x_budget = (f64::from(graph.width) / (widest + 2.0)).floor().max(2.0) as usize;
-    let ticks = fig.x.ticks(x_budget);
-    let per_unit = f64::from(graph.width) / (x_hi - x_lo);
+    // As many labels as fit with a gap of two cells (labels are up to five wide).
+    let x_budget = (f64::from(g.width) / 7.0).floor().max(2.0) as usize;
+    let per_unit = f64::from(g.width) / (axis.hi - axis.lo);
     let mut taken: Vec<(u16, u16)> = Vec::new();
-    for t in &ticks {
+    for t in &fig.x.ticks(x_budget) {
         let Some(v) = unit(&fig.x, t.value) else {
             continue;
         };
-        let Some(c) = x_axis.column(v) else {
+        let Some(c) = axis.column(v) else {
             continue;
         };
+        // Minor ticks where a decade has room for them: all of 2…9, or 2 and 5.
         let minor_room = per_unit >= 12.0
             || (per_unit >= 5.0 && {
                 let m = t.value / 10f64.powf(v.floor());
@@ -659,33 +711,33 @@ pub fn draw(buf: &mut Buffer, area: Rect, fig: &Figure, opts: &Options) -> Optio
             });
         match &t.label {
             Some(label) => {
-                buf.set_string(c, axis_row, "┼", axis_style);
+                buf.set_string(c, axis_row, "┼", AXIS);
                 let w = label.chars().count() as u16;
                 let start = c.saturating_sub(w / 2).max(area.x);
                 let free = start + w <= area.right()
                     && taken.iter().all(|(a, b)| start + w < *a || start > *b);
                 if free {
-                    buf.set_string(start, label_row, label, axis_style);
+                    buf.set_string(start, label_row, label, AXIS);
                     taken.push((start, start + w));
                 }
             }
-            // Minor ticks where a decade has room for them: all of 2…9, or 2 and 5.
             None if minor_room
                 && buf
                     .cell((c, axis_row))
                     .is_some_and(|cell| cell.symbol() == "─") =>
             {
-                buf.set_string(c, axis_row, "┴", dim);
+                buf.set_string(c, axis_row, "┴", DIM);
             }
             None => {}
         }
     }
-    // The x title at the right end of the label row, where it does not cover a label.
     let title = &fig.x.label;
-    let tw = title.chars().count() as u16;
-    if x_title_row {
-        let start = area.right().saturating_sub(tw).max(area.x);
-        buf.set_stringn(start, label_row + 1, title, area.width as usize, axis_style);
+    if f.x_title_row {
+        let start = area
+            .right()
+            .saturating_sub(title.chars().count() as u16)
+            .max(area.x);
+        buf.set_stringn(start, label_row + 1, title, area.width as usize, AXIS);
     } else {
         // The longest end of the title (whole words: `g_N [m/s]`) right of the last label.
         let free_from = taken.iter().map(|(_, b)| *b + 2).max().unwrap_or(area.x);
@@ -696,36 +748,36 @@ pub fn draw(buf: &mut Buffer, area: Rect, fig: &Figure, opts: &Options) -> Optio
             .find(|t| t.chars().count() <= room)
         {
             let start = area.right() - tail.chars().count() as u16;
-            buf.set_string(start, label_row, &tail, axis_style);
+            buf.set_string(start, label_row, &tail, AXIS);
         }
     }
+}
 
-    // Legend inside the graph, in the corner the core picks.
-    if inside {
-        let h = entries.len() as u16;
-        let corner = fig.legend_corner(
-            (f64::from(graph.width), f64::from(graph.height)),
-            (f64::from(legend_w + 1), f64::from(h)),
-        );
-        let x = match corner {
-            Corner::TopLeft | Corner::BottomLeft => graph.x + 1,
-            Corner::TopRight | Corner::BottomRight => graph.right().saturating_sub(legend_w),
-        };
-        let y = match corner {
-            Corner::TopLeft | Corner::TopRight => graph.y,
-            Corner::BottomLeft | Corner::BottomRight => graph.bottom().saturating_sub(h),
-        };
-        for (k, e) in entries.iter().enumerate() {
-            let row = y + k as u16;
-            for cx in x.saturating_sub(1)..graph.right().min(x + legend_w) {
-                if let Some(cell) = buf.cell_mut((cx, row)) {
-                    cell.reset();
-                }
+/// The legend inside the graph, in the corner the core picks for its footprint in cells.
+fn legend_inside(buf: &mut Buffer, f: &Frame, fig: &Figure, entries: &[Entry], colors: Colors) {
+    let (g, legend_w) = (f.graph, f.legend_w);
+    let h = entries.len() as u16;
+    let corner = fig.legend_corner(
+        (f64::from(g.width), f64::from(g.height)),
+        (f64::from(legend_w + 1), f64::from(h)),
+    );
+    let x = match corner {
+        Corner::TopLeft | Corner::BottomLeft => g.x + 1,
+        Corner::TopRight | Corner::BottomRight => g.right().saturating_sub(legend_w),
+    };
+    let y = match corner {
+        Corner::TopLeft | Corner::TopRight => g.y,
+        Corner::BottomLeft | Corner::BottomRight => g.bottom().saturating_sub(h),
+    };
+    for (k, e) in entries.iter().enumerate() {
+        let row = y + k as u16;
+        for cx in x.saturating_sub(1)..g.right().min(x + legend_w) {
+            if let Some(cell) = buf.cell_mut((cx, row)) {
+                cell.reset();
             }
-            put_entry(buf, x, row, e, graph.right(), colors);
         }
+        put_entry(buf, x, row, e, g.right(), colors);
     }
-    Some(Drawn { graph, x_axis })
 }
 
 #[cfg(test)]
