@@ -75,11 +75,6 @@ pub const SWEEPS: [Sweep; 6] = [
 ];
 
 impl Sweep {
-    /// The sweep with this path.
-    pub fn by_path(path: &str) -> Option<usize> {
-        SWEEPS.iter().position(|s| s.path == path)
-    }
-
     /// Whether the sweep applies to `scene` (layer/adhesion sweeps need the effect on).
     pub fn available(&self, scene: &Scene) -> bool {
         if self.path.starts_with("layer.") {
