@@ -1,10 +1,10 @@
 //! The explorer's state and its `update` function (the Elm-like core; no terminal I/O here apart
 //! from the files that `x` and `w` write).
 
+use super::colors::Colors;
 use super::compute::{Computed, Job, SWEEPS, Sweep};
 use super::frame_export;
 use super::keymap::{self, Action};
-use super::view::plot::Colors;
 use crate::scene_io;
 use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseEvent, MouseEventKind};
 use rime_core::explorer::figures::Pinned;

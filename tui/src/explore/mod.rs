@@ -7,6 +7,7 @@
 //! every few points) as soon as a newer generation is requested, so the UI never waits for it.
 
 pub mod app;
+pub mod colors;
 pub mod compute;
 pub mod format;
 pub mod frame_export;
