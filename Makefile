@@ -11,6 +11,25 @@ setup:
 fmt:
 	cargo fmt --all
 
+# The quick checks, each runnable alone: formatting, lints, docs, the no_std core, unit tests.
+check: clippy doc nostd unit
+	cargo fmt --all --check
+
+clippy:
+	cargo clippy --workspace --all-targets -- -D warnings
+
+doc:
+	RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps
+
+# The core on a bare-metal target: without features, and with `alloc` (ARCHITECTURE.md).
+nostd:
+	cargo build -p rime-core --target thumbv7em-none-eabihf --no-default-features
+	cargo build -p rime-core --target thumbv7em-none-eabihf --no-default-features --features alloc
+
+# The tests beside the code (core and terminal); the cross-crate tests are in `make test`.
+unit:
+	cargo test --release -p rime-core -p rime-tui
+
 bench:
 	cargo run --release -- bench
 

@@ -13,7 +13,7 @@ pub enum Colors {
     Rgb,
     /// The 16 ANSI colours: each palette colour mapped to a fixed one.
     Ansi16,
-    /// No colour (`NO_COLOR`, https://no-color.org): strokes and marks carry the differences.
+    /// No colour (`NO_COLOR`, <https://no-color.org>): strokes and marks carry the differences.
     None,
 }
 
