@@ -75,9 +75,11 @@ pub struct Tidal {
     /// Classical Roche distance without adhesion, Eq. (A.7): `(12M/(πρ))^(1/3)` \[m\].
     pub d_roche: f64,
     /// Minimum distance at which grains of radius `r` stay in contact, Eq. (A.6) \[m\].
+    #[doc(alias = "Eq. (A.6)")]
     pub d_min: f64,
     /// Maximum radius of grains that stay in contact at distance `d`, Eq. (A.5) \[m\]; `None` where
     /// `4M/d³ ≤ πρ/3` (at or outside the Roche distance, self-gravity alone holds any size).
+    #[doc(alias = "Eq. (A.5)")]
     pub r_max: Option<f64>,
 }
 
