@@ -13,25 +13,19 @@ let hooks = { schedule: () => {}, replay: () => {} };
 /**
  * The drawing description of the chart: the core's figure description of the frame (series in
  * draw order, measured data beneath the model, axes as the view asks, markers, bands, the pinned
- * curve, the palette) turned into the painters' terms, plus the other models' characteristic
- * speeds as markers. The screen and the downloads both draw this.
+ * curve, the other models' characteristic speeds, the palette, the short labels) turned into the
+ * painters' terms. The screen and the downloads both draw this.
  */
 export function chartSpec(res, view, hover = null) {
   const fig = res.figures[0];
   const color = (i) => PALETTE.series[i] || '#000000';
   const series = fig.series.map((s) => {
-    const top = color(s.color) === PALETTE.scene && !s.dashed;
-    return { x: s.x, y: s.y, color: color(s.color), width: top ? 2.6 : 1.5, dash: s.dashed ? [6, 3] : null, label: s.name };
+    const top = color(s.color) === PALETTE.scene && s.stroke === 'solid';
+    const dash = { dashed: [6, 3], dotted: [2, 3] }[s.stroke] || null;
+    return { x: s.x, y: s.y, color: color(s.color), width: top ? 2.6 : 1.5, dash, label: s.name };
   });
-  const bands = fig.bands.map((b) => ({ x: b.x, y: b.y, color: color(b.color), label: b.label, short: b.label.split(' ')[0] }));
-  const markers = fig.markers.map((m) => {
-    const at = m.label.lastIndexOf(' = ');
-    return { x: m.x, label: m.label, short: at > 0 ? `${m.label.split(' ')[0]} ${m.label.slice(at + 3)}` : m.label, color: color(m.color) };
-  });
-  // Other models' characteristic speeds, in their curve's colour (the figure's order of comparisons).
-  (res.overlays || []).forEach((o, k) => {
-    for (const s of o.speeds) markers.push({ x: s.value, label: `${o.key.slice(6)} ${s.name}: ${speed(s.value)}`, short: `${s.name} ${speed(s.value)}`, color: PALETTE.overlays[k % PALETTE.overlays.length] });
-  });
+  const bands = fig.bands.map((b) => ({ x: b.x, y: b.y, color: color(b.color), label: b.label, short: b.short }));
+  const markers = fig.markers.map((m) => ({ x: m.x, label: m.label, short: m.short, color: color(m.color) }));
   return {
     xMin: fig.x.min, xMax: fig.x.max, yScale: fig.y.log ? 'log' : 'lin', yMin: fig.y.min, yMax: fig.y.max,
     xLabel: fig.x.label, yLabel: fig.y.label,

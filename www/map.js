@@ -78,7 +78,7 @@ function readout() {
   if (!m || !h) { out.textContent = m ? 'hover, tap or use the arrow keys on the map for values; click or Enter picks the ε_T row' : ''; return; }
   const k = h.i * m.n + h.j;
   const c = app.classes[m.codes[k]];
-  out.textContent = `g_N = ${speed(m.g[h.i], 4)} · g_T = ${speed(m.g[h.j], 4)} · ε_N = ${sig(m.epsN[h.i], 5)} · ε_T = ${sig(m.epsT[k], 5)} · ${c ? c.description.split(':')[0] : '?'}${c && isArtifact(c.name) ? ' (artifact)' : ''} · at ${app.res.accuracy}`;
+  out.textContent = `g_N = ${speed(m.g[h.i], 4)} · g_T = ${speed(m.g[h.j], 4)} · ε_N = ${sig(m.epsN[h.i], 5)} · ε_T = ${sig(m.epsT[k], 5)} · ${c ? c.label : '?'}${c && isArtifact(c.name) ? ' (artifact)' : ''} · at ${app.res.accuracy}`;
 }
 
 /** The legend (every class explained, artifacts marked), the artifact note and the text alternative. */
@@ -89,7 +89,7 @@ export function drawLegend(res) {
   const colors = classColors();
   $('legend').replaceChildren(...app.classes.map((c, k) => el('li', { class: isArtifact(c.name) ? 'artifact' : null },
     el('span', { class: 'sw', style: `background:${colors[k]}`, 'aria-hidden': 'true' }),
-    el('span', {}, ...linked(c.description), isArtifact(c.name) ? el('em', {}, ' — an artifact of the printed law, not a regime') : '',
+    el('span', {}, ...linked(c.meaning),
       ' ', el('span', { class: 'count' }, total ? `(${sig((100 * counts[k]) / total, 3)} %)` : '')))));
   res.classCounts = counts;
   const gap = app.classes.findIndex((c) => isArtifact(c.name));
@@ -99,7 +99,7 @@ export function drawLegend(res) {
   note.replaceChildren(...(shown ? linked(HELP.artifactNote) : []));
   if (res.map) {
     const parts = app.classes.map((c, k) => [c, counts[k]]).filter(([, n]) => n > 0)
-      .map(([c, n]) => `${c.description.split(':')[0]} ${sig((100 * n) / total, 3)} %`);
+      .map(([c, n]) => `${c.label} ${sig((100 * n) / total, 3)} %`);
     $('map-desc').textContent = `Stick map, g_T across and g_N up from 0 to ${speed(res.map.max)}: ${parts.join(', ')}.`;
   } else $('map-desc').textContent = '';
 }

@@ -27,7 +27,9 @@ export function showBanner(errors) {
 
 export function showWarnings(res) {
   showOverlayScores(res);
-  $('warnings').replaceChildren(...res.warnings.map((w) => el('li', {}, ...linked(w))));
+  // The core's warnings, each with its help on hover (the terminal's `?` and the CLI say the same).
+  const details = res.warningDetails || res.warnings.map((text) => ({ text, help: '' }));
+  $('warnings').replaceChildren(...details.map((w) => el('li', { title: w.help }, ...linked(w.text))));
 }
 
 /** A visible note in place of each part of the chart that failed (the banner has the details). */

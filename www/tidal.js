@@ -107,6 +107,8 @@ export function showTidal(res) {
     r.r_max === null
       ? row('r_max (A.5)', rMax, 'm', q.r_max, 'none: at or outside d_Roche self-gravity holds grains of any size', true)
       : row('r_max (A.5)', rMax, 'm', q.r_max, 'A.5 gives 37.72 m vs printed 37.6 m (0.3 %); r_max moves −27× any relative change of 4M/d³'),
-    ].flat());
+    ].flat(),
+    // The core's one verdict (the terminal and `rime tidal` say the same).
+    ...(t.verdict ? [el('tr', { class: t.verdict.holds ? 'ok' : 'bad' }, el('td', { colspan: 4 }, t.verdict.text))] : []));
   linkify($('tidal'));
 }

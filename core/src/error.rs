@@ -109,8 +109,9 @@ impl fmt::Display for Error {
     }
 }
 
-#[cfg(feature = "std")]
-impl std::error::Error for Error {}
+/// `core::error::Error` (stable since Rust 1.81): the error works with `?` into `Box<dyn Error>`
+/// and error-reporting crates with or without `std`.
+impl core::error::Error for Error {}
 
 /// Shorthand for `Result<T, rime_core::Error>`.
 pub type Result<T> = core::result::Result<T, Error>;

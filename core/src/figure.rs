@@ -30,17 +30,51 @@ pub struct Axis {
     pub max: f64,
 }
 
+/// How a series is drawn. Colour alone never carries a difference: within a figure no two series
+/// share both colour and stroke, so a figure reads in grey and on a terminal without colour.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Stroke {
+    /// A solid line (the model's curves).
+    Solid,
+    /// A dashed line (reference curves: clean surfaces, pinned, measured laws).
+    Dashed,
+    /// A dotted line (comparisons with other models and measured laws, `c`).
+    Dotted,
+    /// Unjoined points, each marked (instants, samples).
+    Points,
+}
+
+impl Stroke {
+    /// The name the page and JSON use: `solid`, `dashed`, `dotted`, `points`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Stroke::Solid => "solid",
+            Stroke::Dashed => "dashed",
+            Stroke::Dotted => "dotted",
+            Stroke::Points => "points",
+        }
+    }
+
+    /// Whether the line is broken (dashed or dotted).
+    pub const fn is_broken(self) -> bool {
+        matches!(self, Stroke::Dashed | Stroke::Dotted)
+    }
+}
+
 /// A line.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Series {
     /// Legend entry.
     pub name: String,
+    /// The legend entry for small surfaces (a terminal pane): a few words the long name begins
+    /// with or abbreviates.
+    pub short: String,
     /// Points (x, y); a `NaN` y breaks the line (e.g. outside a log axis).
     pub points: Vec<(f64, f64)>,
-    /// Index into [`PALETTE`].
+    /// Index into [`PALETTE`]: the series' role ([`crate::explorer::palette::SERIES`]).
     pub color: usize,
-    /// Dashed (reference curves).
-    pub dashed: bool,
+    /// How the line is drawn.
+    pub stroke: Stroke,
 }
 
 /// A vertical line with a label (critical velocities).
@@ -50,6 +84,8 @@ pub struct Marker {
     pub x: f64,
     /// Label, e.g. `g_s = 6.6 µm/s`.
     pub label: String,
+    /// The label for small surfaces.
+    pub short: String,
     /// Index into [`PALETTE`].
     pub color: usize,
 }
@@ -63,6 +99,8 @@ pub struct Band {
     pub y: (f64, f64),
     /// Legend entry with source.
     pub label: String,
+    /// The legend entry for small surfaces.
+    pub short: String,
     /// Index into [`PALETTE`].
     pub color: usize,
 }
@@ -202,12 +240,13 @@ pub mod experiments {
         sweep::log_space(from, to, &mut g);
         Series {
             name: "Bridges et al. 1984: 0.32 (v/1 cm/s)^-0.234".to_string(),
+            short: "Bridges'84".to_string(),
             points: g
                 .into_iter()
                 .map(|v| (v, crate::fit::BRIDGES_1984.eval(v).min(1.0)))
                 .collect(),
             color,
-            dashed: true,
+            stroke: Stroke::Dashed,
         }
     }
 
@@ -225,12 +264,13 @@ pub mod experiments {
         sweep::log_space(a, b, &mut g);
         Some(Series {
             name: "Bridges et al. 1984 (measured 0.15–20 mm/s): 0.32 (v/1 cm/s)^-0.234".to_string(),
+            short: "Bridges'84".to_string(),
             points: g
                 .into_iter()
                 .map(|v| (v, crate::fit::BRIDGES_1984.eval(v)))
                 .collect(),
             color,
-            dashed: true,
+            stroke: Stroke::Dashed,
         })
     }
 
@@ -243,12 +283,14 @@ pub mod experiments {
                 x: (0.06, 0.22),
                 y: (0.06, 0.84),
                 label: "Heißelmann et al. 2010 (1.5 cm ice, µg)".to_string(),
+                short: "Heißelmann'10".to_string(),
                 color,
             },
             Band {
                 x: (0.27, 0.51),
                 y: (0.08, 0.65),
                 label: "Hill et al. 2015 (5–11 mm ice, µg)".to_string(),
+                short: "Hill'15".to_string(),
                 color,
             },
         ]
@@ -287,13 +329,14 @@ pub mod paper {
         accuracy: Accuracy,
         name: String,
         color: usize,
-        dashed: bool,
+        stroke: Stroke,
     ) -> Result<Series> {
         Ok(Series {
+            short: name.clone(),
             name,
             points: eps_points(scene, FROM, TO, N, accuracy)?,
             color,
-            dashed,
+            stroke,
         })
     }
 
@@ -311,7 +354,7 @@ pub mod paper {
         let mut series = Vec::new();
         let mut markers = Vec::new();
         for (k, (scene, label)) in variants.iter().enumerate() {
-            series.push(curve(scene, accuracy, label.clone(), k, false)?);
+            series.push(curve(scene, accuracy, label.clone(), k, Stroke::Solid)?);
             let c = Contact::new(scene)?;
             let g_s = c
                 .layer
@@ -321,6 +364,7 @@ pub mod paper {
             markers.push(Marker {
                 x: g_s,
                 label: format!("g_s = {}", speed_label(g_s)),
+                short: format!("g_s = {}", speed_label(g_s)),
                 color: k,
             });
         }
@@ -329,7 +373,7 @@ pub mod paper {
             accuracy,
             "clean surfaces".to_string(),
             palette::SERIES_CLEAN,
-            true,
+            Stroke::Dashed,
         )?);
         // Only where it was measured (as the explorer and the page draw it).
         series.extend(experiments::bridges_measured(
@@ -494,6 +538,10 @@ pub mod paper {
         Ok(v)
     }
 }
+
+#[path = "figure/ticks.rs"]
+mod ticks;
+pub use ticks::{Corner, Tick, decimal_label};
 
 #[cfg(feature = "plot")]
 #[path = "figure/render.rs"]

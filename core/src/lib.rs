@@ -24,8 +24,9 @@
 //! # Ok::<(), rime_core::Error>(())
 //! ```
 //!
-//! The crate is `#![no_std]`; feature `std` (default) adds `std::error::Error`, `alloc` adds the
-//! `Vec` helpers, `serde` the JSON form of scenes, `explorer` (needs only `alloc`) the explorer model
+//! The crate is `#![no_std]` (its error implements `core::error::Error`); feature `std`
+//! (default) adds the platform's libm, `alloc` adds the `Vec` helpers, `serde` the JSON form of
+//! scenes, `explorer` (needs only `alloc`) the explorer model
 //! shared by the terminal and the web page, `plot` (needs `std`) rendering of figures with plotters.
 
 #![no_std]

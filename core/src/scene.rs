@@ -109,6 +109,7 @@ impl Default for Bulk {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+#[doc(alias = "Eq. (5)")]
 pub enum ContactEnd {
     /// The contact ends when the total normal force returns to zero while separating (no tensile
     /// viscoelastic force). Default.

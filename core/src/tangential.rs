@@ -101,6 +101,31 @@ impl StickClass {
         }
     }
 
+    /// What the class means, for help screens (the terminal's `?`, the page's map legend).
+    pub fn meaning(self) -> &'static str {
+        match self {
+            StickClass::Rolling => {
+                "rolling (ψ ≤ ψ₀): the contact point sticks; the tangential motion reverses, ε_T = −ε_N(g_T)"
+            }
+            StickClass::Sliding => {
+                "sliding (ψ > ψ₀): the grains slide over each other; ε_T from the sliding law"
+            }
+            StickClass::RollingStop => {
+                "rolling stop: rolling with ε_N(g_T) = 0; the tangential motion stops, the normal one rebounds"
+            }
+            StickClass::SlidingGap => {
+                "sliding gap: an artifact of the printed law, not a regime; Eq. (23)'s radicand is negative, ε_T clamped to 0 (W: Walton's law has no gap)"
+            }
+            StickClass::Aggregation => {
+                "aggregation: ε_N = 0 and ε_T = 0; both motions stop, the grains stick together"
+            }
+            StickClass::NormalStickOnly => {
+                "normal stick only: ε_N = 0 but ε_T ≠ 0; the normal motion stops, the tangential one goes on"
+            }
+            StickClass::Undefined => "undefined: g_N = g_T = 0, no collision",
+        }
+    }
+
     /// A short human-readable description for legends.
     pub fn description(self) -> &'static str {
         match self {

@@ -75,9 +75,11 @@ pub struct Tidal {
     /// Classical Roche distance without adhesion, Eq. (A.7): `(12M/(πρ))^(1/3)` \[m\].
     pub d_roche: f64,
     /// Minimum distance at which grains of radius `r` stay in contact, Eq. (A.6) \[m\].
+    #[doc(alias = "Eq. (A.6)")]
     pub d_min: f64,
     /// Maximum radius of grains that stay in contact at distance `d`, Eq. (A.5) \[m\]; `None` where
     /// `4M/d³ ≤ πρ/3` (at or outside the Roche distance, self-gravity alone holds any size).
+    #[doc(alias = "Eq. (A.5)")]
     pub r_max: Option<f64>,
 }
 
@@ -113,6 +115,39 @@ fn finite(quantity: &'static str, value: f64) -> Result<f64> {
             quantity,
             fields: "planet_mass, distance, radius, density, surface_energy",
         })
+    }
+}
+
+impl Tidal {
+    /// The one verdict of every surface: the pair stays in contact when the tidal pull ΔF of
+    /// Eq. (A.1) (exact) is below what holds it, adhesion plus self-gravity F_s + F_g of
+    /// Eq. (A.2) and (A.3) — the balance of Eq. (A.4).
+    #[doc(alias = "Eq. (A.4)")]
+    pub fn holds(&self) -> bool {
+        self.delta_f < self.hold()
+    }
+
+    /// What holds the pair, F_s + F_g \[N\].
+    pub fn hold(&self) -> f64 {
+        self.surface_force + self.gravity
+    }
+
+    /// (F_s + F_g)/ΔF: above 1 the pair stays in contact.
+    pub fn margin(&self) -> f64 {
+        self.hold() / self.delta_f
+    }
+
+    /// The verdict in words (`ΔF < F_s + F_g (×1.6e8): the pair stays in contact`).
+    #[cfg(feature = "alloc")]
+    pub fn verdict(&self) -> alloc::string::String {
+        if self.holds() {
+            alloc::format!(
+                "ΔF < F_s + F_g (×{}): the pair stays in contact",
+                crate::explorer::format::sig(self.margin(), 2)
+            )
+        } else {
+            alloc::string::String::from("ΔF ≥ F_s + F_g: the tide pulls the pair apart")
+        }
     }
 }
 
@@ -177,6 +212,24 @@ pub fn tidal(input: &TidalInput) -> Result<Tidal> {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn one_verdict_flips_at_d_min_issue_21() {
+        // d_min (Eq. (A.6)) is where F_s + F_g balance the tidal pull: the verdict must flip
+        // there (to the approximation A.4 makes, ΔF ≈ 4GMmr/d³, which is tiny for r ≪ d).
+        let paper = super::TidalInput::default();
+        let t = super::tidal(&paper).expect("paper");
+        assert!(t.holds() && t.margin() > 1.0, "{t:?}");
+        for (factor, holds) in [(1.01, true), (0.99, false)] {
+            let input = super::TidalInput {
+                distance: t.d_min * factor,
+                ..paper
+            };
+            let at = super::tidal(&input).expect("near d_min");
+            assert_eq!(at.holds(), holds, "{factor}: {at:?}");
+            assert_eq!(at.holds(), at.margin() > 1.0);
+        }
+    }
+
     use super::*;
 
     fn rel(a: f64, b: f64) -> f64 {

@@ -5,7 +5,7 @@
 //! converts between JSON/text and core types, and packs results into flat arrays.
 
 use rime_core::params::{Kind, PARAMETERS, Value};
-use rime_core::sweep::{linear_space, log_space};
+use rime_core::sweep::log_space;
 use rime_core::tidal::{PAPER_QUOTED, TidalInput, tidal};
 use rime_core::{Accuracy, Contact, Preset, Scene, Status, StickClass};
 use serde_json::{Value as Json, json};
@@ -89,6 +89,7 @@ pub fn tidal_json(scene: &Scene, input: Option<TidalInput>) -> Result<Json, Stri
     Ok(json!({
         "input": input,
         "result": r,
+        "verdict": {"holds": r.holds(), "margin": r.margin(), "text": r.verdict()},
         "paper": {"delta_f": q.delta_f, "surface_force": q.surface_force, "d_roche": q.d_roche,
                   "d_min": q.d_min, "r_max": q.r_max},
     }))
@@ -152,22 +153,6 @@ pub fn speeds(from: f64, to: f64, n: usize) -> Result<Vec<f64>, String> {
     let mut g = vec![0.0; n];
     log_space(from, to, &mut g);
     Ok(g)
-}
-
-/// Evenly spaced speeds from 0 to `max` inclusive (the stick-map grid).
-pub fn map_speeds(max: f64, n: usize) -> Result<Vec<f64>, String> {
-    let max = check_speed("max", max)?;
-    let n = check_count("n", n, 2, MAX_MAP_SIDE)?;
-    let mut g = vec![0.0; n];
-    linear_space(max, &mut g);
-    Ok(g)
-}
-
-fn choice_name(v: Value) -> Option<&'static str> {
-    match v {
-        Value::Choice(c) => Some(c),
-        _ => None,
-    }
 }
 
 /// A scene being explored.
@@ -457,7 +442,10 @@ pub fn overlays_json() -> String {
 pub fn classes_json() -> String {
     let list: Vec<Json> = StickClass::ALL
         .iter()
-        .map(|c| json!({"name": c.name(), "letter": c.letter().to_string(), "description": c.description()}))
+        .map(|c| {
+            json!({"name": c.name(), "letter": c.letter().to_string(), "label": c.label(),
+                        "description": c.description(), "meaning": c.meaning()})
+        })
         .collect();
     Json::from(list).to_string()
 }
@@ -599,11 +587,6 @@ pub fn parse_quantity(field: &str, text: &str, unit: &str) -> Result<f64, String
     } else {
         Err(format!("{field}: not a finite number (typed \"{shown}\")"))
     }
-}
-
-/// A choice parameter's current option, if active (used by the page to fill selects).
-pub fn choice_of(scene: &Scene, path: &str) -> Option<&'static str> {
-    scene.get(path).ok().and_then(choice_name)
 }
 
 #[cfg(test)]

@@ -204,19 +204,20 @@ fn figure_json(pack: &mut Pack, fig: &Figure) -> Json {
         .map(|s| {
             let x: Vec<f64> = s.points.iter().map(|p| p.0).collect();
             let y: Vec<f64> = s.points.iter().map(|p| p.1).collect();
-            json!({"name": s.name, "color": s.color, "dashed": s.dashed,
+            json!({"name": s.name, "short": s.short, "color": s.color,
+                   "dashed": s.stroke.is_broken(), "stroke": s.stroke.name(),
                    "x": pack.f(&x), "y": pack.f(&y)})
         })
         .collect();
     let markers: Vec<Json> = fig
         .markers
         .iter()
-        .map(|m| json!({"x": m.x, "label": m.label, "color": m.color}))
+        .map(|m| json!({"x": m.x, "label": m.label, "short": m.short, "color": m.color}))
         .collect();
     let bands: Vec<Json> = fig
         .bands
         .iter()
-        .map(|b| json!({"x": [b.x.0, b.x.1], "y": [b.y.0, b.y.1], "label": b.label, "color": b.color}))
+        .map(|b| json!({"x": [b.x.0, b.x.1], "y": [b.y.0, b.y.1], "label": b.label, "short": b.short, "color": b.color}))
         .collect();
     json!({"name": fig.name, "title": fig.title, "caption": fig.caption, "x": axis(&fig.x),
            "y": axis(&fig.y), "series": series, "markers": markers, "bands": bands,
@@ -315,7 +316,18 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
         .map(|m| json!({"key": m.key, "label": m.label, "value": m.value}))
         .collect();
     out.insert("critical".into(), Json::from(critical));
-    out.insert("warnings".into(), Json::from(f.warnings.clone()));
+    // The core's warnings: their sentences, and each with its short text, help and equation.
+    let texts: Vec<String> = f.warnings.iter().map(|w| w.text()).collect();
+    out.insert("warnings".into(), Json::from(texts));
+    let details: Vec<Json> = f
+        .warnings
+        .iter()
+        .map(|w| {
+            json!({"key": w.key(), "short": w.short(), "text": w.text(), "help": w.help(),
+                   "equation": w.equation()})
+        })
+        .collect();
+    out.insert("warningDetails".into(), Json::from(details));
     let map = match &f.map {
         None => Json::Null,
         Some(part) => {

@@ -10,7 +10,7 @@
 use super::frame::{Frame, SWEEPS};
 use super::palette;
 use super::records::{CITATION, scene_line};
-use crate::figure::{Axis, Band, Figure, Marker, Series, experiments, speed_label};
+use crate::figure::{Axis, Band, Figure, Marker, Series, Stroke, experiments, speed_label};
 use alloc::format;
 use alloc::string::{String, ToString};
 use alloc::vec::Vec;
@@ -73,17 +73,42 @@ fn member_name(frame: &Frame, value: f64, is_scene: bool) -> String {
     let s = SWEEPS.get(frame.sweep);
     let symbol = s.map_or("p", |s| s.symbol);
     let unit = s.map_or("", |s| s.unit);
-    let unit = if unit.is_empty() {
-        String::new()
-    } else {
-        format!(" {unit}")
-    };
     let mark = if is_scene { " (this scene)" } else { "" };
-    // Text people read: a few significant digits (data files keep the shortest round-trip).
-    format!(
-        "{symbol} = {}{unit}{mark}",
-        crate::explorer::format::sig(value, 4)
-    )
+    // Text people read: four digits with an SI prefix (0.1 × 3e-3 reads 300 µs, not
+    // 3.0000000000000003e-4).
+    format!("{symbol} = {}{mark}", super::format::qty(value, unit))
+}
+
+/// A comparison's legend entry on small surfaces: its key's name, temperature and geometry for
+/// measured data (docs/physics.md#data-atlas), and the scene's rms against it.
+fn overlay_short(o: &super::frame::OverlayCurve) -> String {
+    let key = o.overlay.key();
+    let name = key.split_once(':').map_or(key.as_str(), |(_, n)| n);
+    let context = match o.overlay {
+        super::frame::Overlay::Atlas(e) => {
+            let [lo, hi] = e.temperature;
+            if lo == hi {
+                format!(" ({lo} K, {})", e.geometry.name())
+            } else {
+                format!(" ({lo}–{hi} K, {})", e.geometry.name())
+            }
+        }
+        super::frame::Overlay::Model(_) => String::new(),
+    };
+    let score = o
+        .score
+        .map(|r| format!(" rms {}", super::format::sig(r, 2)))
+        .unwrap_or_default();
+    format!("{name}{context}{score}")
+}
+
+/// A frame marker's legend name on small surfaces.
+fn marker_short(key: &str) -> &'static str {
+    match key {
+        "layer" => "g_s layer",
+        "adhesion" => "g_s adhesion (a rebound speed)",
+        _ => "sticks below",
+    }
 }
 
 /// The caption every figure of a frame carries: level, scene, program and model — enough to
@@ -112,6 +137,7 @@ pub fn eps_figure(frame: &Frame, view: &View, version: &str) -> Figure {
     let mut series = Vec::new();
     let mut bands = Vec::new();
     let mut drawn: Vec<Vec<f64>> = Vec::new();
+    let mut overlay_markers = Vec::new();
 
     // Measured data first, beneath the model curves.
     if view.experiments && frame.overlays.is_empty() {
@@ -134,16 +160,32 @@ pub fn eps_figure(frame: &Frame, view: &View, version: &str) -> Figure {
                     x: (x0, x1),
                     y: (y0.min(y1), y0.max(y1)),
                     label: o.label.clone(),
+                    short: overlay_short(o),
                     color,
                 });
             }
         } else {
+            // Dotted: a comparison may share a hue with a family member (there are eight
+            // colour-blind-safe hues), never a hue and a stroke.
             series.push(Series {
                 name: o.label.clone(),
+                short: overlay_short(o),
                 points: pts(&o.g, &o.eps),
                 color,
-                dashed: true,
+                stroke: Stroke::Dotted,
             });
+        }
+        for (name, g) in &o.speeds {
+            if g.is_finite() && *g > 0.0 {
+                let who = o.overlay.key();
+                let who = who.split_once(':').map_or(who.as_str(), |(_, n)| n);
+                overlay_markers.push(Marker {
+                    x: *g,
+                    label: format!("{name} of {who} = {}", speed_label(*g)),
+                    short: format!("{name} {}", speed_label(*g)),
+                    color,
+                });
+            }
         }
     }
 
@@ -152,15 +194,17 @@ pub fn eps_figure(frame: &Frame, view: &View, version: &str) -> Figure {
     for (k, m) in frame.family.iter().enumerate() {
         let Some(c) = &m.curve else { continue };
         let eps = c.eps();
-        let mut name = member_name(frame, m.value, m.is_scene);
-        if let (0, Some(meaning)) = (k, &meaning) {
-            name = format!("{name} (family: {meaning})");
-        }
+        let short = member_name(frame, m.value, m.is_scene);
+        let name = match (k, &meaning) {
+            (0, Some(meaning)) => format!("{short} (family: {meaning})"),
+            _ => short.clone(),
+        };
         series.push(Series {
             name,
+            short,
             points: pts(g, &eps),
             color: k % palette::FAMILY.len(),
-            dashed: false,
+            stroke: Stroke::Solid,
         });
         drawn.push(eps);
     }
@@ -168,41 +212,53 @@ pub fn eps_figure(frame: &Frame, view: &View, version: &str) -> Figure {
         let eps = c.eps();
         series.push(Series {
             name: "clean surfaces (no layer, no adhesion)".to_string(),
+            short: "clean surfaces".to_string(),
             points: pts(g, &eps),
             color: palette::SERIES_CLEAN,
-            dashed: true,
+            stroke: Stroke::Dashed,
         });
         drawn.push(eps);
     }
     if let Some(p) = &view.pinned {
         series.push(Series {
             name: format!("pinned: {}", p.label),
+            short: format!("pinned: {}", p.label),
             points: pts(&p.g, &p.eps),
             color: palette::SERIES_PINNED,
-            dashed: true,
+            stroke: Stroke::Dashed,
         });
-        drawn.push(p.eps.clone());
+        // Only its part over this axis sets the log axis' floor (the axis follows a zoom).
+        drawn.push(
+            p.g.iter()
+                .zip(&p.eps)
+                .filter(|(x, _)| **x >= g0 && **x <= g1)
+                .map(|(_, e)| *e)
+                .collect(),
+        );
     }
     if let Some(c) = &frame.curve {
         let eps = c.eps();
         series.push(Series {
             name: "this scene".to_string(),
+            short: "this scene".to_string(),
             points: pts(g, &eps),
             color: palette::SERIES_SCENE,
-            dashed: false,
+            stroke: Stroke::Solid,
         });
         drawn.push(eps);
     }
 
-    let markers = frame
+    let mut markers: Vec<Marker> = frame
         .markers
         .iter()
         .map(|m| Marker {
             x: m.value,
             label: format!("{} = {}", m.label, speed_label(m.value)),
+            short: format!("{} {}", marker_short(m.key), speed_label(m.value)),
             color: palette::SERIES_SCENE,
         })
         .collect();
+    markers.extend(overlay_markers);
     let y = if view.y_log {
         let floor = eps_log_floor(drawn.iter().map(|v| &v[..]));
         Axis {
@@ -258,6 +314,123 @@ pub fn frame_figures(frame: &Frame, view: &View, version: &str) -> Vec<Figure> {
     out
 }
 
+/// The extent of `v` (finite values), or 0…1 when there is none.
+fn extent(v: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (lo, hi) = v
+        .filter(|x| x.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+            (a.min(x), b.max(x))
+        });
+    if lo.is_finite() && hi > lo {
+        (lo, hi)
+    } else if lo.is_finite() {
+        // One value: a unit around it (a flat line still has an axis).
+        (
+            lo - 0.5 * lo.abs().max(1e-300),
+            lo + 0.5 * lo.abs().max(1e-300),
+        )
+    } else {
+        (0.0, 1.0)
+    }
+}
+
+fn linear(label: &str, (min, max): (f64, f64)) -> Axis {
+    Axis {
+        label: label.to_string(),
+        log: false,
+        min,
+        max,
+    }
+}
+
+/// The collision panel's figures (`i`) of one collision at impact speed `g`: the overlap over
+/// time ξ(t) and the force–overlap loop F(ξ), each with the phase instants marked
+/// (docs/physics.md#collision); with adhesion, `dynamic_loop` — the dynamic JKR model's (ξ, F)
+/// loop of brilliantov2007 (docs/physics.md#models) — dotted beside the paper's.
+pub fn collision_figures(
+    g: f64,
+    t: &crate::collision::Trajectory,
+    dynamic_loop: &[(f64, f64)],
+) -> [Figure; 2] {
+    let at_phase = |k: usize| t.phases.iter().any(|p| t.t.get(k) == Some(&p.t));
+    let instants = t
+        .phases
+        .iter()
+        .map(|p| {
+            format!(
+                "{} {}",
+                p.name.replace('_', " "),
+                super::format::qty3(p.t, "s")
+            )
+        })
+        .collect::<Vec<_>>()
+        .join(", ");
+    let marks = |x: &[f64], y: &[f64]| Series {
+        name: format!("phase instants: {instants}"),
+        short: "phase instants".to_string(),
+        points: (0..x.len().min(y.len()))
+            .filter(|&k| at_phase(k))
+            .map(|k| (x[k], y[k]))
+            .collect(),
+        color: palette::SERIES_EXPERIMENT,
+        stroke: Stroke::Points,
+    };
+    let paper = |x: &[f64], y: &[f64]| Series {
+        name: "paper's model, this scene".to_string(),
+        short: "this scene".to_string(),
+        points: x.iter().copied().zip(y.iter().copied()).collect(),
+        color: palette::SERIES_SCENE,
+        stroke: Stroke::Solid,
+    };
+    let caption = format!(
+        "One collision at g_N = {}: ε_N = {}, {}.",
+        speed_label(g),
+        super::format::sig(t.eps_n, 4),
+        t.status.label()
+    );
+    let overlap = Figure {
+        name: "collision_overlap".to_string(),
+        title: "Overlap over time".to_string(),
+        caption: caption.clone(),
+        x: linear("time t [s]", extent(t.t.iter().copied())),
+        y: linear("overlap ξ [m]", extent(t.xi.iter().copied())),
+        series: alloc::vec![paper(&t.t, &t.xi), marks(&t.t, &t.xi)],
+        markers: Vec::new(),
+        bands: Vec::new(),
+        map: None,
+    };
+    let mut series = Vec::new();
+    if !dynamic_loop.is_empty() {
+        series.push(Series {
+            name: "brilliantov2007 (dynamic JKR: neck and pull-off)".to_string(),
+            short: "brilliantov2007".to_string(),
+            points: dynamic_loop.to_vec(),
+            color: palette::SERIES_OVERLAY + 3,
+            stroke: Stroke::Dotted,
+        });
+    }
+    series.push(paper(&t.xi, &t.force));
+    series.push(marks(&t.xi, &t.force));
+    let xs = t.xi.iter().copied().chain(dynamic_loop.iter().map(|p| p.0));
+    let fs = t
+        .force
+        .iter()
+        .copied()
+        .chain(dynamic_loop.iter().map(|p| p.1));
+    let force = Figure {
+        name: "collision_force".to_string(),
+        title: "Force over overlap".to_string(),
+        caption,
+        x: linear("overlap ξ [m]", extent(xs)),
+        y: linear("force F [N]", extent(fs)),
+        series,
+        markers: Vec::new(),
+        bands: Vec::new(),
+        map: None,
+    };
+    [overlap, force]
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -298,6 +471,42 @@ mod tests {
             );
             assert!(e < 1.0, "no clamp needed inside the measured speeds");
         }
+    }
+
+    /// Issue 21: the y axis was not rescaled on zoom. The log axis' floor is a decade below the
+    /// smallest ε_N drawn over the speeds shown, so zooming to slow speeds (ε_N near 1) lifts it.
+    #[test]
+    fn the_log_axis_follows_a_zoom_issue_21() {
+        let scene = Preset::Ice.scene();
+        let view = View {
+            y_log: true,
+            ..View::default()
+        };
+        let full = eps_figure(&frame(scene), &view, "test");
+        let mut req = Request::new(scene, Accuracy::Fast);
+        req.points = 40;
+        req.map_n = 8;
+        req.speeds = Some((1e-6, 1e-4));
+        let zoomed_frame = compute(&req, &|| false).expect("not cancelled");
+        let zoomed = eps_figure(&zoomed_frame, &view, "test");
+        // The floor from the curves themselves: the smallest positive ε_N of every model curve.
+        let floor = |f: &Figure| {
+            let min = f
+                .series
+                .iter()
+                .flat_map(|s| s.points.iter().map(|p| p.1))
+                .filter(|e| e.is_finite() && *e > 0.0)
+                .fold(f64::INFINITY, f64::min);
+            crate::sweep::exact_decade((libm::floor(crate::math::log10(min)) as i32).clamp(-12, -1))
+        };
+        assert_eq!(zoomed.y.min, floor(&zoomed));
+        assert!(
+            zoomed.y.min > full.y.min,
+            "{} vs {}",
+            zoomed.y.min,
+            full.y.min
+        );
+        assert_eq!((zoomed.x.min, zoomed.x.max), (1e-6, 1e-4));
     }
 
     #[test]

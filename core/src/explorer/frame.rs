@@ -12,9 +12,7 @@ use super::range::{MapRange, auto_map_range, chart_decades};
 use crate::normal::{Normal, Status};
 use crate::params::Value;
 use crate::sweep::{StickMap, log_space};
-use crate::{
-    Accuracy, AdhesionModulus, Contact, ContactEnd, Damping, DampingFormula, LayerReading,
-};
+use crate::{Accuracy, Contact};
 use crate::{Scene, error::Error};
 use alloc::format;
 use alloc::string::String;
@@ -77,11 +75,6 @@ pub const SWEEPS: [Sweep; 6] = [
 ];
 
 impl Sweep {
-    /// The sweep with this path.
-    pub fn by_path(path: &str) -> Option<usize> {
-        SWEEPS.iter().position(|s| s.path == path)
-    }
-
     /// Whether the sweep applies to `scene` (layer/adhesion sweeps need the effect on).
     pub fn available(&self, scene: &Scene) -> bool {
         if self.path.starts_with("layer.") {
@@ -230,8 +223,56 @@ pub struct Request {
     pub overlays: Vec<Overlay>,
 }
 
+/// The comparisons a surface cycles through (the terminal's `c`): nothing, the measured laws and
+/// ranges of the data atlas (each only over the speeds it was measured at, with the scene's rms
+/// score), the other collision models on the same grains (with their characteristic speeds).
+pub const COMPARISONS: [(&str, &[&str]); 3] = [
+    ("no comparison", &[]),
+    (
+        "measured ice",
+        &[
+            "atlas:bridges1984",
+            "atlas:hatzes1988_frost",
+            "atlas:supulver1995",
+            "atlas:heisselmann2010",
+            "atlas:hill2015",
+        ],
+    ),
+    (
+        "other models",
+        &[
+            "model:brilliantov2007",
+            "model:muller_poschel2011",
+            "model:thornton1997",
+        ],
+    ),
+];
+
+/// The overlays of comparison `set` ([`COMPARISONS`]) for `scene`: thornton1997 only where the
+/// scene has the plasticity section it needs (elsewhere it is left out, not an error).
+pub fn comparison(set: usize, scene: &Scene) -> Vec<Overlay> {
+    COMPARISONS
+        .get(set)
+        .map(|(_, keys)| {
+            keys.iter()
+                .filter_map(|k| Overlay::parse(k).ok())
+                .filter(|o| {
+                    !matches!(o, Overlay::Model(crate::models::Model::Thornton1997))
+                        || scene.plasticity.is_some()
+                })
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
 impl Request {
-    /// The default view of a scene at an accuracy: 241 points on the chart's decades, an 81×81 map.
+    /// Points per ε_N curve of the default view.
+    pub const POINTS: usize = 241;
+    /// Stick-map side of the default view (`MAP_N²` cells).
+    pub const MAP_N: usize = 81;
+
+    /// The default view of a scene at an accuracy: [`Request::POINTS`] points on the chart's
+    /// decades, a [`Request::MAP_N`]² map.
     pub fn new(scene: Scene, accuracy: Accuracy) -> Request {
         Request {
             scene,
@@ -239,9 +280,9 @@ impl Request {
             sweep: None,
             family: true,
             speeds: None,
-            points: 241,
+            points: Request::POINTS,
             map_max: None,
-            map_n: 81,
+            map_n: Request::MAP_N,
             fail: Vec::new(),
             overlays: Vec::new(),
         }
@@ -387,11 +428,45 @@ pub struct Frame {
     /// The stick map (`None` without friction).
     pub map: Option<MapPart>,
     /// Warnings about the scene (options that deviate from the paper, overdamped ranges).
-    pub warnings: Vec<String>,
+    pub warnings: Vec<super::warning::Warning>,
     /// The requested overlays that could be computed (the others are named in `errors`).
     pub overlays: Vec<OverlayCurve>,
     /// Parts that failed.
     pub errors: Vec<PartError>,
+}
+
+impl Frame {
+    /// This scene's result at speed index `i` (`None` in a gap or without a curve).
+    pub fn point(&self, i: usize) -> Option<Normal> {
+        self.curve.as_ref()?.points.get(i).copied().flatten()
+    }
+
+    /// The stick map, when there is one.
+    pub fn stick_map(&self) -> Option<&StickMap> {
+        self.map.as_ref()?.map.as_ref()
+    }
+
+    /// Upper end of the stick map's axes \[m/s\], when there is a map part.
+    pub fn map_max(&self) -> Option<f64> {
+        self.map.as_ref().map(|m| m.max)
+    }
+
+    /// The first problem, in one line: the scene's own error when the contact cannot be derived
+    /// (a surface shows it in place of the curves), else `part: message`.
+    pub fn problem(&self) -> Option<String> {
+        self.errors.first().map(|e| {
+            if e.part == "scene" {
+                e.message.clone()
+            } else {
+                format!("{}: {}", e.part, e.message)
+            }
+        })
+    }
+
+    /// Notes to show beside the views (a map range cut to the speed limit).
+    pub fn notes(&self) -> Option<&'static str> {
+        self.map.as_ref()?.auto.as_ref()?.note()
+    }
 }
 
 fn part_error(part: impl Into<String>, message: impl Into<String>) -> PartError {
@@ -470,56 +545,6 @@ pub fn stick_threshold(contact: &Contact, accuracy: Accuracy) -> crate::Result<O
         }
     }
     Ok(Some(hi))
-}
-
-/// Warnings about the scene: overdamped collisions on the curve, and options that deviate from (or
-/// expose inconsistencies of) the paper.
-pub fn warnings(scene: &Scene, curve: Option<&Curve>, damping_time: Option<f64>) -> Vec<String> {
-    let mut w = Vec::new();
-    if let Some(c) = curve {
-        let over = c
-            .points
-            .iter()
-            .filter(|p| p.is_some_and(|n| n.status == Status::Overdamped))
-            .count();
-        if over > 0 {
-            let a = damping_time.map_or(String::from("?"), |a| format!("{a:.3e}"));
-            w.push(format!(
-                "overdamped: ε_N < 1e-9 over {} of the plotted range (A = {a} s); Eq. (4) never \
-                 sticks, the rebound is negligible (the stick map counts it as a rebound)",
-                if over == c.points.len() {
-                    "all"
-                } else {
-                    "part"
-                }
-            ));
-        }
-    }
-    if let Damping::Viscosities(v) = scene.bulk.damping
-        && v.formula == DampingFormula::AsPrinted
-    {
-        w.push(
-            "A formula as printed: the paper omits the factor (1−2ν) of Brilliantov et al.".into(),
-        );
-    }
-    if scene.contact_end == ContactEnd::ZeroOverlap {
-        w.push("contact end zero_overlap: Eq. (5) read literally, a tensile viscoelastic force acts while separating".into());
-    }
-    if scene
-        .layer
-        .is_some_and(|l| l.reading == LayerReading::Literal)
-    {
-        w.push("Eq. (8) literal reading: threshold ≈ 2 g_s and ε_N can exceed the clean value, contradicting the paper's text".into());
-    }
-    if scene
-        .adhesion
-        .is_some_and(|a| a.modulus == AdhesionModulus::Consistent)
-    {
-        w.push(
-            "adhesion modulus consistent: E = Y/(2(1−ν²)) instead of the printed Y/(1−ν²)".into(),
-        );
-    }
-    w
 }
 
 /// Points on an atlas law's measured speeds.
@@ -744,7 +769,14 @@ pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<Frame> {
         Ok(None) => {}
         Err(e) => frame.errors.push(part_error("marker \"sticks below\"", e)),
     }
-    frame.warnings = warnings(&scene, frame.curve.as_ref(), Some(contact.damping_time));
+    frame.warnings = super::warning::warnings(
+        &scene,
+        frame
+            .curve
+            .iter()
+            .flat_map(|c| c.points.iter().map(|p| p.map(|n| n.status))),
+        Some(contact.damping_time),
+    );
     for overlay in &req.overlays {
         if cancelled() {
             return None;

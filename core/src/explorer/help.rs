@@ -71,7 +71,7 @@ pub const GLOSSARY: [(&str, &str); 9] = [
     ),
     (
         "stick map",
-        "which tangential regime each impact (g_N across, g_T up) ends in, as in Fig. 4 of the paper",
+        "which tangential regime each impact ends in, over (g_T across, g_N up), as in Fig. 4 of the paper",
     ),
 ];
 

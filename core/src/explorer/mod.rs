@@ -21,3 +21,5 @@ pub mod palette;
 pub mod range;
 #[cfg(feature = "explorer")]
 pub mod records;
+#[cfg(feature = "explorer")]
+pub mod warning;

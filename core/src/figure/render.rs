@@ -4,11 +4,11 @@
 //! path for every combination of scales. Text uses the embedded DejaVu Sans (bitmap backends have
 //! no system fonts here).
 
-use super::{Figure, PALETTE, class_color};
+use super::{Figure, PALETTE, Stroke, class_color};
 use crate::error::{Error, Result};
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use std::string::{String, ToString};
+use std::string::String;
 use std::vec;
 use std::vec::Vec;
 
@@ -43,34 +43,75 @@ fn to_axis(v: f64, log: bool) -> f64 {
     if log { v.log10() } else { v }
 }
 
-fn tick_label(v: f64, log: bool) -> String {
-    if log {
-        let r = v.round();
-        if (v - r).abs() < 1e-9 {
-            match r as i32 {
-                0 => "1".to_string(),
-                1 => "10".to_string(),
-                -1 => "0.1".to_string(),
-                k => std::format!("1e{k}"),
+/// Labels an image axis carries at most (a terminal passes fewer; its labels are a subset).
+pub const IMAGE_LABELS: usize = 11;
+
+/// The axis' key points in drawing coordinates (log₁₀ on log axes) and their labels, from the
+/// core's one axis description ([`super::Axis::ticks`]).
+fn key_points(axis: &super::Axis) -> (Vec<f64>, Vec<f64>, Vec<(f64, String)>) {
+    let mut bold = Vec::new();
+    let mut light = Vec::new();
+    let mut labels = Vec::new();
+    for t in axis.ticks(IMAGE_LABELS) {
+        let v = to_axis(t.value, axis.log);
+        match t.label {
+            Some(l) => {
+                bold.push(v);
+                labels.push((v, l));
             }
-        } else {
-            String::new()
+            None => light.push(v),
         }
-    } else if v != 0.0 && v.abs() < 1e-2 {
-        // Small speeds: mantissa and exponent, e.g. 2.5e-5.
-        let s = std::format!("{v:.2e}");
-        match s.split_once('e') {
-            Some((m, e)) => {
-                let m = m.trim_end_matches('0').trim_end_matches('.');
-                std::format!("{m}e{e}")
-            }
-            None => s,
-        }
-    } else {
-        let s = std::format!("{v:.3}");
-        let s = s.trim_end_matches('0').trim_end_matches('.').to_string();
-        if s == "-0" { "0".to_string() } else { s }
     }
+    (bold, light, labels)
+}
+
+/// A linear coordinate in drawing units with the core's ticks as its key points (plotters'
+/// `WithKeyPoints` over `f64` cannot take a label formatter).
+struct Keyed {
+    inner: plotters::coord::types::RangedCoordf64,
+    bold: Vec<f64>,
+    light: Vec<f64>,
+}
+
+impl Keyed {
+    fn new(range: std::ops::Range<f64>, (bold, light): (Vec<f64>, Vec<f64>)) -> Keyed {
+        Keyed {
+            inner: range.into(),
+            bold,
+            light,
+        }
+    }
+}
+
+impl plotters::coord::ranged1d::Ranged for Keyed {
+    type ValueType = f64;
+    type FormatOption = plotters::coord::ranged1d::DefaultFormatting;
+
+    fn range(&self) -> std::ops::Range<f64> {
+        self.inner.range()
+    }
+
+    fn map(&self, value: &f64, limit: (i32, i32)) -> i32 {
+        self.inner.map(value, limit)
+    }
+
+    fn key_points<H: plotters::coord::ranged1d::KeyPointHint>(&self, hint: H) -> Vec<f64> {
+        if hint.weight().allow_light_points() {
+            self.light.clone()
+        } else {
+            self.bold.clone()
+        }
+    }
+}
+
+/// The label of key point `v` (the nearest one: the mesh hands back the values it was given).
+fn label_at(labels: &[(f64, String)], v: f64) -> String {
+    labels
+        .iter()
+        .min_by(|a, b| (a.0 - v).abs().total_cmp(&(b.0 - v).abs()))
+        .filter(|(k, _)| (k - v).abs() < 1e-9 * (1.0 + v.abs()))
+        .map(|(_, l)| l.clone())
+        .unwrap_or_default()
 }
 
 /// How a legend entry shows its series.
@@ -78,8 +119,8 @@ fn tick_label(v: f64, log: bool) -> String {
 enum Swatch {
     /// A filled box (stick-map class, measured range) with its opacity.
     Box(RGBColor, f64),
-    /// A line, dashed or solid.
-    Line(RGBColor, bool),
+    /// A line drawn with its stroke.
+    Line(RGBColor, Stroke),
 }
 
 /// The legend's entries in drawing order: map classes present, measured ranges, curves.
@@ -88,7 +129,10 @@ fn legend_entries(fig: &Figure) -> Vec<(String, Swatch)> {
     if let Some(map) = &fig.map {
         for c in crate::tangential::StickClass::ALL {
             if map.classes.contains(&c) {
-                out.push((c.label().to_string(), Swatch::Box(rgb(class_color(c)), 1.0)));
+                out.push((
+                    String::from(c.label()),
+                    Swatch::Box(rgb(class_color(c)), 1.0),
+                ));
             }
         }
     }
@@ -102,7 +146,7 @@ fn legend_entries(fig: &Figure) -> Vec<(String, Swatch)> {
         });
         if drawable {
             let color = rgb(PALETTE[s.color % PALETTE.len()]);
-            out.push((s.name.clone(), Swatch::Line(color, s.dashed)));
+            out.push((s.name.clone(), Swatch::Line(color, s.stroke)));
         }
     }
     out
@@ -153,15 +197,21 @@ fn draw_legend<DB: DrawingBackend>(
                 ))
                 .map_err(plot_err)?;
             }
-            Some(Swatch::Line(color, dashed)) => {
-                let style = color.stroke_width(if *dashed { 1 } else { 2 });
-                if *dashed {
-                    for x in [2, 10, 18] {
-                        area.draw(&PathElement::new(vec![(x, y), (x + 5, y)], style))
-                            .map_err(plot_err)?;
-                    }
-                } else {
-                    area.draw(&PathElement::new(vec![(2, y), (22, y)], style))
+            Some(Swatch::Line(color, stroke)) => {
+                let style = color.stroke_width(if *stroke == Stroke::Solid { 2 } else { 1 });
+                // A sample of the stroke: a line, dashes, dots, or a small cross for points.
+                let parts: &[[i32; 2]] = match stroke {
+                    Stroke::Solid => &[[2, 22]],
+                    Stroke::Dashed => &[[2, 8], [11, 17], [20, 24]],
+                    Stroke::Dotted => &[[2, 4], [7, 9], [12, 14], [17, 19], [22, 24]],
+                    Stroke::Points => &[[8, 16]],
+                };
+                for [a, b] in parts {
+                    area.draw(&PathElement::new(vec![(*a, y), (*b, y)], style))
+                        .map_err(plot_err)?;
+                }
+                if *stroke == Stroke::Points {
+                    area.draw(&PathElement::new(vec![(12, y - 4), (12, y + 4)], style))
                         .map_err(plot_err)?;
                 }
             }
@@ -220,7 +270,8 @@ fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Resul
         to_axis(fig.y.max, fig.y.log),
     );
     // The legend sits in its own column right of the plot, so it never covers data (a stick map
-    // fills its whole plot; curves reach every corner of a log chart).
+    // fills its whole plot; curves reach every corner of a log chart). Surfaces without that room
+    // (a terminal pane) place it with `Figure::legend_corner` instead.
     let entries = legend_entries(fig);
     let width = body.dim_in_pixel().0 as i32;
     let (label_width, legend_lines) = wrap_legend(&entries, (width as f64 * 0.3) as usize / 7);
@@ -230,31 +281,25 @@ fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Resul
         (7 * label_width as i32 + 40).min(width * 2 / 5)
     };
     let (plot_area, legend_area) = body.split_horizontally(width - legend_width);
+    let (x_bold, x_light, x_labels) = key_points(&fig.x);
+    let (y_bold, y_light, y_labels) = key_points(&fig.y);
     let mut chart = ChartBuilder::on(&plot_area)
         .caption(&fig.title, ("sans-serif", 22))
         .margin(12)
         .x_label_area_size(44)
         .y_label_area_size(56)
-        .build_cartesian_2d(x0..x1, y0..y1)
+        .build_cartesian_2d(
+            Keyed::new(x0..x1, (x_bold, x_light)),
+            Keyed::new(y0..y1, (y_bold, y_light)),
+        )
         .map_err(plot_err)?;
     let (xl, yl) = (fig.x.log, fig.y.log);
-    let x_ticks = if xl {
-        ((x1 - x0).round() as usize).clamp(2, 20) + 1
-    } else {
-        6
-    };
     chart
         .configure_mesh()
         .x_desc(fig.x.label.as_str())
         .y_desc(fig.y.label.as_str())
-        .x_labels(x_ticks)
-        .y_labels(if yl {
-            ((y1 - y0).round() as usize).clamp(2, 20) + 1
-        } else {
-            6
-        })
-        .x_label_formatter(&|v| tick_label(*v, xl))
-        .y_label_formatter(&|v| tick_label(*v, yl))
+        .x_label_formatter(&|v| label_at(&x_labels, *v))
+        .y_label_formatter(&|v| label_at(&y_labels, *v))
         .label_style(("sans-serif", 14))
         .axis_desc_style(("sans-serif", 15))
         .light_line_style(RGBColor(235, 235, 235))
@@ -324,7 +369,7 @@ fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Resul
         let style = ShapeStyle {
             color: color.to_rgba(),
             filled: false,
-            stroke_width: if s.dashed { 1 } else { 2 },
+            stroke_width: if s.stroke == Stroke::Solid { 2 } else { 1 },
         };
         // Split at points that cannot be drawn (outside a log axis).
         let mut segments: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
@@ -338,21 +383,53 @@ fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Resul
                 segments.push(Vec::new());
             }
         }
+        let stroke = s.stroke;
         let mut first = true;
-        for seg in segments.into_iter().filter(|seg| seg.len() > 1) {
-            let drawn = if s.dashed {
-                chart
-                    .draw_series(DashedLineSeries::new(seg, 6, 4, style))
-                    .map_err(plot_err)?
-            } else {
-                chart
+        let min_len = if stroke == Stroke::Points { 1 } else { 2 };
+        for seg in segments.into_iter().filter(|seg| seg.len() >= min_len) {
+            let drawn = match stroke {
+                Stroke::Solid => chart
                     .draw_series(LineSeries::new(seg, style))
-                    .map_err(plot_err)?
+                    .map_err(plot_err)?,
+                Stroke::Dashed => chart
+                    .draw_series(DashedLineSeries::new(seg, 6, 4, style))
+                    .map_err(plot_err)?,
+                Stroke::Dotted => chart
+                    .draw_series(DashedLineSeries::new(seg, 2, 3, style))
+                    .map_err(plot_err)?,
+                Stroke::Points => chart
+                    .draw_series(seg.into_iter().map(|p| Cross::new(p, 4, style)))
+                    .map_err(plot_err)?,
             };
             if first {
-                drawn
-                    .label(s.name.as_str())
-                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], style));
+                // The legend's sample of the stroke: a line, dashes, dots or a dot.
+                drawn.label(s.name.as_str()).legend(move |(x, y)| {
+                    // Four strokes (one element type for every kind): a line, dashes, dots, or a
+                    // small cross for points.
+                    let parts: [[(i32, i32); 2]; 4] = match stroke {
+                        Stroke::Solid => [[(0, 0), (18, 0)]; 4],
+                        Stroke::Dashed => [
+                            [(0, 0), (6, 0)],
+                            [(10, 0), (18, 0)],
+                            [(0, 0), (6, 0)],
+                            [(10, 0), (18, 0)],
+                        ],
+                        Stroke::Dotted => [
+                            [(0, 0), (2, 0)],
+                            [(5, 0), (7, 0)],
+                            [(10, 0), (12, 0)],
+                            [(15, 0), (17, 0)],
+                        ],
+                        Stroke::Points => [
+                            [(5, -4), (13, 4)],
+                            [(5, 4), (13, -4)],
+                            [(9, -4), (9, 4)],
+                            [(5, 0), (13, 0)],
+                        ],
+                    };
+                    let path = |k: usize| PathElement::new(parts[k].to_vec(), style);
+                    EmptyElement::at((x, y)) + path(0) + path(1) + path(2) + path(3)
+                });
                 first = false;
             }
         }

@@ -39,6 +39,16 @@ impl Status {
             Status::Overdamped => "overdamped",
         }
     }
+
+    /// The words screens show (`stuck in layer`): every surface's readouts use these.
+    pub fn label(self) -> &'static str {
+        match self {
+            Status::Rebound => "rebound",
+            Status::StuckInLayer => "stuck in layer",
+            Status::StuckByAdhesion => "stuck by adhesion",
+            Status::Overdamped => "overdamped",
+        }
+    }
 }
 
 /// The outcome of a normal collision at impact speed `g_n`.

@@ -12,13 +12,21 @@ pub fn log_space(from: f64, to: f64, n: usize) -> Vec<f64> {
     g
 }
 
-/// The curve's records.
+/// The curve's records; the core's warnings about the scene and the curve (the ones the
+/// explorer's status line and the page show) go to standard error, one `warning: ` line each.
 pub fn run(common: &Common, from: f64, to: f64, n: usize) -> CliResult<String> {
     let contact = cli::contact(common)?;
     let mut records = Vec::with_capacity(n);
+    let mut statuses = Vec::with_capacity(n);
     for g in log_space(from, to, n) {
         let normal = contact.normal(g, common.accuracy)?;
+        statuses.push(Some(normal.status));
         records.push(EpsRecord::new(g, &normal));
+    }
+    let warnings =
+        rime_core::explorer::warning::warnings(&common.scene, statuses, Some(contact.damping_time));
+    for w in warnings {
+        eprintln!("warning: {} ({})", w.text(), w.equation());
     }
     render(&records, common.format).map_err(CliError)
 }

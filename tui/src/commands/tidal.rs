@@ -23,6 +23,8 @@ pub fn run(common: &Common, input: &TidalInput) -> CliResult<String> {
         ("d_roche", Some(t.d_roche), "m"),
         ("d_min", Some(t.d_min), "m"),
         ("r_max", t.r_max, "m"),
+        // The core's verdict: above 1 the pair stays in contact (Eq. (A.4)).
+        ("hold_margin", Some(t.margin()), ""),
     ];
     Ok(match common.format {
         Format::Json => {
@@ -33,6 +35,11 @@ pub fn run(common: &Common, input: &TidalInput) -> CliResult<String> {
                     v.map_or(serde_json::Value::Null, serde_json::Value::from),
                 );
             }
+            map.insert(
+                "stays_in_contact".into(),
+                serde_json::Value::from(t.holds()),
+            );
+            map.insert("verdict".into(), serde_json::Value::from(t.verdict()));
             serde_json::to_string_pretty(&map).map_err(|e| CliError(e.to_string()))? + "\n"
         }
         Format::Csv => {

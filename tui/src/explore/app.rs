@@ -1,11 +1,14 @@
 //! The explorer's state and its `update` function (the Elm-like core; no terminal I/O here apart
 //! from the files that `x` and `w` write).
 
-use super::compute::{CURVE_POINTS, FrameData, MAP_POINTS, Request, SWEEPS, Sweep};
+use super::colors::Colors;
+use super::compute::{Computed, Job, SWEEPS, Sweep};
 use super::frame_export;
 use super::keymap::{self, Action};
 use crate::scene_io;
 use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseEvent, MouseEventKind};
+use rime_core::explorer::figures::Pinned;
+use rime_core::explorer::frame::{self, Request};
 use rime_core::params::{Kind, PARAMETERS, Value};
 use rime_core::{Accuracy, Preset, Scene};
 use std::path::PathBuf;
@@ -21,7 +24,7 @@ pub enum Event {
     /// The terminal was resized to (columns, rows).
     Resize(u16, u16),
     /// The worker finished a frame.
-    Computed(Box<FrameData>),
+    Computed(Box<Computed>),
 }
 
 /// Which part of the screen the arrow keys act on.
@@ -66,11 +69,11 @@ pub struct App {
     /// Last status message.
     pub message: Option<(String, Tone)>,
     /// The latest computed frame.
-    pub data: Option<FrameData>,
+    pub data: Option<Computed>,
     /// Generation of the latest request.
     pub generation: u64,
     /// A request waiting to be sent to the worker.
-    pub pending: Option<Request>,
+    pub pending: Option<Job>,
     /// Chart cursor: index into the curve speeds.
     pub cursor: usize,
     /// Map cursor: (row i for g_N, column j for g_T) into the map grid.
@@ -95,7 +98,7 @@ pub struct App {
     pub inside: Option<(f64, Result<rime_core::collision::Trajectory, String>)>,
     /// The sticking-thresholds panel (`v`): the table for this scene's material, when open.
     pub stick: Option<rime_core::stick::ThresholdTable>,
-    /// What is drawn over the ε_N chart (`c`): index into the compute module's `OVERLAY_SETS`.
+    /// What is drawn over the ε_N chart (`c`): index into the core's [`frame::COMPARISONS`].
     pub overlay_set: usize,
     /// The scene and level the panel's trajectory belongs to.
     pub inside_key: Option<(Scene, Accuracy)>,
@@ -131,6 +134,8 @@ pub struct App {
     pub cursor_at: Option<f64>,
     /// Where the last frame drew what the mouse can click (written by the renderer).
     pub drawn: std::cell::Cell<Drawn>,
+    /// The terminal's colours (24-bit, 16, or none with `NO_COLOR`).
+    pub colors: Colors,
 }
 
 /// The part of the state that undo and redo restore.
@@ -140,17 +145,6 @@ pub struct SceneState {
     pub scene: Scene,
     /// The preset it was chosen as, if any.
     pub preset: Option<usize>,
-}
-
-/// A pinned ε_N curve.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Pinned {
-    /// What the legend calls it (the swept parameter's value when it was pinned).
-    pub label: String,
-    /// Speeds \[m/s\].
-    pub g: Vec<f64>,
-    /// ε_N at those speeds (0 stuck, NaN unknown).
-    pub eps: Vec<f64>,
 }
 
 /// A yes/no question on the message line.
@@ -166,7 +160,7 @@ pub enum Confirm {
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Drawn {
     /// The chart's log speed axis.
-    pub chart_axis: Option<super::view::chart::LogAxis>,
+    pub chart_axis: Option<super::layout::LogAxis>,
     /// The stick map's grid cells: (x, y, width, height) in cells.
     pub map_plot: Option<ratatui::layout::Rect>,
     /// The parameter panel: first row of the list and index of the first parameter shown.
@@ -176,10 +170,6 @@ pub struct Drawn {
 /// Default file that `o` offers (the one `w` writes).
 pub const SCENE_FILE: &str = "rime-scene.json";
 
-/// The slowest and fastest speeds the chart's range may reach \[m/s\] (the core's speed limit).
-pub const SPEED_MIN: f64 = 1e-12;
-/// See [`SPEED_MIN`].
-pub const SPEED_MAX: f64 = 1e6;
 /// The narrowest speed range, in decades.
 pub const MIN_SPAN_DECADES: f64 = 0.25;
 
@@ -189,7 +179,7 @@ pub fn grid_index(g: f64, lo: f64, hi: f64) -> usize {
     if !t.is_finite() {
         return 0;
     }
-    (t.clamp(0.0, 1.0) * (CURVE_POINTS - 1) as f64).round() as usize
+    (t.clamp(0.0, 1.0) * (Request::POINTS - 1) as f64).round() as usize
 }
 
 /// Index of the speed in `g` nearest `target` (in log).
@@ -226,8 +216,8 @@ impl App {
             generation: 0,
             pending: None,
             // 1 cm/s on the default 1e-7…10 m/s grid.
-            cursor: (CURVE_POINTS - 1) * 5 / 8,
-            map_cursor: (MAP_POINTS / 2, MAP_POINTS / 4),
+            cursor: (Request::POINTS - 1) * 5 / 8,
+            map_cursor: (Request::MAP_N / 2, Request::MAP_N / 4),
             map_max: None,
             quit: false,
             size: (100, 30),
@@ -254,6 +244,7 @@ impl App {
             wrote_scene_file: false,
             cursor_at: None,
             drawn: std::cell::Cell::new(Drawn::default()),
+            colors: Colors::Rgb,
         };
         app.request();
         app
@@ -269,19 +260,19 @@ impl App {
             ));
         }
         self.generation += 1;
-        self.pending = Some(Request {
+        let mut request = Request::new(self.scene, self.accuracy);
+        request.sweep = Some(self.sweep).filter(|k| *k < SWEEPS.len());
+        request.map_max = self.map_max;
+        request.speeds = self.speeds;
+        request.overlays = frame::comparison(self.overlay_set, &self.scene);
+        self.pending = Some(Job {
             generation: self.generation,
-            scene: self.scene,
-            accuracy: self.accuracy,
-            sweep: self.sweep,
-            map_max: self.map_max,
-            overlay_set: self.overlay_set,
-            speeds: self.speeds,
+            request,
         });
     }
 
     /// Takes the queued request, if any.
-    pub fn take_request(&mut self) -> Option<Request> {
+    pub fn take_request(&mut self) -> Option<Job> {
         self.pending.take()
     }
 
@@ -503,12 +494,12 @@ impl App {
     }
 
     fn move_cursor(&mut self, delta: i64) {
-        let max = CURVE_POINTS as i64 - 1;
+        let max = Request::POINTS as i64 - 1;
         self.cursor = (self.cursor as i64 + delta).clamp(0, max) as usize;
     }
 
     fn move_map(&mut self, di: i64, dj: i64) {
-        let max = MAP_POINTS as i64 - 1;
+        let max = Request::MAP_N as i64 - 1;
         let (i, j) = self.map_cursor;
         self.map_cursor = (
             (i as i64 + di).clamp(0, max) as usize,
@@ -584,7 +575,7 @@ impl App {
     }
 
     fn export(&mut self) {
-        let Some(data) = self.data.as_ref().filter(|d| d.scene == self.scene) else {
+        let Some(data) = self.data.as_ref().filter(|d| d.request.scene == self.scene) else {
             self.info("still computing — press x again in a moment");
             return;
         };
@@ -593,14 +584,7 @@ impl App {
         let view = rime_core::explorer::figures::View {
             y_log: self.y_log,
             experiments: self.experiments,
-            pinned: self
-                .pinned
-                .as_ref()
-                .map(|p| rime_core::explorer::figures::Pinned {
-                    label: p.label.clone(),
-                    g: p.g.clone(),
-                    eps: p.eps.clone(),
-                }),
+            pinned: self.pinned.clone(),
         };
         match frame_export::export(&self.out_dir, data, &view) {
             Ok(dir) => self.info(format!(
@@ -711,7 +695,7 @@ impl App {
     /// Does what the keymap says `action` does, on the focused pane.
     fn perform(&mut self, action: Action, shift: bool) {
         let n = PARAMETERS.len();
-        let map_step = (MAP_POINTS / 20).max(1) as i64;
+        let map_step = (Request::MAP_N / 20).max(1) as i64;
         let map_step = if shift { 1 } else { map_step };
         match (action, self.focus) {
             (Action::Back, _) if self.tidal => {
@@ -810,7 +794,7 @@ impl App {
             (Action::ZoomIn | Action::ZoomOut, Focus::Map) => {
                 let shown = self
                     .map_max
-                    .or_else(|| self.data.as_ref().map(|d| d.map_max))
+                    .or_else(|| self.data.as_ref().and_then(|d| d.map_max()))
                     .unwrap_or(1.0);
                 // Zooming in shows less: the range halves.
                 let next = if action == Action::ZoomOut {
@@ -818,7 +802,7 @@ impl App {
                 } else {
                     shown / 2.0
                 };
-                self.map_max = Some(next.clamp(1e-9, 1e6));
+                self.map_max = Some(next.clamp(1e-9, rime_core::explorer::limits::SPEED_MAX));
                 self.info(format!(
                     "stick map range 0 … {}",
                     super::format::qty(next, "m/s")
@@ -831,7 +815,7 @@ impl App {
                 self.request();
             }
             (Action::Compare, _) => {
-                let sets = super::compute::OVERLAY_SETS;
+                let sets = frame::COMPARISONS;
                 self.overlay_set = (self.overlay_set + 1) % sets.len();
                 self.request();
                 self.info(format!(
@@ -841,7 +825,7 @@ impl App {
             }
             (Action::FitToLaw, _) => {
                 // The first law of the comparison shown (measured ice), else Bridges et al. 1984.
-                let id = super::compute::OVERLAY_SETS[self.overlay_set]
+                let id = frame::COMPARISONS[self.overlay_set]
                     .1
                     .iter()
                     .filter_map(|k| k.strip_prefix("atlas:"))
@@ -970,12 +954,14 @@ impl App {
     /// The chart's speed range now: the user's, else the last frame's.
     fn speed_range(&self) -> Option<(f64, f64)> {
         self.speeds
-            .or_else(|| self.data.as_ref().map(super::compute::auto_speeds))
+            .or_else(|| self.data.as_deref().map(super::compute::auto_speeds))
     }
 
     /// Sets the chart's speed range (clamped to the core's limits, at least a quarter decade wide)
     /// and keeps the cursor on the same speed.
     fn set_speeds(&mut self, lo: f64, hi: f64) {
+        // The core's limits (the same the request's validation enforces).
+        use rime_core::explorer::limits::{SPEED_MAX, SPEED_MIN};
         let (min, max) = (SPEED_MIN.log10(), SPEED_MAX.log10());
         let span = (hi - lo).clamp(MIN_SPAN_DECADES, max - min);
         let lo = lo.clamp(min, max - span);
@@ -1025,7 +1011,7 @@ impl App {
             self.info("pinned curve removed");
             return;
         }
-        let Some(data) = self.data.as_ref().filter(|d| d.scene == self.scene) else {
+        let Some(data) = self.data.as_ref().filter(|d| d.request.scene == self.scene) else {
             self.info("still computing — press P again in a moment");
             return;
         };
@@ -1039,11 +1025,7 @@ impl App {
         } else {
             "pinned".to_string()
         };
-        let eps = data
-            .current
-            .iter()
-            .map(|n| n.map_or(f64::NAN, |n| n.eps))
-            .collect();
+        let eps = data.curve.as_ref().map(|c| c.eps()).unwrap_or_default();
         self.pinned = Some(Pinned {
             label: label.clone(),
             g: data.g.clone(),
@@ -1106,7 +1088,7 @@ impl App {
             inside(layout.map)
         };
         let on_chart = inside(layout.chart) && !on_map;
-        let axis_speed = |axis: &super::view::chart::LogAxis| -> Option<f64> {
+        let axis_speed = |axis: &super::layout::LogAxis| -> Option<f64> {
             if axis.width == 0 || m.column < axis.x || m.column >= axis.x + axis.width {
                 return None;
             }
@@ -1114,7 +1096,7 @@ impl App {
             Some(10f64.powf(axis.lo + t * (axis.hi - axis.lo)))
         };
         let on_axis =
-            |axis: &super::view::chart::LogAxis| m.row == axis.axis_row || m.row == axis.label_row;
+            |axis: &super::layout::LogAxis| m.row == axis.axis_row || m.row == axis.label_row;
         let ctrl = m.modifiers.contains(KeyModifiers::CONTROL);
         match m.kind {
             MouseEventKind::Down(crossterm::event::MouseButton::Left) => {
@@ -1143,7 +1125,7 @@ impl App {
                         drawn.map_plot,
                         self.data
                             .as_ref()
-                            .and_then(|d| d.map.as_ref())
+                            .and_then(|d| d.stick_map())
                             .map(|m| m.n()),
                     ) && inside(r)
                         && n > 1
@@ -1219,14 +1201,13 @@ impl App {
         let Some((g_shown, _)) = &self.inside else {
             return;
         };
-        let Some(data) = self.data.as_ref().filter(|d| d.scene == self.scene) else {
+        let Some(data) = self.data.as_ref().filter(|d| d.request.scene == self.scene) else {
             return;
         };
         // The collision at the focused cursor: the stick map's g_N when the map has the focus,
         // else the ε_N chart's.
         let on_map = data
-            .map
-            .as_ref()
+            .stick_map()
             .filter(|_| self.focus == Focus::Map)
             .and_then(|m| m.g.get(self.map_cursor.0).copied())
             .filter(|g| *g > 0.0);

@@ -1,7 +1,7 @@
 //! Number formatting for the explorer: the core's one set of formatters
 //! ([`rime_core::explorer::format`]), and the export folders' timestamps.
 
-pub use rime_core::explorer::format::{decade, editable, num3, qty, qty3, sig};
+pub use rime_core::explorer::format::{editable, num3, qty, qty3, sig};
 
 /// `YYYYMMDD-HHMMSS` (UTC) for a time in seconds since the Unix epoch.
 pub fn timestamp(unix_seconds: u64) -> String {

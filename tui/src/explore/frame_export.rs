@@ -4,7 +4,6 @@
 //! subcommands, so the same scene gives the same CSV everywhere and the figures show what the
 //! screen shows (the [`View`] the explorer draws with).
 
-use super::compute::FrameData;
 use super::format;
 use crate::scene_io::{CliError, CliResult, scene_json, write_atomic};
 use rime_core::explorer::figures::{View, frame_figures};
@@ -83,7 +82,7 @@ pub fn write_frame(dir: &Path, f: &Frame, view: &View, date: &str) -> CliResult<
 
 /// Writes the frame ([`write_frame`]) into a new folder `rime-export-<UTC timestamp>` under
 /// `base`; returns the folder.
-pub fn export(base: &Path, data: &FrameData, view: &View) -> CliResult<PathBuf> {
+pub fn export(base: &Path, frame: &Frame, view: &View) -> CliResult<PathBuf> {
     let secs = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_secs());
@@ -95,6 +94,6 @@ pub fn export(base: &Path, data: &FrameData, view: &View) -> CliResult<PathBuf> 
         k += 1;
     }
     std::fs::create_dir_all(&dir).map_err(|e| CliError(format!("{}: {e}", dir.display())))?;
-    write_frame(&dir, &data.frame, view, &date(secs))?;
+    write_frame(&dir, frame, view, &date(secs))?;
     Ok(dir)
 }

@@ -76,3 +76,35 @@ pub fn layout(w: u16, h: u16) -> Option<Layout> {
         message: (bottom == 3).then(|| Rect::new(0, main_h + 2, w, 1)),
     })
 }
+
+/// A chart's x axis as drawn: the graph's columns and the axis and label rows (mouse hits read it).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LogAxis {
+    /// First column of the graph.
+    pub x: u16,
+    /// Width of the graph in cells.
+    pub width: u16,
+    /// Row of the axis line.
+    pub axis_row: u16,
+    /// Row of the labels.
+    pub label_row: u16,
+    /// Left end of the column span the labels may use (the y labels' column).
+    pub left: u16,
+    /// log10 of the axis ends.
+    pub lo: f64,
+    /// log10 of the axis ends.
+    pub hi: f64,
+}
+
+impl LogAxis {
+    /// The column where log10 value `t` is drawn (ratatui's canvas: two Braille dots a cell, rounded).
+    pub fn column(&self, t: f64) -> Option<u16> {
+        let span = self.hi - self.lo;
+        if self.width == 0 || span.is_nan() || span <= 0.0 || t < self.lo || t > self.hi {
+            return None;
+        }
+        let dots = f64::from(self.width) * 2.0 - 1.0;
+        let dot = ((t - self.lo) * dots / (self.hi - self.lo)).round() as u16;
+        Some(self.x + dot / 2)
+    }
+}

@@ -7,6 +7,7 @@
 //! every few points) as soon as a newer generation is requested, so the UI never waits for it.
 
 pub mod app;
+pub mod colors;
 pub mod compute;
 pub mod format;
 pub mod frame_export;
@@ -18,7 +19,7 @@ pub mod tidal;
 pub mod view;
 
 use app::{App, Event, update};
-use compute::{Request, compute};
+use compute::{Job, compute};
 use rime_core::{Accuracy, Scene};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -26,7 +27,7 @@ use std::sync::mpsc::{self, Receiver, Sender};
 use std::time::Duration;
 
 /// Computes the newest request, dropping older ones and abandoning stale work.
-fn worker(requests: Receiver<Request>, events: Sender<Event>, latest: Arc<AtomicU64>) {
+fn worker(requests: Receiver<Job>, events: Sender<Event>, latest: Arc<AtomicU64>) {
     while let Ok(mut req) = requests.recv() {
         while let Ok(newer) = requests.try_recv() {
             req = newer;
@@ -80,7 +81,7 @@ fn event_loop(
     accuracy: Accuracy,
 ) -> Result<(), Box<dyn std::error::Error>> {
     let (event_tx, event_rx) = mpsc::channel::<Event>();
-    let (request_tx, request_rx) = mpsc::channel::<Request>();
+    let (request_tx, request_rx) = mpsc::channel::<Job>();
     let latest = Arc::new(AtomicU64::new(0));
     {
         let tx = event_tx.clone();
@@ -97,6 +98,7 @@ fn event_loop(
     }
     drop(event_tx);
     let mut app = App::new(scene, accuracy);
+    app.colors = view::plot::Colors::from_env();
     let size = terminal.size()?;
     app.size = (size.width, size.height);
     loop {

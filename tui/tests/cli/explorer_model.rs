@@ -145,7 +145,7 @@ fn explorer_records_equal_the_command_lines_csv_issue_11() {
 }
 
 /// Issue 22: one number rule. The family around A = 1e-4 s is 1e-5, 3e-5, 3e-4, 1e-3 s exactly (3 ×
-/// 1e-4 is 3.0000000000000003e-4 in doubles): the legend reads `A = 3e-4 s`, the CSV header
+/// 1e-4 is 3.0000000000000003e-4 in doubles): the legend reads `A = 300 µs`, the CSV header
 /// `A = 3e-4 s`, and no float noise reaches either.
 #[test]
 fn family_values_legends_and_csv_headers_carry_no_float_noise_issue_22() {
@@ -154,8 +154,9 @@ fn family_values_legends_and_csv_headers_carry_no_float_noise_issue_22() {
     assert_eq!(values, vec![1e-5, 3e-5, 3e-4, 1e-3]);
     let fig = rime_core::explorer::figures::eps_figure(&f, &Default::default(), "test");
     let names: Vec<&str> = fig.series.iter().map(|s| s.name.as_str()).collect();
+    // Text people read has an SI prefix and four digits: 3e-4 s reads 300 µs.
     assert!(
-        names.iter().any(|n| n.starts_with("A = 3e-4 s")),
+        names.iter().any(|n| n.starts_with("A = 300 µs")),
         "{names:?}"
     );
     let csv = rime_core::explorer::records::family_csv(&f);

@@ -2,14 +2,16 @@
 //! the force–overlap loop F(ξ) with the phase instants, and the energy ledger as bars
 //! (docs/physics.md#collision).
 
+use super::plot::{self, Colors};
 use crate::explore::format::{qty3, sig};
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::{Color, Style};
-use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Axis, Block, Chart, Clear, Dataset, GraphType, Paragraph};
+use ratatui::widgets::{Block, Clear, Paragraph};
 use rime_core::collision::Trajectory;
+use rime_core::explorer::figures::collision_figures;
+use rime_core::explorer::palette;
 
 /// What the panel shows: the trajectory at the cursor speed, or why there is none.
 pub struct CollisionView<'a> {
@@ -20,31 +22,15 @@ pub struct CollisionView<'a> {
     /// With adhesion: the dynamic JKR model's force–overlap loop (brilliantov2007, docs/physics.md
     /// #models) as (ξ, F) points, with its neck (ξ < 0) and pull-off jump.
     pub dynamic_loop: &'a [(f64, f64)],
-}
-
-fn bounds(v: &[f64]) -> [f64; 2] {
-    let lo = v
-        .iter()
-        .copied()
-        .filter(|x| x.is_finite())
-        .fold(f64::INFINITY, f64::min);
-    let hi = v
-        .iter()
-        .copied()
-        .filter(|x| x.is_finite())
-        .fold(f64::NEG_INFINITY, f64::max);
-    if lo.is_finite() && hi > lo {
-        [lo, hi]
-    } else {
-        [0.0, 1.0]
-    }
+    /// The terminal's colours.
+    pub colors: Colors,
 }
 
 /// The ledger's lines: each term as a bar in units of the kinetic energy brought in.
-pub fn ledger_lines(t: &Trajectory, width: u16) -> Vec<Line<'static>> {
+pub fn ledger_lines(t: &Trajectory, width: u16, colors: Colors) -> Vec<Line<'static>> {
     let l = t.ledger;
     let bar_w = width.saturating_sub(32).max(4) as f64;
-    let row = |name: &str, value: f64, color: Color| {
+    let row = |name: &str, value: f64, color: palette::Rgb| {
         let frac = if l.kinetic_in > 0.0 {
             value / l.kinetic_in
         } else {
@@ -53,32 +39,16 @@ pub fn ledger_lines(t: &Trajectory, width: u16) -> Vec<Line<'static>> {
         let n = (frac.clamp(0.0, 1.0) * bar_w).round() as usize;
         Line::from(vec![
             Span::styled(format!("{name:<19}"), Style::new().fg(Color::Gray)),
-            Span::styled("█".repeat(n), Style::new().fg(color)),
+            Span::styled("█".repeat(n), colors.fg(color)),
             Span::raw(format!(" {:>5.1} %", 100.0 * frac)),
         ])
     };
     vec![
-        row("kinetic out", l.kinetic_out, Color::Rgb(0x00, 0x9E, 0x73)),
-        row(
-            "bulk, Eq. (4)",
-            l.dissipated_bulk,
-            Color::Rgb(0xE6, 0x9F, 0x00),
-        ),
-        row(
-            "layer, Eq. (8)",
-            l.dissipated_layer,
-            Color::Rgb(0x56, 0xB4, 0xE9),
-        ),
-        row(
-            "adhesion, Eq. (12)",
-            l.adhesion,
-            Color::Rgb(0xCC, 0x79, 0xA7),
-        ),
-        row(
-            "left in the bulk",
-            l.elastic_retained,
-            Color::Rgb(0xBB, 0xBB, 0xBB),
-        ),
+        row("kinetic out", l.kinetic_out, palette::BLUISH_GREEN),
+        row("bulk, Eq. (4)", l.dissipated_bulk, palette::ORANGE),
+        row("layer, Eq. (8)", l.dissipated_layer, palette::SKY_BLUE),
+        row("adhesion, Eq. (12)", l.adhesion, palette::REDDISH_PURPLE),
+        row("left in the bulk", l.elastic_retained, palette::GREY_LIGHT),
         Line::from(Span::styled(
             format!(
                 "in {} · closure {:.1e}{}",
@@ -128,7 +98,7 @@ pub fn render(frame: &mut Frame, area: Rect, view: &CollisionView) {
             Span::raw(format!(
                 "ε_N {} {} · t_c {} · ξ_max {} │ ",
                 sig(t.eps_n, 4),
-                t.status.name(),
+                t.status.label(),
                 if t.t_c.is_finite() {
                     qty3(t.t_c, "s")
                 } else {
@@ -142,106 +112,20 @@ pub fn render(frame: &mut Frame, area: Rect, view: &CollisionView) {
     );
     let [left, right] =
         Layout::horizontal([Constraint::Percentage(50), Constraint::Percentage(50)]).areas(plots);
-    let xi_t: Vec<(f64, f64)> = t.t.iter().zip(&t.xi).map(|(a, b)| (*a, *b)).collect();
-    let loop_: Vec<(f64, f64)> = t.xi.iter().zip(&t.force).map(|(a, b)| (*a, *b)).collect();
-    // The phase instants, marked on both plots (they are among the samples).
-    let at_phase = |k: usize| t.phases.iter().any(|p| p.t == t.t[k]);
-    let marks_t: Vec<(f64, f64)> = (0..t.t.len())
-        .filter(|&k| at_phase(k))
-        .map(|k| (t.t[k], t.xi[k]))
-        .collect();
-    let marks_f: Vec<(f64, f64)> = (0..t.t.len())
-        .filter(|&k| at_phase(k))
-        .map(|k| (t.xi[k], t.force[k]))
-        .collect();
-    fn chart<'a>(
-        data: &'a [(f64, f64)],
-        second: &'a [(f64, f64)],
-        marks: &'a [(f64, f64)],
-        x: [f64; 2],
-        y: [f64; 2],
-        xl: &str,
-        yl: &str,
-    ) -> Chart<'a> {
-        let orange = Style::new().fg(Color::Rgb(0xE6, 0x9F, 0x00));
-        let purple = Style::new().fg(Color::Rgb(0xCC, 0x79, 0xA7));
-        let mut sets = vec![
-            Dataset::default()
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(orange)
-                .data(data),
-        ];
-        if !second.is_empty() {
-            sets.push(
-                Dataset::default()
-                    .marker(Marker::Braille)
-                    .graph_type(GraphType::Line)
-                    .style(purple)
-                    .data(second),
-            );
-        }
-        sets.push(
-            Dataset::default()
-                .marker(Marker::Block)
-                .graph_type(GraphType::Scatter)
-                .style(Style::new().fg(Color::White))
-                .data(marks),
-        );
-        Chart::new(sets)
-            .x_axis(
-                Axis::default()
-                    .title(xl.to_string())
-                    .bounds(x)
-                    .labels(vec![Span::raw(sig(x[0], 2)), Span::raw(sig(x[1], 2))]),
-            )
-            .y_axis(
-                Axis::default()
-                    .title(yl.to_string())
-                    .bounds(y)
-                    .labels(vec![Span::raw(sig(y[0], 2)), Span::raw(sig(y[1], 2))]),
-            )
+    // The core's two figures of this collision, drawn by the one adapter.
+    let figs = collision_figures(view.g, t, view.dynamic_loop);
+    let opts = plot::Options {
+        colors: view.colors,
+        cursor: None,
+        legend_rows: 2,
+        bold: None,
+        y_title: true,
+    };
+    for (fig, area) in figs.iter().zip([left, right]) {
+        plot::draw(frame.buffer_mut(), area, fig, &opts);
     }
     frame.render_widget(
-        chart(
-            &xi_t,
-            &[],
-            &marks_t,
-            bounds(&t.t),
-            bounds(&t.xi),
-            "t [s]",
-            "ξ [m]",
-        ),
-        left,
+        Paragraph::new(ledger_lines(t, ledger.width, view.colors)),
+        ledger,
     );
-    // With adhesion the dynamic JKR model's loop (pink) beside the paper's (orange).
-    let all_xi: Vec<f64> =
-        t.xi.iter()
-            .copied()
-            .chain(view.dynamic_loop.iter().map(|p| p.0))
-            .collect();
-    let all_f: Vec<f64> = t
-        .force
-        .iter()
-        .copied()
-        .chain(view.dynamic_loop.iter().map(|p| p.1))
-        .collect();
-    let title = if view.dynamic_loop.is_empty() {
-        "F [N]"
-    } else {
-        "F [N] (pink: brilliantov2007)"
-    };
-    frame.render_widget(
-        chart(
-            &loop_,
-            view.dynamic_loop,
-            &marks_f,
-            bounds(&all_xi),
-            bounds(&all_f),
-            "ξ [m]",
-            title,
-        ),
-        right,
-    );
-    frame.render_widget(Paragraph::new(ledger_lines(t, ledger.width)), ledger);
 }

@@ -81,36 +81,10 @@ pub const GLOSSARY: &[(&str, &str)] = &[
     ),
 ];
 
-/// What each stick-map class means, and whether it is an artifact of the printed law rather than
-/// a physical regime.
+/// What each stick-map class means (the core's words, [`StickClass::meaning`]), and whether it is
+/// an artifact of the printed law rather than a physical regime.
 pub fn class_meaning(c: StickClass) -> (&'static str, bool) {
-    match c {
-        StickClass::Rolling => (
-            "rolling (ψ ≤ ψ₀): the contact point sticks; the tangential motion reverses, ε_T = −ε_N(g_T)",
-            false,
-        ),
-        StickClass::Sliding => (
-            "sliding (ψ > ψ₀): the grains slide over each other; ε_T from the sliding law",
-            false,
-        ),
-        StickClass::RollingStop => (
-            "rolling stop: rolling with ε_N(g_T) = 0; the tangential motion stops, the normal one rebounds",
-            false,
-        ),
-        StickClass::SlidingGap => (
-            "sliding gap: an artifact of the printed law, not a regime; Eq. (23)'s radicand is negative, ε_T clamped to 0 (W: Walton's law has no gap)",
-            true,
-        ),
-        StickClass::Aggregation => (
-            "aggregation: ε_N = 0 and ε_T = 0; both motions stop, the grains stick together",
-            false,
-        ),
-        StickClass::NormalStickOnly => (
-            "normal stick only: ε_N = 0 but ε_T ≠ 0; the normal motion stops, the tangential one goes on",
-            false,
-        ),
-        StickClass::Undefined => ("undefined: g_N = g_T = 0, no collision", false),
-    }
+    (c.meaning(), rime_core::explorer::help::class_is_artifact(c))
 }
 
 /// Splits `text` into lines of at most `width` characters at spaces.
@@ -222,6 +196,19 @@ pub fn content(inner_w: usize) -> Vec<Line<'static>> {
         .min(inner_w / 3);
     for (name, text) in GLOSSARY {
         lines.extend(entry(name, keys, text, plain, gw, inner_w));
+    }
+    lines.push(Line::default());
+    // The core's warnings, as the status line names them (the page and the CLI say the same).
+    lines.push(heading("Warnings (status line)"));
+    let ww = rime_core::explorer::warning::Warning::ALL
+        .iter()
+        .map(|w| w.short().chars().count())
+        .max()
+        .unwrap_or(8)
+        .min(inner_w / 3);
+    for w in rime_core::explorer::warning::Warning::ALL {
+        let text = format!("{} ({})", w.help(), w.equation());
+        lines.extend(entry(w.short(), keys, &text, plain, ww, inner_w));
     }
     lines.push(Line::default());
     lines.push(heading("Sources"));

@@ -1,23 +1,22 @@
 //! The one-line views: derived quantities, status (accuracy, timing, warnings), message or input.
 
 use crate::explore::app::{Confirm, LineInput, SCENE_FILE, Tone};
-use crate::explore::compute::FrameData;
+use crate::explore::compute::Computed;
 use crate::explore::format::{num3, qty3};
 use ratatui::style::{Color, Style};
 use ratatui::text::{Line, Span};
 use rime_core::params::PARAMETERS;
-use rime_core::scene::{ContactEnd, Damping, DampingFormula, LayerReading};
-use rime_core::{Accuracy, Scene, Status};
+use rime_core::{Accuracy, Status};
 use std::time::Duration;
 
 /// The derived quantities of the frame's contact (δ at the chart cursor when there is room).
-pub fn derived_line(data: Option<&FrameData>, cursor: usize, width: u16) -> Line<'static> {
+pub fn derived_line(data: Option<&Computed>, cursor: usize, width: u16) -> Line<'static> {
     let Some(data) = data else {
         return Line::from("computing…");
     };
     let Some(c) = data.contact.as_ref() else {
         return Line::from(Span::styled(
-            data.error.clone().unwrap_or_default(),
+            data.problem().unwrap_or_default(),
             Style::new().fg(Color::Red),
         ));
     };
@@ -62,30 +61,13 @@ pub fn derived_line(data: Option<&FrameData>, cursor: usize, width: u16) -> Line
     Line::from(spans)
 }
 
-/// Options in use that deviate from a physically consistent reading of the paper.
-pub fn paper_options(s: &Scene) -> Vec<&'static str> {
-    let mut out = Vec::new();
-    if s.layer.is_some_and(|l| l.reading == LayerReading::Literal) {
-        out.push("Eq. (8) read literally");
-    }
-    if s.contact_end == ContactEnd::ZeroOverlap {
-        out.push("contact ends at zero overlap");
-    }
-    if matches!(s.bulk.damping, Damping::Viscosities(v) if v.formula == DampingFormula::AsPrinted) {
-        out.push("A formula as printed in the paper");
-    }
-    out
-}
-
 /// What the status line shows.
 #[derive(Debug, Clone, Copy)]
 pub struct StatusView<'a> {
-    /// The scene being explored (its paper-inconsistent options are flagged).
-    pub scene: &'a Scene,
     /// Accuracy level.
     pub accuracy: Accuracy,
     /// The latest frame.
-    pub data: Option<&'a FrameData>,
+    pub data: Option<&'a Computed>,
     /// Compute time to show instead of the measured one.
     pub elapsed: Option<Duration>,
     /// Whether a newer frame is being computed.
@@ -122,19 +104,29 @@ pub fn status_line(app: &StatusView, width: u16) -> Line<'static> {
     }
     let warn = Style::new().fg(Color::LightRed);
     if let Some(d) = app.data {
-        if let Some(Some(n)) = d.current.get(app.cursor)
+        if let Some(n) = d.point(app.cursor)
             && n.status == Status::Overdamped
         {
             spans.push(Span::styled("│ ⚠ overdamped at cursor ", warn));
         }
-        if let (Some(e), Some(_)) = (&d.error, &d.contact) {
+        if let (Some(e), Some(_)) = (d.problem(), &d.contact) {
             spans.push(Span::styled(format!("│ ⚠ {e} "), warn));
         }
-        for note in &d.notes {
+        if let Some(note) = d.notes() {
             spans.push(Span::styled(format!("│ {note} "), warn));
         }
     }
-    let opts = paper_options(app.scene);
+    // The core's warnings of the frame (the page and `rime curve` show the same set); the
+    // options that depart from the paper in yellow.
+    let shown = app.data.map(|d| d.warnings.as_slice()).unwrap_or_default();
+    let opts: Vec<&str> = shown
+        .iter()
+        .filter(|w| w.is_paper_option())
+        .map(|w| w.short())
+        .collect();
+    for w in shown.iter().filter(|w| !w.is_paper_option()) {
+        spans.push(Span::styled(format!("│ ⚠ {} ", w.short()), warn));
+    }
     if !opts.is_empty() {
         let used: usize = spans.iter().map(|s| s.content.chars().count()).sum();
         let long = format!("│ ⚠ paper-inconsistent option in use: {}", opts.join(", "));

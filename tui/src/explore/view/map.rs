@@ -1,6 +1,7 @@
 //! The stick map: one terminal cell per grid cell, the class letter on the class colour.
 
-use crate::explore::compute::FrameData;
+use super::plot::Colors;
+use crate::explore::compute::Computed;
 use crate::explore::format::{num3, qty3};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -8,19 +9,18 @@ use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Paragraph, Widget, Wrap};
 use rime_core::StickClass;
+use rime_core::explorer::figures;
 use rime_core::explorer::palette;
 
-/// Colour of each stick-map class (the one palette, [`palette::class`]).
-pub fn class_color(c: StickClass) -> Color {
-    super::rgb(palette::class(c))
+/// A class's cell: its colour ([`palette::class`]) with the letter colour that reads on it,
+/// through the one palette mapping ([`Colors`]).
+fn class_cell(c: StickClass, colors: Colors) -> Style {
+    colors.cell(palette::class(c))
 }
 
-/// The letter colour on a class's cell (black or white, whichever reads better).
-fn class_ink(c: StickClass) -> Color {
-    super::rgb(palette::class(c).text_on())
-}
-
-/// Legend name of a class (the JSON name with spaces).
+/// Legend name of a class in the narrow terminal legend: the core's name in words (`sliding gap`);
+/// [`legend_label`] marks the artifact, the core's [`StickClass::label`] (tables, figures) spells
+/// it out.
 pub fn class_label(c: StickClass) -> String {
     c.name().replace('_', " ")
 }
@@ -45,10 +45,11 @@ pub fn legend_label(c: StickClass, w: usize) -> String {
 pub fn map(
     buf: &mut Buffer,
     area: Rect,
-    data: Option<&FrameData>,
+    data: Option<&Computed>,
     cursor: (usize, usize),
     focused: bool,
     shared: bool,
+    colors: Colors,
 ) -> Option<Rect> {
     let focus = focused;
     let mut title = vec![
@@ -81,12 +82,12 @@ pub fn map(
         .border_type(kind)
         .border_style(style)
         .title(Line::from(title))
-        .title_bottom(map_readout(data, cursor));
+        .title_bottom(map_readout(data, cursor, colors));
     let inner = block.inner(area);
     block.render(area, buf);
     let data = data?;
-    let Some(m) = data.map.as_ref() else {
-        let text = if data.scene.friction.is_none() {
+    let Some(m) = data.stick_map() else {
+        let text = if data.request.scene.friction.is_none() {
             "friction is off: no tangential restitution (select 'friction', press Enter)"
         } else {
             "no stick map"
@@ -101,9 +102,23 @@ pub fn map(
     if n < 2 || inner.height < 3 || inner.width < 20 {
         return None;
     }
+    // The core's figure of the map (what `x` exports): its axes' ticks and labels.
+    let fig = figures::map_figure(&data.frame, env!("CARGO_PKG_VERSION"))?;
+    let max = fig.x.max;
     let legend_w: u16 = if inner.width >= 60 { 24 } else { 20 };
-    let max_label = qty3(data.map_max, "m/s");
-    let axis_w: u16 = (max_label.chars().count() as u16 + 1).max(6);
+    let too_small = inner.height < 6;
+    let y_ticks: Vec<(f64, String)> = fig
+        .y
+        .ticks(usize::from((inner.height / 4).clamp(2, 6)))
+        .into_iter()
+        .filter_map(|t| Some((t.value, t.label?)))
+        .collect();
+    let axis_w: u16 = y_ticks
+        .iter()
+        .map(|(_, l)| l.chars().count() as u16 + 1)
+        .max()
+        .unwrap_or(2)
+        .max(6);
     let show_legend = inner.width >= axis_w + legend_w + 12;
     let plot_w = inner.width - axis_w - if show_legend { legend_w + 1 } else { 0 };
     // Too narrow for the legend beside the map but tall: a compact legend below it.
@@ -116,25 +131,52 @@ pub fn map(
     let plot_h = inner.height - 1 - below_rows;
     let px = inner.x + axis_w;
     let py = inner.y;
-    // Y axis labels.
-    let put = |buf: &mut Buffer, x: u16, y: u16, s: &str, w: u16| {
-        buf.set_stringn(x, y, s, w as usize, Style::new().fg(Color::Gray));
-    };
-    put(buf, inner.x, py, &max_label, axis_w - 1);
-    if plot_h >= 3 {
-        put(buf, inner.x, py + plot_h / 2, "g_N ↑", axis_w - 1);
+    let gray = Style::new().fg(Color::Gray);
+    // Where a speed is drawn: the cell of the grid point nearest it.
+    let col_of = |v: f64| (v / max * f64::from(plot_w - 1)).round() as u16;
+    let row_of = |v: f64| plot_h - 1 - (v / max * f64::from(plot_h - 1)).round() as u16;
+    // Y labels on the rows of their values, g_N on a free row between them.
+    let mut taken_rows = Vec::new();
+    for (v, label) in &y_ticks {
+        let r = row_of(*v);
+        if r < plot_h && !taken_rows.contains(&r) && !too_small {
+            buf.set_stringn(inner.x, py + r, label, (axis_w - 1) as usize, gray);
+            taken_rows.push(r);
+        }
     }
-    put(buf, inner.x, py + plot_h - 1, "0", axis_w - 1);
-    // X axis labels.
+    if let Some(r) = (plot_h / 3..plot_h).find(|r| !taken_rows.iter().any(|t| t.abs_diff(*r) < 1)) {
+        buf.set_stringn(inner.x, py + r, "g_N ↑", (axis_w - 1) as usize, gray);
+        // The unit of both axes (the x title may not fit).
+        if r + 1 < plot_h && !taken_rows.contains(&(r + 1)) {
+            buf.set_stringn(inner.x, py + r + 1, "[m/s]", (axis_w - 1) as usize, gray);
+        }
+    }
+    // X labels centred on their columns where they fit, then the axis' title with its unit.
     let ly = py + plot_h;
-    put(buf, px, ly, "0", plot_w);
-    let mid = "g_T →";
-    if plot_w > 16 {
-        put(buf, px + plot_w / 2 - 3, ly, mid, 6);
+    let mut taken: Vec<(u16, u16)> = Vec::new();
+    let x_ticks = fig.x.ticks(usize::from((plot_w / 9).max(2)));
+    for t in &x_ticks {
+        let Some(label) = &t.label else { continue };
+        let w = label.chars().count() as u16;
+        let c = px + col_of(t.value);
+        let start = c
+            .saturating_sub(w / 2)
+            .max(px)
+            .min((px + plot_w).saturating_sub(w));
+        if taken.iter().all(|(a, b)| start + w < *a || start > *b + 1) {
+            buf.set_string(start, ly, label, gray);
+            taken.push((start, start + w));
+        }
     }
-    let mw = max_label.chars().count() as u16;
-    if plot_w > mw + 2 {
-        put(buf, px + plot_w - mw, ly, &max_label, mw);
+    let free_from = taken.iter().map(|(_, b)| *b + 2).max().unwrap_or(px);
+    let end = px + plot_w;
+    let words: Vec<&str> = fig.x.label.split(' ').collect();
+    if let Some(tail) = (0..words.len())
+        .map(|k| words[k..].join(" "))
+        .find(|t| free_from + t.chars().count() as u16 <= end)
+    {
+        let w = tail.chars().count() as u16;
+        buf.set_string(end - w, ly, &tail, gray);
     }
     // One cell per terminal cell: the class letter on the class colour (readable without colour).
     let index = |k: u16, len: u16| -> usize {
@@ -153,8 +195,7 @@ pub fn map(
             };
             if let Some(cell) = buf.cell_mut((px + c, py + r)) {
                 cell.set_char(class.letter())
-                    .set_fg(class_ink(class))
-                    .set_bg(class_color(class));
+                    .set_style(class_cell(class, colors));
             }
         }
     }
@@ -174,10 +215,7 @@ pub fn map(
         let mut spans = Vec::new();
         for c in StickClass::ALL {
             let artifact = super::help::class_meaning(c).1;
-            spans.push(Span::styled(
-                c.letter().to_string(),
-                Style::new().fg(class_ink(c)).bg(class_color(c)),
-            ));
+            spans.push(Span::styled(c.letter().to_string(), class_cell(c, colors)));
             let name = if artifact {
                 format!(
                     "\u{a0}{}\u{a0}(artifact) ",
@@ -213,12 +251,7 @@ pub fn map(
             if y >= inner.y + inner.height {
                 break;
             }
-            buf.set_string(
-                lx,
-                y,
-                format!("{}", c.letter()),
-                Style::new().fg(class_ink(*c)).bg(class_color(*c)),
-            );
+            buf.set_string(lx, y, format!("{}", c.letter()), class_cell(*c, colors));
             let artifact = super::help::class_meaning(*c).1;
             buf.set_stringn(
                 lx + 2,
@@ -257,8 +290,8 @@ pub fn map(
 }
 
 /// The map's readout at the cursor: speeds, ε_T and the class.
-fn map_readout(data: Option<&FrameData>, cursor: (usize, usize)) -> Line<'static> {
-    let Some(m) = data.and_then(|d| d.map.as_ref()) else {
+fn map_readout(data: Option<&Computed>, cursor: (usize, usize), colors: Colors) -> Line<'static> {
+    let Some(m) = data.and_then(|d| d.stick_map()) else {
         return Line::default();
     };
     let n = m.n();
@@ -280,7 +313,7 @@ fn map_readout(data: Option<&FrameData>, cursor: (usize, usize)) -> Line<'static
         )),
         Span::styled(
             format!("{} ", class_label(*class)),
-            Style::new().fg(class_color(*class)),
+            colors.fg(palette::class(*class)),
         ),
         Span::styled(
             if *class == StickClass::SlidingGap {

@@ -1,6 +1,7 @@
 //! Drawing: [`render`] composes the screen from views, each a pure function of the data it shows
 //! (not of the whole [`App`]): [`panel`] the parameters, [`chart`] the ε_N chart, [`map`] the stick
-//! map, [`lines`] the derived, status and message lines, [`help`] the `?` overlay and [`tidal`] the
+//! map, [`plot`] the one adapter that draws the core's figures (and maps the palette to terminal
+//! colours), [`lines`] the derived, status and message lines, [`help`] the `?` overlay and [`tidal`] the
 //! appendix calculator. Where each goes is [`super::layout`].
 
 pub mod chart;
@@ -9,6 +10,7 @@ pub mod help;
 pub mod lines;
 pub mod map;
 pub mod panel;
+pub mod plot;
 pub mod stick;
 pub mod tidal;
 
@@ -19,49 +21,6 @@ use ratatui::layout::{Alignment, Rect};
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{BorderType, Paragraph, Wrap};
-use rime_core::explorer::palette;
-
-/// Replaces spaces by non-breaking ones (a value and its unit stay on one line).
-pub(super) fn nb(s: String) -> String {
-    s.replace(' ', "\u{a0}")
-}
-
-/// A palette colour ([`palette`], the one palette of every surface) as a terminal colour.
-pub const fn rgb(c: palette::Rgb) -> Color {
-    Color::Rgb(c.r, c.g, c.b)
-}
-
-/// The family of curves, in order.
-const FAMILY_COLORS: [Color; 4] = [
-    rgb(palette::FAMILY[0]),
-    rgb(palette::FAMILY[1]),
-    rgb(palette::FAMILY[2]),
-    rgb(palette::FAMILY[3]),
-];
-/// The comparisons (`c`): measured laws and other models, in the order drawn.
-const OVERLAY_COLORS: [Color; 5] = [
-    rgb(palette::VERMILLION),
-    rgb(palette::SKY_BLUE),
-    rgb(palette::BLUISH_GREEN),
-    rgb(palette::REDDISH_PURPLE),
-    rgb(palette::YELLOW),
-];
-/// This scene's curve.
-const CURRENT: Color = rgb(palette::SCENE);
-/// A pinned curve (`P`), drawn dashed.
-const PINNED: Color = Color::White;
-/// The clean-surface curve.
-const CLEAN: Color = rgb(palette::CLEAN);
-/// The critical-speed markers (the colour of this scene's curve).
-const GS_LAYER: Color = rgb(palette::CRITICAL);
-const GS_ADHESION: Color = rgb(palette::CRITICAL);
-/// The Bridges et al. (1984) law: a line beneath the model's curves.
-const BRIDGES: Color = rgb(palette::EXPERIMENT);
-/// The microgravity experiments' boxes (Heißelmann et al. 2010, Hill et al. 2015).
-const BAND_COLORS: [Color; 2] = [rgb(palette::EXPERIMENT), rgb(palette::EXPERIMENT)];
-/// Short legend names of the bands, in the order of `experiments::bands`.
-const BAND_SHORT: [&str; 2] = ["Heißelmann'10", "Hill'15"];
-const BAND_TINY: [&str; 2] = ["H10", "H15"];
 
 /// The focused pane's border: thick and highlighted; the others thin and dim.
 pub(super) fn pane_border(focused: bool) -> (BorderType, Style) {
@@ -112,6 +71,7 @@ pub fn render(app: &App, frame: &mut Frame) {
                 y_log: app.y_log,
                 pinned: app.pinned.as_ref(),
                 shared: l.shared,
+                colors: app.colors,
             },
         );
     }
@@ -123,6 +83,7 @@ pub fn render(app: &App, frame: &mut Frame) {
             app.map_cursor,
             app.focus == Focus::Map,
             l.shared,
+            app.colors,
         );
     }
     frame.render_widget(
@@ -131,7 +92,6 @@ pub fn render(app: &App, frame: &mut Frame) {
     );
     app.drawn.set(drawn);
     let status = lines::StatusView {
-        scene: &app.scene,
         accuracy: app.accuracy,
         data,
         elapsed: app.fixed_elapsed,
@@ -178,6 +138,7 @@ pub fn render(app: &App, frame: &mut Frame) {
             g: *g,
             trajectory: result.as_ref().map_err(String::as_str),
             dynamic_loop: &app.inside_dynamic,
+            colors: app.colors,
         };
         collision::render(frame, l.views(), &view);
     }

@@ -188,22 +188,16 @@ pub fn lines(t: &TidalView) -> Vec<Line<'static>> {
         out.push(Line::from(spans));
     }
     // Verdict: the pair separates where the tidal pull exceeds adhesion plus self-gravity.
-    let hold = tidal.surface_force + tidal.gravity;
-    let (verdict, color) = if tidal.delta_f < hold {
-        (
-            format!(
-                "ΔF < F_s + F_g (×{}): pair stays in contact",
-                sig(hold / tidal.delta_f, 2)
-            ),
-            Color::Green,
-        )
+    // The core's one verdict (the page and `rime tidal` say the same).
+    let color = if tidal.holds() {
+        Color::Green
     } else {
-        (
-            "ΔF ≥ F_s + F_g: the tide pulls the pair apart".to_string(),
-            Color::LightRed,
-        )
+        Color::LightRed
     };
-    out.push(Line::from(Span::styled(verdict, Style::new().fg(color))));
+    out.push(Line::from(Span::styled(
+        tidal.verdict(),
+        Style::new().fg(color),
+    )));
     if t.paper_inputs {
         let notes = [
             "¹ A.2 is πγR_eff, R_eff = r/2; the print is πγr",
