@@ -16,6 +16,12 @@
 //! stable JKR branch, `dx/db = 0`: `b_c = (κ/4)^(2/3)`, `x_c = −(3/4) κ (κ/4)^(1/3)` (the neck
 //! ends, the force jumps from `F_el(b_c)` to 0). If the grains stop separating before `x_c` they
 //! are caught: they aggregate (ε_N = 0).
+//!
+//! The motion has the Lyapunov function `E = v²/2 + U(b)`, `U(b) = (2/5)b⁵ − κ b^(7/2) + (3/8)κ² b²`
+//! (the JKR potential along the stable branch, `dU/dx = b³ − 1.5 κ b^(3/2)`): `dE/ds = −1.5 δ b v² ≤ 0`.
+//! Pull-off needs `E ≥ U(b_c)` at `x_c`, so once `E` falls below `U(b_c)` the grains are caught for
+//! good. That is the stop detected here: with strong damping they creep towards the JKR equilibrium
+//! without ever turning back, so waiting for `ξ' = 0` would never end (issue 25).
 
 use crate::contact::Contact;
 use crate::error::{Error, Result};
@@ -62,7 +68,9 @@ pub struct Collision {
     pub outcome: Outcome,
     /// Contact duration \[s\] (infinite when stuck or overdamped).
     pub t_c: f64,
-    /// Maximum compression ξ_max \[m\] (0 where δ > [`DELTA_LIMIT`] and nothing is integrated).
+    /// Maximum compression ξ_max \[m\] (0 where δ > [`DELTA_LIMIT`] and nothing is integrated; for
+    /// grains that creep onto the JKR equilibrium without turning back, the overlap where their
+    /// speed fell below 1e-9 of the impact speed).
     pub xi_max: f64,
     /// Right-hand-side evaluations spent.
     pub rhs_evaluations: usize,
@@ -107,23 +115,38 @@ struct System {
     /// Pull-off overlap x_c and radius b_c.
     x_c: f64,
     b_c: f64,
+    /// The JKR potential at pull-off, `U(b_c)`.
+    u_c: f64,
 }
 
 const MAX: usize = 0;
 const PULL_OFF: usize = 1;
 const STOP: usize = 2;
 const CREEP: usize = 3;
+const CAUGHT: usize = 4;
+const SLOW: usize = 5;
 
 impl System {
     fn new(delta: f64, kappa: f64) -> System {
         let q = powf(0.25 * kappa, 1.0 / 3.0);
-        System {
+        let mut sys = System {
             k: 1.5 * delta,
             kappa,
             kappa_third: powf(kappa, 1.0 / 3.0),
             x_c: -0.75 * kappa * q,
             b_c: q * q,
-        }
+            u_c: 0.0,
+        };
+        sys.u_c = sys.potential(sys.b_c);
+        sys
+    }
+
+    /// The JKR potential `U(b) = (2/5)b⁵ − κ b^(7/2) + (3/8)κ² b²` (zero at `b = 0`), whose
+    /// derivative along the branch is the elastic force: `dU/dx = b³ − 1.5 κ b^(3/2)`.
+    #[inline]
+    fn potential(&self, b: f64) -> f64 {
+        let b2 = b * b;
+        0.4 * b2 * b2 * b - self.kappa * b2 * b * sqrt(b) + 0.375 * self.kappa * self.kappa * b2
     }
 
     /// The contact radius `b(x)` on the stable JKR branch: the largest root `s = √b` of
@@ -164,7 +187,7 @@ impl System {
     }
 }
 
-impl OdeSystem<2, 4> for System {
+impl OdeSystem<2, 6> for System {
     #[inline]
     fn rhs(&self, sigma: f64, y: &[f64; 2], dydt: &mut [f64; 2]) {
         let b = self.radius(y[0]);
@@ -174,17 +197,25 @@ impl OdeSystem<2, 4> for System {
     }
 
     #[inline]
-    fn events(&self, _sigma: f64, y: &[f64; 2], out: &mut [f64; 4]) {
+    fn events(&self, _sigma: f64, y: &[f64; 2], out: &mut [f64; 6]) {
         out[MAX] = y[1];
         // Pull-off only counts while separating (x falls through x_c).
         out[PULL_OFF] = y[0] - self.x_c;
         out[STOP] = y[1];
         out[CREEP] = y[1] + CREEP_FLOOR;
+        // Energy left above what pull-off needs (only meaningful with adhesion).
+        out[CAUGHT] = if self.kappa > 0.0 {
+            0.5 * y[1] * y[1] + self.potential(self.radius(y[0])) - self.u_c
+        } else {
+            1.0
+        };
+        out[SLOW] = y[1] - CREEP_FLOOR;
     }
 
     fn direction(&self, which: usize) -> Direction {
         match which {
             STOP | CREEP => Direction::Rising,
+            CAUGHT | SLOW => Direction::Falling,
             _ => Direction::Falling,
         }
     }
@@ -194,11 +225,15 @@ impl OdeSystem<2, 4> for System {
 type Raw = (f64, f64, f64, Outcome, usize);
 
 /// Integrates one collision with damping `delta`, adhesion `kappa` and relative tolerance `rtol`;
-/// `visit(σ, x, v, b)` sees the start, every accepted step and every event (in order).
+/// `visit(σ, x, v, b)` sees the start, every accepted step and every event (in order). The outcome
+/// is decided when the grains are caught (the energy falls below what pull-off needs); with
+/// `follow_caught` the path is followed on to where they stop separating (for the force loop),
+/// as far as the step budget allows.
 fn integrate(
     delta: f64,
     kappa: f64,
     rtol: f64,
+    follow_caught: bool,
     mut visit: impl FnMut(f64, f64, f64, f64),
 ) -> Result<Raw> {
     if !(delta.is_finite() && delta >= 0.0) {
@@ -249,8 +284,18 @@ fn integrate(
     visit(0.0, y0[0], y0[1], sys.radius(y0[0]));
     let mut x_max: f64 = 0.0;
     let mut past_max = false;
+    // Caught from the start when the impact's kinetic energy cannot pay the hysteresis (the event
+    // below only sees E falling through U(b_c)).
+    let mut caught =
+        kappa > 0.0 && 0.5 * y0[1] * y0[1] + sys.potential(sys.radius(y0[0])) < sys.u_c;
+    let stuck = |x_max: f64, n: usize| Ok((0.0, f64::INFINITY, x_max, Outcome::Stuck, n));
     loop {
         let outcome = match stepper.step(&sys) {
+            // Caught grains creeping onto the JKR equilibrium (the overdamped approach never turns
+            // back, so no event ends it): the outcome is already decided.
+            Err(Error::StepBudgetExceeded { .. }) if caught => {
+                return stuck(x_max, stepper.rhs_evaluations());
+            }
             Err(Error::StepBudgetExceeded { .. }) if past_max => {
                 return Ok((
                     0.0,
@@ -265,14 +310,24 @@ fn integrate(
         match outcome {
             StepOutcome::Step => {
                 let (t, y) = (stepper.t(), *stepper.y());
+                x_max = x_max.max(y[0]);
                 visit(t, y[0], y[1], sys.radius(y[0]));
             }
             StepOutcome::Event { t, y, which } => {
+                x_max = x_max.max(y[0]);
                 visit(t, y[0], y[1], sys.radius(y[0]));
                 match which {
                     MAX if !past_max => {
                         past_max = true;
-                        x_max = y[0];
+                        if caught && !follow_caught {
+                            return stuck(x_max, stepper.rhs_evaluations());
+                        }
+                    }
+                    CAUGHT => {
+                        caught = true;
+                        if past_max && !follow_caught {
+                            return stuck(x_max, stepper.rhs_evaluations());
+                        }
                     }
                     PULL_OFF if past_max || y[1] < 0.0 => {
                         let eps = (-y[1]).clamp(0.0, 1.0);
@@ -285,13 +340,12 @@ fn integrate(
                         ));
                     }
                     STOP if past_max => {
-                        return Ok((
-                            0.0,
-                            f64::INFINITY,
-                            x_max,
-                            Outcome::Stuck,
-                            stepper.rhs_evaluations(),
-                        ));
+                        return stuck(x_max, stepper.rhs_evaluations());
+                    }
+                    // Caught and slower than 1e-9 of the impact speed either way: the grains
+                    // settle onto the JKR equilibrium; nothing visible is left to follow.
+                    SLOW | CREEP if caught => {
+                        return stuck(x_max, stepper.rhs_evaluations());
                     }
                     CREEP if past_max && kappa == 0.0 => {
                         // Without adhesion nothing catches the grains, but the rebound is < 1e-9.
@@ -305,6 +359,9 @@ fn integrate(
                     }
                     _ => {}
                 }
+            }
+            StepOutcome::Done if caught => {
+                return stuck(x_max, stepper.rhs_evaluations());
             }
             StepOutcome::Done if past_max => {
                 return Ok((
@@ -392,7 +449,7 @@ impl Dynamic {
                 });
             }
         }
-        let (eps, s_c, x_max, outcome, n) = integrate(delta, kappa, rtol, |_, _, _, _| {})?;
+        let (eps, s_c, x_max, outcome, n) = integrate(delta, kappa, rtol, false, |_, _, _, _| {})?;
         let xi_star = self.length_scale(g);
         Ok(Collision {
             eps,
@@ -481,7 +538,7 @@ impl Dynamic {
         let radius_scale = sqrt(self.r_eff * xi_star);
         let k = 1.5 * delta;
         let mut points = alloc::vec::Vec::new();
-        let (_, _, _, outcome, _) = integrate(delta, kappa, rtol, |sigma, x, v, b| {
+        let (_, _, _, outcome, _) = integrate(delta, kappa, rtol, true, |sigma, x, v, b| {
             let elastic = b * b * b - 1.5 * kappa * b * sqrt(b);
             points.push(LoopPoint {
                 t: sigma * sigma * tau,
@@ -527,7 +584,8 @@ mod tests {
     #[test]
     fn elastic_hertz_limit_conserves_energy() {
         // δ = κ = 0: Hertz, ε = 1 and x_max = (5/4)^(2/5) (energy conservation).
-        let (eps, s_c, x_max, outcome, _) = integrate(0.0, 0.0, 1e-12, |_, _, _, _| {}).unwrap();
+        let (eps, s_c, x_max, outcome, _) =
+            integrate(0.0, 0.0, 1e-12, false, |_, _, _, _| {}).unwrap();
         assert_eq!(outcome, Outcome::PullOff);
         assert!((eps - 1.0).abs() < 1e-9, "{eps}");
         assert!((x_max - libm::pow(1.25, 0.4)).abs() < 1e-10);
