@@ -107,7 +107,7 @@ pub(crate) fn speed(flag: &str, text: &str, allow_zero: bool) -> CliResult<f64> 
     // The core names the field in front of its message; the flag goes there instead.
     let v = rime_core::units::parse_quantity("", text, "m/s").map_err(|e| {
         let shown: String = text.trim().chars().take(40).collect();
-        CliError(format!("{flag} {shown}{e}"))
+        CliError::input(format!("{flag} {shown}{e}"))
     })?;
     let ok = if allow_zero { v >= 0.0 } else { v > 0.0 };
     if !ok || v > 1e6 {
@@ -246,7 +246,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             "--set" => sets.push(value),
             "--accuracy" => {
                 accuracy = Accuracy::parse(&value)
-                    .map_err(|e| CliError(format!("--accuracy {value}: {e}")))?
+                    .map_err(|e| CliError::input(format!("--accuracy {value}: {e}")))?
             }
             "--format" => format = Some(format_of(sub, &value)?),
             _ => flags.push((flag.name, value)),
@@ -307,7 +307,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
     let owned = |name: &str| get(name).map(str::to_string);
     let switch = |name: &str| get(name) == Some("true");
     let require = |name: &str| -> CliResult<&str> {
-        get(name).ok_or_else(|| CliError(format!("{name}: required")))
+        get(name).ok_or_else(|| CliError::input(format!("{name}: required")))
     };
     Ok(match sub.name {
         "" => Command::Explore(common),

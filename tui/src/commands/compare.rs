@@ -114,9 +114,7 @@ fn evaluators(common: &Common, args: &Args) -> CliResult<Vec<Evaluator>> {
     }
     args.models
         .iter()
-        .map(|&m| {
-            Evaluator::new(m, &common.scene).map_err(|e| CliError(format!("{}: {e}", m.name())))
-        })
+        .map(|&m| Evaluator::new(m, &common.scene).map_err(|e| CliError::from(e).context(m.name())))
         .collect()
 }
 
@@ -182,7 +180,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         for &g in &args.g {
             let r = e
                 .eps(g, common.accuracy)
-                .map_err(|x| CliError(format!("{name}, g_n = {g}: {x}")))?;
+                .map_err(|x| CliError::from(x).context(format!("{name}, g_n = {g}")))?;
             records.push(Record {
                 model: name,
                 g_n: g,
@@ -192,7 +190,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         }
         let cs = e
             .characteristic_speeds(common.accuracy)
-            .map_err(|x| CliError(format!("{name}: {x}")))?;
+            .map_err(|x| CliError::from(x).context(name))?;
         for s in cs.iter() {
             speeds.push(Speed {
                 model: name,
@@ -209,7 +207,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         for &g in &args.g {
             let v = law
                 .eval(g, radius)
-                .map_err(|x| CliError(format!("atlas:{}, g_n = {g}: {x}", law.id)))?;
+                .map_err(|x| CliError::from(x).context(format!("atlas:{}, g_n = {g}", law.id)))?;
             records.push(Record {
                 model: law.id,
                 g_n: g,
@@ -278,7 +276,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
 fn to_json<T: Serialize>(v: &T) -> CliResult<String> {
     serde_json::to_string_pretty(v)
         .map(|s| s + "\n")
-        .map_err(|e| CliError(e.to_string()))
+        .map_err(|e| CliError::input(e.to_string()))
 }
 
 #[derive(Serialize)]
@@ -306,7 +304,7 @@ fn bench(common: &Common, evaluators: &[Evaluator], g: &[f64]) -> CliResult<Stri
                 for &x in g {
                     sink += e
                         .eps(x, level)
-                        .map_err(|err| CliError(format!("{}: {err}", e.model().name())))?
+                        .map_err(|err| CliError::from(err).context(e.model().name()))?
                         .eps;
                 }
                 n += g.len();

@@ -20,7 +20,7 @@ pub fn run(common: &Common, from: f64, to: f64, n: usize) -> CliResult<String> {
         let normal = contact.normal(g, common.accuracy)?;
         records.push(EpsRecord::new(g, &normal));
     }
-    render(&records, common.format).map_err(CliError)
+    render(&records, common.format).map_err(CliError::input)
 }
 
 #[cfg(test)]

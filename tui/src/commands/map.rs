@@ -13,8 +13,8 @@ const BIG: usize = 400;
 pub fn run(common: &Common, max: f64, n: usize) -> CliResult<String> {
     let contact = cli::contact(common)?;
     if contact.friction.is_none() {
-        return Err(CliError(
-            "friction: is off in this scene; the stick map needs it (--set friction=on)".into(),
+        return Err(CliError::input(
+            "friction: is off in this scene; the stick map needs it (--set friction=on)",
         ));
     }
     let map = {
@@ -44,7 +44,7 @@ pub fn run(common: &Common, max: f64, n: usize) -> CliResult<String> {
             } else {
                 serde_json::to_string(&record)
             };
-            text.map_err(|e| CliError(e.to_string()))? + "\n"
+            text.map_err(|e| CliError::input(e.to_string()))? + "\n"
         }
         Format::Csv => rime_core::explorer::records::map_csv(&map),
         Format::Table => {

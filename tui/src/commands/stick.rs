@@ -39,7 +39,7 @@ fn list(flag: &str, text: &str, lo: f64, hi: f64, unit: &str) -> CliResult<Vec<f
 pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
     let radius = list(
         "--radius",
-        &get("--radius").ok_or_else(|| CliError("--radius: required (m)".into()))?,
+        &get("--radius").ok_or_else(|| CliError::input("--radius: required (m)"))?,
         1e-9,
         1e4,
         "m",
@@ -116,8 +116,9 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     for &r in &args.radius {
         for &t in &args.temperature {
             rows.push(
-                threshold(&common.scene, r, t, args.convention, common.accuracy)
-                    .map_err(|e| CliError(format!("--radius {r}, --temperature {t}: {e}")))?,
+                threshold(&common.scene, r, t, args.convention, common.accuracy).map_err(|e| {
+                    CliError::from(e).context(format!("--radius {r}, --temperature {t}"))
+                })?,
             );
         }
     }
@@ -150,7 +151,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     let mut note = String::new();
     if let Some(dir) = &args.out {
         std::fs::create_dir_all(dir)
-            .map_err(|e| CliError(format!("--out {}: {e}", dir.display())))?;
+            .map_err(|e| CliError::input(format!("--out {}: {e}", dir.display())))?;
         write_atomic(&dir.join("stick_table.csv"), csv.as_bytes())?;
         write_atomic(
             &dir.join("rime_v_stick.c"),
@@ -196,7 +197,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                     "measured_v_stick": in_measured_regime(t).then_some(MEASURED_UM_ICE)})
                 })
                 .collect();
-            serde_json::to_string_pretty(&v).map_err(|e| CliError(e.to_string()))? + "\n"
+            serde_json::to_string_pretty(&v).map_err(|e| CliError::input(e.to_string()))? + "\n"
         }
         Format::Csv => csv,
         Format::Table => {

@@ -8,9 +8,8 @@ use crate::scene_io::{CliError, CliResult};
 pub fn run(common: &Common, gn: &[f64], gt: &[f64]) -> CliResult<String> {
     let contact = cli::contact(common)?;
     if contact.friction.is_none() {
-        return Err(CliError(
-            "friction: is off in this scene; tangential restitution needs it (--set friction=on)"
-                .into(),
+        return Err(CliError::input(
+            "friction: is off in this scene; tangential restitution needs it (--set friction=on)",
         ));
     }
     let mut records = Vec::with_capacity(gn.len() * gt.len());
@@ -18,7 +17,7 @@ pub fn run(common: &Common, gn: &[f64], gt: &[f64]) -> CliResult<String> {
         for &t in gt {
             let r = contact
                 .tangential(n, t, common.accuracy)
-                .map_err(|e| CliError(format!("g_n = {n}, g_t = {t}: {e}")))?;
+                .map_err(|e| CliError::from(e).context(format!("g_n = {n}, g_t = {t}")))?;
             records.push(TangentialRecord {
                 g_n: n,
                 g_t: t,
@@ -28,5 +27,5 @@ pub fn run(common: &Common, gn: &[f64], gt: &[f64]) -> CliResult<String> {
             });
         }
     }
-    render(&records, common.format).map_err(CliError)
+    render(&records, common.format).map_err(CliError::input)
 }

@@ -33,7 +33,7 @@ pub fn run(common: &Common, input: &TidalInput) -> CliResult<String> {
                     v.map_or(serde_json::Value::Null, serde_json::Value::from),
                 );
             }
-            serde_json::to_string_pretty(&map).map_err(|e| CliError(e.to_string()))? + "\n"
+            serde_json::to_string_pretty(&map).map_err(|e| CliError::input(e.to_string()))? + "\n"
         }
         Format::Csv => {
             let mut s = String::from("name,value,unit\n");

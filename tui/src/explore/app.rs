@@ -570,7 +570,11 @@ impl App {
             }
             Err(e) => {
                 // load_scene words its errors for the command line (`--scene FILE: …`).
-                let text = e.0.strip_prefix("--scene ").unwrap_or(&e.0).to_string();
+                let text = e
+                    .message
+                    .strip_prefix("--scene ")
+                    .unwrap_or(&e.message)
+                    .to_string();
                 self.error(format!("open {text} (scene unchanged)"));
             }
         }

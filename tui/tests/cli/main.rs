@@ -12,6 +12,7 @@ mod bin;
 mod cli;
 mod cli_usability;
 mod collision;
+mod exit_codes;
 mod explorer_model;
 mod exported;
 mod measured;
