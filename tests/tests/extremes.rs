@@ -430,6 +430,7 @@ fn zero_surface_energy_is_no_adhesion_to_1e_12() {
                         adhesion: Some(Adhesion {
                             surface_energy: 0.0,
                             modulus,
+                            jkr_end: Default::default(),
                         }),
                         ..base
                     };
@@ -466,6 +467,7 @@ fn huge_surface_energy_always_sticks_by_adhesion() {
         s.adhesion = Some(Adhesion {
             surface_energy: 1e6,
             modulus: AdhesionModulus::AsPrinted,
+            jkr_end: Default::default(),
         });
         let c = Contact::new(&s).unwrap();
         let g_s = adhesion_g_s(&s);
@@ -882,6 +884,7 @@ fn regression_zero_surface_energy_with_zero_rebound_is_overdamped_not_stuck() {
     s.adhesion = Some(Adhesion {
         surface_energy: 0.0,
         modulus: AdhesionModulus::AsPrinted,
+        jkr_end: Default::default(),
     });
     let with = Contact::new(&s)
         .unwrap()

@@ -1240,7 +1240,7 @@ impl App {
         // its loop shows the neck (ξ < 0) and the jump at pull-off.
         self.inside_dynamic = match (&contact, self.scene.adhesion) {
             (Ok(c), Some(a)) => {
-                rime_core::models::brilliantov2007::Dynamic::new(c, a.surface_energy)
+                rime_core::models::brilliantov2007::Dynamic::new(c, a.surface_energy, a.jkr_end)
                     .and_then(|d| d.force_loop(g, 1e-9))
                     .map(|points| points.iter().map(|p| (p.xi, p.force)).collect())
                     .unwrap_or_default()
