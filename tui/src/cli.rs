@@ -69,6 +69,8 @@ pub enum Command {
     Scene(Common, Option<PathBuf>),
     /// `rime export --from G --to G --points N --out DIR [--runtime-params true]`.
     Export(Common, f64, f64, usize, PathBuf, bool),
+    /// `export --lammps DIR`: a LAMMPS deck, its reference values and README.
+    ExportLammps(Common, PathBuf),
     /// `rime fit (--data FILE.csv | --law ID) [--param A,B]`.
     Fit(Common, crate::commands::fit::Args),
     /// `rime data [--law ID --g LIST [--radius R]]`.
@@ -312,6 +314,17 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
     Ok(match sub.name {
         "" => Command::Explore(common),
         "scene" => Command::Scene(common, get("--out").map(PathBuf::from)),
+        "export" if get("--lammps").is_some() => {
+            if get("--out").is_some() {
+                return err("--lammps: writes its own directory; give --out or --lammps, not both");
+            }
+            for flag in ["--from", "--to", "--points", "--runtime-params"] {
+                if get(flag).is_some() || switch(flag) {
+                    return err(format!("{flag}: not used with --lammps"));
+                }
+            }
+            Command::ExportLammps(common, PathBuf::from(require("--lammps")?))
+        }
         "export" => {
             let from = speed("--from", get("--from").unwrap_or("1e-6"), false)?;
             let to = speed("--to", get("--to").unwrap_or("1"), false)?;
