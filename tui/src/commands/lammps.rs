@@ -319,7 +319,7 @@ fn readme(scene: &Scene, contact: &Contact, m: &Mapping) -> String {
     } else {
         let _ = writeln!(
             s,
-            "| end rule | {} | `contact_end` = {} | plain `damping viscoelastic` lets the viscous force pull while ξ > 0: rime's `zero_overlap`; `limit_damping` clamps the normal force at ≥ 0: rime's `force_zero` (paired the wrong way round they differ by up to 81–100 %) |",
+            "| end rule | {} | `contact_end` = {} | plain `damping viscoelastic` lets the viscous force pull while ξ > 0: rime's `zero_overlap`; `limit_damping` clamps the normal force at ≥ 0: rime's `force_zero` (paired the wrong way round they differ, more with stronger damping: docs/physics.md#decision-2) |",
             if m.limit_damping {
                 "`limit_damping`"
             } else {
