@@ -259,6 +259,11 @@ fn deck(scene: &Scene, contact: &Contact, m: &Mapping, scene_json: &str) -> Stri
 
 fn readme(scene: &Scene, contact: &Contact, m: &Mapping) -> String {
     let mut s = String::new();
+    let steps = if m.gamma.is_some() {
+        STEPS_PER_CONTACT_JKR
+    } else {
+        STEPS_PER_CONTACT
+    };
     let (y, nu) = (scene.bulk.youngs_modulus, scene.bulk.poisson_ratio);
     let _ = writeln!(s, "# rime → LAMMPS: two grains of this scene\n");
     let _ = writeln!(
@@ -342,7 +347,7 @@ fn readme(scene: &Scene, contact: &Contact, m: &Mapping) -> String {
     );
     let _ = writeln!(
         s,
-        "| `timestep` | t_c/steps_per_contact, t_c = 3.21807 α^(−2/5) g^(−1/5) | Hertz contact duration | LAMMPS's velocity Verlet with a velocity-dependent force is first order in dt: ε_N needs thousands of steps per contact (default {STEPS_PER_CONTACT}); the error halves with dt, so two runs (dt, dt/2) and Richardson `2ε(dt/2) − ε(dt)` give rime's value to ≤ 1e-5 |\n"
+        "| `timestep` | t_c/steps_per_contact, t_c = 3.21807 α^(−2/5) g^(−1/5) | Hertz contact duration | LAMMPS's velocity Verlet with a velocity-dependent force is first order in dt: ε_N needs thousands of steps per contact (this deck: {steps}; a JKR deck's force jumps at pull-off, misplacing up to F_p dt/(m_eff g) of ε in a way not smooth in dt, so it takes more); the error halves with dt, so two runs (dt, dt/2) and Richardson `2ε(dt/2) − ε(dt)` give rime's value to ≤ 1e-5 |\n"
     );
     let _ = writeln!(s, "## Not mapped\n");
     let _ = writeln!(
