@@ -110,6 +110,7 @@ mod tests {
                 scene.adhesion = Some(crate::scene::Adhesion {
                     surface_energy: 0.3,
                     modulus,
+                    jkr_end: Default::default(),
                 });
                 let c = Contact::new(&scene).unwrap();
                 let layer = c.layer.unwrap();

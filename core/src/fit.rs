@@ -77,6 +77,10 @@ pub const BRIDGES_1984: PowerLaw = PowerLaw {
     g_max: 0.0,
 };
 
+/// The reason of the one [`Error::Fit`] that is a failed computation rather than unusable input
+/// (front ends map it to their "computation failed" exit code).
+pub const FIT_DID_NOT_CONVERGE: &str = "Eq. (27) did not converge";
+
 /// Eq. (27): a g^b (1 − exp(−c g^d)).
 #[doc(alias = "Eq. (27)")]
 pub fn eq27(a: f64, b: f64, c: f64, d: f64, g: f64) -> f64 {
@@ -212,7 +216,7 @@ pub fn fit_eq27(g: &[f64], eps: &[f64]) -> Result<Eq27> {
     }
     let Some((_, p)) = best else {
         return Err(Error::Fit {
-            reason: "Eq. (27) did not converge",
+            reason: FIT_DID_NOT_CONVERGE,
         });
     };
     let (a, b, c, d) = (exp(p[0]), p[1], exp(p[2]), exp(p[3]));

@@ -76,8 +76,8 @@ pub use kinematics::GrainState;
 pub use normal::viscoelastic::master;
 pub use normal::{Normal, Status};
 pub use scene::{
-    Adhesion, AdhesionModulus, Bulk, ContactEnd, Damping, DampingFormula, Friction, Grains, Layer,
-    LayerReading, Plasticity, Preset, Scene, SlidingLaw, Viscosities,
+    Adhesion, AdhesionModulus, Bulk, ContactEnd, Damping, DampingFormula, Friction, Grains, JkrEnd,
+    Layer, LayerReading, Plasticity, Preset, Scene, SlidingLaw, Viscosities,
 };
 pub use tangential::{StickClass, Tangential};
 pub use tidal::{Tidal, TidalInput};

@@ -3,7 +3,7 @@
 
 use crate::error::{Error, Result};
 use crate::scene::{
-    AdhesionModulus, ContactEnd, Damping, DampingFormula, LayerReading, Scene, SlidingLaw,
+    AdhesionModulus, ContactEnd, Damping, DampingFormula, JkrEnd, LayerReading, Scene, SlidingLaw,
     Viscosities,
 };
 use crate::units::parse_quantity;
@@ -174,6 +174,12 @@ pub const PARAMETERS: &[Parameter] = &[
         kind: Kind::Choice(&["as_printed", "consistent"]),
     },
     Parameter {
+        path: "adhesion.jkr_end",
+        label: "JKR contact end",
+        unit: "",
+        kind: Kind::Choice(&["neck", "pull_off_force"]),
+    },
+    Parameter {
         path: "friction",
         label: "friction",
         unit: "",
@@ -239,6 +245,7 @@ fn choice(
                 "contact_end" => "force_zero or zero_overlap",
                 "layer.reading" => "offset or literal",
                 "adhesion.modulus" => "as_printed or consistent",
+                "adhesion.jkr_end" => "neck or pull_off_force",
                 "friction.sliding_law" => "paper or walton",
                 "bulk.damping.viscosities.formula" => "brilliantov or as_printed",
                 _ => "one of the listed choices",
@@ -304,6 +311,12 @@ impl Scene {
                 Value::Choice(match a.modulus {
                     AdhesionModulus::AsPrinted => "as_printed",
                     AdhesionModulus::Consistent => "consistent",
+                })
+            }),
+            "adhesion.jkr_end" => self.adhesion.map_or(Value::Inactive, |a| {
+                Value::Choice(match a.jkr_end {
+                    JkrEnd::Neck => "neck",
+                    JkrEnd::PullOffForce => "pull_off_force",
                 })
             }),
             "plasticity" => Value::Enabled(self.plasticity.is_some()),
@@ -393,10 +406,16 @@ impl Scene {
                 }
                 next.layer = Some(l);
             }
-            "adhesion.surface_energy" | "adhesion.modulus" => {
+            "adhesion.surface_energy" | "adhesion.modulus" | "adhesion.jkr_end" => {
                 let mut a = next.adhesion.unwrap_or_default();
                 match field {
                     "adhesion.surface_energy" => a.surface_energy = number()?,
+                    "adhesion.jkr_end" => {
+                        a.jkr_end = match choice(field, text, &["neck", "pull_off_force"])? {
+                            "neck" => JkrEnd::Neck,
+                            _ => JkrEnd::PullOffForce,
+                        }
+                    }
                     _ => {
                         a.modulus = match choice(field, text, &["as_printed", "consistent"])? {
                             "as_printed" => AdhesionModulus::AsPrinted,

@@ -168,6 +168,21 @@ pub enum AdhesionModulus {
     Consistent,
 }
 
+/// Where the JKR contact of the `brilliantov2007` model ends while the grains separate
+/// (docs/physics.md#jkr-end). The paper's own model (Eq. (11)–(17)) does not read it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+pub enum JkrEnd {
+    /// At the neck instability, the end of the stable JKR branch (`dξ/da = 0`, fixed grips):
+    /// `a³ = πwR²/(8E*)`. Default.
+    #[default]
+    Neck,
+    /// At the maximum tensile force `F = −(3/2)πwR` (fixed load): `a³ = 9πwR²/(8E*)`, the overlap
+    /// `ξ = −(3/64)^(1/3)(π²w²R/E*²)^(1/3)` where LAMMPS's `jkr` ends contact.
+    PullOffForce,
+}
+
 /// Adhesion by surface energy: Eq. (11)–(17).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -178,6 +193,9 @@ pub struct Adhesion {
     /// Which modulus enters the JKR energy.
     #[cfg_attr(feature = "serde", serde(default))]
     pub modulus: AdhesionModulus,
+    /// Where the JKR contact of `brilliantov2007` ends (scene files without it: the neck).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub jkr_end: JkrEnd,
 }
 
 impl Default for Adhesion {
@@ -185,6 +203,7 @@ impl Default for Adhesion {
         Adhesion {
             surface_energy: 0.1,
             modulus: AdhesionModulus::AsPrinted,
+            jkr_end: JkrEnd::Neck,
         }
     }
 }

@@ -87,6 +87,7 @@ pub fn scene_for(base: &Scene, radius: f64, gamma: f64) -> Result<Scene> {
         modulus: base
             .adhesion
             .map_or(AdhesionModulus::AsPrinted, |a| a.modulus),
+        jkr_end: Default::default(),
     });
     s.validate()?;
     Ok(s)

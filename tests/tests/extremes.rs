@@ -435,6 +435,7 @@ fn zero_surface_energy_is_no_adhesion_to_1e_12() {
                         adhesion: Some(Adhesion {
                             surface_energy: 0.0,
                             modulus,
+                            jkr_end: Default::default(),
                         }),
                         ..base
                     };
@@ -471,6 +472,7 @@ fn huge_surface_energy_always_sticks_by_adhesion() {
         s.adhesion = Some(Adhesion {
             surface_energy: 1e6,
             modulus: AdhesionModulus::AsPrinted,
+            jkr_end: Default::default(),
         });
         let c = Contact::new(&s).unwrap();
         let g_s = adhesion_g_s(&s);
@@ -887,6 +889,7 @@ fn regression_zero_surface_energy_with_zero_rebound_is_overdamped_not_stuck() {
     s.adhesion = Some(Adhesion {
         surface_energy: 0.0,
         modulus: AdhesionModulus::AsPrinted,
+        jkr_end: Default::default(),
     });
     let with = Contact::new(&s)
         .unwrap()
@@ -980,4 +983,75 @@ fn regression_balanced_zero_overlap_meets_its_1e_6_bound() {
     let p = c.normal(1.0, Accuracy::Precise).unwrap().eps;
     let b = c.normal(1.0, Accuracy::Balanced).unwrap().eps;
     assert!(rel(b, p) <= 1e-6, "{b} vs {p}: {:e}", rel(b, p));
+}
+
+/// Issue 25: brilliantov2007 answers over A 1e-9…1e-2 s, g 1e-6…10 m/s and every preset (with and
+/// without the scene's adhesion) with a value or a physical status, never an integration error; g_cr
+/// too. Where adhesion catches the grains the status is `stuck_by_adhesion`, and a collision caught
+/// at one speed is caught at every slower one at the same A (damping and the hysteresis both take a
+/// larger share of a slower impact's energy).
+#[test]
+fn issue_25_brilliantov2007_answers_over_the_whole_grid() {
+    use rime_core::models::{Evaluator, Model, ModelStatus};
+    let times = [1e-9, 1e-7, 1e-5, 1e-4, 3e-4, 5e-4, 1e-3, 3e-3, 1e-2];
+    let speeds = [1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 0.1, 1.0, 10.0];
+    for (preset, level) in Preset::ALL
+        .into_iter()
+        .flat_map(|p| [(p, Accuracy::Balanced), (p, Accuracy::Precise)])
+    {
+        let mut scene = preset.scene();
+        for a in times {
+            scene.bulk.damping = Damping::Time(a);
+            let ev = Evaluator::new(Model::Brilliantov2007, &scene).unwrap();
+            let mut stuck_above: Option<f64> = None;
+            for &g in speeds.iter().rev() {
+                let r = ev
+                    .eps(g, level)
+                    .unwrap_or_else(|e| panic!("{} A={a} g={g}: {e}", preset.name()));
+                assert!(r.eps.is_finite() && (0.0..=1.0).contains(&r.eps));
+                match r.status {
+                    ModelStatus::StuckByAdhesion => {
+                        assert!(scene.adhesion.is_some());
+                        assert_eq!(r.eps, 0.0);
+                        stuck_above.get_or_insert(g);
+                    }
+                    ModelStatus::Rebound | ModelStatus::Overdamped => {
+                        assert!(
+                            stuck_above.is_none(),
+                            "{} A={a}: caught at {stuck_above:?} m/s but not at {g} m/s",
+                            preset.name()
+                        );
+                    }
+                    other => panic!("{} A={a} g={g}: {other:?}", preset.name()),
+                }
+            }
+            let speeds = ev
+                .characteristic_speeds(level)
+                .unwrap_or_else(|e| panic!("{} A={a} g_cr: {e}", preset.name()));
+            if let Some(g_cr) = speeds.get("g_cr") {
+                let below = ev.eps(0.9 * g_cr, level).unwrap();
+                let above = ev.eps(1.1 * g_cr, level).unwrap();
+                assert_eq!(below.status, ModelStatus::StuckByAdhesion, "A={a}");
+                assert_ne!(above.status, ModelStatus::StuckByAdhesion, "A={a}");
+            }
+        }
+    }
+}
+
+/// Issue 25's case: ice-sticky with A = 1e-3 s. An independent fixed-step RK4 integration of the
+/// JKR + viscous law in physical units (ξ, ξ'; dt = 2 µs) finds the grains at every speed of the
+/// issue's list settled at the JKR equilibrium overlap (ξ = −1.21 ξ_c) a second after impact,
+/// never reaching the neck: caught.
+#[test]
+fn issue_25_ice_sticky_with_a_1e_3_is_stuck_by_adhesion() {
+    use rime_core::models::{Evaluator, Model, ModelStatus};
+    let mut scene = Preset::IceSticky.scene();
+    scene.bulk.damping = Damping::Time(1e-3);
+    let ev = Evaluator::new(Model::Brilliantov2007, &scene).unwrap();
+    for g in [1e-4, 1e-3, 0.01, 0.1, 1.0] {
+        for level in LEVELS {
+            let r = ev.eps(g, level).unwrap();
+            assert_eq!(r.status, ModelStatus::StuckByAdhesion, "g={g}");
+        }
+    }
 }

@@ -42,6 +42,7 @@ fn adhesion() -> impl Strategy<Value = Adhesion> + Clone {
         .prop_map(|(surface_energy, modulus)| Adhesion {
             surface_energy,
             modulus,
+            jkr_end: Default::default(),
         })
 }
 

@@ -97,6 +97,7 @@ fn critical_velocities_match_the_mpmath_reference() {
                         "consistent" => AdhesionModulus::Consistent,
                         _ => AdhesionModulus::AsPrinted,
                     },
+                    jkr_end: Default::default(),
                 })
             }
             other => panic!("unknown kind {other}"),
@@ -152,6 +153,7 @@ fn scenes_match_the_mpmath_reference_at_precise() {
                 } else {
                     AdhesionModulus::AsPrinted
                 },
+                jkr_end: Default::default(),
             });
         }
         let g = num(&row, "g");

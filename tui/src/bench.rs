@@ -159,7 +159,7 @@ pub fn run(out_dir: &Path, quick: bool) -> CliResult<(Vec<Row>, String)> {
     progress.step("scipy comparison");
     text.push_str(&scipy_comparison(min_sample)?);
     std::fs::create_dir_all(out_dir)
-        .map_err(|e| CliError(format!("--out {}: {e}", out_dir.display())))?;
+        .map_err(|e| CliError::input(format!("--out {}: {e}", out_dir.display())))?;
     let json = serde_json::json!({ "rows": rows, "frame_ms": frame });
     write_atomic(
         &out_dir.join("bench.json"),

@@ -69,6 +69,8 @@ pub enum Command {
     Scene(Common, Option<PathBuf>),
     /// `rime export --from G --to G --points N --out DIR [--runtime-params true]`.
     Export(Common, f64, f64, usize, PathBuf, bool),
+    /// `export --lammps DIR`: a LAMMPS deck, its reference values and README.
+    ExportLammps(Common, PathBuf),
     /// `rime fit (--data FILE.csv | --law ID) [--param A,B]`.
     Fit(Common, crate::commands::fit::Args),
     /// `rime data [--law ID --g LIST [--radius R]]`.
@@ -108,7 +110,7 @@ pub(crate) fn number(flag: &str, text: &str) -> CliResult<f64> {
 pub(crate) fn quantity(flag: &str, text: &str, unit: &str) -> CliResult<f64> {
     rime_core::units::parse_quantity("", text, unit).map_err(|e| {
         let shown: String = text.trim().chars().take(40).collect();
-        CliError(format!("{flag} {shown}{e}"))
+        CliError::input(format!("{flag} {shown}{e}"))
     })
 }
 
@@ -118,7 +120,7 @@ pub(crate) fn speed(flag: &str, text: &str, allow_zero: bool) -> CliResult<f64> 
     // The core names the field in front of its message; the flag goes there instead.
     let v = rime_core::units::parse_quantity("", text, "m/s").map_err(|e| {
         let shown: String = text.trim().chars().take(40).collect();
-        CliError(format!("{flag} {shown}{e}"))
+        CliError::input(format!("{flag} {shown}{e}"))
     })?;
     let ok = if allow_zero { v >= 0.0 } else { v > 0.0 };
     if !ok || v > 1e6 {
@@ -260,7 +262,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
             "--set" => sets.push(value),
             "--accuracy" => {
                 accuracy = Accuracy::parse(&value)
-                    .map_err(|e| CliError(format!("--accuracy {value}: {e}")))?
+                    .map_err(|e| CliError::input(format!("--accuracy {value}: {e}")))?
             }
             "--format" => format = Some(format_of(sub, &value)?),
             _ => flags.push((flag.name, value)),
@@ -321,11 +323,22 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
     let owned = |name: &str| get(name).map(str::to_string);
     let switch = |name: &str| get(name) == Some("true");
     let require = |name: &str| -> CliResult<&str> {
-        get(name).ok_or_else(|| CliError(format!("{name}: required")))
+        get(name).ok_or_else(|| CliError::input(format!("{name}: required")))
     };
     Ok(match sub.name {
         "" => Command::Explore(common),
         "scene" => Command::Scene(common, get("--out").map(PathBuf::from)),
+        "export" if get("--lammps").is_some() => {
+            if get("--out").is_some() {
+                return err("--lammps: writes its own directory; give --out or --lammps, not both");
+            }
+            for flag in ["--from", "--to", "--points", "--runtime-params"] {
+                if get(flag).is_some() || switch(flag) {
+                    return err(format!("{flag}: not used with --lammps"));
+                }
+            }
+            Command::ExportLammps(common, PathBuf::from(require("--lammps")?))
+        }
         "export" => {
             let from = speed("--from", get("--from").unwrap_or("1e-6"), false)?;
             let to = speed("--to", get("--to").unwrap_or("1"), false)?;

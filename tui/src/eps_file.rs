@@ -116,7 +116,7 @@ fn status(contact: &Contact, g: f64, eps: f64, common: &Common) -> CliResult<Sta
         // Stuck (layer or adhesion): which one is `normal`'s call (cheap when stuck).
         let n = contact
             .normal(g, common.accuracy)
-            .map_err(|e| CliError(format!("g_n = {}: {e}", Number(g))))?;
+            .map_err(|e| CliError::from(e).context(format!("g_n = {}", Number(g))))?;
         return Ok(match n.status {
             Status::Rebound if contact.adhesion.is_some() => Status::StuckByAdhesion,
             Status::Rebound => Status::Overdamped,
@@ -133,13 +133,15 @@ fn status(contact: &Contact, g: f64, eps: f64, common: &Common) -> CliResult<Sta
 /// Runs `rime eps --g-file PATH`, writing to stdout as it goes.
 pub fn run(common: &Common, path: &Path) -> CliResult<()> {
     let shown = path.display();
-    let meta = std::fs::metadata(path).map_err(|e| CliError(format!("--g-file {shown}: {e}")))?;
+    let meta =
+        std::fs::metadata(path).map_err(|e| CliError::input(format!("--g-file {shown}: {e}")))?;
     if !meta.is_file() {
         return err(format!(
             "--g-file {shown}: not a regular file (devices, FIFOs and directories are refused)"
         ));
     }
-    let file = std::fs::File::open(path).map_err(|e| CliError(format!("--g-file {shown}: {e}")))?;
+    let file =
+        std::fs::File::open(path).map_err(|e| CliError::input(format!("--g-file {shown}: {e}")))?;
     let contact = cli::contact(common)?;
     let law = BatchLaw::new(&contact, common.accuracy);
     let mut reader = BufReader::with_capacity(1 << 16, file);

@@ -36,6 +36,7 @@ fn run(command: Command) -> CliResult<Option<String>> {
         Command::Map(c, max, n) => map::run(&c, max, n)?,
         Command::Tidal(c, input) => tidal::run(&c, &input)?,
         Command::Export(c, from, to, n, out, rt) => export::run(&c, from, to, n, &out, rt)?,
+        Command::ExportLammps(c, dir) => lammps::run(&c, &dir)?,
         Command::Fit(c, a) => fit::run(&c, &a)?,
         Command::Data(c, a) => data::run(&c, &a)?,
         Command::Stick(c, a) => stick::run(&c, &a)?,
@@ -61,7 +62,7 @@ fn main() -> ExitCode {
         Ok(None) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("rime: error: {e}");
-            ExitCode::from(2)
+            ExitCode::from(e.exit_code())
         }
     }
 }

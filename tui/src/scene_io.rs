@@ -8,13 +8,117 @@ use std::path::{Path, PathBuf};
 /// A scene file larger than this is rejected before parsing (a scene is a few hundred bytes).
 pub const MAX_SCENE_BYTES: u64 = 1 << 20;
 
-/// An error of the command-line layer: one line that names the field or flag.
+#[cfg(test)]
+mod exit_code_tests {
+    use super::*;
+    use rime_core::Error as E;
+
+    /// docs/cli.md: a failed computation exits 1, bad input 2 (issue 25). No valid input is known
+    /// to make a computation fail, so the mapping itself is what is checked here.
+    #[test]
+    fn issue_25_failed_computations_exit_1_and_bad_input_2() {
+        let failed = [
+            E::StepBudgetExceeded {
+                what: "x",
+                steps: 1,
+            },
+            E::StepSizeUnderflow { what: "x", t: 0.0 },
+            E::Plot { reason: "x" },
+            E::Fit {
+                reason: rime_core::fit::FIT_DID_NOT_CONVERGE,
+            },
+        ];
+        for e in failed {
+            assert_eq!(CliError::from(e.clone()).exit_code(), 1, "{e}");
+            assert_eq!(
+                CliError::from(e.clone()).context("g_n = 1").exit_code(),
+                1,
+                "{e}"
+            );
+        }
+        let bad = [
+            E::OutOfRange {
+                field: "g_n",
+                value: -1.0,
+                expected: "> 0",
+            },
+            E::DerivedOutOfRange {
+                quantity: "m_eff",
+                fields: "grains",
+            },
+            E::UnknownParameter,
+            E::InvalidValue {
+                field: "x",
+                expected: "y",
+            },
+            E::Fit {
+                reason: "too few points with ε > 0 to fit",
+            },
+        ];
+        for e in bad {
+            assert_eq!(CliError::from(e.clone()).exit_code(), 2, "{e}");
+        }
+        assert_eq!(CliError::input("--g: required").exit_code(), 2);
+    }
+}
+
+/// An error of the command-line layer: one line that names the field or flag, and whether the
+/// input was at fault (exit 2) or a computation failed on valid input (exit 1; docs/cli.md).
 #[derive(Debug, Clone, PartialEq)]
-pub struct CliError(pub String);
+pub struct CliError {
+    /// The one line shown after `rime: error: `.
+    pub message: String,
+    /// Whose fault.
+    pub kind: ErrorKind,
+}
+
+/// Why a command failed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ErrorKind {
+    /// Bad input: a flag, a value, a scene field, a file (exit 2).
+    BadInput,
+    /// A computation failed on valid input: an integrator's step budget or step size, a fit that
+    /// did not converge, a figure that could not be drawn (exit 1).
+    Failed,
+}
+
+impl CliError {
+    /// Bad input (exit 2).
+    pub fn input(message: impl Into<String>) -> CliError {
+        CliError {
+            message: message.into(),
+            kind: ErrorKind::BadInput,
+        }
+    }
+
+    /// A failed computation (exit 1).
+    pub fn failed(message: impl Into<String>) -> CliError {
+        CliError {
+            message: message.into(),
+            kind: ErrorKind::Failed,
+        }
+    }
+
+    /// The same error with `prefix: ` in front (what it was computing), its kind kept.
+    pub fn context(self, prefix: impl fmt::Display) -> CliError {
+        CliError {
+            message: format!("{prefix}: {}", self.message),
+            kind: self.kind,
+        }
+    }
+
+    /// The process exit code: 2 for bad input, 1 for a failed computation.
+    pub fn exit_code(&self) -> u8 {
+        match self.kind {
+            ErrorKind::BadInput => 2,
+            ErrorKind::Failed => 1,
+        }
+    }
+}
 
 impl fmt::Display for CliError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.0)
+        f.write_str(&self.message)
     }
 }
 
@@ -22,7 +126,16 @@ impl std::error::Error for CliError {}
 
 impl From<rime_core::Error> for CliError {
     fn from(e: rime_core::Error) -> Self {
-        CliError(e.to_string())
+        use rime_core::Error as E;
+        match e {
+            E::StepBudgetExceeded { .. } | E::StepSizeUnderflow { .. } | E::Plot { .. } => {
+                CliError::failed(e.to_string())
+            }
+            E::Fit { reason } if reason == rime_core::fit::FIT_DID_NOT_CONVERGE => {
+                CliError::failed(e.to_string())
+            }
+            _ => CliError::input(e.to_string()),
+        }
     }
 }
 
@@ -31,7 +144,7 @@ pub type CliResult<T> = Result<T, CliError>;
 
 /// Builds a [`CliError`] from anything displayable.
 pub fn err<T>(msg: impl fmt::Display) -> CliResult<T> {
-    Err(CliError(msg.to_string()))
+    Err(CliError::input(msg.to_string()))
 }
 
 /// Parses scene JSON; errors name the JSON path (`layer.viscosity: invalid type ...`).
@@ -62,7 +175,8 @@ pub fn parse_scene(text: &str) -> CliResult<Scene> {
 pub fn read_bounded(path: &Path, limit: u64, what: &str) -> CliResult<String> {
     use std::io::Read;
     let shown = path.display();
-    let meta = std::fs::metadata(path).map_err(|e| CliError(format!("{what} {shown}: {e}")))?;
+    let meta =
+        std::fs::metadata(path).map_err(|e| CliError::input(format!("{what} {shown}: {e}")))?;
     if !meta.is_file() {
         let kind = if meta.is_dir() {
             "a directory"
@@ -72,29 +186,31 @@ pub fn read_bounded(path: &Path, limit: u64, what: &str) -> CliResult<String> {
         return err(format!("{what} {shown}: is {kind}; give a regular file"));
     }
     let too_big = || {
-        CliError(format!(
+        CliError::input(format!(
             "{what} {shown}: larger than {limit} bytes, the limit for this file"
         ))
     };
     if meta.len() > limit {
         return Err(too_big());
     }
-    let file = std::fs::File::open(path).map_err(|e| CliError(format!("{what} {shown}: {e}")))?;
+    let file =
+        std::fs::File::open(path).map_err(|e| CliError::input(format!("{what} {shown}: {e}")))?;
     let mut bytes = Vec::new();
     file.take(limit + 1)
         .read_to_end(&mut bytes)
-        .map_err(|e| CliError(format!("{what} {shown}: {e}")))?;
+        .map_err(|e| CliError::input(format!("{what} {shown}: {e}")))?;
     if bytes.len() as u64 > limit {
         return Err(too_big());
     }
-    String::from_utf8(bytes).map_err(|_| CliError(format!("{what} {shown}: is not UTF-8 text")))
+    String::from_utf8(bytes)
+        .map_err(|_| CliError::input(format!("{what} {shown}: is not UTF-8 text")))
 }
 
 /// Reads a scene file (at most [`MAX_SCENE_BYTES`], regular files only).
 pub fn load_scene(path: &Path) -> CliResult<Scene> {
     let shown = path.display();
     let text = read_bounded(path, MAX_SCENE_BYTES, "--scene")?;
-    parse_scene(&text).map_err(|e| CliError(format!("--scene {shown}: {}", e.0)))
+    parse_scene(&text).map_err(|e| CliError::input(format!("--scene {shown}: {}", e.message)))
 }
 
 /// Applies one `path=value` override.
@@ -124,7 +240,7 @@ pub fn apply_set(scene: &mut Scene, assignment: &str) -> CliResult<()> {
 
 /// The scene as pretty JSON.
 pub fn scene_json(scene: &Scene) -> CliResult<String> {
-    serde_json::to_string_pretty(scene).map_err(|e| CliError(format!("scene: {e}")))
+    serde_json::to_string_pretty(scene).map_err(|e| CliError::input(format!("scene: {e}")))
 }
 
 /// Looks a preset up by name; the error lists the known names.

@@ -249,12 +249,23 @@ pub const SUBS: &[Sub] = &[
     },
     Sub {
         name: "export",
-        usage: "export --out DIR [--from G --to G --points N] [--runtime-params] [OPTIONS]",
+        usage: "export (--out DIR [--from G --to G --points N] [--runtime-params] | --lammps DIR) [OPTIONS]",
         about: "Write ε_N tables (CSV, JSON), fitted Eq. (27) and power laws, C99 and no_std Rust ε_N, ε_T and \
                 collision kinematics (fast: 1e-6, precise: 1e-10 at every speed), and a REBOUND collision \
-                handler with its Python recipe into DIR.",
+                handler with its Python recipe into DIR. With --lammps DIR instead: a LAMMPS input deck for two \
+                grains of the scene (pair_style granular), the ε_N, t_c and ξ_max it must reproduce, and a README \
+                with every mapping.",
         flags: &[
-            f("--out", "DIR", "directory to write into (required)"),
+            f(
+                "--out",
+                "DIR",
+                "directory to write into (required unless --lammps)",
+            ),
+            f(
+                "--lammps",
+                "DIR",
+                "write a LAMMPS deck (in.rime), reference.tsv and README.md into DIR instead",
+            ),
             f(
                 "--from",
                 "G",

@@ -103,7 +103,8 @@ pub fn rust_source(e: &Export, law: &Law) -> String {
 
 /// Writes every export file into `dir`; returns the file names.
 pub fn write_all(dir: &Path, e: &Export, scene_json: &str, law: &Law) -> CliResult<Vec<String>> {
-    std::fs::create_dir_all(dir).map_err(|x| CliError(format!("--out {}: {x}", dir.display())))?;
+    std::fs::create_dir_all(dir)
+        .map_err(|x| CliError::input(format!("--out {}: {x}", dir.display())))?;
     let mut csv = String::from("g_n,eps_n,status\n");
     for ((g, eps), st) in e.g.iter().zip(&e.eps).zip(&e.status) {
         csv.push_str(&format!("{},{},{}\n", num(*g), num(*eps), st));

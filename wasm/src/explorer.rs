@@ -298,7 +298,7 @@ impl Explorer {
             .map(|p| json!({"name": p.name, "t": p.t}))
             .collect();
         let dynamic = self.scene.adhesion.and_then(|a| {
-            rime_core::models::brilliantov2007::Dynamic::new(&contact, a.surface_energy)
+            rime_core::models::brilliantov2007::Dynamic::new(&contact, a.surface_energy, a.jkr_end)
                 .and_then(|d| d.force_loop(g, 1e-9))
                 .ok()
                 .map(|p| {

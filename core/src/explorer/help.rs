@@ -103,6 +103,9 @@ pub fn parameter_help(path: &str) -> Option<&'static str> {
             "surface energy γ: the work of separation; g_s grows as γ^(5/6), Eq. (15)"
         }
         "adhesion.modulus" => "which elastic modulus enters Eq. (12) (decision 5)",
+        "adhesion.jkr_end" => {
+            "where the dynamic JKR contact (brilliantov2007, the collision card's loop) ends: the neck, or the maximum tensile force as LAMMPS does"
+        }
         "friction" => "tangential friction: ε_T and the stick map, Eq. (18)–(26)",
         "friction.coefficient" => {
             "friction coefficient μ: sliding sets in above tan ψ₀ = μ/κ, Eq. (25)"
@@ -147,6 +150,8 @@ pub fn option_label(path: &str, option: &str) -> Option<&'static str> {
         ("layer.reading", "literal") => "literal Eq. (8) (slow, live integration)",
         ("adhesion.modulus", "as_printed") => "as printed in the paper",
         ("adhesion.modulus", "consistent") => "consistent with Eq. (4)",
+        ("adhesion.jkr_end", "neck") => "at the neck instability (fixed grips)",
+        ("adhesion.jkr_end", "pull_off_force") => "at the maximum tensile force (LAMMPS jkr)",
         ("friction.sliding_law", "paper") => "paper's Eq. (23) (has an artifact gap)",
         ("friction.sliding_law", "walton") => "Walton's law (no gap)",
         _ => return None,

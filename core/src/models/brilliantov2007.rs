@@ -15,12 +15,21 @@
 //! The contact forms at `x = 0` with `b = κ^(2/3)` (the JKR jump-in) and breaks at the end of the
 //! stable JKR branch, `dx/db = 0`: `b_c = (κ/4)^(2/3)`, `x_c = −(3/4) κ (κ/4)^(1/3)` (the neck
 //! ends, the force jumps from `F_el(b_c)` to 0). If the grains stop separating before `x_c` they
-//! are caught: they aggregate (ε_N = 0).
+//! are caught: they aggregate (ε_N = 0). With `adhesion.jkr_end = pull_off_force` the contact ends
+//! earlier, at the maximum tensile force `b_p = (3κ/4)^(2/3)`, `x_p = −(κ/4)(3κ/4)^(1/3)` (LAMMPS's
+//! `jkr`; docs/physics.md#jkr-end); `x_c`, `U(b_c)` below then mean that end.
+//!
+//! The motion has the Lyapunov function `E = v²/2 + U(b)`, `U(b) = (2/5)b⁵ − κ b^(7/2) + (3/8)κ² b²`
+//! (the JKR potential along the stable branch, `dU/dx = b³ − 1.5 κ b^(3/2)`): `dE/ds = −1.5 δ b v² ≤ 0`.
+//! Pull-off needs `E ≥ U(b_c)` at `x_c`, so once `E` falls below `U(b_c)` the grains are caught for
+//! good. That is the stop detected here: with strong damping they creep towards the JKR equilibrium
+//! without ever turning back, so waiting for `ξ' = 0` would never end (issue 25).
 
 use crate::contact::Contact;
 use crate::error::{Error, Result};
 use crate::math::{powf, sqrt};
 use crate::ode::{Direction, Dopri5, OdeSystem, StepOutcome, Tolerances};
+use crate::scene::JkrEnd;
 
 /// δ beyond which the collision is reported overdamped without integration (as for the paper's
 /// model with `zero_overlap`, docs/physics.md#decision-2: the rebound is below 1e-10 there).
@@ -62,7 +71,9 @@ pub struct Collision {
     pub outcome: Outcome,
     /// Contact duration \[s\] (infinite when stuck or overdamped).
     pub t_c: f64,
-    /// Maximum compression ξ_max \[m\] (0 where δ > [`DELTA_LIMIT`] and nothing is integrated).
+    /// Maximum compression ξ_max \[m\] (0 where δ > [`DELTA_LIMIT`] and nothing is integrated; for
+    /// grains that creep onto the JKR equilibrium without turning back, the overlap where their
+    /// speed fell below 1e-9 of the impact speed).
     pub xi_max: f64,
     /// Right-hand-side evaluations spent.
     pub rhs_evaluations: usize,
@@ -90,6 +101,8 @@ pub struct Dynamic {
     pub modulus: f64,
     /// Dupré work of adhesion `w` \[J/m²\].
     pub work_of_adhesion: f64,
+    /// Where the contact ends.
+    pub end: JkrEnd,
     r_eff: f64,
     m_eff: f64,
     alpha: f64,
@@ -104,26 +117,46 @@ struct System {
     kappa: f64,
     /// κ^(1/3), the start of Newton's iteration.
     kappa_third: f64,
-    /// Pull-off overlap x_c and radius b_c.
-    x_c: f64,
+    /// The end of the stable branch (the neck): radius b_c and overlap x_neck.
     b_c: f64,
+    x_neck: f64,
+    /// Where contact ends (the neck, or the maximum tensile force): overlap, and the JKR
+    /// potential there.
+    x_c: f64,
+    u_c: f64,
 }
 
 const MAX: usize = 0;
 const PULL_OFF: usize = 1;
 const STOP: usize = 2;
 const CREEP: usize = 3;
+const CAUGHT: usize = 4;
+const SLOW: usize = 5;
 
 impl System {
-    fn new(delta: f64, kappa: f64) -> System {
+    fn new(delta: f64, kappa: f64, end: JkrEnd) -> System {
         let q = powf(0.25 * kappa, 1.0 / 3.0);
-        System {
+        let mut sys = System {
             k: 1.5 * delta,
             kappa,
             kappa_third: powf(kappa, 1.0 / 3.0),
-            x_c: -0.75 * kappa * q,
             b_c: q * q,
-        }
+            x_neck: -0.75 * kappa * q,
+            x_c: 0.0,
+            u_c: 0.0,
+        };
+        let b_end = end_radius(kappa, end);
+        sys.x_c = b_end * b_end - kappa * sqrt(b_end);
+        sys.u_c = sys.potential(b_end);
+        sys
+    }
+
+    /// The JKR potential `U(b) = (2/5)b⁵ − κ b^(7/2) + (3/8)κ² b²` (zero at `b = 0`), whose
+    /// derivative along the branch is the elastic force: `dU/dx = b³ − 1.5 κ b^(3/2)`.
+    #[inline]
+    fn potential(&self, b: f64) -> f64 {
+        let b2 = b * b;
+        0.4 * b2 * b2 * b - self.kappa * b2 * b * sqrt(b) + 0.375 * self.kappa * self.kappa * b2
     }
 
     /// The contact radius `b(x)` on the stable JKR branch: the largest root `s = √b` of
@@ -134,7 +167,7 @@ impl System {
         if self.kappa == 0.0 {
             return sqrt(x.max(0.0));
         }
-        if x <= self.x_c {
+        if x <= self.x_neck {
             return self.b_c;
         }
         let mut s = sqrt(sqrt(x.max(0.0))) + self.kappa_third;
@@ -164,7 +197,7 @@ impl System {
     }
 }
 
-impl OdeSystem<2, 4> for System {
+impl OdeSystem<2, 6> for System {
     #[inline]
     fn rhs(&self, sigma: f64, y: &[f64; 2], dydt: &mut [f64; 2]) {
         let b = self.radius(y[0]);
@@ -174,31 +207,68 @@ impl OdeSystem<2, 4> for System {
     }
 
     #[inline]
-    fn events(&self, _sigma: f64, y: &[f64; 2], out: &mut [f64; 4]) {
+    fn events(&self, _sigma: f64, y: &[f64; 2], out: &mut [f64; 6]) {
         out[MAX] = y[1];
         // Pull-off only counts while separating (x falls through x_c).
         out[PULL_OFF] = y[0] - self.x_c;
         out[STOP] = y[1];
         out[CREEP] = y[1] + CREEP_FLOOR;
+        // Energy left above what pull-off needs (only meaningful with adhesion).
+        out[CAUGHT] = if self.kappa > 0.0 {
+            0.5 * y[1] * y[1] + self.potential(self.radius(y[0])) - self.u_c
+        } else {
+            1.0
+        };
+        out[SLOW] = y[1] - CREEP_FLOOR;
     }
 
     fn direction(&self, which: usize) -> Direction {
         match which {
             STOP | CREEP => Direction::Rising,
+            CAUGHT | SLOW => Direction::Falling,
             _ => Direction::Falling,
         }
     }
+}
+
+/// The dimensionless contact radius where contact ends: the neck `b^(3/2) = κ/4`, or the maximum
+/// tensile force `b^(3/2) = 3κ/4` (`dF/db = 3b² − (9/4)κ√b = 0`).
+fn end_radius(kappa: f64, end: JkrEnd) -> f64 {
+    let factor = match end {
+        JkrEnd::Neck => 0.25,
+        JkrEnd::PullOffForce => 0.75,
+    };
+    powf(factor * kappa, 2.0 / 3.0)
+}
+
+/// The JKR potential `U(b)` at `κ = 1` (`U` scales as κ^(10/3) along the branch `b ∝ κ^(2/3)`).
+fn unit_potential(b: f64) -> f64 {
+    0.4 * powf(b, 5.0) - powf(b, 3.5) + 0.375 * b * b
+}
+
+/// The hysteresis constant of an end of contact: the work against adhesion from the jump-in
+/// (`b = κ^(2/3)`, `x = 0`) to the end, in units of `(w⁵R⁴/E*²)^(1/3)`. For the neck it is
+/// [`hysteresis_constant`] (7.09220…); for the maximum tensile force it is that times
+/// `(0.225 − 0.15·(3/4)^(4/3)) / (0.225 + 2.4·4^(−10/3))` = 3.50260…
+pub fn end_hysteresis_constant(end: JkrEnd) -> f64 {
+    let work = |e| unit_potential(end_radius(1.0, e)) - unit_potential(1.0);
+    hysteresis_constant() * work(end) / work(JkrEnd::Neck)
 }
 
 /// The dimensionless result: `(ε, s_c, x_max, outcome, rhs evaluations)`.
 type Raw = (f64, f64, f64, Outcome, usize);
 
 /// Integrates one collision with damping `delta`, adhesion `kappa` and relative tolerance `rtol`;
-/// `visit(σ, x, v, b)` sees the start, every accepted step and every event (in order).
+/// `visit(σ, x, v, b)` sees the start, every accepted step and every event (in order). The outcome
+/// is decided when the grains are caught (the energy falls below what pull-off needs); with
+/// `follow_caught` the path is followed on to where they stop separating (for the force loop),
+/// as far as the step budget allows.
 fn integrate(
     delta: f64,
     kappa: f64,
+    end: JkrEnd,
     rtol: f64,
+    follow_caught: bool,
     mut visit: impl FnMut(f64, f64, f64, f64),
 ) -> Result<Raw> {
     if !(delta.is_finite() && delta >= 0.0) {
@@ -218,7 +288,7 @@ fn integrate(
     if delta > DELTA_LIMIT {
         return Ok((0.0, f64::INFINITY, 0.0, Outcome::Overdamped, 0));
     }
-    let sys = System::new(delta, kappa);
+    let sys = System::new(delta, kappa, end);
     // Scales: strong adhesion (κ ≫ 1) squeezes the contact to x ~ κ^(4/3) over s ~ κ^(−1/3)… the
     // controller adapts; only the first trial step and the absolute tolerances need a scale.
     let x_scale = 1.0f64.max(powf(kappa, 4.0 / 3.0));
@@ -249,8 +319,18 @@ fn integrate(
     visit(0.0, y0[0], y0[1], sys.radius(y0[0]));
     let mut x_max: f64 = 0.0;
     let mut past_max = false;
+    // Caught from the start when the impact's kinetic energy cannot pay the hysteresis (the event
+    // below only sees E falling through U(b_c)).
+    let mut caught =
+        kappa > 0.0 && 0.5 * y0[1] * y0[1] + sys.potential(sys.radius(y0[0])) < sys.u_c;
+    let stuck = |x_max: f64, n: usize| Ok((0.0, f64::INFINITY, x_max, Outcome::Stuck, n));
     loop {
         let outcome = match stepper.step(&sys) {
+            // Caught grains creeping onto the JKR equilibrium (the overdamped approach never turns
+            // back, so no event ends it): the outcome is already decided.
+            Err(Error::StepBudgetExceeded { .. }) if caught => {
+                return stuck(x_max, stepper.rhs_evaluations());
+            }
             Err(Error::StepBudgetExceeded { .. }) if past_max => {
                 return Ok((
                     0.0,
@@ -265,14 +345,24 @@ fn integrate(
         match outcome {
             StepOutcome::Step => {
                 let (t, y) = (stepper.t(), *stepper.y());
+                x_max = x_max.max(y[0]);
                 visit(t, y[0], y[1], sys.radius(y[0]));
             }
             StepOutcome::Event { t, y, which } => {
+                x_max = x_max.max(y[0]);
                 visit(t, y[0], y[1], sys.radius(y[0]));
                 match which {
                     MAX if !past_max => {
                         past_max = true;
-                        x_max = y[0];
+                        if caught && !follow_caught {
+                            return stuck(x_max, stepper.rhs_evaluations());
+                        }
+                    }
+                    CAUGHT => {
+                        caught = true;
+                        if past_max && !follow_caught {
+                            return stuck(x_max, stepper.rhs_evaluations());
+                        }
                     }
                     PULL_OFF if past_max || y[1] < 0.0 => {
                         let eps = (-y[1]).clamp(0.0, 1.0);
@@ -284,14 +374,28 @@ fn integrate(
                             stepper.rhs_evaluations(),
                         ));
                     }
-                    STOP if past_max => {
+                    // Turned back beyond the end: a grazing pull-off whose brief excursion past
+                    // x_c fell inside one step (no sign change at the step's ends). The speed at
+                    // the crossing follows from the energy, E(stop) − U(x_c) (the loss over the
+                    // excursion is of higher order).
+                    STOP if past_max && y[0] < sys.x_c => {
+                        let excess = sys.potential(sys.radius(y[0])) - sys.u_c;
+                        let eps = sqrt(2.0 * excess.max(0.0)).clamp(0.0, 1.0);
                         return Ok((
-                            0.0,
-                            f64::INFINITY,
+                            eps,
+                            t * t,
                             x_max,
-                            Outcome::Stuck,
+                            Outcome::PullOff,
                             stepper.rhs_evaluations(),
                         ));
+                    }
+                    STOP if past_max => {
+                        return stuck(x_max, stepper.rhs_evaluations());
+                    }
+                    // Caught and slower than 1e-9 of the impact speed either way: the grains
+                    // settle onto the JKR equilibrium; nothing visible is left to follow.
+                    SLOW | CREEP if caught => {
+                        return stuck(x_max, stepper.rhs_evaluations());
                     }
                     CREEP if past_max && kappa == 0.0 => {
                         // Without adhesion nothing catches the grains, but the rebound is < 1e-9.
@@ -305,6 +409,9 @@ fn integrate(
                     }
                     _ => {}
                 }
+            }
+            StepOutcome::Done if caught => {
+                return stuck(x_max, stepper.rhs_evaluations());
             }
             StepOutcome::Done if past_max => {
                 return Ok((
@@ -326,8 +433,9 @@ fn integrate(
 }
 
 impl Dynamic {
-    /// The constants of a scene; `work_of_adhesion` is `adhesion.surface_energy` (0 without adhesion).
-    pub fn new(contact: &Contact, work_of_adhesion: f64) -> Result<Dynamic> {
+    /// The constants of a scene; `work_of_adhesion` is `adhesion.surface_energy` (0 without
+    /// adhesion), `end` the scene's `adhesion.jkr_end`.
+    pub fn new(contact: &Contact, work_of_adhesion: f64, end: JkrEnd) -> Result<Dynamic> {
         if !(work_of_adhesion.is_finite() && work_of_adhesion >= 0.0) {
             return Err(Error::OutOfRange {
                 field: "adhesion.surface_energy",
@@ -338,6 +446,7 @@ impl Dynamic {
         Ok(Dynamic {
             modulus: 0.75 * contact.rho_h / sqrt(contact.r_eff),
             work_of_adhesion,
+            end,
             r_eff: contact.r_eff,
             m_eff: contact.m_eff,
             alpha: contact.alpha,
@@ -362,12 +471,13 @@ impl Dynamic {
         (delta, kappa)
     }
 
-    /// The JKR hysteresis energy `W = 7.09220… (w⁵R⁴/E*²)^(1/3)` \[J\] ([`hysteresis_constant`]).
+    /// The JKR hysteresis energy `W = C (w⁵R⁴/E*²)^(1/3)` \[J\] of the scene's end of contact
+    /// ([`end_hysteresis_constant`]: C = 7.09220… at the neck, 3.50260… at the maximum tensile force).
     pub fn hysteresis_energy(&self) -> f64 {
         let w = self.work_of_adhesion;
         let r = self.r_eff;
         // (w⁵R⁴/E*²)^(1/3) = w (w R² / E*)^(2/3).
-        hysteresis_constant() * w * powf(w * r * r / self.modulus, 2.0 / 3.0)
+        end_hysteresis_constant(self.end) * w * powf(w * r * r / self.modulus, 2.0 / 3.0)
     }
 
     fn check_speed(g: f64) -> Result<f64> {
@@ -393,7 +503,8 @@ impl Dynamic {
                 });
             }
         }
-        let (eps, s_c, x_max, outcome, n) = integrate(delta, kappa, rtol, |_, _, _, _| {})?;
+        let (eps, s_c, x_max, outcome, n) =
+            integrate(delta, kappa, self.end, rtol, false, |_, _, _, _| {})?;
         let xi_star = self.length_scale(g);
         Ok(Collision {
             eps,
@@ -482,16 +593,17 @@ impl Dynamic {
         let radius_scale = sqrt(self.r_eff * xi_star);
         let k = 1.5 * delta;
         let mut points = alloc::vec::Vec::new();
-        let (_, _, _, outcome, _) = integrate(delta, kappa, rtol, |sigma, x, v, b| {
-            let elastic = b * b * b - 1.5 * kappa * b * sqrt(b);
-            points.push(LoopPoint {
-                t: sigma * sigma * tau,
-                xi: x * xi_star,
-                xi_dot: v * g,
-                force: (elastic + k * b * v) * force_scale,
-                contact_radius: b * radius_scale,
-            });
-        })?;
+        let (_, _, _, outcome, _) =
+            integrate(delta, kappa, self.end, rtol, true, |sigma, x, v, b| {
+                let elastic = b * b * b - 1.5 * kappa * b * sqrt(b);
+                points.push(LoopPoint {
+                    t: sigma * sigma * tau,
+                    xi: x * xi_star,
+                    xi_dot: v * g,
+                    force: (elastic + k * b * v) * force_scale,
+                    contact_radius: b * radius_scale,
+                });
+            })?;
         if outcome == Outcome::PullOff
             && let Some(last) = points.last().copied()
         {
@@ -512,8 +624,8 @@ mod tests {
     #[test]
     fn radius_inverts_the_jkr_overlap() {
         for kappa in [0.0, 1e-6, 0.3, 2.0, 50.0] {
-            let sys = System::new(0.0, kappa);
-            for x in [sys.x_c * 0.5, 0.0, 1e-3, 0.5, 3.0, 1e3] {
+            let sys = System::new(0.0, kappa, JkrEnd::Neck);
+            for x in [sys.x_neck * 0.5, 0.0, 1e-3, 0.5, 3.0, 1e3] {
                 let b = sys.radius(x);
                 let back = b * b - kappa * sqrt(b);
                 assert!(
@@ -528,7 +640,8 @@ mod tests {
     #[test]
     fn elastic_hertz_limit_conserves_energy() {
         // δ = κ = 0: Hertz, ε = 1 and x_max = (5/4)^(2/5) (energy conservation).
-        let (eps, s_c, x_max, outcome, _) = integrate(0.0, 0.0, 1e-12, |_, _, _, _| {}).unwrap();
+        let (eps, s_c, x_max, outcome, _) =
+            integrate(0.0, 0.0, JkrEnd::Neck, 1e-12, false, |_, _, _, _| {}).unwrap();
         assert_eq!(outcome, Outcome::PullOff);
         assert!((eps - 1.0).abs() < 1e-9, "{eps}");
         assert!((x_max - libm::pow(1.25, 0.4)).abs() < 1e-10);

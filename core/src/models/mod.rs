@@ -191,8 +191,10 @@ impl Evaluator {
         };
         match model {
             Model::Brilliantov2007 => {
-                let w = scene.adhesion.map_or(0.0, |a| a.surface_energy);
-                e.dynamic = Some(brilliantov2007::Dynamic::new(&contact, w)?);
+                let (w, end) = scene
+                    .adhesion
+                    .map_or((0.0, Default::default()), |a| (a.surface_energy, a.jkr_end));
+                e.dynamic = Some(brilliantov2007::Dynamic::new(&contact, w, end)?);
             }
             Model::Thornton1997 => {
                 let p = scene.plasticity.ok_or(Error::InvalidValue {

@@ -21,7 +21,7 @@ pub struct Args {
 pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
     let g = speed(
         "--g",
-        &get("--g").ok_or_else(|| CliError("--g: required (m/s)".into()))?,
+        &get("--g").ok_or_else(|| CliError::input("--g: required (m/s)"))?,
         false,
     )?;
     let gt = get("--gt").map(|t| speed("--gt", &t, true)).transpose()?;
@@ -47,7 +47,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     let contact = crate::cli::contact(common)?;
     let tr = contact
         .collision(args.g, args.points, common.accuracy)
-        .map_err(|e| CliError(format!("--g {}: {e}", args.g)))?;
+        .map_err(|e| CliError::input(format!("--g {}: {e}", args.g)))?;
     let oblique = match args.gt {
         None => None,
         Some(gt) => {
@@ -64,7 +64,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                         gt,
                         common.accuracy,
                     )
-                    .map_err(|e| CliError(format!("--gt {gt}: {e}")))?,
+                    .map_err(|e| CliError::input(format!("--gt {gt}: {e}")))?,
             )
         }
     };

@@ -115,9 +115,7 @@ fn evaluators(common: &Common, args: &Args) -> CliResult<Vec<Evaluator>> {
     }
     args.models
         .iter()
-        .map(|&m| {
-            Evaluator::new(m, &common.scene).map_err(|e| CliError(format!("{}: {e}", m.name())))
-        })
+        .map(|&m| Evaluator::new(m, &common.scene).map_err(|e| CliError::from(e).context(m.name())))
         .collect()
 }
 
@@ -213,7 +211,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         for &g in &args.g {
             let r = e
                 .eps(g, common.accuracy)
-                .map_err(|x| CliError(format!("{name}, g_n = {}: {x}", Number(g))))?;
+                .map_err(|x| CliError::from(x).context(format!("{name}, g_n = {}", Number(g))))?;
             records.push(Record {
                 model: name,
                 g_n: g,
@@ -223,7 +221,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         }
         let cs = e
             .characteristic_speeds(common.accuracy)
-            .map_err(|x| CliError(format!("{name}: {x}")))?;
+            .map_err(|x| CliError::from(x).context(name))?;
         for s in cs.iter() {
             speeds.push(Speed {
                 model: name,
@@ -238,9 +236,9 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     for law in &args.laws {
         let radius = law.needs_radius().then_some(r_eff);
         for &g in &args.g {
-            let v = law
-                .eval(g, radius)
-                .map_err(|x| CliError(format!("atlas:{}, g_n = {}: {x}", law.id, Number(g))))?;
+            let v = law.eval(g, radius).map_err(|x| {
+                CliError::from(x).context(format!("atlas:{}, g_n = {}", law.id, Number(g)))
+            })?;
             records.push(Record {
                 model: law.id,
                 g_n: g,
@@ -309,7 +307,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
 fn to_json<T: Serialize>(v: &T) -> CliResult<String> {
     serde_json::to_string_pretty(v)
         .map(|s| s + "\n")
-        .map_err(|e| CliError(e.to_string()))
+        .map_err(|e| CliError::input(e.to_string()))
 }
 
 #[derive(Serialize)]
@@ -337,7 +335,7 @@ fn bench(common: &Common, evaluators: &[Evaluator], g: &[f64]) -> CliResult<Stri
                 for &x in g {
                     sink += e
                         .eps(x, level)
-                        .map_err(|err| CliError(format!("{}: {err}", e.model().name())))?
+                        .map_err(|err| CliError::from(err).context(e.model().name()))?
                         .eps;
                 }
                 n += g.len();

@@ -28,7 +28,7 @@ pub fn run(common: &Common, from: f64, to: f64, n: usize) -> CliResult<String> {
     for w in warnings {
         eprintln!("warning: {} ({})", w.text(), w.equation());
     }
-    render(&records, common.format).map_err(CliError)
+    render(&records, common.format).map_err(CliError::input)
 }
 
 #[cfg(test)]

@@ -91,7 +91,8 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         return Ok(match common.format {
             Format::Json => {
                 let all: Vec<_> = ENTRIES.iter().map(entry_json).collect();
-                serde_json::to_string_pretty(&all).map_err(|e| CliError(e.to_string()))? + "\n"
+                serde_json::to_string_pretty(&all).map_err(|e| CliError::input(e.to_string()))?
+                    + "\n"
             }
             Format::Csv => {
                 let mut s = String::from(
@@ -144,7 +145,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     for &g in speeds {
         let e = entry
             .eval(g, *radius)
-            .map_err(|e| CliError(format!("--law {}: {e}", entry.id)))?;
+            .map_err(|e| CliError::input(format!("--law {}: {e}", entry.id)))?;
         rows.push(e);
     }
     Ok(match common.format {
@@ -153,7 +154,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                 .iter()
                 .map(|e| serde_json::json!({"g_n": e.g, "eps_n": e.eps, "extrapolated": e.extrapolated}))
                 .collect();
-            serde_json::to_string_pretty(&v).map_err(|e| CliError(e.to_string()))? + "\n"
+            serde_json::to_string_pretty(&v).map_err(|e| CliError::input(e.to_string()))? + "\n"
         }
         Format::Csv => {
             let mut s = String::from("g_n [m/s],eps_n,extrapolated\n");

@@ -13,10 +13,10 @@ pub fn run(common: &Common, speeds: &[f64]) -> CliResult<String> {
     for &g in speeds {
         let n = contact
             .normal(g, common.accuracy)
-            .map_err(|e| CliError(format!("g_n = {}: {e}", Number(g))))?;
+            .map_err(|e| CliError::from(e).context(format!("g_n = {}", Number(g))))?;
         records.push(EpsRecord::new(g, &n));
     }
-    render(&records, common.format).map_err(CliError)
+    render(&records, common.format).map_err(CliError::input)
 }
 
 /// Streams the records for a file of speeds to stdout.

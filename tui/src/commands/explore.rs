@@ -12,5 +12,5 @@ pub fn run(c: Common) -> CliResult<()> {
              e.g. rime eps --g 0.01 or rime curve --from 1e-6 --to 1 (see rime --help)",
         );
     }
-    crate::explore::run(c.scene, c.accuracy).map_err(|e| CliError(format!("explorer: {e}")))
+    crate::explore::run(c.scene, c.accuracy).map_err(|e| CliError::input(format!("explorer: {e}")))
 }

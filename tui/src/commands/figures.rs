@@ -8,7 +8,8 @@ use std::path::Path;
 
 /// Writes every figure into `out` and lists them with their captions.
 pub fn run(c: &Common, out: &Path, explorer: Option<&ExplorerFigures>) -> CliResult<String> {
-    std::fs::create_dir_all(out).map_err(|e| CliError(format!("--out {}: {e}", out.display())))?;
+    std::fs::create_dir_all(out)
+        .map_err(|e| CliError::input(format!("--out {}: {e}", out.display())))?;
     if let Some(x) = explorer {
         return run_explorer(c, out, x);
     }
@@ -25,7 +26,7 @@ pub fn run(c: &Common, out: &Path, explorer: Option<&ExplorerFigures>) -> CliRes
         let tmp = out.join(format!(".{}.tmp.png", f.name));
         rime_core::figure::render_png(f, &tmp, 1000, 680)?;
         std::fs::rename(&tmp, &png)
-            .map_err(|e| CliError(format!("{}: cannot write: {e}", png.display())))?;
+            .map_err(|e| CliError::input(format!("{}: cannot write: {e}", png.display())))?;
         s.push_str(&format!("{}: {}\n  {}\n", f.name, f.title, f.caption));
     }
     s.push_str(&format!(
@@ -48,17 +49,17 @@ fn run_explorer(c: &Common, out: &Path, x: &ExplorerFigures) -> CliResult<String
     req.overlays = x
         .overlays
         .iter()
-        .map(|o| Overlay::parse(o).map_err(|e| CliError(format!("--overlays {o}: {e}"))))
+        .map(|o| Overlay::parse(o).map_err(|e| CliError::input(format!("--overlays {o}: {e}"))))
         .collect::<CliResult<_>>()?;
     let mut progress = crate::progress::Progress::new("figures", 1);
     progress.step("computing the frame");
-    let frame = compute(&req, &|| false).ok_or_else(|| CliError("figures: cancelled".into()))?;
+    let frame = compute(&req, &|| false).ok_or_else(|| CliError::input("figures: cancelled"))?;
     if let Some(e) = frame
         .errors
         .iter()
         .find(|e| e.part == "request" || e.part == "scene")
     {
-        return Err(CliError(format!("{}: {}", e.part, e.message)));
+        return Err(CliError::input(format!("{}: {}", e.part, e.message)));
     }
     let view = View {
         y_log: x.y_log,

@@ -62,7 +62,8 @@ pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
 /// Reads a points file: regular files of at most [`MAX_DATA_BYTES`] only.
 pub fn read_points(path: &Path) -> CliResult<Points> {
     let shown = path.display();
-    let meta = std::fs::metadata(path).map_err(|e| CliError(format!("--data {shown}: {e}")))?;
+    let meta =
+        std::fs::metadata(path).map_err(|e| CliError::input(format!("--data {shown}: {e}")))?;
     if !meta.is_file() {
         return err(format!("--data {shown}: not a regular file"));
     }
@@ -72,9 +73,9 @@ pub fn read_points(path: &Path) -> CliResult<Points> {
             meta.len()
         ));
     }
-    let text =
-        std::fs::read_to_string(path).map_err(|e| CliError(format!("--data {shown}: {e}")))?;
-    parse_points(&text).map_err(|e| CliError(format!("--data {shown}: {e}")))
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| CliError::input(format!("--data {shown}: {e}")))?;
+    parse_points(&text).map_err(|e| CliError::input(format!("--data {shown}: {e}")))
 }
 
 fn render(common: &Common, f: &SceneFit, points: &Points, what: &str) -> CliResult<String> {
@@ -100,7 +101,7 @@ fn render(common: &Common, f: &SceneFit, points: &Points, what: &str) -> CliResu
                     "expected": t.expected, "positive": t.positive, "negative": t.negative,
                     "p": t.p})),
                 "chi2_scaled": f.weighted,
-                "scene": serde_json::to_value(f.scene).map_err(|e| CliError(e.to_string()))?,
+                "scene": serde_json::to_value(f.scene).map_err(|e| CliError::input(e.to_string()))?,
             });
             if let ([p], Some(obj)) = (f.params.as_slice(), v.as_object_mut()) {
                 obj.insert("param".into(), p.path.into());
@@ -232,7 +233,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
             for &x in &g {
                 let e = entry
                     .eval(x, *radius)
-                    .map_err(|e| CliError(format!("--law {}: {e}", entry.id)))?;
+                    .map_err(|e| CliError::input(format!("--law {}: {e}", entry.id)))?;
                 eps.push(e.eps.clamp(0.0, 1.0));
             }
             let points = Points {
@@ -256,7 +257,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         points.sigma.as_deref(),
         common.accuracy,
     )
-    .map_err(|e| CliError(format!("--param {e}")))?;
+    .map_err(|e| CliError::input(format!("--param {e}")))?;
     if let Some(note) = extra {
         f.warnings.push(note.to_string());
     }

@@ -12,8 +12,8 @@ const BIG: usize = 400;
 pub fn run(common: &Common, max: f64, n: usize) -> CliResult<String> {
     let contact = cli::contact(common)?;
     if contact.friction.is_none() {
-        return Err(CliError(
-            "friction: is off in this scene; the stick map needs it (--set friction=on)".into(),
+        return Err(CliError::input(
+            "friction: is off in this scene; the stick map needs it (--set friction=on)",
         ));
     }
     let map = {
@@ -38,7 +38,8 @@ pub fn run(common: &Common, max: f64, n: usize) -> CliResult<String> {
                 eps_t: rows(&|k| map.eps_t[k]),
                 eps_n: map.eps_n.clone(),
             };
-            let value = serde_json::to_value(&record).map_err(|e| CliError(e.to_string()))?;
+            let value =
+                serde_json::to_value(&record).map_err(|e| CliError::input(e.to_string()))?;
             output::pretty_json(&value)
         }
         Format::Csv => rime_core::explorer::records::map_csv(&map),

@@ -27,7 +27,7 @@ pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
             .map(|v| rime_core::units::parse_quantity(name, &v, unit).map_err(CliError::from))
             .transpose()
     };
-    let tau = q("--tau", "1")?.ok_or_else(|| CliError("--tau: required (optical depth)".into()))?;
+    let tau = q("--tau", "1")?.ok_or_else(|| CliError::input("--tau: required (optical depth)"))?;
     let orbit = match (
         q("--omega", "1/s")?,
         q("--planet-mass", "kg")?,
@@ -181,7 +181,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                 map.insert(n.to_string(), Value::Object(m));
             }
             map.insert("damping_note".into(), note.map_or(Value::Null, Value::from));
-            serde_json::to_string_pretty(&map).map_err(|e| CliError(e.to_string()))? + "\n"
+            serde_json::to_string_pretty(&map).map_err(|e| CliError::input(e.to_string()))? + "\n"
         }
         Format::Csv => {
             let mut s = String::from("name,value,unit\n");

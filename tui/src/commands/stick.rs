@@ -48,7 +48,7 @@ pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
     let radius = list(
         "--radius",
         &get("--radius")
-            .ok_or_else(|| CliError("--radius: required (m, or with a unit: 1 um)".into()))?,
+            .ok_or_else(|| CliError::input("--radius: required (m, or with a unit: 1 um)"))?,
         1e-9,
         1e4,
         "m",
@@ -175,7 +175,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     let mut note = String::new();
     if let Some(dir) = &args.out {
         std::fs::create_dir_all(dir)
-            .map_err(|e| CliError(format!("--out {}: {e}", dir.display())))?;
+            .map_err(|e| CliError::input(format!("--out {}: {e}", dir.display())))?;
         write_atomic(&dir.join("stick_table.csv"), csv.as_bytes())?;
         write_atomic(
             &dir.join("rime_v_stick.c"),
@@ -223,7 +223,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                     "measured_v_stick": in_measured_regime(t).then_some(MEASURED_UM_ICE)})
                 })
                 .collect();
-            serde_json::to_string_pretty(&v).map_err(|e| CliError(e.to_string()))? + "\n"
+            serde_json::to_string_pretty(&v).map_err(|e| CliError::input(e.to_string()))? + "\n"
         }
         Format::Csv => csv,
         Format::Table => {

@@ -9,17 +9,16 @@ use rime_core::error::Number;
 pub fn run(common: &Common, gn: &[f64], gt: &[f64]) -> CliResult<String> {
     let contact = cli::contact(common)?;
     if contact.friction.is_none() {
-        return Err(CliError(
-            "friction: is off in this scene; tangential restitution needs it (--set friction=on)"
-                .into(),
+        return Err(CliError::input(
+            "friction: is off in this scene; tangential restitution needs it (--set friction=on)",
         ));
     }
     let mut records = Vec::with_capacity(gn.len() * gt.len());
     for &n in gn {
         for &t in gt {
-            let r = contact
-                .tangential(n, t, common.accuracy)
-                .map_err(|e| CliError(format!("g_n = {}, g_t = {}: {e}", Number(n), Number(t))))?;
+            let r = contact.tangential(n, t, common.accuracy).map_err(|e| {
+                CliError::from(e).context(format!("g_n = {}, g_t = {}", Number(n), Number(t)))
+            })?;
             records.push(TangentialRecord {
                 g_n: n,
                 g_t: t,
@@ -29,5 +28,5 @@ pub fn run(common: &Common, gn: &[f64], gt: &[f64]) -> CliResult<String> {
             });
         }
     }
-    render(&records, common.format).map_err(CliError)
+    render(&records, common.format).map_err(CliError::input)
 }

@@ -40,7 +40,7 @@ pub fn run(common: &Common, input: &TidalInput) -> CliResult<String> {
                 serde_json::Value::from(t.holds()),
             );
             map.insert("verdict".into(), serde_json::Value::from(t.verdict()));
-            serde_json::to_string_pretty(&map).map_err(|e| CliError(e.to_string()))? + "\n"
+            serde_json::to_string_pretty(&map).map_err(|e| CliError::input(e.to_string()))? + "\n"
         }
         Format::Csv => {
             let mut s = String::from("name,value,unit\n");

@@ -568,7 +568,11 @@ impl App {
             }
             Err(e) => {
                 // load_scene words its errors for the command line (`--scene FILE: …`).
-                let text = e.0.strip_prefix("--scene ").unwrap_or(&e.0).to_string();
+                let text = e
+                    .message
+                    .strip_prefix("--scene ")
+                    .unwrap_or(&e.message)
+                    .to_string();
                 self.error(format!("open {text} (scene unchanged)"));
             }
         }
@@ -1226,7 +1230,7 @@ impl App {
         // its loop shows the neck (ξ < 0) and the jump at pull-off.
         self.inside_dynamic = match (&contact, self.scene.adhesion) {
             (Ok(c), Some(a)) => {
-                rime_core::models::brilliantov2007::Dynamic::new(c, a.surface_energy)
+                rime_core::models::brilliantov2007::Dynamic::new(c, a.surface_energy, a.jkr_end)
                     .and_then(|d| d.force_loop(g, 1e-9))
                     .map(|points| points.iter().map(|p| (p.xi, p.force)).collect())
                     .unwrap_or_default()

@@ -74,7 +74,7 @@ pub fn write_frame(dir: &Path, f: &Frame, view: &View, date: &str) -> CliResult<
         rime_core::figure::render_png(fig, &tmp, 1000, 650)?;
         let png = format!("{}.png", fig.name);
         std::fs::rename(&tmp, dir.join(&png))
-            .map_err(|e| CliError(format!("{}: {e}", dir.join(&png).display())))?;
+            .map_err(|e| CliError::input(format!("{}: {e}", dir.join(&png).display())))?;
         written.push(png);
     }
     Ok(written)
@@ -93,7 +93,8 @@ pub fn export(base: &Path, frame: &Frame, view: &View) -> CliResult<PathBuf> {
         dir = base.join(format!("rime-export-{stamp}-{k}"));
         k += 1;
     }
-    std::fs::create_dir_all(&dir).map_err(|e| CliError(format!("{}: {e}", dir.display())))?;
+    std::fs::create_dir_all(&dir)
+        .map_err(|e| CliError::input(format!("{}: {e}", dir.display())))?;
     write_frame(&dir, frame, view, &date(secs))?;
     Ok(dir)
 }

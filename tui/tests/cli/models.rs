@@ -31,6 +31,7 @@ fn vanishing_adhesion_reproduces_the_paper_with_zero_overlap_end() {
             adhesion: Some(rime_core::Adhesion {
                 surface_energy: gamma,
                 modulus: AdhesionModulus::Consistent,
+                jkr_end: Default::default(),
             }),
             ..paper
         };
@@ -58,7 +59,7 @@ fn without_damping_the_jkr_hysteresis_sets_g_cr_and_matches_eq_15() {
     for gamma in [0.01, 0.1, 1.0] {
         let s = sticky(0.0, gamma);
         let c = Contact::new(&s).unwrap();
-        let d = brilliantov2007::Dynamic::new(&c, gamma).unwrap();
+        let d = brilliantov2007::Dynamic::new(&c, gamma, rime_core::JkrEnd::Neck).unwrap();
         let g_cr = d.critical_speed(c.m_eff, 1e-13).unwrap().unwrap();
         let e_star = d.modulus;
         let unit = (gamma.powi(5) * c.r_eff.powi(4) / (e_star * e_star)).cbrt();
@@ -110,7 +111,7 @@ fn damping_only_raises_the_critical_speed() {
 fn the_force_loop_has_jump_in_neck_and_pull_off_jump() {
     let s = sticky(1e-4, 0.1);
     let c = Contact::new(&s).unwrap();
-    let d = brilliantov2007::Dynamic::new(&c, 0.1).unwrap();
+    let d = brilliantov2007::Dynamic::new(&c, 0.1, rime_core::JkrEnd::Neck).unwrap();
     let g = 3e-3;
     let pts = d.force_loop(g, 1e-10).unwrap();
     let first = pts[0];
@@ -416,4 +417,84 @@ fn compare_sets_the_atlas_laws_beside_the_models_issue_16() {
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--models"));
+}
+
+/// Issue 25: with `adhesion.jkr_end = pull_off_force` the contact ends at the maximum tensile force
+/// (LAMMPS's `jkr`). Without damping the loss is the work against adhesion from the jump-in to that
+/// point, C_p (w⁵R⁴/E*²)^(1/3) with C_p = 3.5026019718352904 (mpmath quad of ∫F dξ from
+/// a³ = 2πwR²/E* to a³ = 9πwR²/(8E*), 30 digits), so g_cr(pull-off)/g_cr(neck) = √(C_p/C) =
+/// 0.70275675717537 and above g_cr ε² = 1 − (g_cr/g)². With damping the ratio rises (damping, which
+/// both ends share, takes a larger part of the loss).
+#[test]
+fn issue_25_pull_off_force_end_sets_g_cr_from_its_own_hysteresis() {
+    const C_PULL_OFF: f64 = 3.502_601_971_835_29;
+    const RATIO: f64 = 0.702_756_757_175_373;
+    for gamma in [0.01, 0.1, 1.0] {
+        let s = sticky(0.0, gamma);
+        let c = Contact::new(&s).unwrap();
+        let neck = brilliantov2007::Dynamic::new(&c, gamma, rime_core::JkrEnd::Neck).unwrap();
+        let pull =
+            brilliantov2007::Dynamic::new(&c, gamma, rime_core::JkrEnd::PullOffForce).unwrap();
+        let g_n = neck.critical_speed(c.m_eff, 1e-13).unwrap().unwrap();
+        let g_p = pull.critical_speed(c.m_eff, 1e-13).unwrap().unwrap();
+        let unit = (gamma.powi(5) * c.r_eff.powi(4) / (pull.modulus * pull.modulus)).cbrt();
+        let measured = 0.5 * c.m_eff * g_p * g_p / unit;
+        println!(
+            "γ = {gamma}: g_cr pull-off {g_p:e}, neck {g_n:e}, ratio {}",
+            g_p / g_n
+        );
+        assert!(rel(measured, C_PULL_OFF) < 1e-7, "{measured}");
+        assert!(rel(g_p / g_n, RATIO) < 1e-7, "{}", g_p / g_n);
+        for k in [1.5, 4.0] {
+            let r = pull.collide(k * g_p, 1e-13).unwrap();
+            let expected = (1.0 - 1.0 / (k * k)).sqrt();
+            assert!(rel(r.eps, expected) < 1e-7, "{k}: {} vs {expected}", r.eps);
+        }
+    }
+    // With damping (ice-sticky, A = 1e-4 s and 1e-5 s) the pull-off end still sticks at lower
+    // speeds, by a ratio between the elastic 0.703 and 1.
+    for a in [1e-5, 1e-4] {
+        let s = sticky(a, 0.1);
+        let c = Contact::new(&s).unwrap();
+        let g = |end| {
+            brilliantov2007::Dynamic::new(&c, 0.1, end)
+                .unwrap()
+                .critical_speed(c.m_eff, 1e-10)
+                .unwrap()
+                .unwrap()
+        };
+        let ratio = g(rime_core::JkrEnd::PullOffForce) / g(rime_core::JkrEnd::Neck);
+        println!("A = {a}: g_cr ratio pull-off/neck = {ratio:.4}");
+        assert!(ratio > RATIO && ratio < 1.0, "{ratio}");
+    }
+}
+
+/// Issue 25: the end of contact is a scene key: `--set adhesion.jkr_end=…`, in the scene JSON, and
+/// old scene files without it load with the neck.
+#[test]
+fn issue_25_jkr_end_is_a_scene_key() {
+    let (code, out, err) = crate::bin::rime(&[
+        "scene",
+        "--preset",
+        "ice-sticky",
+        "--set",
+        "adhesion.jkr_end=pull_off_force",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["adhesion"]["jkr_end"], "pull_off_force");
+    let old = r#"{"grains":{"radius_1":0.02,"radius_2":0.02,"density":900.0},
+        "bulk":{"youngs_modulus":1e10,"poisson_ratio":0.3,"damping":{"time":1e-4}},
+        "adhesion":{"surface_energy":0.1}}"#;
+    let scene: rime_core::Scene = serde_json::from_str(old).unwrap();
+    assert_eq!(scene.adhesion.unwrap().jkr_end, rime_core::JkrEnd::Neck);
+    let (code, _, err) = crate::bin::rime(&[
+        "scene",
+        "--preset",
+        "ice-sticky",
+        "--set",
+        "adhesion.jkr_end=somewhere",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("adhesion.jkr_end"), "{err}");
 }
