@@ -706,6 +706,16 @@ impl App {
                 self.tidal = false;
                 self.info("tidal appendix closed (Esc again quits)");
             }
+            // Esc closes an open panel before it asks to quit (it quit from the `v` and `i`
+            // panels at once).
+            (Action::Back, _) if self.stick.is_some() => {
+                self.stick = None;
+                self.info("sticking thresholds closed (Esc again quits)");
+            }
+            (Action::Back, _) if self.inside.is_some() => {
+                self.inside = None;
+                self.info("collision panel closed (Esc again quits)");
+            }
             (Action::Interrupt, _) => self.quit = true,
             (Action::Quit | Action::Back, _) => self.ask_quit(),
             (Action::Help, _) => {

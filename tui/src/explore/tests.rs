@@ -1672,3 +1672,25 @@ fn compare_mode_never_repeats_a_colour_and_a_stroke_issue_21() {
         }
     }
 }
+
+/// Found trying the merged explorer at 80×24: Esc with the `v` or `i` panel open quit the program
+/// (it closes the tidal panel first); it closes either panel first, and quits only after that.
+#[test]
+fn esc_closes_the_thresholds_and_collision_panels_before_quitting() {
+    for panel in ['v', 'i'] {
+        let mut app = app_on(Scene::default());
+        update(&mut app, key(KeyCode::Char(panel)));
+        assert!(
+            app.stick.is_some() || app.inside.is_some(),
+            "{panel} opened nothing"
+        );
+        update(&mut app, key(KeyCode::Esc));
+        assert!(
+            app.stick.is_none() && app.inside.is_none(),
+            "{panel}: Esc left it open"
+        );
+        assert!(!app.quit, "{panel}: Esc quit with the panel open");
+        update(&mut app, key(KeyCode::Esc));
+        assert!(app.quit, "{panel}: a second Esc (no unsaved edits) quits");
+    }
+}
