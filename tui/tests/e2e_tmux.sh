@@ -6,7 +6,7 @@
 # Starts rime at 100×30, waits for the chart, selects the ice-frost preset (`p`), changes the layer
 # viscosity (select the row, `l`), checks that the readout changed, exports (`x`) and checks the
 # export folder and its CSVs, undoes and redoes the edit (`u`, `U`), scrolls the help, saves (`w`),
-# edits again and quits (`q`, which asks about the unsaved edit: `n` stays, `y` quits) and checks
+# edits again and quits (Ctrl-C, then `q`: each asks about the unsaved edit: `n` stays, `y` quits) and checks
 # exit code 0. Exits non-zero with a message on
 # any failure. Nothing sleeps for a fixed time: every wait polls the screen (or a file) for a condition,
 # and its timeout is only a hang guard. GUARD = 30 s: the slowest wait takes under 1 s on an idle
@@ -155,10 +155,11 @@ tmux send-keys -t "$SESSION" w
 wait_for "saved scene"
 [[ -s "$WORK/rime-scene.json" ]] || fail "w did not write rime-scene.json"
 
-# Edit again, then q asks (unsaved edits); n stays, q y quits with exit code 0.
+# Edit again, then Ctrl-C asks like q (unsaved edits, issue 22 item 8); n stays, q y quits with
+# exit code 0.
 tmux send-keys -t "$SESSION" l
 wait_for "1.56"
-tmux send-keys -t "$SESSION" q
+tmux send-keys -t "$SESSION" C-c
 wait_for "quit anyway?"
 tmux send-keys -t "$SESSION" n
 wait_for "not quitting"

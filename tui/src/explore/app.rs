@@ -128,8 +128,9 @@ pub struct App {
     pub saved: Scene,
     /// A yes/no question waiting for its answer.
     pub confirm: Option<Confirm>,
-    /// Whether this session wrote the scene file (`w` then overwrites it without asking again).
-    pub wrote_scene_file: bool,
+    /// What this session last wrote to the scene file: `w` overwrites without asking only while
+    /// the file still holds exactly that (a file changed since, by anyone, is asked about again).
+    pub wrote_scene_file: Option<Vec<u8>>,
     /// A speed to put the chart cursor on when the next frame arrives (after a range change).
     pub cursor_at: Option<f64>,
     /// Where the last frame drew what the mouse can click (written by the renderer).
@@ -241,7 +242,7 @@ impl App {
             redo: Vec::new(),
             saved: scene,
             confirm: None,
-            wrote_scene_file: false,
+            wrote_scene_file: None,
             cursor_at: None,
             drawn: std::cell::Cell::new(Drawn::default()),
             colors: Colors::Rgb,
@@ -513,7 +514,11 @@ impl App {
         };
         match input.key(key) {
             LineEdit::Editing => {}
-            LineEdit::Quit => self.quit = true,
+            LineEdit::Quit => {
+                // Ctrl-C in the prompt: the prompt is cancelled, then it is q's question.
+                self.input = None;
+                self.ask_quit();
+            }
             LineEdit::Cancel => {
                 self.input = None;
                 self.info("edit cancelled");
@@ -535,7 +540,10 @@ impl App {
         };
         match input.key(key) {
             LineEdit::Editing => {}
-            LineEdit::Quit => self.quit = true,
+            LineEdit::Quit => {
+                self.open = None;
+                self.ask_quit();
+            }
             LineEdit::Cancel => {
                 self.open = None;
                 self.info("open cancelled");
@@ -553,7 +561,7 @@ impl App {
             self.error("open: no file name given (scene unchanged)");
             return;
         }
-        let given = PathBuf::from(path);
+        let given = expand_home(path);
         let path = if given.is_relative() && !given.exists() {
             self.out_dir.join(&given)
         } else {
@@ -599,10 +607,15 @@ impl App {
         }
     }
 
-    /// `w`: saves the scene, asking first when it would overwrite a file this session did not write.
+    /// `w`: saves the scene, asking first when it would overwrite a file that is not exactly what
+    /// this session last wrote there.
     fn save(&mut self) {
         let path = self.out_dir.join(SCENE_FILE);
-        if path.exists() && !self.wrote_scene_file {
+        let ours = self
+            .wrote_scene_file
+            .as_ref()
+            .is_some_and(|bytes| std::fs::read(&path).is_ok_and(|now| &now == bytes));
+        if path.exists() && !ours {
             self.confirm = Some(Confirm::Overwrite);
             return;
         }
@@ -611,12 +624,14 @@ impl App {
 
     fn write_scene(&mut self) {
         let path = self.out_dir.join(SCENE_FILE);
-        let result = scene_io::scene_json(&self.scene)
-            .and_then(|json| scene_io::write_atomic(&path, (json + "\n").as_bytes()));
+        let result = scene_io::scene_json(&self.scene).and_then(|json| {
+            let bytes = (json + "\n").into_bytes();
+            scene_io::write_atomic(&path, &bytes).map(|()| bytes)
+        });
         match result {
-            Ok(()) => {
+            Ok(bytes) => {
                 self.saved = self.scene;
-                self.wrote_scene_file = true;
+                self.wrote_scene_file = Some(bytes);
                 self.info(format!("saved scene to {}", path.display()));
             }
             Err(e) => self.error(format!("save failed: {e}")),
@@ -716,7 +731,8 @@ impl App {
                 self.inside = None;
                 self.info("collision panel closed (Esc again quits)");
             }
-            (Action::Interrupt, _) => self.quit = true,
+            // Ctrl-C acts as q: it asks before dropping unsaved edits (issue 22 item 8).
+            (Action::Interrupt, _) => self.ask_quit(),
             (Action::Quit | Action::Back, _) => self.ask_quit(),
             (Action::Help, _) => {
                 self.help = true;
@@ -1346,5 +1362,18 @@ impl LineInput {
             _ => self.fresh = was_fresh,
         }
         LineEdit::Editing
+    }
+}
+
+/// A typed path with a leading `~` or `~/` read as the home directory (as a shell would), so
+/// `~/scenes/a.json` opens what the user means; any other path is taken as typed.
+pub fn expand_home(path: &str) -> PathBuf {
+    let home = std::env::var_os("HOME").filter(|h| !h.is_empty());
+    match (path.strip_prefix('~'), home) {
+        (Some(""), Some(home)) => PathBuf::from(home),
+        (Some(rest), Some(home)) if rest.starts_with('/') => {
+            PathBuf::from(home).join(rest.trim_start_matches('/'))
+        }
+        _ => PathBuf::from(path),
     }
 }

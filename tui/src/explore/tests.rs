@@ -1,6 +1,6 @@
 //! Tests of the explorer: `update` logic, `TestBackend` buffer assertions and insta snapshots.
 
-use super::app::{App, Event, Focus, Tone, update};
+use super::app::{App, Confirm, Event, Focus, Tone, update};
 use super::compute::{SWEEPS, compute};
 use super::view::render;
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
@@ -1693,4 +1693,109 @@ fn esc_closes_the_thresholds_and_collision_panels_before_quitting() {
         update(&mut app, key(KeyCode::Esc));
         assert!(app.quit, "{panel}: a second Esc (no unsaved edits) quits");
     }
+}
+
+fn ctrl_c() -> Event {
+    Event::Key(KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL))
+}
+
+/// Issue 22 item 8: Ctrl-C acts as q. With unsaved edits it asks (n stays, the edit is kept); in
+/// the `e` prompt it cancels the prompt first, then asks.
+#[test]
+fn ctrl_c_asks_before_dropping_unsaved_edits_even_in_the_prompt_issue_22() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('l')); // an edit: R₁ × 1.25
+    assert!(app.unsaved());
+    update(&mut app, ctrl_c());
+    assert!(
+        !app.quit && app.confirm == Some(Confirm::Quit),
+        "Ctrl-C quit with unsaved edits"
+    );
+    update(&mut app, ch('n'));
+    assert!(
+        !app.quit && app.unsaved(),
+        "n keeps the session and the edit"
+    );
+    update(&mut app, ch('e'));
+    assert!(app.input.is_some(), "e opens the prompt");
+    update(&mut app, ctrl_c());
+    assert!(app.input.is_none(), "Ctrl-C cancels the prompt");
+    assert!(!app.quit && app.confirm == Some(Confirm::Quit), "then asks");
+    update(&mut app, ch('y'));
+    assert!(app.quit);
+    // Without unsaved edits Ctrl-C quits at once, as q does.
+    let mut clean = app_on(Scene::default());
+    update(&mut clean, ctrl_c());
+    assert!(clean.quit);
+}
+
+/// Issue 22 item 8: `w` asks before overwriting a scene file that changed since this session
+/// wrote it (it overwrote silently once the session had written the file once).
+#[test]
+fn w_asks_again_when_the_file_changed_since_it_was_written_issue_22() {
+    let dir = std::env::temp_dir().join(format!("rime-tui-w-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp");
+    let file = dir.join("rime-scene.json");
+    let _ = std::fs::remove_file(&file);
+    let mut app = app_on(Scene::default());
+    app.out_dir = dir.clone();
+    update(&mut app, ch('w'));
+    assert!(
+        app.confirm.is_none() && file.exists(),
+        "a new file is written at once"
+    );
+    update(&mut app, ch('l'));
+    update(&mut app, ch('w'));
+    assert!(
+        app.confirm.is_none(),
+        "our own file is overwritten without asking"
+    );
+    std::fs::write(&file, "{\"someone\": \"else\"}\n").expect("write");
+    update(&mut app, ch('l'));
+    update(&mut app, ch('w'));
+    assert_eq!(
+        app.confirm,
+        Some(Confirm::Overwrite),
+        "a changed file is asked about"
+    );
+    update(&mut app, ch('n'));
+    assert_eq!(
+        std::fs::read_to_string(&file).expect("read"),
+        "{\"someone\": \"else\"}\n",
+        "n keeps the other file"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 22 item 8: `~` in a typed path is the home directory, as in a shell.
+#[test]
+fn a_leading_tilde_is_the_home_directory_issue_22() {
+    let home = std::env::var_os("HOME").map(std::path::PathBuf::from);
+    if let Some(home) = home.filter(|h| !h.as_os_str().is_empty()) {
+        assert_eq!(super::app::expand_home("~"), home);
+        assert_eq!(super::app::expand_home("~/a/b.json"), home.join("a/b.json"));
+    }
+    // Only a leading `~` or `~/` is the home directory.
+    assert_eq!(
+        super::app::expand_home("a/~/b.json"),
+        std::path::PathBuf::from("a/~/b.json")
+    );
+    assert_eq!(
+        super::app::expand_home("~user/b.json"),
+        std::path::PathBuf::from("~user/b.json")
+    );
+}
+
+/// Issue 22 item 8: a status or message line longer than the terminal says it is cut (`… ? lists
+/// all` on the status line, `…` on messages) instead of stopping mid-word at the last column.
+#[test]
+fn a_cut_status_line_says_so_issue_22() {
+    let line = super::view::lines::fit(
+        vec![ratatui::text::Span::raw("x".repeat(100))],
+        80,
+        "… ? lists all",
+    );
+    let shown: String = line.spans.iter().map(|s| s.content.as_ref()).collect();
+    assert_eq!(shown.chars().count(), 80);
+    assert!(shown.ends_with("… ? lists all"));
 }

@@ -137,7 +137,7 @@ pub fn status_line(app: &StatusView, width: u16) -> Line<'static> {
         };
         spans.push(Span::styled(text, Style::new().fg(Color::Yellow)));
     }
-    Line::from(spans)
+    fit(spans, width as usize, "… ? lists all")
 }
 
 /// What the message line shows: an input being typed, else the last message.
@@ -251,4 +251,32 @@ pub fn message_line(app: &MessageView) -> Line<'static> {
         Some((text, Tone::Info)) => Line::from(Span::raw(format!(" {text}"))),
         None => Line::default(),
     }
+}
+
+/// The spans within `width` cells: when they do not fit, the last ones are cut and the line ends
+/// with `more` (`… ? lists all` on the status line: `?` lists every warning of the frame), so a
+/// cut line says so (it was cut silently at 80 columns).
+pub fn fit(spans: Vec<Span<'static>>, width: usize, more: &'static str) -> Line<'static> {
+    let total: usize = spans.iter().map(|s| s.content.chars().count()).sum();
+    if total <= width {
+        return Line::from(spans);
+    }
+    let room = width.saturating_sub(more.chars().count());
+    let mut out = Vec::new();
+    let mut used = 0;
+    for span in spans {
+        let n = span.content.chars().count();
+        if used + n <= room {
+            used += n;
+            out.push(span);
+        } else {
+            let part: String = span.content.chars().take(room - used).collect();
+            if !part.is_empty() {
+                out.push(Span::styled(part, span.style));
+            }
+            break;
+        }
+    }
+    out.push(Span::styled(more, Style::new().fg(Color::Yellow)));
+    Line::from(out)
 }

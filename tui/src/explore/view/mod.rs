@@ -111,6 +111,13 @@ pub fn render(app: &App, frame: &mut Frame) {
                 Paragraph::new(lines::status_line(&status, l.status.width)),
                 l.status,
             );
+            // A long message ends in … rather than being cut silently; the input lines keep
+            // their cursor (they scroll with it).
+            let message = if app.input.is_some() || app.open.is_some() {
+                message
+            } else {
+                lines::fit(message.spans, r.width as usize, "…")
+            };
             frame.render_widget(Paragraph::new(message), r);
         }
         None => {
@@ -123,6 +130,11 @@ pub fn render(app: &App, frame: &mut Frame) {
                 line.spans.push(Span::raw(" │ "));
             }
             line.spans.extend(message.spans);
+            let line = if app.input.is_some() || app.open.is_some() {
+                line
+            } else {
+                lines::fit(line.spans, l.status.width as usize, "…")
+            };
             frame.render_widget(Paragraph::new(line), l.status);
         }
     }
