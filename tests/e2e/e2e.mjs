@@ -766,7 +766,8 @@ try {
       const out = {};
       for (const li of document.querySelectorAll('#legend li')) {
         const m = getComputedStyle(li.querySelector('.sw')).backgroundColor.match(/\d+/g).map(Number);
-        out[li.textContent.split(':')[0].trim()] = '#' + m.slice(0, 3).map((v) => v.toString(16).padStart(2, '0')).join('');
+        // The legend reads "rolling (ψ ≤ ψ₀): …": the class is the words before the condition.
+        out[li.textContent.split(':')[0].replace(/\s*\(.*\)\s*$/, '').trim()] = '#' + m.slice(0, 3).map((v) => v.toString(16).padStart(2, '0')).join('');
       }
       return out;
     });
