@@ -117,7 +117,10 @@ function download(name, type, data) {
   document.body.append(a);
   a.click();
   a.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 1000);
+  // The browser reads the blob after this task, when it gets to it: revoked after 1 s, a busy
+  // machine lost the download (seen in the e2e run under load). A minute is ample; the memory is
+  // one file's.
+  setTimeout(() => URL.revokeObjectURL(url), 60000);
 }
 
 export function wireDownloads(onError) {

@@ -277,7 +277,7 @@ try {
     assert(d.mapOk, 'map SVG invalid');
     assert(d.curves[0].startsWith('g_n [m/s],eps_n,status,t_c [s]') && d.curves.length === d.n + 1, `curves CSV malformed: ${d.curves[0]}`);
     assert(d.mapLines === 120 * 120 + 1, 'map CSV malformed');
-    const dl = page.waitForEvent('download');
+    const dl = page.waitForEvent('download', { timeout: GUARD_MS });
     await page.click('#dl-scene');
     const file = await dl;
     const saved = path.join(outDir, 'www-e2e-download.json');
@@ -366,7 +366,7 @@ try {
   await check('PNG downloads of the chart and the stick map are valid PNGs', async () => {
     const out = [];
     for (const [id, name] of [['#dl-chart-png', 'www-e2e-chart.png'], ['#dl-map-png', 'www-e2e-map.png']]) {
-      const dl = page.waitForEvent('download');
+      const dl = page.waitForEvent('download', { timeout: GUARD_MS });
       await page.click(id);
       const file = await dl;
       const saved = path.join(outDir, name);
@@ -1045,9 +1045,14 @@ try {
     await p4.waitForTimeout(200);
     const overflow = await p4.evaluate(() => document.documentElement.scrollWidth);
     const ink = await inked(p4, 'chart');
+    // Every card takes the phone's width (the map card shrank to an 18 px column).
+    const narrow = await p4.evaluate(() => [...document.querySelectorAll('.card')]
+      .map((c) => ({ c: c.className, w: c.getBoundingClientRect().width }))
+      .filter((x) => x.w > 0 && x.w < 300));
     await p4.screenshot({ path: path.join(outDir, 'www-screenshot-375.png'), fullPage: true });
     await p4.close();
     assert(overflow <= 376, `page is ${overflow} px wide at a 375 px viewport`);
+    assert(narrow.length === 0, `cards narrower than 300 px at 375 px: ${JSON.stringify(narrow)}`);
     assert(ink > 1000, 'chart empty at 375 px');
     return 'target/www-screenshot.png, target/www-screenshot-375.png';
   });
