@@ -472,7 +472,7 @@ pub fn experiments_json() -> String {
     .to_string()
 }
 
-/// Everything the page says in words, as JSON: the paper's citation, the repository, the glossary,
+/// Everything the page says in words, as JSON: the paper's citation, the glossary,
 /// per-parameter help and human option names, the stick classes' meaning (with artifacts marked)
 /// and the artifact note. From `rime_core::explorer::help`, shared with the other surfaces.
 pub fn help_json() -> String {
@@ -509,7 +509,6 @@ pub fn help_json() -> String {
     json!({
         "paper": {"authors": PAPER.authors, "year": PAPER.year, "title": PAPER.title,
                   "journal": PAPER.journal, "volume": PAPER.volume, "pages": PAPER.pages},
-        "repository": env!("CARGO_PKG_REPOSITORY"),
         "glossary": GLOSSARY.iter().map(|(k, v)| json!({"term": k, "meaning": v})).collect::<Vec<_>>(),
         "parameters": params,
         "classes": classes,
