@@ -52,23 +52,6 @@ step() { # step NAME COMMAND...: a check that counts as one test, or as the test
   # A step's own report lines ("report: ...") are shown even when it passes.
   grep -E '^report: ' "$log/$name.out" | sed 's/^/    /' || true
 }
-count_cargo_tests() { # count_cargo_tests NAME COMMAND...: counts each Rust test
-  local name=$1; shift
-  echo "==> $name"
-  local t0 rc dt res p f
-  t0=$(date +%s.%N)
-  "$@" >"$log/$name.out" 2>&1
-  rc=$?
-  dt=$(since "$t0"); res=$(outcome "$rc")
-  p=$(awk '/^test result:/ { for (i = 1; i < NF; i++) if ($(i+1) ~ /^passed/) s += $i } END { print s + 0 }' "$log/$name.out")
-  f=$(awk '/^test result:/ { for (i = 1; i < NF; i++) if ($(i+1) ~ /^failed/) s += $i } END { print s + 0 }' "$log/$name.out")
-  p=${p:-0}; f=${f:-0}
-  if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; fi # a build failure or a kill counts as a failure
-  passed=$((passed + p)); failed=$((failed + f))
-  record "$name" "$dt" "$p passed, $f failed$([ "$rc" -ne 0 ] && echo "; $res")"
-  echo "    $p passed, $f failed ($dt s)$([ "$rc" -ne 0 ] && echo "; $res")"
-  if [ "$rc" -ne 0 ]; then grep -E 'FAILED|panicked|error(\[|:)' -A12 "$log/$name.out" | head -n 120; fi
-}
 summary() {
   local total
   total=$(since "$t_all")
@@ -109,7 +92,7 @@ step no_std_explorer cargo build --locked -p rime-core --no-default-features --f
 # `cargo build` would compile the core and the terminal a second time, with the features that the
 # tests' dev-dependencies do not add.
 step build cargo test --locked --workspace --release --no-run
-count_cargo_tests cargo-test cargo test --locked --workspace --release --no-fail-fast
+step cargo-test scripts/cargo-tests.sh cargo test --locked --workspace --release --no-fail-fast
 for extra in scripts/test-all.d/*.sh; do
   [ -e "$extra" ] || continue
   step "$(basename "$extra" .sh)" "$extra"

@@ -19,20 +19,15 @@ echo "--- wasm-bindgen-test in headless Chromium"
 # about 2 s on an idle machine (its slowest test, a frame at precise, well under 1 s), and the
 # guard is 120 s, over 50× that.
 t0=$(date +%s.%N)
-out=$(mktemp)
+# Each wasm test counts as one test of make test (as the native Rust tests do).
 CHROMEDRIVER=${CHROMEDRIVER:-$(command -v chromedriver || echo /usr/bin/chromedriver)} \
   CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
   WASM_BINDGEN_TEST_TIMEOUT=${WASM_BINDGEN_TEST_TIMEOUT:-120} \
-  cargo test --locked --release -p rime-wasm --target wasm32-unknown-unknown 2>&1 | tee "$out"
+  scripts/cargo-tests.sh cargo test --locked --release -p rime-wasm --target wasm32-unknown-unknown
 echo "report: wasm-bindgen tests (build + run) took $(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }') s"
-# Each wasm test counts as one test of make test (as the native Rust tests do).
-awk '/^test result:/ { for (i = 1; i < NF; i++) { if ($(i+1) ~ /^passed/) p += $i; if ($(i+1) ~ /^failed/) f += $i } }
-     END { printf "count: %d passed, %d failed\n", p, f }' "$out"
-rm -f "$out"
 
 echo "--- end-to-end"
-rime_bin=${CARGO_TARGET_DIR:-target}/release/rime
-[ -x "$rime_bin" ] || cargo build --locked --release --workspace
+rime_bin=$(scripts/rime-bin.sh)
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
 python3 -m http.server "$port" --bind 127.0.0.1 --directory www >/dev/null 2>&1 &
 server=$!

