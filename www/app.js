@@ -8,7 +8,7 @@ import { Computer } from './compute.js';
 import { CollisionView } from './collision.js';
 import { $, errText, linkify, median } from './dom.js';
 import { CURVE_POINTS, MAP_N, START_PRESET, app, historySize } from './state.js';
-import { buildControls, edit, showPreset, syncControls, wireToolbar, wireView } from './controls.js';
+import { buildControls, edit, reflectScene, syncControls, wireToolbar, wireView } from './controls.js';
 import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, wireChart } from './chart.js';
 import { drawLegend, drawMapCanvas, wireMap } from './map.js';
 import { buildTidal, showTidal } from './tidal.js';
@@ -276,13 +276,13 @@ async function main() {
   window.addEventListener('hashchange', () => {
     // Our own replaceState does not fire this; a pasted or edited link does.
     showNotice(loadHash(validateTidal));
-    showPreset();
+    reflectScene();
     schedule();
   });
   app.computer = new Computer(module, onFrame, onBusy);
   app.wantScene = app.ex.toJson();
   showNotice(loadHash(validateTidal));
-  showPreset();
+  reflectScene();
   calls.compute = 0;
   calls.format = 0;
   request();

@@ -22,17 +22,15 @@ export function buildCompare(h) {
     return el('label', { class: 'overlay-choice', title: c.label }, box, ` ${c.key.split(':')[1]} (${kinds[c.kind] || c.kind}${where})`, needs);
   }));
   $('overlay-fit').addEventListener('click', fitToEntry);
-  syncCompare();
 }
 
 /** A model that needs a scene section the scene lacks (thornton1997: plasticity) is not offered: its
- *  box is disabled and says what it needs, instead of failing with a red banner once checked. */
-export function syncCompare() {
-  let scene = {};
-  try { scene = JSON.parse(app.wantScene || '{}'); } catch { /* treated as lacking every section */ }
+ *  box is disabled and says what it needs, instead of failing with a red banner once checked.
+ *  Called with every scene the editor holds (controls.js `reflectScene`). */
+export function syncCompare(scene) {
   for (const hint of document.querySelectorAll('#overlay-list .needs')) {
     const box = hint.parentElement.querySelector('input');
-    const lacking = !scene[hint.dataset.needs];
+    const lacking = !(scene && scene[hint.dataset.needs]);
     box.disabled = lacking && !box.checked;
     hint.textContent = lacking ? ` — needs a ${hint.dataset.needs} section (a yield pressure): not in this scene` : '';
   }

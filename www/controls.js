@@ -51,7 +51,7 @@ function setErr(path, msg) {
 /** The scene as the editor holds it changed: ask for its frame. */
 function changed() {
   app.wantScene = app.ex.toJson();
-  showPreset();
+  reflectScene();
   hooks.schedule();
 }
 
@@ -62,14 +62,14 @@ const sameJson = (a, b) => {
   const ka = Object.keys(a).filter((k) => a[k] !== null), kb = Object.keys(b).filter((k) => b[k] !== null);
   return ka.length === kb.length && ka.every((k) => sameJson(a[k], b[k]));
 };
-/** The preset menu names the scene shown: a preset's name, or "edited" once it differs from all;
- *  Compare offers only the models the scene can run. */
-export function showPreset() {
-  syncCompare();
-  const first = $('preset').options[0];
-  if (!first) return;
+/** What follows the scene outside its own controls: the preset menu names it (a preset's name, or
+ *  "edited" once it differs from all) and Compare offers only the models it can run. */
+export function reflectScene() {
   let scene = null;
   try { scene = JSON.parse(app.wantScene || app.ex.toJson()); } catch { /* shown as edited */ }
+  syncCompare(scene);
+  const first = $('preset').options[0];
+  if (!first) return;
   const match = presetList.find((p) => scene && sameJson(p.scene, scene));
   first.textContent = match ? `${match.name} (this scene) — load a preset` : 'an edited scene — load a preset';
 }
@@ -84,7 +84,7 @@ export function edit(key, fn) {
     const after = app.ex.toJson();
     if (after !== before) remember(before, key);
     app.wantScene = after;
-    showPreset();
+    reflectScene();
     setErr(key, '');
     hooks.schedule();
     return true;
@@ -257,7 +257,7 @@ export function wireToolbar(presets) {
   presetList = presets;
   $('preset').replaceChildren(el('option', { value: '' }, '— load a preset —'),
     ...presets.map((p) => el('option', { value: p.name }, `${p.name}: ${p.description}`)));
-  showPreset();
+  reflectScene();
   $('preset').addEventListener('change', () => {
     const name = $('preset').value;
     if (!name) return;

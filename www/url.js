@@ -155,7 +155,7 @@ export function loadHash(validateTidal) {
  *  (a link with 20 000 bad overlays used to print 20 000 lines, one 100 000-character key whole). */
 const MAX_PROBLEMS = 12;
 const MAX_PROBLEM_CHARS = 160;
-export function capped(problems) {
+function capped(problems) {
   const short = problems.map((p) => (p.length > MAX_PROBLEM_CHARS ? `${p.slice(0, MAX_PROBLEM_CHARS - 1)}…` : p));
   const distinct = [...new Set(short)];
   if (distinct.length <= MAX_PROBLEMS) return distinct;
