@@ -1793,7 +1793,7 @@ fn a_cut_status_line_says_so_issue_22() {
     let line = super::view::lines::fit(
         vec![ratatui::text::Span::raw("x".repeat(100))],
         80,
-        "… ? lists all",
+        super::view::lines::STATUS_CUT,
     );
     let shown: String = line.spans.iter().map(|s| s.content.as_ref()).collect();
     assert_eq!(shown.chars().count(), 80);

@@ -76,8 +76,16 @@ pub struct StatusView<'a> {
     pub cursor: usize,
 }
 
-/// Accuracy, compute time and warnings.
+/// The status line's end when it is cut: `?` lists every warning of the frame.
+pub const STATUS_CUT: &str = "… ? lists all";
+
+/// Accuracy, compute time and warnings, within `width` cells ([`STATUS_CUT`] when cut).
 pub fn status_line(app: &StatusView, width: u16) -> Line<'static> {
+    fit(status_spans(app, width), width as usize, STATUS_CUT)
+}
+
+/// The status line's spans before they are fitted (`width` chooses the long or short wording).
+pub fn status_spans(app: &StatusView, width: u16) -> Vec<Span<'static>> {
     let level = Span::styled(
         app.accuracy.name().to_string(),
         Style::new().fg(Color::Black).bg(Color::Cyan),
@@ -137,7 +145,7 @@ pub fn status_line(app: &StatusView, width: u16) -> Line<'static> {
         };
         spans.push(Span::styled(text, Style::new().fg(Color::Yellow)));
     }
-    fit(spans, width as usize, "… ? lists all")
+    spans
 }
 
 /// What the message line shows: an input being typed, else the last message.

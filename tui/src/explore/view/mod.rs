@@ -121,19 +121,20 @@ pub fn render(app: &App, frame: &mut Frame) {
             frame.render_widget(Paragraph::new(message), r);
         }
         None => {
-            let mut line = if app.input.is_some() || app.open.is_some() || app.confirm.is_some() {
-                Line::default()
+            let mut spans = if app.input.is_some() || app.open.is_some() || app.confirm.is_some() {
+                Vec::new()
             } else {
-                lines::status_line(&status, l.status.width)
+                lines::status_spans(&status, l.status.width)
             };
-            if !line.spans.is_empty() {
-                line.spans.push(Span::raw(" │ "));
+            if !spans.is_empty() {
+                spans.push(Span::raw(" │ "));
             }
-            line.spans.extend(message.spans);
+            spans.extend(message.spans);
+            // One fit of the shared line (the input lines keep their cursor: they scroll with it).
             let line = if app.input.is_some() || app.open.is_some() {
-                line
+                Line::from(spans)
             } else {
-                lines::fit(line.spans, l.status.width as usize, "…")
+                lines::fit(spans, l.status.width as usize, lines::STATUS_CUT)
             };
             frame.render_widget(Paragraph::new(line), l.status);
         }
