@@ -7,7 +7,7 @@ import { Explorer, calls, counted, qty, speed, start } from './core.js';
 import { Computer } from './compute.js';
 import { CollisionView } from './collision.js';
 import { $, errText, linkify, median } from './dom.js';
-import { CURVE_POINTS, MAP_N, START_PRESET, app, historySize } from './state.js';
+import { START_PRESET, app, historySize } from './state.js';
 import { buildControls, edit, reflectScene, syncControls, wireToolbar, wireView } from './controls.js';
 import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, wireChart } from './chart.js';
 import { drawLegend, drawMapCanvas, wireMap } from './map.js';
@@ -34,7 +34,8 @@ function schedule() {
 function request() {
   const v = app.view;
   const view = {
-    accuracy: v.accuracy, from: v.from, to: v.to, points: CURVE_POINTS, mapMax: v.mapMax, mapN: MAP_N,
+    // Points and map side are the core request's defaults (Request::POINTS, Request::MAP_N).
+    accuracy: v.accuracy, from: v.from, to: v.to, mapMax: v.mapMax,
     tidal: app.tidalIn, overlays: [...v.overlays], yLog: v.yScale === 'log', experiments: v.experiments,
     pinned: pinnedForRequest(app.wantScene), date: new Date().toISOString().slice(0, 19) + 'Z',
   };

@@ -5,8 +5,6 @@
 /** The preset the page opens on (adhesion): a visible threshold g_s on the chart and a sticking
  *  corner ("aggregation") in the stick map. */
 export const START_PRESET = 'ice-sticky';
-export const CURVE_POINTS = 240;
-export const MAP_N = 120;
 export const DEFAULT_VIEW = {
   accuracy: 'precise', from: 1e-7, to: 10, mapMax: null, experiments: true, overlays: [], yScale: 'lin',
 };

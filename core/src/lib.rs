@@ -54,6 +54,7 @@ pub mod fit;
 #[cfg(feature = "alloc")]
 pub mod fit_scene;
 pub mod kinematics;
+pub mod limits;
 mod math;
 pub mod models;
 pub mod normal;

@@ -55,7 +55,7 @@ impl Convention {
 pub const MEASURED_UM_ICE: f64 = 9.6;
 
 /// Largest speed searched for the full-model threshold \[m/s\].
-pub const SEARCH_MAX: f64 = 1e6;
+pub const SEARCH_MAX: f64 = crate::limits::SPEED_MAX;
 
 /// Sticking thresholds of two equal grains.
 #[derive(Debug, Clone, Copy, PartialEq)]

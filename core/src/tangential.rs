@@ -291,8 +291,9 @@ impl Contact {
             1.0,
             "must lie in (0, 1]",
         )?;
-        let g_n = within("g_n", g_n, 0.0, 1e6, "speed must lie in [0, 1e6] m/s")?;
-        let g_t = within("g_t", g_t, 0.0, 1e6, "speed must lie in [0, 1e6] m/s")?;
+        let max = crate::limits::SPEED_MAX;
+        let g_n = within("g_n", g_n, 0.0, max, "speed must lie in [0, 1e6] m/s")?;
+        let g_t = within("g_t", g_t, 0.0, max, "speed must lie in [0, 1e6] m/s")?;
         let eps_n_of_gn = self.eps_n(g_n, accuracy)?;
         let eps_n_of_gt = if g_n == 0.0 && g_t == 0.0 {
             eps_n_of_gn

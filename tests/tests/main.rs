@@ -7,4 +7,5 @@ mod fuzz;
 mod physics;
 mod properties;
 mod reference;
+mod request;
 mod thresholds;

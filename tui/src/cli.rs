@@ -32,20 +32,69 @@ pub struct Common {
 /// and the page's downloads draw them.
 #[derive(Debug, Clone)]
 pub struct ExplorerFigures {
-    /// Chart speeds \[m/s\] (`None`: the core's range policy).
-    pub speeds: Option<(f64, f64)>,
-    /// Points per curve.
-    pub points: usize,
-    /// Stick-map side.
-    pub map_n: usize,
-    /// Stick-map range \[m/s\] (`None`: automatic).
-    pub map_max: Option<f64>,
+    /// The core's request: scene, level, speeds, points, map (validated by the core, so the flags
+    /// refuse exactly what the terminal and the page refuse).
+    pub request: rime_core::explorer::request::Request,
     /// ε_N on a log axis.
     pub y_log: bool,
-    /// Overlays (`atlas:ID`, `model:NAME`).
-    pub overlays: Vec<String>,
     /// Leave out the experimental context.
     pub no_experiments: bool,
+}
+
+/// The flag that sets a field of the core's [`Request`](rime_core::explorer::request::Request).
+fn request_flag(field: &str) -> &str {
+    match field {
+        "from" => "--from",
+        "to" => "--to",
+        "points" => "--points",
+        "map_n" => "--n",
+        "map_max" => "--max",
+        "overlays" => "--overlays",
+        other => other,
+    }
+}
+
+/// The core's request of `rime figures --explorer`, checked by the core; errors name the flag.
+fn explorer_request(
+    common: &Common,
+    get: &dyn Fn(&str) -> Option<String>,
+) -> CliResult<rime_core::explorer::request::Request> {
+    use rime_core::explorer::frame::Overlay;
+    use rime_core::explorer::request::Request;
+    let mut request = Request::new(common.scene, common.accuracy);
+    request.speeds = match (get("--from"), get("--to")) {
+        (None, None) => None,
+        (Some(a), Some(b)) => Some((speed("--from", &a, false)?, speed("--to", &b, false)?)),
+        (Some(_), None) => return err("--to: required with --from"),
+        (None, Some(_)) => return err("--from: required with --to"),
+    };
+    let whole = |flag: &str, default: usize| -> CliResult<usize> {
+        match get(flag) {
+            None => Ok(default),
+            Some(t) => t
+                .trim()
+                .parse::<usize>()
+                .map_err(|_| CliError::input(format!("{flag}: '{t}' is not a whole number"))),
+        }
+    };
+    request.points = whole("--points", Request::POINTS)?;
+    request.map_n = whole("--n", Request::MAP_N)?;
+    request.map_max = get("--max")
+        .map(|m| speed("--max", &m, false))
+        .transpose()?;
+    if let Some(list) = get("--overlays") {
+        request.overlays = list
+            .split(',')
+            .map(str::trim)
+            .map(|o| Overlay::parse(o).map_err(|e| CliError::input(format!("--overlays {o}: {e}"))))
+            .collect::<CliResult<_>>()?;
+    }
+    request.validate().map_err(|e| {
+        let text = e.to_string();
+        let (field, rest) = text.split_once(':').unwrap_or(("", &text));
+        CliError::input(format!("{}:{rest}", request_flag(field)))
+    })?;
+    Ok(request)
 }
 
 /// A parsed command line.
@@ -82,7 +131,7 @@ pub enum Command {
     /// `rime collision --g G [--gt G] [--points N]`.
     Collision(Common, crate::commands::collision::Args),
     /// `rime figures --out DIR`.
-    Figures(Common, PathBuf, Option<ExplorerFigures>),
+    Figures(Common, PathBuf, Option<Box<ExplorerFigures>>),
     /// `rime compare --models LIST --g LIST | --list | --bench`.
     Compare(Common, crate::commands::compare::Args),
     /// `rime bench [--out DIR] [--quick]`.
@@ -123,7 +172,7 @@ pub(crate) fn speed(flag: &str, text: &str, allow_zero: bool) -> CliResult<f64> 
         CliError::input(format!("{flag} {shown}{e}"))
     })?;
     let ok = if allow_zero { v >= 0.0 } else { v > 0.0 };
-    if !ok || v > 1e6 {
+    if !ok || v > rime_core::limits::SPEED_MAX {
         let range = if allow_zero { "[0, 1e6]" } else { "(0, 1e6]" };
         return err(format!(
             "{flag}: speed {} must lie in {range} m/s",
@@ -143,6 +192,11 @@ pub(crate) fn speed_list(flag: &str, text: &str, allow_zero: bool) -> CliResult<
     }
     items.iter().map(|s| speed(flag, s, allow_zero)).collect()
 }
+
+/// Most points of any curve or table the CLI computes: the core's limit.
+const MAX_POINTS: usize = rime_core::explorer::request::Request::MAX_POINTS;
+/// Largest stick map the CLI computes: the core's limit.
+const MAX_MAP_N: usize = rime_core::explorer::request::Request::MAX_MAP_N;
 
 fn count(flag: &str, text: &str, min: usize, max: usize) -> CliResult<usize> {
     match text.trim().parse::<usize>() {
@@ -349,41 +403,19 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
                     rime_core::error::Number(from)
                 ));
             }
-            let n = count("--points", get("--points").unwrap_or("200"), 8, 100_000)?;
+            let n = count("--points", get("--points").unwrap_or("200"), 8, MAX_POINTS)?;
             let out = PathBuf::from(require("--out")?);
             Command::Export(common, from, to, n, out, switch("--runtime-params"))
         }
         "figures" => {
             let out = PathBuf::from(get("--out").unwrap_or("figures"));
             let explorer = if switch("--explorer") {
-                let speeds = match (get("--from"), get("--to")) {
-                    (None, None) => None,
-                    (Some(a), Some(b)) => {
-                        let (from, to) = (speed("--from", a, false)?, speed("--to", b, false)?);
-                        if to <= from {
-                            return err(format!(
-                                "--to: {} must exceed --from {}",
-                                rime_core::error::Number(to),
-                                rime_core::error::Number(from)
-                            ));
-                        }
-                        Some((from, to))
-                    }
-                    (Some(_), None) => return err("--to: required with --from"),
-                    (None, Some(_)) => return err("--from: required with --to"),
-                };
-                let map_max = get("--max").map(|m| speed("--max", m, false)).transpose()?;
-                Some(ExplorerFigures {
-                    speeds,
-                    points: count("--points", get("--points").unwrap_or("241"), 2, 100_000)?,
-                    map_n: count("--n", get("--n").unwrap_or("81"), 2, 2000)?,
-                    map_max,
+                let owned_get = |flag: &str| get(flag).map(str::to_string);
+                Some(Box::new(ExplorerFigures {
+                    request: explorer_request(&common, &owned_get)?,
                     y_log: switch("--y-log"),
-                    overlays: get("--overlays")
-                        .map(|l| l.split(',').map(|s| s.trim().to_string()).collect())
-                        .unwrap_or_default(),
                     no_experiments: switch("--no-experiments"),
-                })
+                }))
             } else {
                 let only = [
                     "--from",
@@ -453,7 +485,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
                     rime_core::error::Number(from)
                 ));
             }
-            let n = count("--points", get("--points").unwrap_or("400"), 1, 100_000)?;
+            let n = count("--points", get("--points").unwrap_or("400"), 1, MAX_POINTS)?;
             Command::Curve(common, from, to, n)
         }
         "tangential" => {
@@ -466,7 +498,7 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
         }
         "map" => {
             let max = speed("--max", require("--max")?, false)?;
-            let n = count("--n", get("--n").unwrap_or("200"), 2, 2000)?;
+            let n = count("--n", get("--n").unwrap_or("200"), 2, MAX_MAP_N)?;
             Command::Map(common, max, n)
         }
         "tidal" => {

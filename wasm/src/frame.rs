@@ -6,11 +6,8 @@
 //! fails becomes a gap (NaN, status code [`FAILED`]), not a failed frame. The numbers are packed into
 //! two flat arrays (`f64` and `u8`); the JSON gives each array as `{"at": offset, "len": n}` into them.
 
-use crate::explorer::{
-    MAX_MAP_SIDE, STATUSES, class_code, parse_accuracy, parse_scene, speeds, status_code,
-    tidal_json,
-};
-use rime_core::explorer::frame::{Curve, Overlay, Request, SWEEPS, compute};
+use crate::explorer::{STATUSES, class_code, parse_scene, status_code, tidal_json};
+use rime_core::explorer::frame::{Curve, Request, SWEEPS, compute};
 use rime_core::explorer::{figures, records};
 use rime_core::figure::Figure;
 use rime_core::params::{PARAMETERS, Value};
@@ -22,71 +19,46 @@ use serde_json::{Value as Json, json};
 /// Status code of a speed whose ε_N could not be computed (a gap on the curve).
 pub const FAILED: u8 = u8::MAX;
 
-fn default_accuracy() -> String {
-    "precise".into()
-}
-fn default_from() -> f64 {
-    1e-7
-}
-fn default_to() -> f64 {
-    10.0
-}
-fn default_points() -> usize {
-    240
-}
-fn default_map_n() -> usize {
-    120
-}
-fn default_true() -> bool {
-    true
-}
-
-/// What the page shows of a scene: accuracy, speed range, map range and the tidal input.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields, rename_all = "camelCase")]
+/// What the page shows of a scene: the core's [`Request`] (accuracy, speeds, points, map, family,
+/// overlays; parsed and checked by the core, so the page refuses what every surface refuses) and
+/// what only the page's figures and records need.
+#[derive(Debug, Clone)]
 pub struct View {
-    /// `precise` (default), `fast`, `integrated` (or `balanced`) or a tolerance.
-    #[serde(default = "default_accuracy")]
-    pub accuracy: String,
-    /// Lowest speed of the ε_N chart \[m/s\].
-    #[serde(default = "default_from")]
-    pub from: f64,
-    /// Highest speed of the ε_N chart \[m/s\].
-    #[serde(default = "default_to")]
-    pub to: f64,
-    /// Points per curve.
-    #[serde(default = "default_points")]
-    pub points: usize,
-    /// Upper end of the stick-map axes \[m/s\]; `null` for the core's automatic range.
-    #[serde(default)]
-    pub map_max: Option<f64>,
-    /// Stick-map side (`map_n²` cells).
-    #[serde(default = "default_map_n")]
-    pub map_n: usize,
-    /// Whether to compute the family of curves.
-    #[serde(default = "default_true")]
-    pub family: bool,
-    /// The appendix input; `null` for the paper's example with the scene's grains.
-    #[serde(default)]
+    /// The core's request (its scene is replaced by the scene of the call).
+    pub request: Request,
+    /// The appendix input; `None` for the paper's example with the scene's grains.
     pub tidal: Option<TidalInput>,
-    /// Parts to fail on purpose, for testing the page's failure handling (see [`FORCIBLE`]).
-    #[serde(default)]
-    pub fail: Vec<String>,
-    /// Measured laws (`atlas:ID`) and other models (`model:NAME`) drawn over the chart.
-    #[serde(default)]
-    pub overlays: Vec<String>,
+    /// Whether the tidal part fails on purpose (`"tidal"` in `view.fail`; the core's parts are in
+    /// the request).
+    pub fail_tidal: bool,
     /// ε_N on a log axis (the figures follow the screen).
-    #[serde(default)]
     pub y_log: bool,
     /// Whether the experimental context is drawn (when no overlay is chosen).
-    #[serde(default = "default_true")]
     pub experiments: bool,
     /// A curve pinned to compare with later edits: `{label, g: [...], eps: [...]}`.
-    #[serde(default)]
     pub pinned: Option<PinnedCurve>,
     /// The date the records' context lines carry (the page's clock; the core has none).
-    #[serde(default)]
     pub date: String,
+}
+
+/// The keys of a view that are the page's own (the others are the core request's).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "camelCase")]
+struct PageKeys {
+    #[serde(default)]
+    tidal: Option<TidalInput>,
+    #[serde(default)]
+    y_log: bool,
+    #[serde(default = "default_true")]
+    experiments: bool,
+    #[serde(default)]
+    pinned: Option<PinnedCurve>,
+    #[serde(default)]
+    date: String,
+}
+
+fn default_true() -> bool {
+    true
 }
 
 /// A pinned curve as the page sends it.
@@ -104,45 +76,54 @@ pub struct PinnedCurve {
 /// The parts a view can fail on purpose (`curve` fails every 40th speed, a gap; the others whole).
 pub const FORCIBLE: [&str; 5] = ["curve", "family", "marker", "map", "tidal"];
 
-/// Those of [`FORCIBLE`] that the core's frame fails (the tidal appendix is computed here).
-const FORCIBLE_IN_CORE: [&str; 4] = rime_core::explorer::frame::FORCIBLE;
-
 fn forced(part: &str) -> String {
     format!("failure forced for testing ({part} in view.fail)")
 }
 
-impl Default for View {
-    fn default() -> Self {
-        View {
-            accuracy: default_accuracy(),
-            from: default_from(),
-            to: default_to(),
-            points: default_points(),
-            map_max: None,
-            map_n: default_map_n(),
-            family: true,
-            tidal: None,
-            fail: Vec::new(),
-            overlays: Vec::new(),
-            y_log: false,
-            experiments: true,
-            pinned: None,
-            date: String::new(),
-        }
-    }
-}
-
 /// Parses a view; errors name the field (`view.from: ...`).
 pub fn parse_view(text: &str) -> Result<View, String> {
-    let de = &mut serde_json::Deserializer::from_str(text);
-    serde_path_to_error::deserialize(de).map_err(|e| {
-        let path = e.path().to_string();
-        let path = if path == "." || path.is_empty() {
-            "view".to_string()
+    let named = |path: String, message: String| {
+        if path == "." || path.is_empty() {
+            // The core's checks name their field first (`mapN: …`).
+            format!("view.{message}")
         } else {
-            format!("view.{path}")
-        };
-        format!("{path}: {}", e.into_inner())
+            format!("view.{path}: {message}")
+        }
+    };
+    let mut keys: serde_json::Map<String, Json> =
+        serde_json::from_str(text).map_err(|e| format!("view: {e}"))?;
+    let mut page = serde_json::Map::new();
+    for k in ["tidal", "yLog", "experiments", "pinned", "date"] {
+        if let Some(v) = keys.remove(k) {
+            page.insert(k.into(), v);
+        }
+    }
+    let mut fail_tidal = false;
+    if let Some(Json::Array(parts)) = keys.get_mut("fail") {
+        if let Some(bad) = parts
+            .iter()
+            .find(|p| !p.as_str().is_some_and(|p| FORCIBLE.contains(&p)))
+        {
+            return Err(format!(
+                "view.fail: unknown part {bad} (one of {})",
+                FORCIBLE.join(", ")
+            ));
+        }
+        fail_tidal = parts.iter().any(|p| p == "tidal");
+        parts.retain(|p| p != "tidal");
+    }
+    let page: PageKeys = serde_path_to_error::deserialize(Json::Object(page))
+        .map_err(|e| named(e.path().to_string(), e.into_inner().to_string()))?;
+    let request: Request = serde_path_to_error::deserialize(Json::Object(keys))
+        .map_err(|e| named(e.path().to_string(), e.into_inner().to_string()))?;
+    Ok(View {
+        request,
+        tidal: page.tidal,
+        fail_tidal,
+        y_log: page.y_log,
+        experiments: page.experiments,
+        pinned: page.pinned,
+        date: page.date,
     })
 }
 
@@ -244,44 +225,14 @@ fn values(scene: &Scene) -> Json {
 pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
     let scene = parse_scene(scene_json)?;
     let view = parse_view(view_json)?;
-    let accuracy = parse_accuracy(&view.accuracy)?;
-    // Validated here so that the error names the view's field; the core builds the same grid.
-    speeds(view.from, view.to, view.points).map_err(|e| format!("view.{e}"))?;
-    if !(2..=MAX_MAP_SIDE).contains(&view.map_n) {
-        return Err(format!(
-            "view.mapN: must lie in [2, {MAX_MAP_SIDE}] (got {})",
-            view.map_n
-        ));
-    }
-    if let Some(bad) = view.fail.iter().find(|p| !FORCIBLE.contains(&p.as_str())) {
-        return Err(format!(
-            "view.fail: unknown part {bad:?} (one of {})",
-            FORCIBLE.join(", ")
-        ));
-    }
-    let force = |part: &str| view.fail.iter().any(|p| p == part);
+    let force = |part: &str| part == "tidal" && view.fail_tidal;
     let mut pack = Pack::default();
     let mut errors = Errors(Vec::new());
     let mut out = serde_json::Map::new();
     out.insert("values".into(), values(&scene));
     // The one explorer model of the core computes every part; this binding only packs it.
-    let mut req = Request::new(scene, accuracy);
-    req.speeds = Some((view.from, view.to));
-    req.points = view.points;
-    req.map_max = view.map_max;
-    req.map_n = view.map_n;
-    req.family = view.family;
-    req.fail = view
-        .fail
-        .iter()
-        .filter(|p| FORCIBLE_IN_CORE.contains(&p.as_str()))
-        .cloned()
-        .collect();
-    req.overlays = view
-        .overlays
-        .iter()
-        .map(|o| Overlay::parse(o).map_err(|e| format!("view.{e} (got {o:?})")))
-        .collect::<Result<_, _>>()?;
+    let mut req = view.request.clone();
+    req.scene = scene;
     let f = compute(&req, &|| false).ok_or("frame: cancelled")?;
     out.insert("g".into(), pack.f(&f.g));
     for e in &f.errors {
@@ -335,7 +286,7 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
             match &part.map {
                 Some(m) => {
                     let class: Vec<u8> = m.class.iter().map(|c| class_code(*c)).collect();
-                    json!({"n": view.map_n, "max": part.max, "auto": part.auto.is_some(), "note": note,
+                    json!({"n": req.map_n, "max": part.max, "auto": part.auto.is_some(), "note": note,
                            "g": pack.f(&m.g), "epsN": pack.f(&m.eps_n), "epsT": pack.f(&m.eps_t),
                            "class": pack.u(&class)})
                 }
@@ -345,7 +296,7 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
                         .iter()
                         .find(|e| e.part == "stick map")
                         .map_or(String::new(), |e| e.message.clone());
-                    json!({"n": view.map_n, "max": part.max, "auto": part.auto.is_some(), "note": note,
+                    json!({"n": req.map_n, "max": part.max, "auto": part.auto.is_some(), "note": note,
                            "error": e})
                 }
             }

@@ -7,8 +7,9 @@
 //! explorer and the web page call [`compute`] with the same [`Request`] and so draw the same numbers.
 //! Pure: no I/O and no clock; cancellable between curves and every few points.
 
-use super::limits::{MAX_CURVE_POINTS, MAX_MAP_SIDE, chart_speed_is_valid, speed_is_valid};
+use super::limits::speed_is_valid;
 use super::range::{MapRange, auto_map_range, chart_decades};
+pub use super::request::{FORCIBLE, Request};
 use crate::normal::{Normal, Status};
 use crate::params::Value;
 use crate::sweep::{StickMap, log_space};
@@ -195,34 +196,6 @@ pub struct OverlayCurve {
     pub speeds: Vec<(&'static str, f64)>,
 }
 
-/// Parts of a frame that a request can make fail on purpose (to test how a surface shows failures).
-pub const FORCIBLE: [&str; 4] = ["curve", "family", "marker", "map"];
-
-/// What a surface asks to see.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Request {
-    /// The scene.
-    pub scene: Scene,
-    /// Accuracy level.
-    pub accuracy: Accuracy,
-    /// Index into [`SWEEPS`]; `None` for [`Sweep::default_for`] the scene.
-    pub sweep: Option<usize>,
-    /// Whether to compute the family of curves.
-    pub family: bool,
-    /// Chart speeds \[m/s\] (`None`: the decades of [`chart_decades`]).
-    pub speeds: Option<(f64, f64)>,
-    /// Points per curve.
-    pub points: usize,
-    /// Upper end of both stick-map axes \[m/s\]; `None` for [`auto_map_range`].
-    pub map_max: Option<f64>,
-    /// Stick-map side (`map_n²` cells).
-    pub map_n: usize,
-    /// Parts to fail on purpose (see [`FORCIBLE`]).
-    pub fail: Vec<String>,
-    /// Measured laws and other models to draw over the chart.
-    pub overlays: Vec<Overlay>,
-}
-
 /// The comparisons a surface cycles through (the terminal's `c`): nothing, the measured laws and
 /// ranges of the data atlas (each only over the speeds it was measured at, with the scene's rms
 /// score), the other collision models on the same grains (with their characteristic speeds).
@@ -263,83 +236,6 @@ pub fn comparison(set: usize, scene: &Scene) -> Vec<Overlay> {
                 .collect()
         })
         .unwrap_or_default()
-}
-
-impl Request {
-    /// Points per ε_N curve of the default view.
-    pub const POINTS: usize = 241;
-    /// Stick-map side of the default view (`MAP_N²` cells).
-    pub const MAP_N: usize = 81;
-
-    /// The default view of a scene at an accuracy: [`Request::POINTS`] points on the chart's
-    /// decades, a [`Request::MAP_N`]² map.
-    pub fn new(scene: Scene, accuracy: Accuracy) -> Request {
-        Request {
-            scene,
-            accuracy,
-            sweep: None,
-            family: true,
-            speeds: None,
-            points: Request::POINTS,
-            map_max: None,
-            map_n: Request::MAP_N,
-            fail: Vec::new(),
-            overlays: Vec::new(),
-        }
-    }
-
-    /// Checks the request's own fields; errors name the field.
-    pub fn validate(&self) -> crate::Result<()> {
-        if let Some((from, to)) = self.speeds {
-            for (field, g) in [("from", from), ("to", to)] {
-                if !chart_speed_is_valid(g) {
-                    return Err(Error::OutOfRange {
-                        field,
-                        value: g,
-                        expected: "a speed in [1e-12, 1e6] m/s",
-                    });
-                }
-            }
-            if from >= to {
-                return Err(Error::OutOfRange {
-                    field: "to",
-                    value: to,
-                    expected: "greater than from",
-                });
-            }
-        }
-        if !(2..=MAX_CURVE_POINTS).contains(&self.points) {
-            return Err(Error::OutOfRange {
-                field: "points",
-                value: self.points as f64,
-                expected: "a count in [2, 20000]",
-            });
-        }
-        if !(2..=MAX_MAP_SIDE).contains(&self.map_n) {
-            return Err(Error::OutOfRange {
-                field: "map_n",
-                value: self.map_n as f64,
-                expected: "a count in [2, 1000]",
-            });
-        }
-        if self.sweep.is_some_and(|k| k >= SWEEPS.len()) {
-            return Err(Error::InvalidValue {
-                field: "sweep",
-                expected: "one of the sweepable parameters",
-            });
-        }
-        if self.fail.iter().any(|p| !FORCIBLE.contains(&p.as_str())) {
-            return Err(Error::InvalidValue {
-                field: "fail",
-                expected: "parts among curve, family, marker, map",
-            });
-        }
-        Ok(())
-    }
-
-    fn forced(&self, part: &str) -> bool {
-        self.fail.iter().any(|p| p == part)
-    }
 }
 
 /// A part of the frame that failed, and why.

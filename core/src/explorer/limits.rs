@@ -1,8 +1,6 @@
 //! Limits every surface enforces on what a user may ask for.
 
-/// Largest impact speed any model accepts \[m/s\] (the core refuses more, see
-/// [`crate::Contact::normal`]).
-pub const SPEED_MAX: f64 = 1e6;
+pub use crate::limits::{SPEED_MAX, speed_is_valid};
 /// Smallest (positive) speed a chart or a speed list may start at \[m/s\].
 pub const SPEED_MIN: f64 = 1e-12;
 /// Largest number of points on one curve.
@@ -13,11 +11,6 @@ pub const MAX_MAP_SIDE: usize = 1_000;
 pub const MAX_FAMILY: usize = 32;
 /// Largest accepted scene JSON text \[bytes\] (a scene is a few hundred bytes).
 pub const MAX_SCENE_BYTES: usize = 1 << 20;
-
-/// Whether `g` is an impact speed the models accept: finite, positive and at most [`SPEED_MAX`].
-pub fn speed_is_valid(g: f64) -> bool {
-    g.is_finite() && g > 0.0 && g <= SPEED_MAX
-}
 
 /// Whether `g` may be an end of a chart's speed range: in [[`SPEED_MIN`], [`SPEED_MAX`]] (a chart
 /// from 1e-300 m/s would span 300 decades; single speeds keep the models' own domain).

@@ -215,13 +215,7 @@ impl Evaluator {
 
     /// ε_N at impact speed `g` \[m/s\].
     pub fn eps(&self, g: f64, accuracy: Accuracy) -> Result<ModelResult> {
-        if !(g.is_finite() && g > 0.0 && g <= 1e6) {
-            return Err(Error::OutOfRange {
-                field: "g_n",
-                value: g,
-                expected: "impact speed must lie in (0, 1e6] m/s",
-            });
-        }
+        crate::normal::check_speed(g)?;
         let rebound = |eps: f64| ModelResult {
             eps,
             status: if eps < crate::normal::OVERDAMPED_THRESHOLD {
@@ -336,7 +330,7 @@ fn threshold(stuck: impl Fn(f64) -> Result<bool>, start: f64) -> Result<Option<f
     while stuck(hi)? {
         lo = hi;
         hi *= 2.0;
-        if hi > 1e6 {
+        if hi > crate::limits::SPEED_MAX {
             return Ok(None);
         }
     }

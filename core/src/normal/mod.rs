@@ -102,7 +102,7 @@ pub(crate) const DELTA_ASYMPTOTIC: f64 = 1e7;
 
 /// An impact speed every model accepts: finite, positive, at most 1e6 m/s (errors name `g_n`).
 pub(crate) fn check_speed(g: f64) -> Result<f64> {
-    if g.is_finite() && g > 0.0 && g <= 1e6 {
+    if crate::limits::speed_is_valid(g) {
         Ok(g)
     } else {
         Err(Error::OutOfRange {

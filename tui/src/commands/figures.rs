@@ -40,17 +40,11 @@ pub fn run(c: &Common, out: &Path, explorer: Option<&ExplorerFigures>) -> CliRes
 /// `--explorer`: one frame of the core's explorer model, written like the explorer's `x`.
 fn run_explorer(c: &Common, out: &Path, x: &ExplorerFigures) -> CliResult<String> {
     use rime_core::explorer::figures::View;
-    use rime_core::explorer::frame::{Overlay, Request, compute};
-    let mut req = Request::new(c.scene, c.accuracy);
-    req.speeds = x.speeds;
-    req.points = x.points;
-    req.map_n = x.map_n;
-    req.map_max = x.map_max;
-    req.overlays = x
-        .overlays
-        .iter()
-        .map(|o| Overlay::parse(o).map_err(|e| CliError::input(format!("--overlays {o}: {e}"))))
-        .collect::<CliResult<_>>()?;
+    use rime_core::explorer::frame::compute;
+    // The scene and level are the common options' (the request was built from them).
+    let mut req = x.request.clone();
+    req.scene = c.scene;
+    req.accuracy = c.accuracy;
     let mut progress = crate::progress::Progress::new("figures", 1);
     progress.step("computing the frame");
     let frame = compute(&req, &|| false).ok_or_else(|| CliError::input("figures: cancelled"))?;

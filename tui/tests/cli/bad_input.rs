@@ -369,3 +369,89 @@ fn devices_and_fifos_are_refused_before_reading_issue_10() {
     }
     let _ = std::fs::remove_dir_all(&d);
 }
+
+#[test]
+fn the_cli_refuses_what_the_core_request_refuses_issue_21() {
+    use rime_core::explorer::request::Request;
+    let over_map = (Request::MAX_MAP_N + 1).to_string();
+    let over_points = (Request::MAX_POINTS + 1).to_string();
+    for (args, field) in [
+        (
+            vec!["map", "--max", "0.01", "--n", over_map.as_str()],
+            "--n",
+        ),
+        (
+            vec![
+                "curve",
+                "--from",
+                "1e-6",
+                "--to",
+                "1",
+                "--points",
+                over_points.as_str(),
+            ],
+            "--points",
+        ),
+        (
+            vec![
+                "figures",
+                "--explorer",
+                "--n",
+                over_map.as_str(),
+                "--out",
+                "x",
+            ],
+            "--n",
+        ),
+        (
+            vec![
+                "figures",
+                "--explorer",
+                "--points",
+                over_points.as_str(),
+                "--out",
+                "x",
+            ],
+            "--points",
+        ),
+        (
+            vec![
+                "figures",
+                "--explorer",
+                "--from",
+                "1e-13",
+                "--to",
+                "1",
+                "--out",
+                "x",
+            ],
+            "--from",
+        ),
+        (
+            vec![
+                "figures",
+                "--explorer",
+                "--from",
+                "1",
+                "--to",
+                "0.1",
+                "--out",
+                "x",
+            ],
+            "--to",
+        ),
+        (
+            vec![
+                "figures",
+                "--explorer",
+                "--overlays",
+                "atlas:nope",
+                "--out",
+                "x",
+            ],
+            "--overlays",
+        ),
+    ] {
+        rejects(&args, field);
+    }
+}
