@@ -77,6 +77,9 @@ pub const BRIDGES_1984: PowerLaw = PowerLaw {
     g_max: 0.0,
 };
 
+/// The legend of [`BRIDGES_1984`] on the explorer's chart (every surface's words).
+pub const BRIDGES_1984_LABEL: &str = "Bridges et al. 1984: ε = 0.32 (v / 1 cm/s)^−0.234";
+
 /// The reason of the one [`Error::Fit`] that is a failed computation rather than unusable input
 /// (front ends map it to their "computation failed" exit code).
 pub const FIT_DID_NOT_CONVERGE: &str = "Eq. (27) did not converge";

@@ -1,7 +1,7 @@
 //! `rime eps --g-file FILE`: ε_N for a file of speeds, streamed through the batch path
 //! (`rime_core::batch`) in chunks, in constant memory.
 
-use crate::cli::{self, Common, Format};
+use crate::args::{self, Common, Format};
 use crate::output;
 use crate::scene_io::{CliError, CliResult, err};
 use rime_core::batch::BatchLaw;
@@ -142,7 +142,7 @@ pub fn run(common: &Common, path: &Path) -> CliResult<()> {
     }
     let file =
         std::fs::File::open(path).map_err(|e| CliError::input(format!("--g-file {shown}: {e}")))?;
-    let contact = cli::contact(common)?;
+    let contact = args::contact(common)?;
     let law = BatchLaw::new(&contact, common.accuracy);
     let mut reader = BufReader::with_capacity(1 << 16, file);
     let mut sink = Sink {
@@ -173,7 +173,7 @@ pub fn run(common: &Common, path: &Path) -> CliResult<()> {
             if text.is_empty() {
                 continue;
             }
-            g.push(cli::speed(
+            g.push(args::speed(
                 &format!("--g-file {shown}: line {number}"),
                 text,
                 false,

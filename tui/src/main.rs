@@ -2,6 +2,7 @@
 //! (crate::cli, from the table in crate::spec) and dispatches; each subcommand's body lives in
 //! `commands/<name>.rs`.
 
+mod args;
 mod bench;
 mod cli;
 mod codegen;

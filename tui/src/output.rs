@@ -1,6 +1,6 @@
 //! JSON, CSV and table output of the subcommands (field names are a contract: docs/cli.md).
 
-use crate::cli::Format;
+use crate::args::Format;
 use serde::Serialize;
 
 /// One normal-restitution record (`eps` and `curve`).

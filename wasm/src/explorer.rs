@@ -457,7 +457,8 @@ pub fn statuses_json() -> String {
 
 /// The experimental context of the ε_N chart as JSON: the Bridges et al. (1984) law
 /// (`{a, b, g0, label}`, ε = a (g/g0)^b) and the microgravity ice experiments' ranges
-/// (`[{x: [lo, hi], y: [lo, hi], label}]`), from `rime_core::fit` and `rime_core::figure`.
+/// (`[{x: [lo, hi], y: [lo, hi], label}]`): numbers and words from `rime_core::fit` and
+/// `rime_core::figure`, packed only.
 pub fn experiments_json() -> String {
     let b = rime_core::fit::BRIDGES_1984;
     let bands: Vec<Json> = rime_core::figure::experiments::bands(0)
@@ -466,7 +467,7 @@ pub fn experiments_json() -> String {
         .collect();
     json!({
         "bridges": {"a": b.a, "b": b.b, "g0": b.g0,
-                    "label": "Bridges et al. 1984: ε = 0.32 (v / 1 cm/s)^−0.234"},
+                    "label": rime_core::fit::BRIDGES_1984_LABEL},
         "bands": bands,
     })
     .to_string()

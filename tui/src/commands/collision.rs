@@ -1,7 +1,7 @@
 //! `rime collision`: one collision's time course, phases and energy ledger (docs/cli.md,
 //! docs/physics.md#collision).
 
-use crate::cli::{Common, Format, number, speed};
+use crate::args::{Common, Format, number, speed};
 use crate::output::{num, table};
 use crate::scene_io::{CliError, CliResult, err};
 use serde_json::{Value, json};
@@ -44,7 +44,7 @@ fn finite_or_null(v: f64) -> Value {
 
 /// Runs `rime collision`.
 pub fn run(common: &Common, args: &Args) -> CliResult<String> {
-    let contact = crate::cli::contact(common)?;
+    let contact = crate::args::contact(common)?;
     let tr = contact
         .collision(args.g, args.points, common.accuracy)
         .map_err(|e| CliError::input(format!("--g {}: {e}", args.g)))?;

@@ -1,6 +1,6 @@
 //! `rime compare`: several models of the same collision side by side (docs/cli.md#compare).
 
-use crate::cli::{Common, Format};
+use crate::args::{Common, Format};
 use crate::output::{num, table};
 use crate::scene_io::{CliError, CliResult, err};
 use rime_core::Accuracy;

@@ -1,6 +1,6 @@
 //! `rime curve --from G --to G --points N`: the records of `eps` on log-spaced speeds.
 
-use crate::cli::{self, Common};
+use crate::args::{self, Common};
 use crate::output::{EpsRecord, render};
 use crate::scene_io::{CliError, CliResult};
 
@@ -15,7 +15,7 @@ pub fn log_space(from: f64, to: f64, n: usize) -> Vec<f64> {
 /// The curve's records; the core's warnings about the scene and the curve (the ones the
 /// explorer's status line and the page show) go to standard error, one `warning: ` line each.
 pub fn run(common: &Common, from: f64, to: f64, n: usize) -> CliResult<String> {
-    let contact = cli::contact(common)?;
+    let contact = args::contact(common)?;
     let mut records = Vec::with_capacity(n);
     let mut statuses = Vec::with_capacity(n);
     for g in log_space(from, to, n) {

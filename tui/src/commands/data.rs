@@ -1,6 +1,6 @@
 //! `rime data`: the atlas of measured ice (rime_core::atlas), listed or evaluated.
 
-use crate::cli::{Common, Format, quantity, speed_list};
+use crate::args::{Common, Format, quantity, speed_list};
 use crate::output::{num, table};
 use crate::scene_io::{CliError, CliResult, err};
 use rime_core::atlas::{ENTRIES, Entry, Kind, find};

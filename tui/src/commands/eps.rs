@@ -1,6 +1,6 @@
 //! `rime eps --g LIST` and `rime eps --g-file FILE` (the latter streams through crate::eps_file).
 
-use crate::cli::{self, Common};
+use crate::args::{self, Common};
 use crate::output::{EpsRecord, render};
 use crate::scene_io::{CliError, CliResult};
 use rime_core::error::Number;
@@ -8,7 +8,7 @@ use std::path::Path;
 
 /// ε_N records at the speeds, in the order given.
 pub fn run(common: &Common, speeds: &[f64]) -> CliResult<String> {
-    let contact = cli::contact(common)?;
+    let contact = args::contact(common)?;
     let mut records = Vec::with_capacity(speeds.len());
     for &g in speeds {
         let n = contact

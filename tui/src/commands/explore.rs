@@ -1,6 +1,6 @@
 //! `rime` without a subcommand: the terminal explorer (crate::explore), which needs a terminal.
 
-use crate::cli::Common;
+use crate::args::Common;
 use crate::scene_io::{CliError, CliResult, err};
 use std::io::IsTerminal;
 

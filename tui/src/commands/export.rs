@@ -1,6 +1,6 @@
 //! `rime export --out DIR`: tables, fitted laws and generated code (crate::takeaway, crate::codegen).
 
-use crate::cli::Common;
+use crate::args::Common;
 use crate::scene_io::{self, CliResult};
 use crate::{codegen, output, takeaway};
 use std::path::Path;

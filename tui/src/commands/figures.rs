@@ -2,7 +2,7 @@
 //! a scene's ε_N chart and stick map with their records, written by the same code as the
 //! explorer's `x` (and drawn from the same core figure descriptions as the page's downloads).
 
-use crate::cli::{Common, ExplorerFigures};
+use crate::args::{Common, ExplorerFigures};
 use crate::scene_io::{self, CliError, CliResult};
 use std::path::Path;
 

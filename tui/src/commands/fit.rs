@@ -1,7 +1,7 @@
 //! `rime fit`: scene parameters fitted to measured points or to an atlas law, with standard errors
 //! and correlations (rime_core::fit_scene).
 
-use crate::cli::{Common, Format, quantity};
+use crate::args::{Common, Format, quantity};
 use crate::commands::data::law;
 use crate::scene_io::{CliError, CliResult, err};
 use rime_core::explorer::format::sig;

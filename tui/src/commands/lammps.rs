@@ -2,7 +2,7 @@
 //! granular`), the ε_N, t_c and ξ_max it must reproduce, and a README with every mapping
 //! (docs/physics.md#dem, issue 25).
 
-use crate::cli::Common;
+use crate::args::Common;
 use crate::scene_io::{CliError, CliResult, write_atomic};
 use rime_core::models::{Evaluator, Model, ModelStatus};
 use rime_core::{Accuracy, Contact, ContactEnd, JkrEnd, Scene};

@@ -1,6 +1,6 @@
 //! `rime map --max G --n N`: the stick map on an N×N grid of (g_N, g_T).
 
-use crate::cli::{self, Common, Format};
+use crate::args::{self, Common, Format};
 use crate::output::{self, MapRecord};
 use crate::scene_io::{CliError, CliResult};
 use rime_core::sweep;
@@ -10,7 +10,7 @@ const BIG: usize = 400;
 
 /// The map in the chosen format; JSON pretty-printed like every command's, rows on one line.
 pub fn run(common: &Common, max: f64, n: usize) -> CliResult<String> {
-    let contact = cli::contact(common)?;
+    let contact = args::contact(common)?;
     if contact.friction.is_none() {
         return Err(CliError::input(
             "friction: is off in this scene; the stick map needs it (--set friction=on)",

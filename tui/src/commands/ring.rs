@@ -1,7 +1,7 @@
 //! `rime ring`: what the scene's collision law does to a ring — equilibrium velocity dispersion,
 //! thickness and verdict (docs/physics.md#ring).
 
-use crate::cli::{Common, Format};
+use crate::args::{Common, Format};
 use crate::output;
 use crate::scene_io::{CliError, CliResult, err};
 use rime_core::ring::{Orbit, Prediction, RingInput, equilibrium};

@@ -1,7 +1,7 @@
 //! `rime stick`: sticking thresholds v_stick(radius, temperature) for dust codes
 //! (rime_core::stick), as a table and a standalone C function.
 
-use crate::cli::{Common, Format, quantity};
+use crate::args::{Common, Format, quantity};
 use crate::output::{num, table};
 use crate::scene_io::{CliError, CliResult, err, write_atomic};
 use rime_core::error::Number;

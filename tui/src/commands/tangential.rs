@@ -1,13 +1,13 @@
 //! `rime tangential --gn LIST --gt LIST`: ε_T and the stick class for every combination.
 
-use crate::cli::{self, Common};
+use crate::args::{self, Common};
 use crate::output::{TangentialRecord, render};
 use crate::scene_io::{CliError, CliResult};
 use rime_core::error::Number;
 
 /// Every (g_N, g_T) combination, g_N outer.
 pub fn run(common: &Common, gn: &[f64], gt: &[f64]) -> CliResult<String> {
-    let contact = cli::contact(common)?;
+    let contact = args::contact(common)?;
     if contact.friction.is_none() {
         return Err(CliError::input(
             "friction: is off in this scene; tangential restitution needs it (--set friction=on)",

@@ -1,6 +1,6 @@
 //! `rime tidal`: the appendix's tidal estimate (Eq. (A.1)–(A.7)) with units.
 
-use crate::cli::{Common, Format};
+use crate::args::{Common, Format};
 use crate::output;
 use crate::scene_io::{CliError, CliResult};
 use rime_core::tidal::TidalInput;

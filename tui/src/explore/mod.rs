@@ -1,30 +1,35 @@
 //! The interactive terminal explorer (ARCHITECTURE.md).
 //!
-//! Elm-like: [`app::App`] is the state, [`app::update`] applies one [`app::Event`], and
+//! Elm-like: [`state::App`] is the state, [`update::update`] applies one [`state::Event`] (one method
+//! per action; files and the collision integration are in [`effects`]), and
 //! [`view::render`] draws the state without side effects. One channel carries every event: keys,
 //! mouse and resizes from a reader thread, finished frames from a worker thread. The worker always
 //! computes the newest request: it drains older ones, and abandons a computation (between curves and
 //! every few points) as soon as a newer generation is requested, so the UI never waits for it.
 
-pub mod app;
 pub mod colors;
 pub mod compute;
+pub mod effects;
 pub mod format;
 pub mod frame_export;
 pub mod keymap;
 pub mod layout;
+pub mod line_input;
+pub mod state;
 #[cfg(test)]
 mod tests;
 pub mod tidal;
+pub mod update;
 pub mod view;
 
-use app::{App, Event, update};
 use compute::{Job, compute};
 use rime_core::{Accuracy, Scene};
+use state::{App, Event};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::mpsc::{self, Receiver, Sender};
 use std::time::Duration;
+use update::update;
 
 /// Computes the newest request, dropping older ones and abandoning stale work.
 fn worker(requests: Receiver<Job>, events: Sender<Event>, latest: Arc<AtomicU64>) {

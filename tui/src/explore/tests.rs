@@ -1,7 +1,8 @@
 //! Tests of the explorer: `update` logic, `TestBackend` buffer assertions and insta snapshots.
 
-use super::app::{App, Confirm, Event, Focus, Tone, update};
 use super::compute::{SWEEPS, compute};
+use super::state::{App, Confirm, Event, Focus, Tone};
+use super::update::update;
 use super::view::render;
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use ratatui::Terminal;
@@ -457,7 +458,7 @@ fn tidal_panel_snapshot() {
     insta::assert_snapshot!("tidal_100x30", s);
     // Further out than the Roche distance: no r_max.
     update(&mut app, ch('>'));
-    assert!((app.tidal_factor - super::app::TIDAL_STEP).abs() < 1e-12);
+    assert!((app.tidal_factor - super::state::TIDAL_STEP).abs() < 1e-12);
     let s = text(&screen(&app, 100, 30));
     assert!(s.contains("none: outside the Roche zone"), "{s}");
     assert!(s.contains("not comparable"));
@@ -495,7 +496,7 @@ fn type_open(app: &mut App, path: &str) {
     update(app, ch('o'));
     assert_eq!(
         app.open.as_ref().map(|i| i.text.as_str()),
-        Some(super::app::SCENE_FILE)
+        Some(super::state::SCENE_FILE)
     );
     update(
         app,
@@ -1772,16 +1773,19 @@ fn w_asks_again_when_the_file_changed_since_it_was_written_issue_22() {
 fn a_leading_tilde_is_the_home_directory_issue_22() {
     let home = std::env::var_os("HOME").map(std::path::PathBuf::from);
     if let Some(home) = home.filter(|h| !h.as_os_str().is_empty()) {
-        assert_eq!(super::app::expand_home("~"), home);
-        assert_eq!(super::app::expand_home("~/a/b.json"), home.join("a/b.json"));
+        assert_eq!(super::line_input::expand_home("~"), home);
+        assert_eq!(
+            super::line_input::expand_home("~/a/b.json"),
+            home.join("a/b.json")
+        );
     }
     // Only a leading `~` or `~/` is the home directory.
     assert_eq!(
-        super::app::expand_home("a/~/b.json"),
+        super::line_input::expand_home("a/~/b.json"),
         std::path::PathBuf::from("a/~/b.json")
     );
     assert_eq!(
-        super::app::expand_home("~user/b.json"),
+        super::line_input::expand_home("~user/b.json"),
         std::path::PathBuf::from("~user/b.json")
     );
 }

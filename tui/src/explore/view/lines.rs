@@ -1,8 +1,9 @@
 //! The one-line views: derived quantities, status (accuracy, timing, warnings), message or input.
 
-use crate::explore::app::{Confirm, LineInput, SCENE_FILE, Tone};
 use crate::explore::compute::Computed;
 use crate::explore::format::{num3, qty3};
+use crate::explore::line_input::LineInput;
+use crate::explore::state::{Confirm, SCENE_FILE, Tone};
 use ratatui::style::{Color, Style};
 use ratatui::text::{Line, Span};
 use rime_core::params::PARAMETERS;

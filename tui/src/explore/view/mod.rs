@@ -14,8 +14,8 @@ pub mod plot;
 pub mod stick;
 pub mod tidal;
 
-use super::app::{App, Focus};
 use super::layout::{MIN_SIZE, layout};
+use super::state::{App, Focus};
 use ratatui::Frame;
 use ratatui::layout::{Alignment, Rect};
 use ratatui::style::{Color, Modifier, Style};
@@ -51,7 +51,7 @@ pub fn render(app: &App, frame: &mut Frame) {
             focused: app.focus == Focus::Panel,
         },
     );
-    let mut drawn = super::app::Drawn {
+    let mut drawn = super::state::Drawn {
         panel_rows,
         ..Default::default()
     };

@@ -1,0 +1,135 @@
+//! Effects: what the explorer does outside its state (files read and written, the collision panel's
+//! integration).
+
+use super::frame_export;
+use super::line_input::expand_home;
+use super::state::*;
+use crate::scene_io;
+use rime_core::Preset;
+
+impl App {
+    /// Loads a scene JSON file; on error the status line names the problem and the scene is kept.
+    pub fn open_scene(&mut self, path: &str) {
+        if path.is_empty() {
+            self.error("open: no file name given (scene unchanged)");
+            return;
+        }
+        let given = expand_home(path);
+        let path = if given.is_relative() && !given.exists() {
+            self.out_dir.join(&given)
+        } else {
+            given
+        };
+        match scene_io::load_scene(&path) {
+            Ok(next) => {
+                let preset = Preset::ALL.iter().position(|p| p.scene() == next);
+                self.replace_scene(next, preset);
+                self.saved = next;
+                self.info(format!("opened scene {} (u undoes)", path.display()));
+            }
+            Err(e) => {
+                // load_scene words its errors for the command line (`--scene FILE: …`).
+                let text = e
+                    .message
+                    .strip_prefix("--scene ")
+                    .unwrap_or(&e.message)
+                    .to_string();
+                self.error(format!("open {text} (scene unchanged)"));
+            }
+        }
+    }
+
+    pub(crate) fn export(&mut self) {
+        let Some(data) = self.data.as_ref().filter(|d| d.request.scene == self.scene) else {
+            self.info("still computing — press x again in a moment");
+            return;
+        };
+        // The figures show what the screen shows: axis mode, experiments, pinned curve (the
+        // speed range is the frame's own).
+        let view = rime_core::explorer::figures::View {
+            y_log: self.y_log,
+            experiments: self.experiments,
+            pinned: self.pinned.clone(),
+        };
+        match frame_export::export(&self.out_dir, data, &view) {
+            Ok(dir) => self.info(format!(
+                "exported scene.json, CSV tables, SVG + PNG figures to {}/",
+                dir.display()
+            )),
+            Err(e) => self.error(format!("export failed: {e}")),
+        }
+    }
+
+    /// `w`: saves the scene, asking first when it would overwrite a file that is not exactly what
+    /// this session last wrote there.
+    pub(crate) fn save(&mut self) {
+        let path = self.out_dir.join(SCENE_FILE);
+        let ours = self
+            .wrote_scene_file
+            .as_ref()
+            .is_some_and(|bytes| std::fs::read(&path).is_ok_and(|now| &now == bytes));
+        if path.exists() && !ours {
+            self.confirm = Some(Confirm::Overwrite);
+            return;
+        }
+        self.write_scene();
+    }
+
+    pub(crate) fn write_scene(&mut self) {
+        let path = self.out_dir.join(SCENE_FILE);
+        let result = scene_io::scene_json(&self.scene).and_then(|json| {
+            let bytes = (json + "\n").into_bytes();
+            scene_io::write_atomic(&path, &bytes).map(|()| bytes)
+        });
+        match result {
+            Ok(bytes) => {
+                self.saved = self.scene;
+                self.wrote_scene_file = Some(bytes);
+                self.info(format!("saved scene to {}", path.display()));
+            }
+            Err(e) => self.error(format!("save failed: {e}")),
+        }
+    }
+
+    /// Recomputes the collision panel's trajectory when its speed, scene or level changed (one live
+    /// integration of a few hundred steps: cheap enough for the event loop).
+    pub(crate) fn refresh_inside(&mut self) {
+        let Some((g_shown, _)) = &self.inside else {
+            return;
+        };
+        let Some(data) = self.data.as_ref().filter(|d| d.request.scene == self.scene) else {
+            return;
+        };
+        // The collision at the focused cursor: the stick map's g_N when the map has the focus,
+        // else the ε_N chart's.
+        let on_map = data
+            .stick_map()
+            .filter(|_| self.focus == Focus::Map)
+            .and_then(|m| m.g.get(self.map_cursor.0).copied())
+            .filter(|g| *g > 0.0);
+        let Some(g) = on_map.or_else(|| data.g.get(self.cursor).copied()) else {
+            return;
+        };
+        if *g_shown == g && self.inside_key == Some((self.scene, self.accuracy)) {
+            return;
+        }
+        let contact = rime_core::Contact::new(&self.scene);
+        let result = contact.as_ref().map_err(|e| e.to_string()).and_then(|c| {
+            c.collision(g, 200, self.accuracy)
+                .map_err(|e| e.to_string())
+        });
+        // With adhesion, the dynamic model of the same grains beside the paper's energy balance:
+        // its loop shows the neck (ξ < 0) and the jump at pull-off.
+        self.inside_dynamic = match (&contact, self.scene.adhesion) {
+            (Ok(c), Some(a)) => {
+                rime_core::models::brilliantov2007::Dynamic::new(c, a.surface_energy, a.jkr_end)
+                    .and_then(|d| d.force_loop(g, 1e-9))
+                    .map(|points| points.iter().map(|p| (p.xi, p.force)).collect())
+                    .unwrap_or_default()
+            }
+            _ => Vec::new(),
+        };
+        self.inside = Some((g, result));
+        self.inside_key = Some((self.scene, self.accuracy));
+    }
+}
