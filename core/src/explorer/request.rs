@@ -22,11 +22,211 @@
 //! assert!(refused.starts_with("map_n"), "{refused}");
 //! ```
 
-use super::frame::{Overlay, SWEEPS};
 use super::limits::{MAX_CURVE_POINTS, MAX_MAP_SIDE, SPEED_MAX, SPEED_MIN, chart_speed_is_valid};
+use crate::params::Value;
 use crate::{Accuracy, Scene, error::Error};
+use alloc::format;
 use alloc::string::String;
 use alloc::vec::Vec;
+
+/// A parameter that the chart's family of curves can sweep.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sweep {
+    /// Parameter path (`grains.radius` sets both radii).
+    pub path: &'static str,
+    /// Short symbol for legends.
+    pub symbol: &'static str,
+    /// SI unit.
+    pub unit: &'static str,
+    /// Fixed values (the paper's figures), or `None` for multiples of the current value.
+    pub values: Option<&'static [f64]>,
+}
+
+/// Multiples of the current value used when a sweep has no fixed values.
+pub const RELATIVE: [f64; 4] = [0.1, 0.3, 3.0, 10.0];
+
+/// Every sweepable parameter, in the order the explorer cycles through them.
+pub const SWEEPS: [Sweep; 6] = [
+    Sweep {
+        path: "layer.viscosity",
+        symbol: "η*",
+        unit: "Pa s",
+        values: Some(&[500.0, 1000.0, 2000.0, 5000.0]),
+    },
+    Sweep {
+        path: "layer.thickness",
+        symbol: "D",
+        unit: "m",
+        values: Some(&[0.5e-6, 1e-6, 2e-6, 5e-6]),
+    },
+    Sweep {
+        path: "adhesion.surface_energy",
+        symbol: "γ",
+        unit: "J/m²",
+        values: Some(&[0.05, 0.1, 0.2, 0.5]),
+    },
+    Sweep {
+        path: "bulk.damping.time",
+        symbol: "A",
+        unit: "s",
+        values: None,
+    },
+    Sweep {
+        path: "grains.radius",
+        symbol: "R₁=R₂",
+        unit: "m",
+        values: None,
+    },
+    Sweep {
+        path: "bulk.youngs_modulus",
+        symbol: "Y",
+        unit: "Pa",
+        values: None,
+    },
+];
+
+impl Sweep {
+    /// Whether the sweep applies to `scene` (layer/adhesion sweeps need the effect on).
+    pub fn available(&self, scene: &Scene) -> bool {
+        if self.path.starts_with("layer.") {
+            scene.layer.is_some()
+        } else if self.path.starts_with("adhesion.") {
+            scene.adhesion.is_some()
+        } else {
+            true
+        }
+    }
+
+    /// The default sweep for a scene: η* with a layer, γ with adhesion, else the damping time.
+    pub fn default_for(scene: &Scene) -> usize {
+        if scene.layer.is_some() {
+            0
+        } else if scene.adhesion.is_some() {
+            2
+        } else {
+            3
+        }
+    }
+
+    /// The current value of the swept parameter in `scene` (NaN when it has none).
+    pub fn current(&self, scene: &Scene) -> f64 {
+        match self.path {
+            "grains.radius" => scene.grains.radius_1,
+            "bulk.damping.time" => scene.damping_time(),
+            p => match scene.get(p) {
+                Ok(Value::Number(v)) => v,
+                _ => f64::NAN,
+            },
+        }
+    }
+
+    /// The family's values for `scene`.
+    pub fn values(&self, scene: &Scene) -> Vec<f64> {
+        if let Some(v) = self.values {
+            return v.to_vec();
+        }
+        let c = self.current(scene);
+        if c.is_finite() && c > 0.0 {
+            // Rounded to 12 significant digits: 3 × 1e-4 is the 3e-4 a user would type, not
+            // 3.0000000000000003e-4 (which data files and legends would then show).
+            RELATIVE
+                .iter()
+                .map(|f| crate::explorer::format::round_sig(f * c, 12))
+                .collect()
+        } else {
+            alloc::vec![1e-5, 1e-4, 1e-3, 1e-2]
+        }
+    }
+
+    /// `scene` with the swept parameter set to `v`.
+    pub fn apply(&self, scene: &Scene, v: f64) -> crate::Result<Scene> {
+        let mut s = *scene;
+        if self.path == "grains.radius" {
+            s.set_number("grains.radius_1", v)?;
+            s.set_number("grains.radius_2", v)?;
+        } else {
+            s.set_number(self.path, v)?;
+        }
+        Ok(s)
+    }
+}
+
+/// Something drawn over the ε_N chart beside the scene's own model.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Overlay {
+    /// A measured law or range of the data atlas ([`crate::atlas`]), drawn only over its measured
+    /// speeds; `radius` for entries that need one (the scene's reduced radius when `None`).
+    Atlas(&'static crate::atlas::Entry),
+    /// Another collision model on the same scene ([`crate::models`]), with its characteristic speeds.
+    Model(crate::models::Model),
+}
+
+impl Overlay {
+    /// Parses `atlas:ID` or `model:NAME` (the form surfaces store in links and flags).
+    pub fn parse(text: &str) -> crate::Result<Overlay> {
+        let bad = Error::InvalidValue {
+            field: "overlays",
+            expected: "atlas:ID (see rime data) or model:NAME (see rime compare --list)",
+        };
+        match text.split_once(':') {
+            Some(("atlas", id)) => crate::atlas::find(id).map(Overlay::Atlas).ok_or(bad),
+            Some(("model", name)) => crate::models::Model::from_name(name)
+                .map(Overlay::Model)
+                .ok_or(bad),
+            _ => Err(bad),
+        }
+    }
+
+    /// `atlas:ID` or `model:NAME`.
+    pub fn key(&self) -> String {
+        match self {
+            Overlay::Atlas(e) => format!("atlas:{}", e.id),
+            Overlay::Model(m) => format!("model:{}", m.name()),
+        }
+    }
+}
+
+/// The comparisons a surface cycles through (the terminal's `c`): nothing, the measured laws and
+/// ranges of the data atlas (each only over the speeds it was measured at, with the scene's rms
+/// score), the other collision models on the same grains (with their characteristic speeds).
+pub const COMPARISONS: [(&str, &[&str]); 3] = [
+    ("no comparison", &[]),
+    (
+        "measured ice",
+        &[
+            "atlas:bridges1984",
+            "atlas:hatzes1988_frost",
+            "atlas:supulver1995",
+            "atlas:heisselmann2010",
+            "atlas:hill2015",
+        ],
+    ),
+    (
+        "other models",
+        &[
+            "model:brilliantov2007",
+            "model:muller_poschel2011",
+            "model:thornton1997",
+        ],
+    ),
+];
+
+/// The overlays of comparison `set` ([`COMPARISONS`]) for `scene`: thornton1997 only where the
+/// scene has the plasticity section it needs (elsewhere it is left out, not an error).
+pub fn comparison(set: usize, scene: &Scene) -> Vec<Overlay> {
+    COMPARISONS
+        .get(set)
+        .map(|(_, keys)| {
+            keys.iter()
+                .filter_map(|k| Overlay::parse(k).ok())
+                .filter(|o| {
+                    !matches!(o, Overlay::Model(crate::models::Model::Thornton1997))
+                        || scene.plasticity.is_some()
+                })
+                .collect()
+        })
+        .unwrap_or_default()
+}
 
 /// Parts of a frame that a request can make fail on purpose (to test how a surface shows failures).
 pub const FORCIBLE: [&str; 4] = ["curve", "family", "marker", "map"];
@@ -153,8 +353,8 @@ impl Request {
 #[cfg(feature = "serde")]
 mod wire {
     //! The serde form of a [`Request`]: keys as the page's link has always written them.
+    use super::{Overlay, Sweep};
     use super::{Request, SWEEPS};
-    use crate::explorer::frame::{Overlay, Sweep};
     use crate::{Accuracy, Preset, Scene};
     use alloc::format;
     use alloc::string::{String, ToString};

@@ -1,4 +1,4 @@
-//! The one keymap: the key handler ([`super::app`]), the `?` overlay ([`super::view::help`]) and
+//! The one keymap: the key handler ([`mod@super::update`]), the `?` overlay ([`super::view::help`]) and
 //! the README's key list (`readme_list`, checked by a test) all read [`KEYMAP`].
 
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};

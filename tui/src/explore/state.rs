@@ -53,7 +53,7 @@ pub struct App {
     pub accuracy: Accuracy,
     /// Index into [`Preset::ALL`] of the last preset chosen with `p` (None: scene from elsewhere).
     pub preset: Option<usize>,
-    /// Selected row of [`PARAMETERS`].
+    /// Selected row of [`PARAMETERS`](rime_core::params::PARAMETERS).
     pub selected: usize,
     /// What the arrow keys act on.
     pub focus: Focus,
