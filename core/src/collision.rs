@@ -23,6 +23,8 @@ use alloc::vec::Vec;
 
 /// One named instant of a collision.
 #[derive(Debug, Clone, Copy, PartialEq)]
+// Serialize only: phase names are the core's own words (`&'static str`).
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Phase {
     /// `layer_crushing`, `bulk_loading`, `maximum_compression`, `unloading`, `coast`,
     /// `layer_exit`, `creep` or `end_of_contact`.
@@ -33,6 +35,7 @@ pub struct Phase {
 
 /// Where the impact energy goes \[J\]; each term is computed from its own force.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Ledger {
     /// ½ m_eff g².
     pub kinetic_in: f64,
@@ -54,6 +57,8 @@ pub struct Ledger {
 
 /// One collision, sampled.
 #[derive(Debug, Clone, PartialEq)]
+// Serialize only: phase names are the core's own words (`&'static str`).
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Trajectory {
     /// Sample times \[s\] (evenly spaced plus the phase instants, increasing).
     pub t: Vec<f64>,

@@ -31,6 +31,19 @@ pub struct AdhesionConstants {
 }
 
 /// Everything a collision needs, derived once from a [`Scene`].
+///
+/// # Examples
+///
+/// ```
+/// use rime_core::{Contact, Preset};
+///
+/// let scene = Preset::Ice.scene();
+/// let contact = Contact::new(&scene)?;
+/// // Two equal grains: the reduced radius and mass are half a grain's.
+/// assert!((contact.r_eff - scene.grains.radius_1 / 2.0).abs() <= 1e-15 * contact.r_eff);
+/// assert!((contact.m_eff - contact.mass_1 / 2.0).abs() <= 1e-15 * contact.m_eff);
+/// # Ok::<(), rime_core::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Contact {
     /// Mass of grain 1 \[kg\].

@@ -116,6 +116,25 @@ pub struct ClassMap {
 }
 
 /// A complete figure.
+///
+/// # Examples
+///
+/// The explorer's ε_N chart of a frame (with the `explorer` feature):
+///
+/// ```
+/// # #[cfg(feature = "explorer")] {
+/// use rime_core::explorer::figures::{View, eps_figure};
+/// use rime_core::explorer::frame::{Request, compute};
+/// use rime_core::{Accuracy, Preset};
+///
+/// let frame = compute(&Request::new(Preset::Ice.scene(), Accuracy::Fast), &|| false).unwrap();
+/// let figure = eps_figure(&frame, &View::default(), "doc");
+/// // The speed axis is logarithmic and covers every speed of the frame.
+/// assert!(figure.x.log);
+/// assert!(figure.x.min <= frame.g[0] && frame.g[frame.g.len() - 1] <= figure.x.max);
+/// assert!(!figure.series.is_empty());
+/// # }
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figure {
     /// File stem, e.g. `fig2-layer-viscosity`.

@@ -264,6 +264,21 @@ impl Default for Friction {
 }
 
 /// A complete collision scene. `Default` is the `ice` preset.
+///
+/// # Examples
+///
+/// ```
+/// use rime_core::{Preset, Scene};
+///
+/// // A preset, then one parameter by its path, with a unit (as `--set` and the explorer read it).
+/// let mut scene: Scene = Preset::IceSticky.scene();
+/// scene.set("grains.radius_1", "1 mm")?;
+/// assert_eq!(scene.grains.radius_1, 1e-3);
+/// // Bad values are refused, naming the field.
+/// let refused = scene.set("grains.density", "-3").unwrap_err().to_string();
+/// assert!(refused.starts_with("grains.density"), "{refused}");
+/// # Ok::<(), rime_core::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]

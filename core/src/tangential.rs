@@ -146,6 +146,21 @@ impl StickClass {
 }
 
 /// Tangential restitution at one point `(g_N, g_T)`.
+///
+/// # Examples
+///
+/// ```
+/// use rime_core::{Accuracy, Contact, Preset, StickClass};
+///
+/// let contact = Contact::new(&Preset::Ice.scene())?;
+/// // A grazing hit (g_T ≫ g_N) slides; a nearly head-on one rolls (Eq. (25)–(26)).
+/// let grazing = contact.tangential(1e-3, 1.0, Accuracy::Precise)?;
+/// let head_on = contact.tangential(1.0, 1e-3, Accuracy::Precise)?;
+/// assert_eq!(grazing.class, StickClass::Sliding);
+/// assert_eq!(head_on.class, StickClass::Rolling);
+/// assert!((-1.0..=1.0).contains(&grazing.eps_t) && (-1.0..=1.0).contains(&head_on.eps_t));
+/// # Ok::<(), rime_core::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Tangential {

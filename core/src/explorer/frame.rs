@@ -339,6 +339,23 @@ pub fn overlay_curve(
 
 /// Computes a frame. Returns `None` as soon as `cancelled()` says a newer request is waiting.
 /// A request that is not valid (see [`Request::validate`]) is reported as a `request` part error.
+///
+/// # Examples
+///
+/// ```
+/// use rime_core::explorer::frame::{Request, compute};
+/// use rime_core::{Accuracy, Preset};
+///
+/// let mut request = Request::new(Preset::IceFrost.scene(), Accuracy::Fast);
+/// request.points = 31;
+/// request.map_n = 5;
+/// let frame = compute(&request, &|| false).expect("not cancelled");
+/// assert!(frame.errors.is_empty(), "{:?}", frame.errors);
+/// assert_eq!(frame.g.len(), 31);
+/// assert!(!frame.family.is_empty());
+/// // A computation told to stop returns nothing.
+/// assert!(compute(&request, &|| true).is_none());
+/// ```
 pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<Frame> {
     let scene = req.scene;
     let sweep = req.sweep.unwrap_or_else(|| Sweep::default_for(&scene));

@@ -52,7 +52,25 @@ impl Status {
 }
 
 /// The outcome of a normal collision at impact speed `g_n`.
+///
+/// # Examples
+///
+/// ```
+/// use rime_core::{Accuracy, Contact, Preset, Status};
+///
+/// let contact = Contact::new(&Preset::Ice.scene())?;
+/// let slow = contact.normal(1e-4, Accuracy::Precise)?;
+/// let fast = contact.normal(1.0, Accuracy::Precise)?;
+/// // Viscoelastic grains (Eq. (4)) restitute less the harder they hit.
+/// assert_eq!(slow.status, Status::Rebound);
+/// assert!(0.0 < fast.eps && fast.eps < slow.eps && slow.eps < 1.0);
+/// // The `fast` table and the `precise` one agree within the coarser bound (1e-6).
+/// let coarse = contact.normal(1.0, Accuracy::Fast)?;
+/// assert!((coarse.eps - fast.eps).abs() <= 1e-6 * fast.eps);
+/// # Ok::<(), rime_core::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Normal {
     /// Normal restitution coefficient ε_N = −g'_N/g_N ∈ \[0, 1\] (Eq. (1)). For `Overdamped` this is the
     /// raw (tiny) value.
