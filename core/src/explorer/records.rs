@@ -136,8 +136,8 @@ pub fn frame_map_csv(frame: &Frame) -> Option<String> {
 
 /// Every ε_N curve of the frame side by side: `g_n [m/s]`, `eps_n` (this scene), `eps_n clean`
 /// (without layer and adhesion, when the scene has either), one `eps_n [p=v]` column per family
-/// member (`this scene` marked) and one per overlay drawn on the frame's speeds. Empty cells where
-/// a value is missing.
+/// member (`this scene` marked) and one `eps_n:KEY` per overlay drawn on the frame's speeds
+/// ([`overlay_column`]). Empty cells where a value is missing.
 pub fn family_csv(frame: &Frame) -> String {
     let sweep = SWEEPS.get(frame.sweep).map_or("p", |s| s.symbol);
     let unit = SWEEPS.get(frame.sweep).map_or("", |s| s.unit);
@@ -162,7 +162,7 @@ pub fn family_csv(frame: &Frame) -> String {
     }
     let overlays: alloc::vec::Vec<_> = frame.overlays.iter().filter(|o| o.g == frame.g).collect();
     for o in &overlays {
-        let _ = write!(s, ",eps_n {}", o.label.replace(',', ";"));
+        let _ = write!(s, ",{}", overlay_column(&o.overlay));
     }
     s.push('\n');
     let eps = frame.curve.as_ref().map(|c| c.eps());
@@ -184,6 +184,15 @@ pub fn family_csv(frame: &Frame) -> String {
         s.push('\n');
     }
     s
+}
+
+/// The column of an overlay: `eps_n:` and its short key (`eps_n:brilliantov2007`,
+/// `eps_n:bridges1984`), easy to index in pandas; the citation is on a `# ` context line.
+pub fn overlay_column(overlay: &super::frame::Overlay) -> String {
+    match overlay {
+        super::frame::Overlay::Atlas(e) => format!("eps_n:{}", e.id),
+        super::frame::Overlay::Model(m) => format!("eps_n:{}", m.name()),
+    }
 }
 
 /// The scene as `path = value` pairs of its active parameters (numbers in SI, shortest form),
@@ -218,6 +227,10 @@ pub fn context(frame: &Frame, what: &str, version: &str, date: &str) -> String {
     );
     let _ = writeln!(s, "# scene: {}", scene_line(&frame.request.scene));
     let _ = writeln!(s, "# model: {CITATION}");
+    // What each overlay column holds (the header carries only its short key).
+    for o in frame.overlays.iter().filter(|o| o.g == frame.g) {
+        let _ = writeln!(s, "# {}: {}", overlay_column(&o.overlay), o.label);
+    }
     s
 }
 
@@ -246,5 +259,37 @@ mod tests {
         assert_eq!(cell(f64::NAN), "");
         assert_eq!(cell(f64::INFINITY), "");
         assert_eq!(cell(1e-5), "1e-5");
+    }
+
+    #[test]
+    fn overlay_columns_are_short_keys_with_the_citation_in_the_context_issue_22() {
+        use crate::explorer::frame::{Overlay, Request, compute};
+        let mut req = Request::new(crate::Preset::IceSticky.scene(), crate::Accuracy::Fast);
+        req.points = 12;
+        req.map_n = 3;
+        req.overlays = ["model:brilliantov2007", "model:muller_poschel2011"]
+            .iter()
+            .map(|k| Overlay::parse(k).unwrap())
+            .collect();
+        let frame = compute(&req, &|| false).unwrap();
+        let csv = family_csv(&frame);
+        let header: alloc::vec::Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+        for key in ["eps_n:brilliantov2007", "eps_n:muller_poschel2011"] {
+            assert!(header.contains(&key), "{header:?}");
+            // One token: no spaces, quotes or semicolons for pandas to trip over.
+            assert!(
+                key.chars()
+                    .all(|c| c.is_ascii_alphanumeric() || "_:".contains(c))
+            );
+        }
+        // Every row has as many cells as the header.
+        assert!(csv.lines().all(|l| l.split(',').count() == header.len()));
+        // The citation is in the context lines, beside the key.
+        let ctx = context(&frame, FAMILY_WHAT, "test", "2026-11-25");
+        let line = ctx
+            .lines()
+            .find(|l| l.starts_with("# eps_n:brilliantov2007: "))
+            .unwrap_or_else(|| panic!("{ctx}"));
+        assert!(line.contains("Brilliantov"), "{line}");
     }
 }
