@@ -24,4 +24,6 @@ pub mod records;
 #[cfg(feature = "explorer")]
 pub mod request;
 #[cfg(feature = "explorer")]
+pub mod thresholds;
+#[cfg(feature = "explorer")]
 pub mod warning;

@@ -972,6 +972,26 @@ fn stick_panel_tabulates_the_cores_thresholds_issue_15() {
     assert!(app.stick.is_none());
 }
 
+#[test]
+fn the_thresholds_panel_draws_the_cores_figure_when_tall_issue_21() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('v'));
+    let table = app.stick.clone().expect("panel open");
+    let fig = rime_core::explorer::thresholds::thresholds_figure(&table);
+    // Tall: every series of the core's figure is in the legend on screen, with the axis titles.
+    let tall = text(&screen(&app, 200, 60));
+    for s in &fig.series {
+        assert!(tall.contains(&s.short), "missing {}\n{tall}", s.short);
+    }
+    for label in [&fig.x.label, &fig.y.label] {
+        assert!(tall.contains(label.as_str()), "missing {label}\n{tall}");
+    }
+    // Small: the tables alone (no room for a readable figure), still whole.
+    let small = text(&screen(&app, 80, 24));
+    assert!(!small.contains(&fig.series[0].short), "{small}");
+    assert!(small.contains("9.6 m/s"), "{small}");
+}
+
 /// Issue 22: the `v` panel is computed for the scene's A (it kept the A it was opened with): at
 /// A = 0 the full model sticks exactly up to Eq. (15)'s g_s, evaluated here from the closed form;
 /// at A = 100 µs damping raises the threshold; the titles say which A each table uses.

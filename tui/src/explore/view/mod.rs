@@ -144,7 +144,7 @@ pub fn render(app: &App, frame: &mut Frame) {
         tidal::render(frame, l.views(), &view);
     }
     if let Some(rows) = &app.stick {
-        stick::render(frame, l.views(), rows);
+        stick::render(frame, l.views(), rows, app.colors);
     }
     if let Some((g, result)) = &app.inside {
         let view = collision::CollisionView {

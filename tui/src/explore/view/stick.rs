@@ -2,9 +2,11 @@
 //! adhesion model with γ(T) of Musiolik & Wurm (2019) in this scene's material, beside the measured
 //! 9.6 m/s for µm ice (docs/physics.md#sticking).
 
+use super::plot::{self, Colors};
 use crate::explore::format::qty3;
 use ratatui::Frame;
-use ratatui::layout::Rect;
+use ratatui::layout::{Constraint, Layout, Rect};
+use rime_core::explorer::thresholds::thresholds_figure;
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph, Wrap};
@@ -67,8 +69,12 @@ pub fn lines(table: &ThresholdTable) -> Vec<Line<'static>> {
     out
 }
 
-/// Draws the panel over `area`.
-pub fn render(frame: &mut Frame, area: Rect, table: &ThresholdTable) {
+/// Rows the figure needs to be worth drawing (axes, legend and a few rows of graph).
+const FIGURE_MIN_ROWS: u16 = 12;
+
+/// Draws the panel over `area`: the tables, and below them, where the terminal is tall enough, the
+/// core's figure of the same numbers ([`thresholds_figure`]) drawn by the one adapter.
+pub fn render(frame: &mut Frame, area: Rect, table: &ThresholdTable, colors: Colors) {
     frame.render_widget(Clear, area);
     let block = Block::bordered()
         .border_style(Style::new().fg(Color::White))
@@ -79,8 +85,33 @@ pub fn render(frame: &mut Frame, area: Rect, table: &ThresholdTable) {
         .title_bottom(" rime stick --out DIR: table + C function · v closes ");
     let inner = block.inner(area);
     frame.render_widget(block, area);
-    frame.render_widget(
-        Paragraph::new(lines(table)).wrap(Wrap { trim: false }),
-        inner,
-    );
+    let text = lines(table);
+    // Rows the tables take once wrapped to the panel's width.
+    let wrapped: u16 = text
+        .iter()
+        .map(|l| (l.width() as u16).div_ceil(inner.width.max(1)).max(1))
+        .sum();
+    let spare = inner.height.saturating_sub(wrapped + 1);
+    let (tables, plot) = if spare >= FIGURE_MIN_ROWS {
+        let [t, _, p] = Layout::vertical([
+            Constraint::Length(wrapped),
+            Constraint::Length(1),
+            Constraint::Fill(1),
+        ])
+        .areas(inner);
+        (t, Some(p))
+    } else {
+        (inner, None)
+    };
+    frame.render_widget(Paragraph::new(text).wrap(Wrap { trim: false }), tables);
+    if let Some(p) = plot {
+        let opts = plot::Options {
+            colors,
+            cursor: None,
+            legend_rows: 3,
+            bold: None,
+            y_title: true,
+        };
+        plot::draw(frame.buffer_mut(), p, &thresholds_figure(table), &opts);
+    }
 }
