@@ -40,17 +40,16 @@ pub const MAP_WHAT: &str = "stick-map records (rime map); class sliding_gap is a
 pub const CITATION: &str = "J.-M. Hertzsch (2002), A model for surface effects in slow collisions of icy grains, Planet. Space Sci. 50, 1387";
 
 /// A number in a record: the shortest form that reads back to the same double (`0`, `0.01`, `1`,
-/// `1e-5`, `2.5e-12`; never `0e0`), plain between 1e-3 and 1e6 and scientific outside; empty for a
-/// value that is not finite (a record never holds `NaN`).
+/// `1e-5`, `2.5e-12`; never `0e0`), by the one rule of [`super::format::shortest`] (plain between
+/// 1e-4 and 1e6, scientific outside); empty for a value that is not finite (a record never holds
+/// `NaN`).
 pub fn cell(v: f64) -> String {
     if !v.is_finite() {
         String::new()
     } else if v == 0.0 {
         "0".into()
-    } else if (1e-3..1e6).contains(&v.abs()) {
-        format!("{v}")
     } else {
-        format!("{v:e}")
+        super::format::shortest(v)
     }
 }
 
@@ -259,6 +258,18 @@ mod tests {
         assert_eq!(cell(f64::NAN), "");
         assert_eq!(cell(f64::INFINITY), "");
         assert_eq!(cell(1e-5), "1e-5");
+    }
+
+    #[test]
+    fn records_messages_and_labels_write_a_number_alike_issue_21() {
+        // One rule: records, error messages and the explorer's shortest form agreed everywhere but
+        // at 1e-4 ≤ |v| < 1e-3 before (records wrote 5e-4, messages 0.0005).
+        for v in [5e-4, 1e-4, 9.99e-5, 0.00123, 1e6, 999999.5, -2.5e-4, 3.0000000000000003e-4] {
+            let message = alloc::format!("{}", crate::error::Number(v));
+            assert_eq!(cell(v), message, "{v}");
+            assert_eq!(cell(v), super::super::format::shortest(v), "{v}");
+            assert_eq!(cell(v).parse::<f64>().ok(), Some(v));
+        }
     }
 
     #[test]
