@@ -3,79 +3,17 @@
 use crate::args::Format;
 use serde::Serialize;
 
-/// One normal-restitution record (`eps` and `curve`).
-#[derive(Debug, Clone, Serialize)]
-pub struct EpsRecord {
-    /// Impact speed \[m/s\].
-    pub g_n: f64,
-    /// ε_N.
-    pub eps_n: f64,
-    /// `rebound`, `stuck_in_layer`, `stuck_by_adhesion` or `overdamped`.
-    pub status: &'static str,
-    /// Contact duration \[s\]; `null` when the grains stick (they come to rest asymptotically).
-    pub t_c: Option<f64>,
-    /// Maximum compression \[m\].
-    pub xi_max: f64,
-    /// Bound on the relative error of `eps_n` at the chosen accuracy; `null` where ε_N < 1e-6,
-    /// outside the bound's domain.
-    pub error_estimate: Option<f64>,
-}
-
-impl EpsRecord {
-    /// Builds a record from a core result.
-    pub fn new(g_n: f64, n: &rime_core::Normal) -> Self {
-        EpsRecord {
-            g_n,
-            eps_n: n.eps,
-            status: n.status.name(),
-            t_c: n.t_c.is_finite().then_some(n.t_c),
-            xi_max: n.xi_max,
-            error_estimate: n.error_estimate.is_finite().then_some(n.error_estimate),
-        }
-    }
-}
+pub use rime_core::explorer::records::{EpsRecord, MapRecord, TangentialRecord};
 
 /// Why a table's error_estimate is empty.
 pub const EMPTY_ERROR_ESTIMATE: &str = "error_estimate empty: eps_n < 1e-6 lies outside the error \
      bound's domain; only its order of magnitude is reliable";
-
-/// One tangential record.
-#[derive(Debug, Clone, Serialize)]
-pub struct TangentialRecord {
-    /// Normal impact speed \[m/s\].
-    pub g_n: f64,
-    /// Tangential speed \[m/s\].
-    pub g_t: f64,
-    /// ε_T.
-    pub eps_t: f64,
-    /// ε_N(g_N).
-    pub eps_n: f64,
-    /// Stick-map class (docs/physics.md#decision-7).
-    pub class: &'static str,
-}
-
-/// A stick map.
-#[derive(Debug, Clone, Serialize)]
-pub struct MapRecord {
-    /// Grid speeds \[m/s\], 0 to max inclusive.
-    pub g: Vec<f64>,
-    /// `class[i][j]` at g_N = `g[i]`, g_T = `g[j]`.
-    pub class: Vec<Vec<&'static str>>,
-    /// `eps_t[i][j]` at g_N = `g[i]`, g_T = `g[j]`.
-    pub eps_t: Vec<Vec<f64>>,
-    /// ε_N at `g[i]`.
-    pub eps_n: Vec<f64>,
-}
 
 /// Formats a number for CSV and tables: the core's one record cell
 /// ([`rime_core::explorer::records::cell`]): shortest round-trip, never `0e0`, empty (never NaN)
 /// for a non-finite value.
 pub fn num(v: f64) -> String {
     rime_core::explorer::records::cell(v)
-}
-
-fn opt(v: Option<f64>) -> String {
-    v.map(num).unwrap_or_default()
 }
 
 /// Prints records in the chosen format.
@@ -104,20 +42,13 @@ impl Rows for EpsRecord {
             .then_some(EMPTY_ERROR_ESTIMATE)
     }
     fn cells(&self) -> Vec<String> {
-        vec![
-            num(self.g_n),
-            num(self.eps_n),
-            self.status.to_string(),
-            opt(self.t_c),
-            num(self.xi_max),
-            opt(self.error_estimate),
-        ]
+        EpsRecord::cells(self).to_vec()
     }
 }
 
 impl Rows for TangentialRecord {
     fn header() -> &'static [&'static str] {
-        &["g_n [m/s]", "g_t [m/s]", "eps_t", "eps_n", "class"]
+        &rime_core::explorer::records::TANGENTIAL_HEADER
     }
     fn note(records: &[Self]) -> Option<&'static str> {
         records
@@ -126,13 +57,7 @@ impl Rows for TangentialRecord {
             .then_some(rime_core::explorer::help::ARTIFACT_NOTE_SHORT)
     }
     fn cells(&self) -> Vec<String> {
-        vec![
-            num(self.g_n),
-            num(self.g_t),
-            num(self.eps_t),
-            num(self.eps_n),
-            self.class.to_string(),
-        ]
+        TangentialRecord::cells(self).to_vec()
     }
 }
 

@@ -26,6 +26,110 @@ pub const CURVE_HEADER: [&str; 6] = [
     "error_estimate",
 ];
 
+/// Header of tangential records (`rime tangential`).
+pub const TANGENTIAL_HEADER: [&str; 5] = ["g_n [m/s]", "g_t [m/s]", "eps_t", "eps_n", "class"];
+
+/// One normal-restitution record (`rime eps`, `rime curve`, the explorer's curve): the JSON object
+/// (field names are a contract, docs/cli.md) and the CSV row ([`CURVE_HEADER`]).
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct EpsRecord {
+    /// Impact speed \[m/s\].
+    pub g_n: f64,
+    /// ε_N.
+    pub eps_n: f64,
+    /// `rebound`, `stuck_in_layer`, `stuck_by_adhesion` or `overdamped`.
+    pub status: &'static str,
+    /// Contact duration \[s\]; `null` when the grains stick (they come to rest asymptotically).
+    pub t_c: Option<f64>,
+    /// Maximum compression \[m\].
+    pub xi_max: f64,
+    /// Bound on the relative error of `eps_n` at the chosen accuracy; `null` where ε_N < 1e-6,
+    /// outside the bound's domain.
+    pub error_estimate: Option<f64>,
+}
+
+impl EpsRecord {
+    /// The record of a core result at impact speed `g_n`.
+    pub fn new(g_n: f64, n: &Normal) -> Self {
+        EpsRecord {
+            g_n,
+            eps_n: n.eps,
+            status: n.status.name(),
+            t_c: n.t_c.is_finite().then_some(n.t_c),
+            xi_max: n.xi_max,
+            error_estimate: n.error_estimate.is_finite().then_some(n.error_estimate),
+        }
+    }
+
+    /// Its CSV cells, in the order of [`CURVE_HEADER`].
+    pub fn cells(&self) -> [String; 6] {
+        let opt = |v: Option<f64>| v.map(cell).unwrap_or_default();
+        [
+            cell(self.g_n),
+            cell(self.eps_n),
+            self.status.into(),
+            opt(self.t_c),
+            cell(self.xi_max),
+            opt(self.error_estimate),
+        ]
+    }
+}
+
+/// One tangential record (`rime tangential`): JSON object and CSV row ([`TANGENTIAL_HEADER`]).
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct TangentialRecord {
+    /// Normal impact speed \[m/s\].
+    pub g_n: f64,
+    /// Tangential speed \[m/s\].
+    pub g_t: f64,
+    /// ε_T.
+    pub eps_t: f64,
+    /// ε_N(g_N).
+    pub eps_n: f64,
+    /// Stick-map class (docs/physics.md#decision-7).
+    pub class: &'static str,
+}
+
+impl TangentialRecord {
+    /// The record of a core result at `(g_n, g_t)`.
+    pub fn new(g_n: f64, g_t: f64, t: &crate::Tangential) -> Self {
+        TangentialRecord {
+            g_n,
+            g_t,
+            eps_t: t.eps_t,
+            eps_n: t.eps_n,
+            class: t.class.name(),
+        }
+    }
+
+    /// Its CSV cells, in the order of [`TANGENTIAL_HEADER`].
+    pub fn cells(&self) -> [String; 5] {
+        [
+            cell(self.g_n),
+            cell(self.g_t),
+            cell(self.eps_t),
+            cell(self.eps_n),
+            self.class.into(),
+        ]
+    }
+}
+
+/// A stick map as one JSON object (`rime map`; its CSV is [`map_csv`]).
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct MapRecord {
+    /// Grid speeds \[m/s\], 0 to max inclusive.
+    pub g: alloc::vec::Vec<f64>,
+    /// `class[i][j]` at g_N = `g[i]`, g_T = `g[j]`.
+    pub class: alloc::vec::Vec<alloc::vec::Vec<&'static str>>,
+    /// `eps_t[i][j]` at g_N = `g[i]`, g_T = `g[j]`.
+    pub eps_t: alloc::vec::Vec<alloc::vec::Vec<f64>>,
+    /// ε_N at `g[i]`.
+    pub eps_n: alloc::vec::Vec<f64>,
+}
+
 /// Header of stick-map records (`rime map`, the explorer's map).
 pub const MAP_HEADER: [&str; 4] = ["g_n [m/s]", "g_t [m/s]", "eps_t", "class"];
 
@@ -58,14 +162,7 @@ pub fn cell(v: f64) -> String {
 /// asymptotically).
 pub fn curve_cells(g: f64, normal: Option<&Normal>) -> [String; 6] {
     match normal {
-        Some(n) => [
-            cell(g),
-            cell(n.eps),
-            n.status.name().into(),
-            cell(n.t_c),
-            cell(n.xi_max),
-            cell(n.error_estimate),
-        ],
+        Some(n) => EpsRecord::new(g, n).cells(),
         None => [
             cell(g),
             String::new(),
@@ -264,7 +361,16 @@ mod tests {
     fn records_messages_and_labels_write_a_number_alike_issue_21() {
         // One rule: records, error messages and the explorer's shortest form agreed everywhere but
         // at 1e-4 ≤ |v| < 1e-3 before (records wrote 5e-4, messages 0.0005).
-        for v in [5e-4, 1e-4, 9.99e-5, 0.00123, 1e6, 999999.5, -2.5e-4, 3.0000000000000003e-4] {
+        for v in [
+            5e-4,
+            1e-4,
+            9.99e-5,
+            0.00123,
+            1e6,
+            999999.5,
+            -2.5e-4,
+            3.0000000000000003e-4,
+        ] {
             let message = alloc::format!("{}", crate::error::Number(v));
             assert_eq!(cell(v), message, "{v}");
             assert_eq!(cell(v), super::super::format::shortest(v), "{v}");

@@ -34,7 +34,11 @@ fn log_axis(label: &str, v: impl Iterator<Item = f64>) -> Axis {
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
             (a.min(x), b.max(x))
         });
-    let (lo, hi) = if lo.is_finite() { (lo, hi) } else { (1e-3, 1.0) };
+    let (lo, hi) = if lo.is_finite() {
+        (lo, hi)
+    } else {
+        (1e-3, 1.0)
+    };
     let decade = |x: f64, up: bool| {
         let e = crate::math::log10(x);
         let e = if up { libm::ceil(e) } else { libm::floor(e) };
@@ -94,14 +98,19 @@ pub fn thresholds_figure(table: &ThresholdTable) -> Figure {
         });
     }
     series.push(Series {
-        name: format!("measured, µm ice below ~210 K: {MEASURED_UM_ICE} m/s (Gundlach & Blum 2015)"),
+        name: format!(
+            "measured, µm ice below ~210 K: {MEASURED_UM_ICE} m/s (Gundlach & Blum 2015)"
+        ),
         short: "measured µm ice".to_string(),
         points: alloc::vec![(MEASURED_RADIUS, MEASURED_UM_ICE)],
         color: palette::SERIES_EXPERIMENT,
         stroke: Stroke::Points,
     });
     let speeds = series.iter().flat_map(|s| s.points.iter().map(|p| p.1));
-    let y = log_axis("sticking threshold [m/s]", speeds.collect::<Vec<_>>().into_iter());
+    let y = log_axis(
+        "sticking threshold [m/s]",
+        speeds.collect::<Vec<_>>().into_iter(),
+    );
     let x = log_axis("grain radius R [m]", table.radii.iter().copied());
     Figure {
         name: "sticking_thresholds".to_string(),

@@ -19,13 +19,7 @@ pub fn run(common: &Common, gn: &[f64], gt: &[f64]) -> CliResult<String> {
             let r = contact.tangential(n, t, common.accuracy).map_err(|e| {
                 CliError::from(e).context(format!("g_n = {}, g_t = {}", Number(n), Number(t)))
             })?;
-            records.push(TangentialRecord {
-                g_n: n,
-                g_t: t,
-                eps_t: r.eps_t,
-                eps_n: r.eps_n,
-                class: r.class.name(),
-            });
+            records.push(TangentialRecord::new(n, t, &r));
         }
     }
     render(&records, common.format).map_err(CliError::input)

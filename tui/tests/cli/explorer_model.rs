@@ -161,7 +161,8 @@ fn family_values_legends_and_csv_headers_carry_no_float_noise_issue_22() {
     );
     let csv = rime_core::explorer::records::family_csv(&f);
     let header = csv.lines().find(|l| l.starts_with("g_n")).unwrap();
-    assert!(header.contains("A = 3e-4 s"), "{header}");
+    // The shortest form by the one number rule (plain from 1e-4, issue 21).
+    assert!(header.contains("A = 0.0003 s"), "{header}");
     for text in names.iter().copied().chain([header]) {
         assert!(!text.contains("0000000"), "float noise in '{text}'");
     }

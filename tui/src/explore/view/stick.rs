@@ -6,10 +6,10 @@ use super::plot::{self, Colors};
 use crate::explore::format::qty3;
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
-use rime_core::explorer::thresholds::thresholds_figure;
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph, Wrap};
+use rime_core::explorer::thresholds::thresholds_figure;
 use rime_core::stick::{MEASURED_UM_ICE, Threshold, ThresholdTable};
 
 /// How a table shows one threshold.
