@@ -127,6 +127,8 @@ def main():
     parser.add_argument("--orbits", type=float, default=4.0)
     parser.add_argument("--n", type=int, default=120)
     parser.add_argument("--only", type=int, default=None, help="run case INDEX only")
+    parser.add_argument("--start", type=float, default=None,
+                        help="start settling cases at START × c_pred (default: the case's, 1)")
     a = parser.parse_args()
     n, orbits = (60, 2.0) if a.quick else (a.n, a.orbits)
     print(f"{n} particles, {orbits:g} orbits, {a.seeds} seeds, Ω = {OMEGA} 1/s; "
@@ -141,6 +143,8 @@ def main():
         pred = prediction(radius, tau, scale, friction)
         scene = scene_for(radius, scale, friction)
         c_pred, h_pred = pred["velocity_dispersion"], pred["thickness"]
+        if start and a.start:
+            start = a.start
         c0 = c_pred * start if start else 2 * radius * OMEGA
         # A heating ring needs vertical room for its growth.
         room = 10.0 if expect == "stay" else 400.0

@@ -356,9 +356,12 @@ fn issue_24_ring_verdicts_and_the_a_over_r_note() {
     };
     let small = with(&["--radius", "0.02"]);
     assert_eq!(small["verdict"], "monolayer_floor");
+    // The issue's "done when": the 2 cm patch prints an equilibrium (the floor is one).
+    assert_eq!(small["equilibrium"], true);
+    assert_eq!(small["verdict_words"], "equilibrium at the monolayer floor");
     assert_eq!(small["smooth"]["verdict"], "equilibrium");
     assert!(small["damping_note"].is_null());
-    // The floor is 2RΩ; thickness = c_z/Ω with c_z/c = √(1 − 1.5/(ω̂² + 5.5)), ω̂ = 8τ/π·Y(φ).
+    // The floor is 2RΩ; thickness = c_z/Ω with c_z/c = √(1 − 1.5/(ν̂² + 5.5)), ν̂ = b·8τ/π·Y(φ).
     let r_omega = 0.02 * 1.3143527e-4;
     assert!(
         rel(
@@ -382,6 +385,7 @@ fn issue_24_ring_verdicts_and_the_a_over_r_note() {
     );
     let big = with(&["--radius", "1"]);
     assert_eq!(big["verdict"], "heats");
+    assert_eq!(big["equilibrium"], false);
     assert_eq!(big["scaled_damping_time"], 5e-3);
     assert!(
         big["damping_note"]
