@@ -22,4 +22,6 @@ pub mod range;
 #[cfg(feature = "explorer")]
 pub mod records;
 #[cfg(feature = "explorer")]
+pub mod ring;
+#[cfg(feature = "explorer")]
 pub mod warning;
