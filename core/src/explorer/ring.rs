@@ -11,7 +11,7 @@ use crate::contact::Contact;
 use crate::error::{Error, Result};
 use crate::explorer::format::{qty, sig};
 use crate::explorer::palette;
-use crate::figure::{Marker, Series, Stroke};
+use crate::figure::{Figure, Marker, Series, Stroke};
 use crate::math::{exp, ln};
 use crate::ring::{
     FLOOR_IN_R_OMEGA, RingInput, RingRecord, SLOW_REGIME_LIMIT, Verdict, equilibrium,
@@ -56,6 +56,24 @@ pub struct RingCard {
     pub equilibrium: bool,
     /// The verdict in a plain sentence.
     pub sentence: String,
+}
+
+impl RingCard {
+    /// Adds the card to the ε_N chart's figure, the same on every surface: the dashed ε_cr line,
+    /// the meeting point (a one-point series) and the mean-impact-speed marker.
+    pub fn overlay(&self, fig: &mut Figure) {
+        fig.series.push(self.eps_cr_line.clone());
+        if let Some((g, e)) = self.meeting {
+            fig.series.push(Series {
+                name: format!("ε_N meets the ring's ε_cr at g = {}", qty(g, "m/s")),
+                short: format!("meets ε_cr {}", qty(g, "m/s")),
+                points: vec![(g, e)],
+                color: palette::SERIES_RING,
+                stroke: Stroke::Points,
+            });
+        }
+        fig.markers.push(self.impact_marker.clone());
+    }
 }
 
 fn row(label: &str, text: String) -> RingRow {
@@ -261,6 +279,13 @@ mod tests {
         let v = p.mean_impact_speed;
         assert!(g > 0.2 * v && g < 3.0 * v, "{g} vs {v}");
         assert_eq!(card.impact_marker.x, v);
+        // The overlay adds the line, the meeting point and the marker to a chart's figure.
+        let mut fig = Figure::stick_map("f".into(), "t".into(), "c".into(), vec![], vec![], 1.0);
+        card.overlay(&mut fig);
+        assert_eq!(fig.series.len(), 2);
+        assert_eq!(fig.series[1].points, vec![(g, e)]);
+        assert_eq!(fig.series[1].stroke, Stroke::Points);
+        assert_eq!(fig.markers, vec![card.impact_marker.clone()]);
         assert_eq!(card.verdict, "equilibrium");
         assert!(card.equilibrium);
         assert!(card.sentence.starts_with("Equilibrium (smooth grains)"));
