@@ -320,16 +320,27 @@ mod tests {
         use crate::explorer::format::agrees_to_printed;
         let card = ring_card(&ice(0.02, false), &a_ring(), (1e-7, 1.0)).unwrap();
         let p = card.record.smooth;
-        let first = |label: &str| {
+        // "34.16 mm" is compared as 34.16 against the value in mm (no float noise in its digits).
+        let check = |label: &str, unit: &str, computed: f64| {
             let text = &card.rows.iter().find(|r| r.label == label).unwrap().text;
-            text.split(" (").next().unwrap().to_string()
+            let shown = text.split(" (").next().unwrap();
+            let (number, scale) = match shown.split_once(' ') {
+                Some((n, u)) => (
+                    n,
+                    crate::units::parse_quantity("unit", &format!("1 {u}"), unit).unwrap(),
+                ),
+                None => (shown, 1.0),
+            };
+            let number: f64 = number.parse().unwrap();
+            assert!(
+                agrees_to_printed(computed / scale, number),
+                "{text} vs {computed}"
+            );
         };
-        let c = crate::units::parse_quantity("c", &first("velocity dispersion c"), "m/s").unwrap();
-        assert!(agrees_to_printed(p.velocity_dispersion, c));
-        let h = crate::units::parse_quantity("h", &first("thickness H (rms z)"), "m").unwrap();
-        assert!(agrees_to_printed(p.thickness, h));
-        let e: f64 = first("ε_cr at the balance").parse().unwrap();
-        assert!(agrees_to_printed(p.eps_cr, e));
+        check("velocity dispersion c", "m/s", p.velocity_dispersion);
+        check("thickness H (rms z)", "m", p.thickness);
+        check("mean impact speed √π c", "m/s", p.mean_impact_speed);
+        check("ε_cr at the balance", "1", p.eps_cr);
     }
 
     #[test]

@@ -375,14 +375,20 @@ fn issue_24_the_ring_card_and_rime_ring_agree_to_the_printed_digits() {
         let card = ring_card(&scene, &input, (1e-7, 1.0)).unwrap();
         assert_eq!(card.verdict, cli["verdict_words"], "{args:?}");
         assert_eq!(card.equilibrium, cli["equilibrium"], "{args:?}");
-        let printed = |label: &str, unit: &str| {
+        // A printed "34.16 mm" is compared as 34.16 against the CLI's value in mm: converting the
+        // printed text to metres first would add float noise to its digits.
+        let printed = |label: &str, unit: &str, computed: f64| {
             let text = &card.rows.iter().find(|r| r.label == label).unwrap().text;
-            let number = text.split(" (").next().unwrap();
-            if unit == "1" {
-                number.parse::<f64>().unwrap()
-            } else {
-                parse_quantity("printed", number, unit).unwrap()
-            }
+            let shown = text.split(" (").next().unwrap();
+            let (number, scale) = match shown.split_once(' ') {
+                Some((n, u)) => (n, parse_quantity("unit", &format!("1 {u}"), unit).unwrap()),
+                None => (shown, 1.0),
+            };
+            (
+                text.clone(),
+                number.parse::<f64>().unwrap(),
+                computed / scale,
+            )
         };
         for (label, unit, key) in [
             ("velocity dispersion c", "m/s", "velocity_dispersion"),
@@ -391,10 +397,10 @@ fn issue_24_the_ring_card_and_rime_ring_agree_to_the_printed_digits() {
             ("ε_cr at the balance", "1", "eps_cr"),
             ("ε̄ of the impacts", "1", "eps_effective"),
         ] {
-            let (shown, computed) = (printed(label, unit), cli[key].as_f64().unwrap());
+            let (text, shown, computed) = printed(label, unit, cli[key].as_f64().unwrap());
             assert!(
                 agrees_to_printed(computed, shown),
-                "{args:?} {key}: card {shown} vs rime ring {computed}"
+                "{args:?} {key}: card {text} vs rime ring {computed}"
             );
         }
     }
