@@ -23,7 +23,8 @@ def test_python_and_cli_agree_to_the_digit():
                                    **kwargs)
         js = cli("ring", "--preset", "ice", "--tau", 0.5, "--omega", OMEGA, "--radius", radius,
                  *extra)
-        for key in ("verdict", "velocity_dispersion", "thickness", "eps_cr", "scaled_damping_time"):
+        for key in ("verdict", "equilibrium", "verdict_words", "velocity_dispersion", "thickness",
+                    "eps_cr", "scaled_damping_time"):
             assert py[key] == js[key], key
         # The note names the flag or the keyword: the same statement.
         assert (py["damping_note"] is None) == (js["damping_note"] is None)
