@@ -140,6 +140,20 @@ try {
     return `${line}; ${marker || 'marker off the chart'}`;
   });
 
+  await check("issue 24: Ω from the tidal card's planet and distance, as `rime ring --planet-mass --distance`", async () => {
+    const u = await updates();
+    await page.locator('#r-planet').check();
+    await waitUpdate(u);
+    const s = await page.evaluate(() => window.rimeState);
+    const t = s.tidal.input;
+    const r = await agreeWithCli(['--tau', '0.5', '--planet-mass', String(t.planet_mass), '--distance', String(t.distance)]);
+    const omega = Math.sqrt(6.672e-11 * t.planet_mass / t.distance ** 3);
+    assert(Math.abs(s.ring.record.omega - omega) <= 1e-15 * omega, `Ω ${s.ring.record.omega} vs √(GM/d³) ${omega}`);
+    await page.locator('#ring').scrollIntoViewIfNeeded();
+    await page.locator('.ring-card').screenshot({ path: path.join(root, 'target', 'www-ring-card.png') });
+    return `Ω = ${s.ring.record.omega} 1/s; ${r}`;
+  });
+
   await check('no console errors', async () => {
     assert(problems.length === 0, problems.join(' | '));
   });

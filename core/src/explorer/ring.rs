@@ -135,7 +135,11 @@ pub fn ring_card(scene: &Scene, input: &RingInput, chart: (f64, f64)) -> Result<
         row("ε̄ of the impacts", sig(p.eps_effective, 4)),
         row(
             "equilibration",
-            format!("{} orbits from the floor", sig(p.equilibration_orbits, 4)),
+            if p.equilibration_orbits > 0.0 {
+                format!("{} orbits from the floor", sig(p.equilibration_orbits, 4))
+            } else {
+                "none: the ring starts and stays at the floor".to_string()
+            },
         ),
     ];
     if record.friction {
