@@ -123,4 +123,70 @@ mod tests {
         assert!(text.contains("heats"), "{text}");
         assert!(text.contains("Heats (with the scene's friction)"), "{text}");
     }
+
+    #[test]
+    fn issue_24_the_overlay_draws_on_the_terminals_eps_n_chart() {
+        use crate::explore::view::plot::{Colors, Options, draw, legend, tags};
+        use rime_core::figure::{Axis, Figure, Series, Stroke};
+        let mut scene = rime_core::Preset::Ice.scene();
+        scene.friction = None;
+        let input = RingInput {
+            tau: 0.5,
+            orbit: Orbit::Omega(1.3143527e-4),
+            damping_set_for_radius: None,
+        };
+        let card = ring_card(&scene, &input, (1e-7, 1.0)).expect("card");
+        // The scene's ε_N curve on the chart's log speed axis, then the card on top of it.
+        let contact = rime_core::Contact::new(&scene).expect("contact");
+        let points = (0..=70)
+            .map(|k| {
+                let g = 1e-7 * 10f64.powf(k as f64 / 10.0);
+                (g, contact.eps_n(g, rime_core::Accuracy::Fast).expect("eps"))
+            })
+            .collect();
+        let axis = |label: &str, log: bool, min: f64, max: f64| Axis {
+            label: label.into(),
+            log,
+            min,
+            max,
+        };
+        let mut fig = Figure::stick_map(
+            String::new(),
+            String::new(),
+            String::new(),
+            vec![],
+            vec![],
+            1.0,
+        );
+        fig.x = axis("g_N [m/s]", true, 1e-7, 1.0);
+        fig.y = axis("ε_N", false, 0.0, 1.0);
+        fig.series.push(Series {
+            name: "this scene".into(),
+            short: "scene".into(),
+            points,
+            color: rime_core::explorer::palette::SERIES_SCENE,
+            stroke: Stroke::Solid,
+        });
+        card.overlay(&mut fig);
+        let opts = Options {
+            colors: Colors::Rgb,
+            cursor: None,
+            legend_rows: 4,
+            bold: Some(0),
+            y_title: false,
+        };
+        let entries = legend(&fig, &tags(&fig, opts.colors));
+        assert!(entries.iter().any(|e| e.text == "ring ε_cr"), "{entries:?}");
+        let area = Rect::new(0, 0, 90, 24);
+        let mut buf = ratatui::buffer::Buffer::empty(area);
+        assert!(draw(&mut buf, area, &fig, &opts).is_some());
+        // The line is drawn in the ring's colour (palette series 5).
+        let ring = rime_core::explorer::palette::SERIES[card.eps_cr_line.color];
+        let inked = buf
+            .content()
+            .iter()
+            .filter(|c| c.fg == Color::Rgb(ring.r, ring.g, ring.b) && c.symbol() != " ")
+            .count();
+        assert!(inked > 10, "only {inked} cells in the ring's colour");
+    }
 }
