@@ -56,6 +56,16 @@ pub enum Orbit {
     },
 }
 
+impl Orbit {
+    /// The tidal appendix's planet and distance (the explorer's tidal card), as an orbit.
+    pub fn of_tidal(input: &crate::tidal::TidalInput) -> Orbit {
+        Orbit::Planet {
+            planet_mass: input.planet_mass,
+            distance: input.distance,
+        }
+    }
+}
+
 /// Inputs of [`equilibrium`]. The grains are the scene's (both of one radius).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RingInput {
@@ -623,6 +633,9 @@ mod tests {
         let rec = equilibrium(&ice(0.02), &planet).unwrap();
         let expected = (G * 5.688e26 / 1.336e8f64.powi(3)).sqrt();
         assert!((rec.omega - expected).abs() < 1e-18);
+        // The tidal appendix's example is that planet and distance.
+        let tidal = crate::tidal::TidalInput::default();
+        assert_eq!(Orbit::of_tidal(&tidal), planet.orbit);
         let mut bad = input(0.5);
         bad.orbit = Orbit::Omega(-1.0);
         assert!(matches!(
