@@ -12,6 +12,7 @@ import { buildControls, edit, reflectScene, syncControls, wireToolbar, wireView 
 import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, wireChart } from './chart.js';
 import { drawLegend, drawMapCanvas, wireMap } from './map.js';
 import { buildTidal, showTidal } from './tidal.js';
+import { buildRing, ringOverlay, showRing } from './ring.js';
 import { buildCompare } from './compare.js';
 import { intro, showBanner, showNotice, showPartNotes, showWarnings, wireBanner } from './messages.js';
 import { loadHash, writeHash } from './url.js';
@@ -98,6 +99,7 @@ function onFrame(msg, req) {
   app.res = res;
   app.drawn = { scene: req.scene, view: req.page.view, tidal: req.page.tidal };
   if (sceneChanged) app.mapRow = null;
+  ringOverlay(res, req.scene);
   const tm = [performance.now()];
   draw();
   tm.push(performance.now());
@@ -107,6 +109,7 @@ function onFrame(msg, req) {
   tm.push(performance.now());
   showWarnings(res);
   showTidal(res);
+  showRing();
   showBanner(res.errors);
   tm.push(performance.now());
   syncControls();
@@ -256,6 +259,7 @@ async function main() {
   wireToolbar(JSON.parse(Explorer.presets()));
   wireView();
   buildTidal({ schedule, validate: validateTidal });
+  buildRing({ schedule });
   wireChart({ schedule, replay: replayCollision });
   wireMap({ replay: replayCollision });
   wireDownloads((e) => window.rimeState.errors.push(errText(e)));

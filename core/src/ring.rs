@@ -2,18 +2,21 @@
 //! ring patch of identical grains (docs/physics.md#ring).
 //!
 //! Viscous heating by Kepler shear is balanced against the collisional loss (Goldreich & Tremaine
-//! 1978, Icarus 34, 227). We use a Krook-type moment closure of the dilute shearing sheet, derived in
-//! docs/physics.md#ring: with `ω̂ = ω_c/Ω` the collision frequency per orbital frequency,
+//! 1978, Icarus 34, 227). We use a moment closure of the dilute shearing sheet in which collisions
+//! relax the velocity ellipsoid to isotropy at Grad's stress-relaxation rate of inelastic hard
+//! spheres, `ν = (4/5)·((1 + ε)(3 − ε)/4)·ω_c`, and remove energy isotropically at
+//! `ζ = (1 − ε²) ω_c/3` (docs/physics.md#ring). With `ν̂ = ν/Ω = b ω̂` and `ω̂ = ω_c/Ω`:
 //!
-//! * viscous gain per unit mass `(9/4) Ω² c² ω̂ /(ω̂² + 11/2)`,
+//! * viscous gain per unit mass `(9/4) Ω² c² ν̂/(ν̂² + 11/2)`,
 //! * collisional loss per unit mass `ω_c (1 − ε̄²) c²/2`,
 //!
-//! so a constant ε balances only at `ε_cr² = 1 − (9/2)/(ω̂² + 11/2)`, with the dilute collision
-//! frequency `ω̂ = 8τ/π` of a Gaussian layer. A speed-dependent ε_N(g) balances where the
-//! energy-weighted mean `ε̄²` over the impacts equals `ε_cr²`. Impacts: the normal relative speed of
-//! a 3-D Gaussian relative velocity (dispersion √2 c per component) weighted by the collision rate
-//! `∝ g_N`, i.e. Rayleigh-distributed with scale √2 c; the tangential speed is the independent 2-D
-//! Gaussian magnitude (same scale), grain spins neglected.
+//! so a constant ε balances only at `1 − ε_cr² = (9/2) b/(b² ω̂² + 11/2)`, `b = (1 + ε_cr)(3 − ε_cr)/5`,
+//! with the collision frequency `ω̂ = (8τ/π)·Y(φ)` of a Gaussian layer (dilute limit `ε_cr = 14/23`,
+//! Goldreich & Tremaine's ≈ 0.63). A speed-dependent ε_N(g) balances where the energy-weighted mean
+//! `ε̄²` over the impacts equals `ε_cr²`. Impacts: the normal relative speed of a 3-D Gaussian
+//! relative velocity (dispersion √2 c per component) weighted by the collision rate `∝ g_N`, i.e.
+//! Rayleigh-distributed with scale √2 c; the tangential speed is the independent 2-D Gaussian
+//! magnitude (same scale), grain spins neglected.
 
 use crate::accuracy::Accuracy;
 use crate::contact::Contact;
@@ -51,6 +54,16 @@ pub enum Orbit {
         /// Distance from the planet's centre \[m\].
         distance: f64,
     },
+}
+
+impl Orbit {
+    /// The tidal appendix's planet and distance (the explorer's tidal card), as an orbit.
+    pub fn of_tidal(input: &crate::tidal::TidalInput) -> Orbit {
+        Orbit::Planet {
+            planet_mass: input.planet_mass,
+            distance: input.distance,
+        }
+    }
 }
 
 /// Inputs of [`equilibrium`]. The grains are the scene's (both of one radius).
@@ -116,6 +129,24 @@ impl Verdict {
             Verdict::Heats => "heats",
         }
     }
+
+    /// Whether the ring settles in a steady state of the slow-collision regime: a local balance
+    /// ([`Verdict::Equilibrium`]) or the monolayer floor, where the finite-size (non-local) gain
+    /// balances the loss ([`Verdict::MonolayerFloor`]).
+    pub fn is_equilibrium(self) -> bool {
+        matches!(self, Verdict::Equilibrium | Verdict::MonolayerFloor)
+    }
+
+    /// The verdict in words, as `rime ring` and the ring cards print it: `equilibrium`,
+    /// `equilibrium at the monolayer floor`, `aggregates`, `heats`.
+    pub fn words(self) -> &'static str {
+        match self {
+            Verdict::Equilibrium => "equilibrium",
+            Verdict::MonolayerFloor => "equilibrium at the monolayer floor",
+            Verdict::Aggregates => "aggregates",
+            Verdict::Heats => "heats",
+        }
+    }
 }
 
 /// The record of [`equilibrium`].
@@ -160,16 +191,37 @@ impl RingRecord {
     }
 }
 
-/// The dilute `ε_cr(τ) = √(1 − (9/2)/(ω̂² + 11/2))`, `ω̂ = 8τ/π` (docs/physics.md#ring). Fails for
-/// τ outside (0, 5].
+/// The dilute `ε_cr(τ)`: the root of `1 − ε² = (9/2) b/(b² ω̂² + 11/2)`, `b = (1 + ε)(3 − ε)/5`,
+/// `ω̂ = 8τ/π` (docs/physics.md#ring; 14/23 for τ → 0). Fails for τ outside (0, 5].
 pub fn eps_cr(tau: f64) -> Result<f64> {
     let tau = within("tau", tau, f64::MIN_POSITIVE, 5.0, "must lie in (0, 5]")?;
     Ok(eps_cr_of(collision_frequency(tau)))
 }
 
-/// `ε_cr` for a collision frequency `ω̂ = ω_c/Ω`.
+/// Grad's stress-relaxation rate of inelastic hard spheres per collision frequency,
+/// `ν/ω_c = (4/5)·(1 + ε)(3 − ε)/4` (4/5 for elastic spheres: `p/η` of the Chapman–Enskog
+/// viscosity over `ω_c`).
+pub fn relaxation_per_collision(eps: f64) -> f64 {
+    (1.0 + eps) * (3.0 - eps) / 5.0
+}
+
+/// `ε_cr` for a collision frequency `ω̂ = ω_c/Ω ≥ 0`: the root in [0, 1] of
+/// `1 − ε² − (9/2) b/(b² ω̂² + 11/2)` (positive at 0, negative at 1), by bisection to 1e-16.
 pub fn eps_cr_of(w: f64) -> f64 {
-    sqrt(1.0 - 4.5 / (w * w + 5.5))
+    let excess = |e: f64| {
+        let b = relaxation_per_collision(e);
+        1.0 - e * e - 4.5 * b / (b * b * w * w + 5.5)
+    };
+    let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    for _ in 0..56 {
+        let mid = 0.5 * (lo + hi);
+        if excess(mid) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
 }
 
 /// Volume filling factor `φ = 2τR/(3√π H)` of a Gaussian layer of rms thickness `H = c_z/Ω`
@@ -202,9 +254,11 @@ pub fn scaled_damping_time(a: f64, r: f64, r_new: f64) -> Result<f64> {
     Ok(a * (r_new / r))
 }
 
-/// The vertical to 1-D dispersion ratio of the closure: `c_z²/c² = 1 − (3/2)/(ω̂² + 11/2)`.
+/// The vertical to 1-D dispersion ratio of the closure at the balance, `c_z²/c² = 1 − ζ/ν =
+/// 1 − (3/2)/(ν̂² + 11/2)` with `ν̂ = b(ε_cr) ω̂`.
 fn vertical_fraction(w: f64) -> f64 {
-    sqrt(1.0 - 1.5 / (w * w + 5.5))
+    let nu = relaxation_per_collision(eps_cr_of(w)) * w;
+    sqrt(1.0 - 1.5 / (nu * nu + 5.5))
 }
 
 // Simpson nodes in x = g/s for the Rayleigh impact distributions, on [0, X_MAX].
@@ -454,12 +508,17 @@ mod tests {
 
     #[test]
     fn eps_cr_matches_its_closed_form_limits() {
-        // τ → 0: ω̂ → 0, ε_cr² → 1 − 9/11 = 2/11.
+        // τ → 0: ω̂ → 0, 1 − ε² = (9/11)(1 + ε)(3 − ε)/5, i.e. 23ε² + 9ε − 14 = 0: ε = 14/23.
         let small = eps_cr(1e-9).unwrap();
-        assert!((small - (2.0f64 / 11.0).sqrt()).abs() < 1e-12);
-        // τ = π/8: ω̂ = 1, ε_cr² = 1 − 4.5/6.5 = 2/6.5.
+        assert!((small - 14.0 / 23.0).abs() < 1e-9, "{small}");
+        // ω̂ = 1 (τ = π/8) and τ = 0.5: roots in (0, 1) of the degree-6 polynomial
+        // (1 − ε²)(b²ω̂² + 11/2) − (9/2)b by numpy.polynomial (an independent root finder).
         let one = eps_cr(PI / 8.0).unwrap();
-        assert!((one - (2.0f64 / 6.5).sqrt()).abs() < 1e-15);
+        assert!((one - 0.6539967624924253).abs() < 1e-13, "{one}");
+        let half = eps_cr(0.5).unwrap();
+        assert!((half - 0.6776695285906746).abs() < 1e-13, "{half}");
+        // Elastic spheres relax at p/η = (4/5) ω_c.
+        assert_eq!(relaxation_per_collision(1.0), 0.8);
         // Monotonic increasing, below 1.
         let (a, b) = (eps_cr(0.1).unwrap(), eps_cr(1.0).unwrap());
         assert!(a < b && b < 1.0);
@@ -534,6 +593,12 @@ mod tests {
         let r2cm = equilibrium(&ice(0.02), &input(0.5)).unwrap();
         assert_eq!(r2cm.smooth.verdict, Verdict::Equilibrium);
         assert_eq!(r2cm.rough.verdict, Verdict::MonolayerFloor);
+        // Issue 24's "done when": the 2 cm A-ring patch prints an equilibrium (at the floor).
+        assert!(r2cm.prediction().verdict.is_equilibrium());
+        assert_eq!(
+            r2cm.prediction().verdict.words(),
+            "equilibrium at the monolayer floor"
+        );
         assert_eq!(r2cm.scaled_damping_time, None);
         // The balance holds where it is claimed.
         let p = r2cm.smooth;
@@ -541,6 +606,7 @@ mod tests {
         assert!((p.mean_impact_speed - PI.sqrt() * p.velocity_dispersion).abs() < 1e-18);
         let r1m = equilibrium(&ice(1.0), &input(0.5)).unwrap();
         assert_eq!(r1m.prediction().verdict, Verdict::Heats);
+        assert!(!r1m.prediction().verdict.is_equilibrium());
         assert_eq!(r1m.scaled_damping_time, Some(1e-4 * 1.0 / 0.02));
         let mut scaled = ice(1.0);
         scaled.bulk.damping = Damping::Time(5e-3);
@@ -567,6 +633,9 @@ mod tests {
         let rec = equilibrium(&ice(0.02), &planet).unwrap();
         let expected = (G * 5.688e26 / 1.336e8f64.powi(3)).sqrt();
         assert!((rec.omega - expected).abs() < 1e-18);
+        // The tidal appendix's example is that planet and distance.
+        let tidal = crate::tidal::TidalInput::default();
+        assert_eq!(Orbit::of_tidal(&tidal), planet.orbit);
         let mut bad = input(0.5);
         bad.orbit = Orbit::Omega(-1.0);
         assert!(matches!(

@@ -1,15 +1,18 @@
 """What the scene's law does to a ring: equilibrium velocity dispersion, thickness and verdict.
 
-The model (a Krook-moment kinetic closure of the non-gravitating shearing sheet with the Enskog
-collision rate, impacts averaged over a Gaussian velocity distribution, a 2RΩ monolayer floor) and
+The model (a Grad-type moment closure of the non-gravitating shearing sheet: stress relaxation of
+inelastic hard spheres, the Enskog collision rate, impacts averaged over a Gaussian velocity
+distribution, a 2RΩ monolayer floor) and
 where it stops holding are in docs/physics.md#ring of the repository; the fields are those of
 ``rime ring --format json`` (docs/cli.md#ring).
 
 >>> import rime_grains as rime
 >>> ice = rime.Scene.preset("ice")
 >>> a_ring = rime.ring.equilibrium(ice, tau=0.5, omega=1.3143527e-4, radius=0.02)
->>> a_ring["verdict"], a_ring["smooth"]["verdict"]
-('monolayer_floor', 'equilibrium')
+>>> a_ring["verdict"], a_ring["equilibrium"], a_ring["smooth"]["verdict"]
+('monolayer_floor', True, 'equilibrium')
+>>> a_ring["verdict_words"]
+'equilibrium at the monolayer floor'
 >>> round(a_ring["velocity_dispersion_r_omega"], 6)
 2.0
 >>> metre = rime.ring.equilibrium(ice, tau=0.5, omega=1.3143527e-4, radius=1.0)
@@ -40,6 +43,7 @@ def equilibrium(scene, *, tau, omega=None, planet_mass=None, distance=None, radi
     so). Without it, when ``radius`` differs from the scene's, ``scaled_damping_time`` reports A′.
 
     Returns a dict: ``verdict`` (``equilibrium``, ``monolayer_floor``, ``aggregates``, ``heats``),
+    ``equilibrium`` (True for the first two: the floor is a steady state too), ``verdict_words``,
     ``velocity_dispersion`` [m/s], ``thickness`` [m], ``mean_impact_speed`` [m/s], ``eps_cr``,
     ``eps_effective``, ``equilibration_orbits`` and the ``smooth`` and ``rough`` predictions.
     """

@@ -80,6 +80,8 @@ pub(crate) fn ring_equilibrium<'py>(
     let p = rec.prediction();
     let d = PyDict::new(py);
     d.set_item("verdict", p.verdict.name())?;
+    d.set_item("equilibrium", p.verdict.is_equilibrium())?;
+    d.set_item("verdict_words", p.verdict.words())?;
     d.set_item("prediction", if rec.friction { "rough" } else { "smooth" })?;
     d.set_item("tau", rec.tau)?;
     d.set_item("omega", rec.omega)?;

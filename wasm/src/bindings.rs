@@ -53,6 +53,13 @@ pub fn map_records(g: &[f64], eps_t: &[f64], codes: &[u8]) -> Result<String, JsE
     explorer::map_records(g, eps_t, codes).map_err(js)
 }
 
+/// The ring card (issue 24) for `scene` and `input` (JSON; see [`explorer::ring_card_json`]).
+/// Throws naming the field (`ring.tau: …`).
+#[wasm_bindgen(js_name = ringCard)]
+pub fn ring_card(scene: &str, input: &str) -> Result<String, JsError> {
+    explorer::ring_card_json(scene, input).map_err(js)
+}
+
 /// The one colour palette of every surface (`rime_core::explorer::palette::palette_json`).
 #[wasm_bindgen]
 pub fn palette() -> String {

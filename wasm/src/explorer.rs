@@ -95,6 +95,68 @@ pub fn tidal_json(scene: &Scene, input: Option<TidalInput>) -> Result<Json, Stri
     }))
 }
 
+/// What the page's ring card sends (issue 24): τ, Ω or a planet and a distance, and the ε_N
+/// chart's speed range `[from, to]` \[m/s\] for the ε_cr line.
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RingRequest {
+    tau: f64,
+    omega: Option<f64>,
+    planet_mass: Option<f64>,
+    distance: Option<f64>,
+    chart: (f64, f64),
+}
+
+/// The ring card for `scene` (JSON) and `input` (JSON `{tau, omega | planet_mass + distance,
+/// chart: [from, to]}`), built by `rime_core::explorer::ring::ring_card`: `{verdict, equilibrium,
+/// sentence, rows: [{label, text}], eps_cr_line: {name, short, points, color, stroke}, meeting:
+/// [g, ε] | null, impact_marker: {x, label, short, color}, record}` (`record` is `rime ring`'s
+/// prediction record; colours are indices into the palette's `series`). Errors name the field
+/// (`ring.tau: …`).
+pub fn ring_card_json(scene: &str, input: &str) -> Result<String, String> {
+    use rime_core::ring::{Orbit, RingInput};
+    let scene = parse_scene(scene)?;
+    let de = &mut serde_json::Deserializer::from_str(input);
+    let req: RingRequest = serde_path_to_error::deserialize(de).map_err(|e| {
+        let path = e.path().to_string();
+        let path = if path == "." || path.is_empty() {
+            "ring".to_string()
+        } else {
+            format!("ring.{path}")
+        };
+        format!("{path}: {}", e.into_inner())
+    })?;
+    let orbit = match (req.omega, req.planet_mass, req.distance) {
+        (Some(o), None, None) => Orbit::Omega(o),
+        (None, Some(m), Some(d)) => Orbit::Planet {
+            planet_mass: m,
+            distance: d,
+        },
+        _ => return Err("ring.omega: give omega, or planet_mass and distance".into()),
+    };
+    let input = RingInput {
+        tau: req.tau,
+        orbit,
+        damping_set_for_radius: None,
+    };
+    let card = rime_core::explorer::ring::ring_card(&scene, &input, req.chart)
+        .map_err(|e| format!("ring.{e}"))?;
+    let line = &card.eps_cr_line;
+    let m = &card.impact_marker;
+    Ok(json!({
+        "verdict": card.verdict,
+        "equilibrium": card.equilibrium,
+        "sentence": card.sentence,
+        "rows": card.rows.iter().map(|r| json!({"label": r.label, "text": r.text})).collect::<Vec<_>>(),
+        "eps_cr_line": {"name": line.name, "short": line.short, "points": line.points,
+                        "color": line.color, "stroke": line.stroke.name()},
+        "meeting": card.meeting.map(|(g, e)| [g, e]),
+        "impact_marker": {"x": m.x, "label": m.label, "short": m.short, "color": m.color},
+        "record": card.record,
+    })
+    .to_string())
+}
+
 fn core_err(e: rime_core::Error) -> String {
     e.to_string()
 }
@@ -607,6 +669,51 @@ mod tests {
         let err = Explorer::from_json(&text.replace("\"layer\"", "\"layr\"")).unwrap_err();
         assert!(err.contains("layr"), "{err}");
         assert!(Explorer::from_json("garbage").is_err());
+    }
+
+    #[test]
+    fn issue_24_the_ring_card_is_the_cores_and_bad_input_names_the_field() {
+        let scene = serde_json::to_string(&Preset::Ice.scene()).unwrap();
+        let input = r#"{"tau": 0.5, "omega": 1.3143527e-4, "chart": [1e-7, 1.0]}"#;
+        let card: Json = serde_json::from_str(&ring_card_json(&scene, input).unwrap()).unwrap();
+        let core = rime_core::explorer::ring::ring_card(
+            &Preset::Ice.scene(),
+            &rime_core::ring::RingInput {
+                tau: 0.5,
+                orbit: rime_core::ring::Orbit::Omega(1.3143527e-4),
+                damping_set_for_radius: None,
+            },
+            (1e-7, 1.0),
+        )
+        .unwrap();
+        assert_eq!(card["sentence"], core.sentence);
+        assert_eq!(card["verdict"], "equilibrium at the monolayer floor");
+        assert_eq!(card["equilibrium"], true);
+        assert_eq!(card["rows"][0]["text"], core.rows[0].text);
+        assert_eq!(
+            card["record"]["rough"]["velocity_dispersion"],
+            core.record.rough.velocity_dispersion
+        );
+        assert_eq!(card["eps_cr_line"]["stroke"], "dashed");
+        for (bad, field) in [
+            (
+                r#"{"tau": 0, "omega": 1e-4, "chart": [1e-7, 1]}"#,
+                "ring.tau:",
+            ),
+            (r#"{"tau": 0.5, "chart": [1e-7, 1]}"#, "ring.omega:"),
+            (
+                r#"{"tau": 0.5, "omega": 1e-4, "chart": [1, 0.1]}"#,
+                "ring.chart:",
+            ),
+            (r#"{"tau": 0.5, "omega": 1e-4}"#, "ring:"),
+            (
+                r#"{"tau": "x", "omega": 1e-4, "chart": [1e-7, 1]}"#,
+                "ring.tau:",
+            ),
+        ] {
+            let e = ring_card_json(&scene, bad).unwrap_err();
+            assert!(e.starts_with(field), "{bad}: {e}");
+        }
     }
 
     #[test]

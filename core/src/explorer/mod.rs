@@ -24,6 +24,8 @@ pub mod records;
 #[cfg(feature = "explorer")]
 pub mod request;
 #[cfg(feature = "explorer")]
+pub mod ring;
+#[cfg(feature = "explorer")]
 pub mod thresholds;
 #[cfg(feature = "explorer")]
 pub mod warning;

@@ -157,6 +157,8 @@ pub const SERIES: [Rgb; 14] = [
 ];
 /// Index of [`SCENE`] in [`SERIES`].
 pub const SERIES_SCENE: usize = 4;
+/// Index of [`BLUE`] in [`SERIES`]: the ring card's ε_cr line and impact-speed marker.
+pub const SERIES_RING: usize = 5;
 /// Index of [`CLEAN`] in [`SERIES`].
 pub const SERIES_CLEAN: usize = 6;
 /// Index of [`EXPERIMENT`] in [`SERIES`].

@@ -181,6 +181,11 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                 map.insert(n.to_string(), Value::Object(m));
             }
             map.insert("damping_note".into(), note.map_or(Value::Null, Value::from));
+            map.insert(
+                "equilibrium".into(),
+                Value::from(p.verdict.is_equilibrium()),
+            );
+            map.insert("verdict_words".into(), Value::from(p.verdict.words()));
             serde_json::to_string_pretty(&map).map_err(|e| CliError::input(e.to_string()))? + "\n"
         }
         Format::Csv => {
@@ -188,6 +193,11 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
             for (k, v) in verdicts {
                 s.push_str(&format!("{k},{v},\n"));
             }
+            s.push_str(&format!(
+                "equilibrium,{},\nverdict_words,{},\n",
+                p.verdict.is_equilibrium(),
+                p.verdict.words()
+            ));
             for (k, v, u) in &values {
                 s.push_str(&format!(
                     "{k},{},{u}\n",
@@ -204,6 +214,16 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                 .iter()
                 .map(|(k, v)| vec![k.to_string(), v.to_string(), String::new()])
                 .collect();
+            rows.push(vec![
+                "equilibrium".into(),
+                if p.verdict.is_equilibrium() {
+                    "yes"
+                } else {
+                    "no"
+                }
+                .into(),
+                String::new(),
+            ]);
             rows.extend(values.iter().map(|(k, v, u)| {
                 vec![
                     k.clone(),
@@ -224,7 +244,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
 fn summary(p: &Prediction, r_omega: f64) -> String {
     format!(
         "{}: c = {} m/s ({:.1} RΩ), H = {} m, mean impact speed {} m/s\n",
-        p.verdict.name(),
+        p.verdict.words(),
         output::num(p.velocity_dispersion),
         p.velocity_dispersion / r_omega,
         output::num(p.thickness),

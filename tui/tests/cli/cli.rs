@@ -336,6 +336,76 @@ fn tables_flag_the_sliding_gap_as_the_papers_artifact_issue_22() {
     assert!(!out.contains("sliding_gap"), "{out}");
 }
 
+/// Issue 24: the ring card (built by the core for the page and the terminal) prints what
+/// `rime ring` computes: every printed number reads back as the CLI's value at its printed digits.
+#[test]
+fn issue_24_the_ring_card_and_rime_ring_agree_to_the_printed_digits() {
+    use rime_core::explorer::format::agrees_to_printed;
+    use rime_core::explorer::ring::ring_card;
+    use rime_core::ring::{Orbit, RingInput};
+    use rime_core::units::parse_quantity;
+    for (radius, friction) in [("0.02", true), ("0.02", false), ("1", true)] {
+        let mut args = vec![
+            "ring",
+            "--preset",
+            "ice",
+            "--tau",
+            "0.5",
+            "--omega",
+            "1.3143527e-4",
+            "--radius",
+            radius,
+        ];
+        if !friction {
+            args.extend(["--set", "friction=off"]);
+        }
+        let cli = json(&args);
+        let mut scene = rime_core::Preset::Ice.scene();
+        let r: f64 = radius.parse().unwrap();
+        scene.grains.radius_1 = r;
+        scene.grains.radius_2 = r;
+        if !friction {
+            scene.friction = None;
+        }
+        let input = RingInput {
+            tau: 0.5,
+            orbit: Orbit::Omega(1.3143527e-4),
+            damping_set_for_radius: (r != 0.02).then_some(0.02),
+        };
+        let card = ring_card(&scene, &input, (1e-7, 1.0)).unwrap();
+        assert_eq!(card.verdict, cli["verdict_words"], "{args:?}");
+        assert_eq!(card.equilibrium, cli["equilibrium"], "{args:?}");
+        // A printed "34.16 mm" is compared as 34.16 against the CLI's value in mm: converting the
+        // printed text to metres first would add float noise to its digits.
+        let printed = |label: &str, unit: &str, computed: f64| {
+            let text = &card.rows.iter().find(|r| r.label == label).unwrap().text;
+            let shown = text.split(" (").next().unwrap();
+            let (number, scale) = match shown.split_once(' ') {
+                Some((n, u)) => (n, parse_quantity("unit", &format!("1 {u}"), unit).unwrap()),
+                None => (shown, 1.0),
+            };
+            (
+                text.clone(),
+                number.parse::<f64>().unwrap(),
+                computed / scale,
+            )
+        };
+        for (label, unit, key) in [
+            ("velocity dispersion c", "m/s", "velocity_dispersion"),
+            ("thickness H (rms z)", "m", "thickness"),
+            ("mean impact speed √π c", "m/s", "mean_impact_speed"),
+            ("ε_cr at the balance", "1", "eps_cr"),
+            ("ε̄ of the impacts", "1", "eps_effective"),
+        ] {
+            let (text, shown, computed) = printed(label, unit, cli[key].as_f64().unwrap());
+            assert!(
+                agrees_to_printed(computed, shown),
+                "{args:?} {key}: card {text} vs rime ring {computed}"
+            );
+        }
+    }
+}
+
 /// Issue 24: the A-ring patch of 2 cm `ice` balances (at the monolayer floor with the scene's
 /// friction, above it for smooth grains); the metre-size patch heats unless A is scaled with R.
 #[test]
@@ -356,9 +426,12 @@ fn issue_24_ring_verdicts_and_the_a_over_r_note() {
     };
     let small = with(&["--radius", "0.02"]);
     assert_eq!(small["verdict"], "monolayer_floor");
+    // The issue's "done when": the 2 cm patch prints an equilibrium (the floor is one).
+    assert_eq!(small["equilibrium"], true);
+    assert_eq!(small["verdict_words"], "equilibrium at the monolayer floor");
     assert_eq!(small["smooth"]["verdict"], "equilibrium");
     assert!(small["damping_note"].is_null());
-    // The floor is 2RΩ; thickness = c_z/Ω with c_z/c = √(1 − 1.5/(ω̂² + 5.5)), ω̂ = 8τ/π·Y(φ).
+    // The floor is 2RΩ; thickness = c_z/Ω with c_z/c = √(1 − 1.5/(ν̂² + 5.5)), ν̂ = b·8τ/π·Y(φ).
     let r_omega = 0.02 * 1.3143527e-4;
     assert!(
         rel(
@@ -382,6 +455,7 @@ fn issue_24_ring_verdicts_and_the_a_over_r_note() {
     );
     let big = with(&["--radius", "1"]);
     assert_eq!(big["verdict"], "heats");
+    assert_eq!(big["equilibrium"], false);
     assert_eq!(big["scaled_damping_time"], 5e-3);
     assert!(
         big["damping_note"]

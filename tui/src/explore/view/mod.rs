@@ -11,6 +11,7 @@ pub mod lines;
 pub mod map;
 pub mod panel;
 pub mod plot;
+pub mod ring;
 pub mod stick;
 pub mod tidal;
 

@@ -1,0 +1,370 @@
+//! The ring card (issue 24): what the scene's law does to a ring, built once for every surface.
+//!
+//! Given the scene, τ and Ω (or a planet and a distance), [`ring_card`] runs
+//! [`crate::ring::equilibrium`] and returns what a card draws: the ε_cr line for the ε_N chart (a
+//! figure series, so every surface draws it alike), where the scene's ε_N(g) curve meets it, the
+//! ring's mean impact speed as a chart marker, c and H in words and the plain verdict. The physics
+//! and its limits are in docs/physics.md#ring.
+
+use crate::accuracy::Accuracy;
+use crate::contact::Contact;
+use crate::error::{Error, Result};
+use crate::explorer::format::{qty, sig};
+use crate::explorer::palette;
+use crate::figure::{Figure, Marker, Series, Stroke};
+use crate::math::{exp, ln};
+use crate::ring::{
+    FLOOR_IN_R_OMEGA, RingInput, RingRecord, SLOW_REGIME_LIMIT, Verdict, equilibrium,
+};
+use crate::scene::Scene;
+use alloc::format;
+use alloc::string::{String, ToString};
+use alloc::vec;
+use alloc::vec::Vec;
+
+/// Log-spaced samples of ε_N(g) searched for the meeting with the ε_cr line.
+const MEETING_SAMPLES: usize = 200;
+
+/// One printed row of the card.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RingRow {
+    /// What the row is (`velocity dispersion c`, …).
+    pub label: String,
+    /// The printed value (4 significant digits, as [`qty`] prints).
+    pub text: String,
+}
+
+/// Everything a ring card shows.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RingCard {
+    /// The prediction behind the card (`rime ring`'s record).
+    pub record: RingRecord,
+    /// The ε_cr line across the chart's speed range, dashed (the prediction's ε_cr, with the
+    /// Enskog collision rate at the balance).
+    pub eps_cr_line: Series,
+    /// Where the scene's ε_N(g) curve meets the line `(g, ε_cr)`: the lowest crossing in the
+    /// chart's range, `None` when the curve stays on one side there.
+    pub meeting: Option<(f64, f64)>,
+    /// The ring's mean impact speed √π c, a vertical marker on the chart.
+    pub impact_marker: Marker,
+    /// c, H, the impact speed, ε_cr, ε̄, the equilibration time (and the smooth-grain
+    /// alternative when the scene has friction), printed.
+    pub rows: Vec<RingRow>,
+    /// The verdict word(s): [`Verdict::words`].
+    pub verdict: &'static str,
+    /// Whether the ring settles ([`Verdict::is_equilibrium`]).
+    pub equilibrium: bool,
+    /// The verdict in a plain sentence.
+    pub sentence: String,
+}
+
+impl RingCard {
+    /// Adds the card to the ε_N chart's figure, the same on every surface: the dashed ε_cr line,
+    /// the meeting point (a one-point series) and the mean-impact-speed marker.
+    pub fn overlay(&self, fig: &mut Figure) {
+        fig.series.push(self.eps_cr_line.clone());
+        if let Some((g, e)) = self.meeting {
+            fig.series.push(Series {
+                name: format!("ε_N meets the ring's ε_cr at g = {}", qty(g, "m/s")),
+                short: format!("meets ε_cr {}", qty(g, "m/s")),
+                points: vec![(g, e)],
+                color: palette::SERIES_RING,
+                stroke: Stroke::Points,
+            });
+        }
+        fig.markers.push(self.impact_marker.clone());
+    }
+}
+
+fn row(label: &str, text: String) -> RingRow {
+    RingRow {
+        label: label.to_string(),
+        text,
+    }
+}
+
+/// The card for `scene` at `input`, drawn over the ε_N chart's speed range `chart` \[m/s\]
+/// (`0 < from < to`, finite). Errors name the field (`tau`, `omega`, …, `chart`).
+pub fn ring_card(scene: &Scene, input: &RingInput, chart: (f64, f64)) -> Result<RingCard> {
+    let (from, to) = chart;
+    if !(from.is_finite() && to.is_finite() && from > 0.0 && to > from) {
+        return Err(Error::InvalidValue {
+            field: "chart",
+            expected: "a speed range 0 < from < to (finite, m/s)",
+        });
+    }
+    let record = equilibrium(scene, input)?;
+    let p = *record.prediction();
+    let eps_cr = p.eps_cr;
+    let eps_cr_line = Series {
+        name: format!(
+            "ε_cr of the ring at τ = {} (docs/physics.md#ring)",
+            sig(record.tau, 4)
+        ),
+        short: "ring ε_cr".to_string(),
+        points: vec![(from, eps_cr), (to, eps_cr)],
+        color: palette::SERIES_RING,
+        stroke: Stroke::Dashed,
+    };
+    let contact = Contact::new(scene)?;
+    let meeting = meeting(&contact, eps_cr, from, to)?;
+    let v = p.mean_impact_speed;
+    let impact_marker = Marker {
+        x: v,
+        label: format!("ring: mean impact speed √π c = {}", qty(v, "m/s")),
+        short: format!("ring √πc {}", qty(v, "m/s")),
+        color: palette::SERIES_RING,
+    };
+    let r_omega = record.radius * record.omega;
+    let c = p.velocity_dispersion;
+    let mut rows = vec![
+        row(
+            "velocity dispersion c",
+            format!("{} ({} RΩ)", qty(c, "m/s"), sig(c / r_omega, 4)),
+        ),
+        row(
+            "thickness H (rms z)",
+            format!(
+                "{} ({} grain radii)",
+                qty(p.thickness, "m"),
+                sig(p.thickness / record.radius, 4)
+            ),
+        ),
+        row("mean impact speed √π c", qty(v, "m/s")),
+        row("ε_cr at the balance", sig(eps_cr, 4)),
+        row("ε̄ of the impacts", sig(p.eps_effective, 4)),
+        row(
+            "equilibration",
+            if p.equilibration_orbits > 0.0 {
+                format!("{} orbits from the floor", sig(p.equilibration_orbits, 4))
+            } else {
+                "none: the ring starts and stays at the floor".to_string()
+            },
+        ),
+    ];
+    if record.friction {
+        let s = record.smooth;
+        rows.push(row(
+            "smooth grains (no friction)",
+            format!(
+                "{}: c = {}, H = {}",
+                s.verdict.words(),
+                qty(s.velocity_dispersion, "m/s"),
+                qty(s.thickness, "m")
+            ),
+        ));
+    }
+    if let Some(a) = record.scaled_damping_time {
+        rows.push(row(
+            "A for this radius",
+            format!(
+                "A′ = {} keeps ε_N(g) of the grains A was set for: a different material",
+                qty(a, "s")
+            ),
+        ));
+    }
+    let sentence = sentence(&record, r_omega);
+    Ok(RingCard {
+        record,
+        eps_cr_line,
+        meeting,
+        impact_marker,
+        rows,
+        verdict: p.verdict.words(),
+        equilibrium: p.verdict.is_equilibrium(),
+        sentence,
+    })
+}
+
+fn sentence(record: &RingRecord, r_omega: f64) -> String {
+    let p = record.prediction();
+    let c = qty(p.velocity_dispersion, "m/s");
+    let grains = if record.friction {
+        "with the scene's friction"
+    } else {
+        "smooth grains"
+    };
+    match p.verdict {
+        Verdict::Equilibrium => format!(
+            "Equilibrium ({grains}): the ring settles at c = {c}, where the mean ε of its impacts \
+             equals ε_cr = {}, about {} orbits after starting from the floor.",
+            sig(p.eps_cr, 4),
+            sig(p.equilibration_orbits, 3)
+        ),
+        Verdict::MonolayerFloor => format!(
+            "Equilibrium at the monolayer floor ({grains}): even the slowest impacts lose more \
+             than the shear's local gain, so the ring flattens to c ≈ {}RΩ = {c}, held there by \
+             the finite-size gain.",
+            sig(FLOOR_IN_R_OMEGA, 2)
+        ),
+        Verdict::Aggregates => format!(
+            "Aggregates ({grains}): {} % of the impacts stick at c = {c}; the ring clumps.",
+            sig(100.0 * p.sticking_fraction, 3)
+        ),
+        Verdict::Heats => format!(
+            "Heats ({grains}): no balance in the slow-collision regime (mean impact speed {} \
+             against the {} limit, c = {} RΩ); the ring disperses.",
+            qty(p.mean_impact_speed, "m/s"),
+            qty(SLOW_REGIME_LIMIT, "m/s"),
+            sig(p.velocity_dispersion / r_omega, 3)
+        ),
+    }
+}
+
+/// The lowest g in `[from, to]` where ε_N(g) crosses `eps_cr` (log-spaced scan, then bisection).
+fn meeting(contact: &Contact, eps_cr: f64, from: f64, to: f64) -> Result<Option<(f64, f64)>> {
+    let f = |g: f64| -> Result<f64> { Ok(contact.eps_n(g, Accuracy::Fast)? - eps_cr) };
+    let (a, b) = (ln(from), ln(to));
+    let step = (b - a) / MEETING_SAMPLES as f64;
+    let mut prev = (a, f(from)?);
+    for k in 1..=MEETING_SAMPLES {
+        let x = a + k as f64 * step;
+        let y = f(exp(x))?;
+        if prev.1 == 0.0 {
+            return Ok(Some((exp(prev.0), eps_cr)));
+        }
+        if (prev.1 < 0.0) != (y < 0.0) {
+            let (mut lo, mut hi, low_sign) = (prev.0, x, prev.1 < 0.0);
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                if (f(exp(mid))? < 0.0) == low_sign {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            return Ok(Some((exp(0.5 * (lo + hi)), eps_cr)));
+        }
+        prev = (x, y);
+    }
+    Ok(None)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ring::Orbit;
+    use crate::scene::Preset;
+
+    fn ice(radius: f64, friction: bool) -> Scene {
+        let mut scene = Preset::Ice.scene();
+        scene.grains.radius_1 = radius;
+        scene.grains.radius_2 = radius;
+        if !friction {
+            scene.friction = None;
+        }
+        scene
+    }
+
+    fn a_ring() -> RingInput {
+        RingInput {
+            tau: 0.5,
+            orbit: Orbit::Omega(1.3143527e-4),
+            damping_set_for_radius: None,
+        }
+    }
+
+    #[test]
+    fn the_line_and_the_meeting_point_lie_on_the_curve_and_at_eps_cr() {
+        let scene = ice(0.02, false);
+        let card = ring_card(&scene, &a_ring(), (1e-7, 1.0)).unwrap();
+        let p = card.record.smooth;
+        assert_eq!(
+            card.eps_cr_line.points,
+            vec![(1e-7, p.eps_cr), (1.0, p.eps_cr)]
+        );
+        assert_eq!(card.eps_cr_line.stroke, Stroke::Dashed);
+        // The meeting point is on the scene's curve (its own ε_N there equals ε_cr).
+        let (g, e) = card.meeting.unwrap();
+        let contact = Contact::new(&scene).unwrap();
+        assert!((contact.eps_n(g, Accuracy::Fast).unwrap() - e).abs() < 1e-9);
+        // ε_N falls with g and the balance averages it over Rayleigh impacts, so the single-impact
+        // speed with ε_N = ε_cr lies within the spread of the ring's impact speeds.
+        let v = p.mean_impact_speed;
+        assert!(g > 0.2 * v && g < 3.0 * v, "{g} vs {v}");
+        assert_eq!(card.impact_marker.x, v);
+        // The overlay adds the line, the meeting point and the marker to a chart's figure.
+        let mut fig = Figure::stick_map("f".into(), "t".into(), "c".into(), vec![], vec![], 1.0);
+        card.overlay(&mut fig);
+        assert_eq!(fig.series.len(), 2);
+        assert_eq!(fig.series[1].points, vec![(g, e)]);
+        assert_eq!(fig.series[1].stroke, Stroke::Points);
+        assert_eq!(fig.markers, vec![card.impact_marker.clone()]);
+        assert_eq!(card.verdict, "equilibrium");
+        assert!(card.equilibrium);
+        assert!(card.sentence.starts_with("Equilibrium (smooth grains)"));
+    }
+
+    #[test]
+    fn issue_24_the_card_says_floor_heats_and_different_material() {
+        let floor = ring_card(&ice(0.02, true), &a_ring(), (1e-7, 1.0)).unwrap();
+        assert_eq!(floor.verdict, "equilibrium at the monolayer floor");
+        assert!(floor.equilibrium);
+        assert!(
+            floor
+                .rows
+                .iter()
+                .any(|r| r.label.starts_with("smooth grains"))
+        );
+        let mut input = a_ring();
+        input.damping_set_for_radius = Some(0.02);
+        let hot = ring_card(&ice(1.0, true), &input, (1e-7, 1.0)).unwrap();
+        assert_eq!(hot.verdict, "heats");
+        assert!(!hot.equilibrium);
+        assert!(hot.sentence.starts_with("Heats"));
+        assert!(
+            hot.rows
+                .iter()
+                .any(|r| r.text.contains("a different material"))
+        );
+    }
+
+    #[test]
+    fn the_printed_rows_read_back_as_the_record() {
+        use crate::explorer::format::agrees_to_printed;
+        let card = ring_card(&ice(0.02, false), &a_ring(), (1e-7, 1.0)).unwrap();
+        let p = card.record.smooth;
+        // "34.16 mm" is compared as 34.16 against the value in mm (no float noise in its digits).
+        let check = |label: &str, unit: &str, computed: f64| {
+            let text = &card.rows.iter().find(|r| r.label == label).unwrap().text;
+            let shown = text.split(" (").next().unwrap();
+            let (number, scale) = match shown.split_once(' ') {
+                Some((n, u)) => (
+                    n,
+                    crate::units::parse_quantity("unit", &format!("1 {u}"), unit).unwrap(),
+                ),
+                None => (shown, 1.0),
+            };
+            let number: f64 = number.parse().unwrap();
+            assert!(
+                agrees_to_printed(computed / scale, number),
+                "{text} vs {computed}"
+            );
+        };
+        check("velocity dispersion c", "m/s", p.velocity_dispersion);
+        check("thickness H (rms z)", "m", p.thickness);
+        check("mean impact speed √π c", "m/s", p.mean_impact_speed);
+        check("ε_cr at the balance", "1", p.eps_cr);
+    }
+
+    #[test]
+    fn a_bad_chart_range_names_the_field() {
+        for chart in [
+            (0.0, 1.0),
+            (1.0, 0.5),
+            (f64::NAN, 1.0),
+            (1e-6, f64::INFINITY),
+        ] {
+            assert!(matches!(
+                ring_card(&ice(0.02, true), &a_ring(), chart),
+                Err(Error::InvalidValue { field: "chart", .. })
+            ));
+        }
+        let mut bad = a_ring();
+        bad.tau = -1.0;
+        assert!(matches!(
+            ring_card(&ice(0.02, true), &bad, (1e-7, 1.0)),
+            Err(Error::OutOfRange { field: "tau", .. })
+        ));
+    }
+}

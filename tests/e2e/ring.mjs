@@ -1,0 +1,164 @@
+// End-to-end check of the page's ring card (issue 24) in headless Chromium: the card prints what
+// `rime ring` computes (every printed number reads back as the CLI's value at its printed digits, by
+// the core's agreesToPrinted), says the verdict in the CLI's words, names a bad field, and draws the
+// ε_cr line, the meeting point and the impact-speed marker on the ε_N chart when asked.
+// Usage: node tests/e2e/ring.mjs http://127.0.0.1:PORT/  (RIME_BIN: the rime binary)
+import { chromium } from 'playwright-core';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const url = process.argv[2];
+if (!url) {
+  console.error('usage: node ring.mjs URL');
+  process.exit(2);
+}
+const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+const rime = process.env.RIME_BIN || path.join(root, 'target', 'release', 'rime');
+// A hang guard, never a speed check (a frame takes well under 1 s on an idle machine).
+const GUARD_MS = 60000;
+const OMEGA = 1.3143527e-4;
+
+let failures = 0;
+async function check(name, fn) {
+  try {
+    const detail = await fn();
+    console.log(`PASS ${name}${detail ? ` — ${detail}` : ''}`);
+  } catch (e) {
+    failures++;
+    console.log(`FAIL ${name} — ${String(e && e.stack ? e.stack.split('\n').slice(0, 3).join(' | ') : e)}`);
+  }
+}
+function assert(cond, msg) {
+  if (!cond) throw new Error(msg);
+}
+
+const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'rime-ring-e2e-'));
+const context = await chromium.launchPersistentContext(userDataDir, {
+  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+  headless: true,
+  args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-dev-shm-usage'],
+  viewport: { width: 1280, height: 1000 },
+});
+const problems = [];
+const page = await context.newPage();
+page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
+page.on('pageerror', (e) => problems.push(e.message));
+const updates = () => page.evaluate(() => window.rimeState.updates);
+const waitUpdate = (before) => page.waitForFunction((b) => window.rimeState.updates > b, before, { timeout: GUARD_MS });
+
+/** The page's ring card against `rime ring` for the drawn scene (printed digits, by the core). */
+async function agreeWithCli(args) {
+  const s = await page.evaluate(() => window.rimeState);
+  assert(s.ring, 'no ring card on the page');
+  const sceneFile = path.join(os.tmpdir(), `rime-ring-e2e-${process.pid}.json`);
+  fs.writeFileSync(sceneFile, s.sceneJson);
+  const cli = JSON.parse(execFileSync(rime, ['ring', '--scene', sceneFile, ...args, '--format', 'json'], { encoding: 'utf8' }));
+  fs.rmSync(sceneFile);
+  assert(s.ring.verdict === cli.verdict_words, `verdict: page "${s.ring.verdict}", rime ring "${cli.verdict_words}"`);
+  assert(s.ring.equilibrium === cli.equilibrium, 'equilibrium flag differs');
+  const rows = [
+    ['velocity dispersion c', 'm/s', 'velocity_dispersion'],
+    ['thickness H (rms z)', 'm', 'thickness'],
+    ['mean impact speed √π c', 'm/s', 'mean_impact_speed'],
+    ['ε_cr at the balance', '1', 'eps_cr'],
+    ['ε̄ of the impacts', '1', 'eps_effective'],
+  ];
+  // The printed rows as the user reads them (the table's cells). A printed "34.16 mm" is compared
+  // as 34.16 against the CLI's value in mm (the core's agreesToPrinted): converting the printed
+  // text to metres first would add float noise to its digits.
+  const lines = [];
+  for (const [label, unit, key] of rows) {
+    const r = await page.evaluate(async ([lab, u, computed]) => {
+      const core = await import(new URL('core.js', location.href).href);
+      const tr = [...document.querySelectorAll('#ring tr')].find((x) => x.querySelector('th') && x.querySelector('th').textContent === lab);
+      if (!tr) return { missing: true };
+      const text = tr.querySelector('td').textContent;
+      const [number, shownUnit] = text.split(' (')[0].split(' ');
+      const scale = u === '1' ? 1 : core.parseQuantity('printed', `1 ${shownUnit}`, u);
+      return { text, ok: core.agrees(computed / scale, Number(number)) };
+    }, [label, unit, cli[key]]);
+    assert(!r.missing, `row "${label}" missing`);
+    assert(r.ok, `${label}: page "${r.text}" vs rime ring ${cli[key]}`);
+    lines.push(`${key} ${r.text}`);
+  }
+  return `${cli.verdict_words}; ${lines.join(', ')}`;
+}
+
+try {
+  await page.goto(url, { waitUntil: 'load' });
+  await page.waitForFunction(() => window.rimeState && window.rimeState.ready === true && window.rimeState.ring !== undefined, null, { timeout: GUARD_MS });
+
+  await check('issue 24: the opening scene (ice-sticky) at the A ring: the card agrees with `rime ring`', async () =>
+    agreeWithCli(['--tau', '0.5', '--omega', String(OMEGA)]));
+
+  await check('issue 24: ice with 2 cm grains prints an equilibrium (at the floor), as `rime ring` does', async () => {
+    const u = await updates();
+    await page.selectOption('#preset', 'ice');
+    await waitUpdate(u);
+    const s = await page.evaluate(() => window.rimeState);
+    const scene = JSON.parse(s.sceneJson);
+    assert(scene.grains.radius_1 === 0.02 && scene.grains.radius_2 === 0.02, `ice preset radii ${scene.grains.radius_1}, ${scene.grains.radius_2}`);
+    assert(s.ring.equilibrium === true, `verdict ${s.ring.verdict}`);
+    const text = await page.locator('#ring').innerText();
+    assert(/equilibrium at the monolayer floor/.test(text), `card: ${text}`);
+    return agreeWithCli(['--tau', '0.5', '--omega', String(OMEGA)]);
+  });
+
+  await check('issue 24: a typed τ applies; a bad τ is named and the card keeps the last good one', async () => {
+    const u = await updates();
+    const tau = page.locator('#r-tau');
+    await tau.fill('0.1');
+    await tau.press('Enter');
+    await waitUpdate(u);
+    const r1 = await agreeWithCli(['--tau', '0.1', '--omega', String(OMEGA)]);
+    await tau.fill('-1');
+    await tau.press('Enter');
+    await page.waitForFunction(() => /ring\.tau/.test(document.getElementById('r-tau-err').textContent), null, { timeout: GUARD_MS });
+    const kept = await page.evaluate(() => window.rimeState.ring);
+    assert(kept && kept.record.tau === 0.1, `the card did not keep τ = 0.1: ${JSON.stringify(kept && kept.record.tau)}`);
+    await tau.fill('0.5');
+    await tau.press('Enter');
+    await page.waitForFunction(() => window.rimeState.ring && window.rimeState.ring.record.tau === 0.5, null, { timeout: GUARD_MS });
+    return r1;
+  });
+
+  await check('issue 24: on the ε_N chart, the ε_cr line (dashed), the meeting point and the mean impact speed', async () => {
+    const u = await updates();
+    await page.locator('#r-onChart').check();
+    await waitUpdate(u);
+    const s = await page.evaluate(() => window.rimeState);
+    const line = s.figure.series.find((n) => /^ε_cr of the ring/.test(n));
+    assert(line, `no ε_cr series in ${JSON.stringify(s.figure.series)}`);
+    assert(s.figure.series.some((n) => /meets the ring's ε_cr/.test(n)) === Boolean(s.ring.meeting), 'meeting point and series disagree');
+    const marker = s.figure.markers.find((m) => /^ring: mean impact speed/.test(m));
+    const v = s.ring.record.rough.mean_impact_speed;
+    const inRange = v > s.figure.x.min && v < s.figure.x.max;
+    assert(Boolean(marker) === inRange, `impact-speed marker ${marker} (speed ${v}, chart ${s.figure.x.min}–${s.figure.x.max})`);
+    return `${line}; ${marker || 'marker off the chart'}`;
+  });
+
+  await check("issue 24: Ω from the tidal card's planet and distance, as `rime ring --planet-mass --distance`", async () => {
+    const u = await updates();
+    await page.locator('#r-planet').check();
+    await waitUpdate(u);
+    const s = await page.evaluate(() => window.rimeState);
+    const t = s.tidal.input;
+    const r = await agreeWithCli(['--tau', '0.5', '--planet-mass', String(t.planet_mass), '--distance', String(t.distance)]);
+    const omega = Math.sqrt(6.672e-11 * t.planet_mass / t.distance ** 3);
+    assert(Math.abs(s.ring.record.omega - omega) <= 1e-15 * omega, `Ω ${s.ring.record.omega} vs √(GM/d³) ${omega}`);
+    await page.locator('#ring').scrollIntoViewIfNeeded();
+    await page.locator('.ring-card').screenshot({ path: path.join(root, 'target', 'www-ring-card.png') });
+    return `Ω = ${s.ring.record.omega} 1/s; ${r}`;
+  });
+
+  await check('no console errors', async () => {
+    assert(problems.length === 0, problems.join(' | '));
+  });
+} finally {
+  await context.close();
+  fs.rmSync(userDataDir, { recursive: true, force: true });
+}
+process.exit(failures ? 1 : 0);

@@ -1,0 +1,120 @@
+// The ring card (issue 24): what the scene's law does to a ring at optical depth τ and orbital
+// frequency Ω (or the tidal card's planet and distance). Everything is the core's ring card
+// (rime_core::explorer::ring, through the flat binding ringCard): the verdict, the sentence, the
+// printed rows (the numbers `rime ring` prints) and, when asked, the ε_cr line, the point where the
+// scene's ε_N curve meets it and the ring's mean impact speed, added to the ε_N chart's figure as
+// the core's series and marker (so the chart, its downloads and the terminal draw them alike).
+import * as wasm from './pkg/rime_wasm.js';
+import { calls, parseQuantity } from './core.js';
+import { $, el, errText } from './dom.js';
+import { app } from './state.js';
+
+/** The card's inputs and its last result (not in the link). */
+export const ring = { tau: 0.5, omega: 1.3143527e-4, planet: false, onChart: false, card: null, error: null };
+
+const memo = { key: '', card: null, error: null };
+let hooks = { schedule: () => {} };
+
+/** The request for the core's card with the inputs `r` over the chart's speed range. */
+function request(r, chart) {
+  const input = { tau: r.tau, chart };
+  const t = app.res && app.res.tidal ? app.res.tidal.input : null;
+  if (r.planet && t) {
+    input.planet_mass = t.planet_mass;
+    input.distance = t.distance;
+  } else {
+    input.omega = r.omega;
+  }
+  return JSON.stringify(input);
+}
+
+/** The core's card, or the core's message naming the field. */
+function card(scene, text) {
+  try {
+    calls.compute++;
+    return { card: JSON.parse(wasm.ringCard(scene, text)), error: null };
+  } catch (e) {
+    return { card: null, error: errText(e) };
+  }
+}
+
+/** The core's card for the drawn scene over the chart's speed range (memoised). */
+function compute(scene, chart) {
+  const text = request(ring, chart);
+  const key = `${scene}|${text}`;
+  if (key !== memo.key) Object.assign(memo, { key }, card(scene, text));
+  ring.card = memo.card;
+  ring.error = memo.error;
+}
+
+/** Before the chart is drawn: computes the card and, when asked, adds it to the ε_N figure. */
+export function ringOverlay(res, scene) {
+  const fig = res.figures[0];
+  compute(scene, [fig.x.min, fig.x.max]);
+  const c = ring.card;
+  if (!c || !ring.onChart) return;
+  const line = c.eps_cr_line;
+  const series = (name, short, points, stroke) => ({
+    name, short, color: line.color, stroke, dashed: stroke !== 'solid' && stroke !== 'points',
+    x: Float64Array.from(points, (p) => p[0]), y: Float64Array.from(points, (p) => p[1]),
+  });
+  fig.series.push(series(line.name, line.short, line.points, line.stroke));
+  if (c.meeting) fig.series.push(series('ε_N meets the ring\'s ε_cr', 'meets ε_cr', [c.meeting], 'points'));
+  fig.markers.push(c.impact_marker);
+}
+
+export function buildRing(h) {
+  hooks = h;
+  const box = $('ring-inputs');
+  const field = (key, label, unit, parse) => {
+    const id = `r-${key}`;
+    const input = el('input', { type: 'text', id, inputmode: 'decimal', spellcheck: 'false', autocomplete: 'off', value: String(ring[key]), 'aria-describedby': `${id}-err` });
+    const err = el('span', { class: 'err', id: `${id}-err`, role: 'status' });
+    const commit = () => {
+      try {
+        const value = parse(input.value.trim());
+        // The core checks the value (naming the field); a refused value leaves the card as drawn.
+        if (app.drawn && app.res) {
+          const fig = app.res.figures[0];
+          const trial = card(app.drawn.scene, request({ ...ring, [key]: value }, [fig.x.min, fig.x.max]));
+          if (trial.error && trial.error.startsWith(`ring.${key}`)) throw new Error(trial.error);
+        }
+        ring[key] = value;
+        err.textContent = '';
+        input.removeAttribute('aria-invalid');
+        hooks.schedule();
+      } catch (e) {
+        err.textContent = errText(e);
+        input.setAttribute('aria-invalid', 'true');
+      }
+    };
+    input.addEventListener('change', commit);
+    input.addEventListener('keydown', (e) => { if (e.key === 'Enter') commit(); });
+    box.append(el('div', { class: 'tparam' }, el('label', { for: id }, label), el('span', { class: 'typed' }, input, el('span', { class: 'unit' }, unit)), err));
+  };
+  field('tau', 'optical depth τ', '', (t) => parseQuantity('ring.tau', t, '1'));
+  field('omega', 'orbital frequency Ω', '1/s', (t) => parseQuantity('ring.omega', t, '1/s'));
+  const check = (key, label) => {
+    const input = el('input', { type: 'checkbox', id: `r-${key}` });
+    input.checked = ring[key];
+    input.addEventListener('change', () => { ring[key] = input.checked; hooks.schedule(); });
+    box.append(el('label', { class: 'check', for: `r-${key}` }, input, ` ${label}`));
+  };
+  check('planet', 'Ω from the tidal card\'s planet and distance');
+  check('onChart', 'draw ε_cr and the impact speed on the ε_N chart');
+}
+
+/** After a frame: the card's verdict, sentence and rows (or why it could not be computed). */
+export function showRing() {
+  const c = ring.card;
+  const note = $('ring-note');
+  note.hidden = !ring.error;
+  note.textContent = ring.error ? `⚠ not computed: ${ring.error}` : '';
+  $('ring').hidden = !c;
+  window.rimeState.ring = c ? { verdict: c.verdict, equilibrium: c.equilibrium, rows: c.rows, meeting: c.meeting, record: c.record } : null;
+  if (!c) return;
+  $('ring').replaceChildren(
+    el('tr', { class: c.equilibrium ? 'ok' : 'bad' }, el('th', { scope: 'row' }, 'verdict'), el('td', {}, c.verdict)),
+    el('tr', {}, el('td', { colspan: 2 }, c.sentence)),
+    ...c.rows.map((r) => el('tr', {}, el('th', { scope: 'row' }, r.label), el('td', { class: 'num' }, r.text))));
+}
