@@ -9,7 +9,7 @@ import { CollisionView } from './collision.js';
 import { $, errText, linkify, median } from './dom.js';
 import { CURVE_POINTS, MAP_N, START_PRESET, app, historySize } from './state.js';
 import { buildControls, edit, reflectScene, syncControls, wireToolbar, wireView } from './controls.js';
-import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, wireChart } from './chart.js';
+import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, restorePin, wireChart } from './chart.js';
 import { drawLegend, drawMapCanvas, wireMap } from './map.js';
 import { buildTidal, showTidal } from './tidal.js';
 import { buildCompare } from './compare.js';
@@ -30,8 +30,20 @@ function schedule() {
   requestAnimationFrame(() => { pending = false; request(); });
 }
 
+/** Asks the worker for the pinned curve of the link (its scene at its level and speeds), before
+ *  the frame of the page: the answer becomes the pin, then the page's frame is asked for. */
+function requestPinned() {
+  const p = app.pinRequest;
+  const view = {
+    accuracy: p.accuracy, from: p.from, to: p.to, points: CURVE_POINTS, mapN: 2, family: false,
+    experiments: false, date: new Date().toISOString().slice(0, 19) + 'Z',
+  };
+  app.computer.request(p.scene, view, { pin: p, view: { accuracy: p.accuracy }, t0: performance.now(), calls: 0, format: 0 });
+}
+
 /** Asks the worker for the frame of the wanted scene and view (a newer request supersedes it). */
 function request() {
+  if (app.pinRequest) { requestPinned(); return; }
   const v = app.view;
   const view = {
     accuracy: v.accuracy, from: v.from, to: v.to, points: CURVE_POINTS, mapMax: v.mapMax, mapN: MAP_N,
@@ -80,6 +92,19 @@ function decode(msg, page) {
 /** The worker's answer to the newest request: draw what succeeded, report what failed. */
 function onFrame(msg, req) {
   const t1 = performance.now();
+  if (req && req.page.pin) {
+    // The link's pinned curve: kept as the pin, then the page's own frame.
+    app.pinRequest = null;
+    const j = msg.error ? null : JSON.parse(msg.json);
+    if (j && j.curve) restorePin(req.page.pin, msg.numbers.subarray(j.g.at, j.g.at + j.g.len), msg.numbers.subarray(j.curve.eps.at, j.curve.eps.at + j.curve.eps.len));
+    else {
+      const why = msg.error || (j.errors[0] && j.errors[0].message) || 'no curve';
+      console.error(`rime: link: pinned: ${why}`);
+      showNotice([`pinned: ${why}`]);
+    }
+    request();
+    return;
+  }
   if (msg.error || !req) {
     // The request itself was refused (it never is for a scene the page accepted): keep the drawn
     // frame and put the controls back to it.
@@ -267,6 +292,16 @@ async function main() {
     h.focus();
   });
   wireBanner();
+  // On a phone the intro follows the chart (in the document too, so that the Tab order and a
+  // screen reader follow what is seen): the chart is in the first screen.
+  const phone = window.matchMedia('(max-width: 480px)');
+  const placeIntro = () => {
+    const intro = document.querySelector('.intro');
+    if (phone.matches) document.querySelector('.chart-card').after(intro);
+    else document.querySelector('main').before(intro);
+  };
+  placeIntro();
+  phone.addEventListener('change', placeIntro);
   let resizeQueued = false;
   window.addEventListener('resize', () => {
     if (resizeQueued) return;
