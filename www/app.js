@@ -4,7 +4,7 @@
 // a note in its place, the banner names the cause and the console gets the error; controls and
 // the link always show the scene actually drawn. No physics, palette, formatting or ranges here.
 import { Explorer, calls, counted, qty, speed, start } from './core.js';
-import { Computer } from './compute.js';
+import { CollisionComputer, Computer } from './compute.js';
 import { CollisionView } from './collision.js';
 import { $, errText, linkify, median } from './dom.js';
 import { CURVE_POINTS, MAP_N, START_PRESET, app, historySize } from './state.js';
@@ -125,8 +125,7 @@ function onFrame(msg, req) {
   const tm = [performance.now()];
   draw();
   tm.push(performance.now());
-  // The collision card integrates one trajectory on this thread (up to ~12 ms at the precise
-  // levels): it follows in the next task, so the chart and the map reach the screen first.
+  // The collision card's trajectory is integrated in its worker, asked for after this frame is drawn.
   scheduleReplay();
   tm.push(performance.now());
   showWarnings(res);
@@ -165,7 +164,7 @@ function onFrame(msg, req) {
     mapNote: res.mapNote,
     experiments: bridges || fig.bands.length
       ? { bridges: bridges ? { name: bridges.name, g: Array.from(bridges.x), eps: Array.from(bridges.y) } : null, bands: fig.bands } : null,
-    figure: { y: fig.y, x: fig.x, series: fig.series.map((x) => x.name), markers: fig.markers.map((m) => m.label), caption: fig.caption },
+    figure: { y: fig.y, x: fig.x, series: fig.series.map((x) => x.name), styles: fig.series.map((x) => `${x.color}/${x.stroke}`), bands: fig.bands.map((b) => b.label), markers: fig.markers.map((m) => m.label), caption: fig.caption },
     overlays: res.overlays.map((o) => ({ key: o.key, label: o.label, band: o.band, score: o.score, g: Array.from(o.g), eps: Array.from(o.eps), speeds: o.speeds })),
     tidal: res.tidal,
     tidalIn: app.tidalIn,
@@ -220,7 +219,7 @@ function probe(g, accuracy) {
   return JSON.parse(app.probeEx.normal(g, accuracy));
 }
 
-/** One collision of the drawn scene at `app.collisionG` (main thread: one live integration). */
+/** One collision of the drawn scene at `app.collisionG` (integrated in the collision worker). */
 let replayed = '';
 let replayTimer = null;
 /** Replays the collision of the newest drawn frame once the current task has painted. */
@@ -239,19 +238,24 @@ function replayCollision(g) {
   const key = `${app.drawn.scene}|${app.drawn.view.accuracy}|${app.collisionG}`;
   if (g === undefined && key === replayed) return;
   replayed = key;
-  try {
-    probe(app.collisionG, 'fast'); // points probeEx at the drawn scene
-    const d = JSON.parse(app.probeEx.collision(app.collisionG, 300, app.drawn.view.accuracy));
-    app.collisionView.show(d, g !== undefined);
-    window.rimeState.collision = {
-      g: d.g, eps_n: d.eps_n, t_c: d.t_c, status: d.status, closure: d.ledger.closure,
-      n: d.t.length, dynamic: d.dynamic !== null, animating: app.collisionView.animating,
-      reduced: app.collisionView.reduced,
-    };
-  } catch (e) {
-    console.error(`rime: collision: ${errText(e)}`);
-    app.collisionView.fail(errText(e));
+  // Integrated in the collision worker (issue 22: it ran here, on the page's thread).
+  app.collider.request(app.drawn.scene, app.collisionG, 300, app.drawn.view.accuracy, { requested: g !== undefined });
+}
+
+/** The collision worker's answer to the newest request. */
+function onCollision(msg, req) {
+  if (msg.error) {
+    console.error(`rime: collision: ${msg.error}`);
+    app.collisionView.fail(msg.error);
+    return;
   }
+  const d = JSON.parse(msg.json);
+  app.collisionView.show(d, req.requested);
+  window.rimeState.collision = {
+    g: d.g, eps_n: d.eps_n, t_c: d.t_c, status: d.status, closure: d.ledger.closure,
+    n: d.t.length, dynamic: d.dynamic !== null, animating: app.collisionView.animating,
+    reduced: app.collisionView.reduced, ms: msg.ms,
+  };
 }
 
 async function main() {
@@ -315,6 +319,7 @@ async function main() {
     schedule();
   });
   app.computer = new Computer(module, onFrame, onBusy);
+  app.collider = new CollisionComputer(module, onCollision);
   app.wantScene = app.ex.toJson();
   showNotice(loadHash(validateTidal));
   reflectScene();
