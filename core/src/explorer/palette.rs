@@ -148,7 +148,7 @@ pub const EXPERIMENT: Rgb = VERMILLION;
 
 /// The hues of the comparisons drawn over the ε_N chart (measured laws and other models), in
 /// order; with three broken strokes they give each comparison its own style
-/// ([`crate::explorer::figures::overlay_style`]).
+/// (`explorer::figures::overlay_style`).
 pub const OVERLAYS: [Rgb; 5] = [VERMILLION, BLUE, BLUISH_GREEN, REDDISH_PURPLE, OCHRE];
 /// A curve pinned to compare with later edits.
 pub const PINNED: Rgb = GREY_DARK;
