@@ -560,12 +560,15 @@ try {
     const near = (a, b) => (a === null && b === null) || Math.abs(a - b) <= 1e-12 * Math.abs(b);
     assert(near(c.eps_n, cli.eps_n) && near(c.t_c, cli.t_c), `page ${c.eps_n}, ${c.t_c} vs rime collision ${cli.eps_n}, ${cli.t_c}`);
     assert(Math.abs(c.closure) < 1e-6 && c.n >= 300, `closure ${c.closure}, ${c.n} samples`);
-    const inked = await pf.evaluate(() => {
+    // The collision comes from its worker and is drawn as it arrives: wait for ink (a hang guard).
+    const loopInk = () => {
       const cv = document.getElementById('collision-loop');
       const d = cv.getContext('2d').getImageData(0, 0, cv.width, cv.height).data;
       let n = 0; for (let k = 3; k < d.length; k += 4) if (d[k] > 0) n++;
       return n;
-    });
+    };
+    await pf.waitForFunction(`(${loopInk.toString()})() > 500`, null, { timeout: GUARD_MS }).catch(() => {});
+    const inked = await pf.evaluate(loopInk);
     assert(inked > 500, `force loop canvas nearly empty (${inked} px)`);
     const ledger = await pf.locator('#collision-ledger').innerText();
     assert(/dissipated in the bulk/.test(ledger) && /closure/.test(ledger), `ledger: "${ledger}"`);
