@@ -298,7 +298,9 @@ export function drawChart(p, spec) {
       const x0 = X(b.x[0]), x1 = X(b.x[1]), y0 = Y(b.y[1]), y1 = Y(b.y[0]);
       p.rect(x0, y0, x1 - x0, y1 - y0, { fill: b.color, alpha: 0.16, stroke: b.color });
       // The box's name only (its temperature and score are in the legend).
-      if (x1 - x0 > 18) p.text(x0 + 3, y0 + 12, (b.short || '').split(' (')[0], { size: 10, color: b.color });
+      // Inside the plot: near its right edge the name ends at the edge instead of being cut.
+      const name = (b.short || '').split(' (')[0];
+      if (x1 - x0 > 18) p.text(Math.max(box.l + 2, Math.min(x0 + 3, box.r - textWidth(name, 10) - 3)), y0 + 12, name, { size: 10, color: b.color });
     }
     (spec.markers || []).forEach((m, i) => {
       if (!(m.x > spec.xMin && m.x < spec.xMax)) return;
