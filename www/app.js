@@ -4,12 +4,12 @@
 // a note in its place, the banner names the cause and the console gets the error; controls and
 // the link always show the scene actually drawn. No physics, palette, formatting or ranges here.
 import { Explorer, calls, counted, qty, speed, start } from './core.js';
-import { Computer } from './compute.js';
+import { CollisionComputer, Computer } from './compute.js';
 import { CollisionView } from './collision.js';
 import { $, errText, linkify, median } from './dom.js';
 import { START_PRESET, app, historySize } from './state.js';
 import { buildControls, edit, reflectScene, syncControls, wireToolbar, wireView } from './controls.js';
-import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, wireChart } from './chart.js';
+import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, restorePin, wireChart } from './chart.js';
 import { drawLegend, drawMapCanvas, wireMap } from './map.js';
 import { buildTidal, showTidal } from './tidal.js';
 import { buildRing, ringOverlay, showRing } from './ring.js';
@@ -31,8 +31,20 @@ function schedule() {
   requestAnimationFrame(() => { pending = false; request(); });
 }
 
+/** Asks the worker for the pinned curve of the link (its scene at its level and speeds), before
+ *  the frame of the page: the answer becomes the pin, then the page's frame is asked for. */
+function requestPinned() {
+  const p = app.pinRequest;
+  const view = {
+    accuracy: p.accuracy, from: p.from, to: p.to, points: CURVE_POINTS, mapN: 2, family: false,
+    experiments: false, date: new Date().toISOString().slice(0, 19) + 'Z',
+  };
+  app.computer.request(p.scene, view, { pin: p, view: { accuracy: p.accuracy }, t0: performance.now(), calls: 0, format: 0 });
+}
+
 /** Asks the worker for the frame of the wanted scene and view (a newer request supersedes it). */
 function request() {
+  if (app.pinRequest) { requestPinned(); return; }
   const v = app.view;
   const view = {
     // Points and map side are the core request's defaults (Request::POINTS, Request::MAP_N).
@@ -82,6 +94,19 @@ function decode(msg, page) {
 /** The worker's answer to the newest request: draw what succeeded, report what failed. */
 function onFrame(msg, req) {
   const t1 = performance.now();
+  if (req && req.page.pin) {
+    // The link's pinned curve: kept as the pin, then the page's own frame.
+    app.pinRequest = null;
+    const j = msg.error ? null : JSON.parse(msg.json);
+    if (j && j.curve) restorePin(req.page.pin, msg.numbers.subarray(j.g.at, j.g.at + j.g.len), msg.numbers.subarray(j.curve.eps.at, j.curve.eps.at + j.curve.eps.len));
+    else {
+      const why = msg.error || (j.errors[0] && j.errors[0].message) || 'no curve';
+      console.error(`rime: link: pinned: ${why}`);
+      showNotice([`pinned: ${why}`]);
+    }
+    request();
+    return;
+  }
   if (msg.error || !req) {
     // The request itself was refused (it never is for a scene the page accepted): keep the drawn
     // frame and put the controls back to it.
@@ -103,8 +128,7 @@ function onFrame(msg, req) {
   const tm = [performance.now()];
   draw();
   tm.push(performance.now());
-  // The collision card integrates one trajectory on this thread (up to ~12 ms at the precise
-  // levels): it follows in the next task, so the chart and the map reach the screen first.
+  // The collision card's trajectory is integrated in its worker, asked for after this frame is drawn.
   scheduleReplay();
   tm.push(performance.now());
   showWarnings(res);
@@ -144,7 +168,7 @@ function onFrame(msg, req) {
     mapNote: res.mapNote,
     experiments: bridges || fig.bands.length
       ? { bridges: bridges ? { name: bridges.name, g: Array.from(bridges.x), eps: Array.from(bridges.y) } : null, bands: fig.bands } : null,
-    figure: { y: fig.y, x: fig.x, series: fig.series.map((x) => x.name), markers: fig.markers.map((m) => m.label), caption: fig.caption },
+    figure: { y: fig.y, x: fig.x, series: fig.series.map((x) => x.name), styles: fig.series.map((x) => `${x.color}/${x.stroke}`), bands: fig.bands.map((b) => b.label), markers: fig.markers.map((m) => m.label), caption: fig.caption },
     overlays: res.overlays.map((o) => ({ key: o.key, label: o.label, band: o.band, score: o.score, g: Array.from(o.g), eps: Array.from(o.eps), speeds: o.speeds })),
     tidal: res.tidal,
     tidalIn: app.tidalIn,
@@ -199,7 +223,7 @@ function probe(g, accuracy) {
   return JSON.parse(app.probeEx.normal(g, accuracy));
 }
 
-/** One collision of the drawn scene at `app.collisionG` (main thread: one live integration). */
+/** One collision of the drawn scene at `app.collisionG` (integrated in the collision worker). */
 let replayed = '';
 let replayTimer = null;
 /** Replays the collision of the newest drawn frame once the current task has painted. */
@@ -218,19 +242,24 @@ function replayCollision(g) {
   const key = `${app.drawn.scene}|${app.drawn.view.accuracy}|${app.collisionG}`;
   if (g === undefined && key === replayed) return;
   replayed = key;
-  try {
-    probe(app.collisionG, 'fast'); // points probeEx at the drawn scene
-    const d = JSON.parse(app.probeEx.collision(app.collisionG, 300, app.drawn.view.accuracy));
-    app.collisionView.show(d, g !== undefined);
-    window.rimeState.collision = {
-      g: d.g, eps_n: d.eps_n, t_c: d.t_c, status: d.status, closure: d.ledger.closure,
-      n: d.t.length, dynamic: d.dynamic !== null, animating: app.collisionView.animating,
-      reduced: app.collisionView.reduced,
-    };
-  } catch (e) {
-    console.error(`rime: collision: ${errText(e)}`);
-    app.collisionView.fail(errText(e));
+  // Integrated in the collision worker (issue 22: it ran here, on the page's thread).
+  app.collider.request(app.drawn.scene, app.collisionG, 300, app.drawn.view.accuracy, { requested: g !== undefined });
+}
+
+/** The collision worker's answer to the newest request. */
+function onCollision(msg, req) {
+  if (msg.error) {
+    console.error(`rime: collision: ${msg.error}`);
+    app.collisionView.fail(msg.error);
+    return;
   }
+  const d = JSON.parse(msg.json);
+  app.collisionView.show(d, req.requested);
+  window.rimeState.collision = {
+    g: d.g, eps_n: d.eps_n, t_c: d.t_c, status: d.status, closure: d.ledger.closure,
+    n: d.t.length, dynamic: d.dynamic !== null, animating: app.collisionView.animating,
+    reduced: app.collisionView.reduced, ms: msg.ms,
+  };
 }
 
 async function main() {
@@ -272,6 +301,16 @@ async function main() {
     h.focus();
   });
   wireBanner();
+  // On a phone the intro follows the chart (in the document too, so that the Tab order and a
+  // screen reader follow what is seen): the chart is in the first screen.
+  const phone = window.matchMedia('(max-width: 480px)');
+  const placeIntro = () => {
+    const intro = document.querySelector('.intro');
+    if (phone.matches) document.querySelector('.chart-card').after(intro);
+    else document.querySelector('main').before(intro);
+  };
+  placeIntro();
+  phone.addEventListener('change', placeIntro);
   let resizeQueued = false;
   window.addEventListener('resize', () => {
     if (resizeQueued) return;
@@ -285,6 +324,7 @@ async function main() {
     schedule();
   });
   app.computer = new Computer(module, onFrame, onBusy);
+  app.collider = new CollisionComputer(module, onCollision);
   app.wantScene = app.ex.toJson();
   showNotice(loadHash(validateTidal));
   reflectScene();

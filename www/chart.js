@@ -4,7 +4,7 @@
 // lin/log y axis; zoom and pan of the speed range; a text alternative.
 import { HELP, PALETTE, qty, sig, speed } from './core.js';
 import { $, el } from './dom.js';
-import { CanvasPainter, drawChart } from './plot.js';
+import { CanvasPainter, chartLegendHeight, drawChart } from './plot.js';
 import { app } from './state.js';
 
 let geom = null;
@@ -16,20 +16,20 @@ let hooks = { schedule: () => {}, replay: () => {} };
  * curve, the other models' characteristic speeds, the palette, the short labels) turned into the
  * painters' terms. The screen and the downloads both draw this.
  */
-export function chartSpec(res, view, hover = null) {
+export function chartSpec(res, view, hover = null, { shortLabels = false } = {}) {
   const fig = res.figures[0];
   const color = (i) => PALETTE.series[i] || '#000000';
   const series = fig.series.map((s) => {
     const top = color(s.color) === PALETTE.scene && s.stroke === 'solid';
-    const dash = { dashed: [6, 3], dotted: [2, 3] }[s.stroke] || null;
-    return { x: s.x, y: s.y, color: color(s.color), width: top ? 2.6 : 1.5, dash, label: s.name };
+    const dash = { dashed: [6, 3], dotted: [2, 3], longdash: [14, 4] }[s.stroke] || null;
+    return { x: s.x, y: s.y, color: color(s.color), width: top ? 2.6 : 1.5, dash, label: s.name, short: s.short };
   });
   const bands = fig.bands.map((b) => ({ x: b.x, y: b.y, color: color(b.color), label: b.label, short: b.short }));
   const markers = fig.markers.map((m) => ({ x: m.x, label: m.label, short: m.short, color: color(m.color) }));
   return {
     xMin: fig.x.min, xMax: fig.x.max, yScale: fig.y.log ? 'log' : 'lin', yMin: fig.y.min, yMax: fig.y.max,
     xLabel: fig.x.label, yLabel: fig.y.label,
-    series, bands, markers: markers.filter((m) => m.x > fig.x.min && m.x < fig.x.max), hover,
+    series, bands, markers: markers.filter((m) => m.x > fig.x.min && m.x < fig.x.max), hover, shortLabels,
   };
 }
 
@@ -49,7 +49,11 @@ export function drawChartCanvas(width) {
   const [w, h] = size(canvas, width);
   const i = app.hover.chart;
   const hover = i === null || i >= res.g.length ? null : { x: res.g[i], y: res.eps ? res.eps[i] : NaN };
-  geom = drawChart(new CanvasPainter(canvas, w, h), chartSpec(res, app.drawn.view, hover));
+  // On screen the legend beneath the plot takes the core's short labels (the full ones are in the
+  // downloads, the Compare list and the text alternative); the plot keeps its height.
+  const spec = { ...chartSpec(res, app.drawn.view, hover, { shortLabels: true }), plotHeight: h };
+  geom = drawChart(new CanvasPainter(canvas, w, h + chartLegendHeight(spec, w)), spec);
+  window.rimeState.chartPlot = { ...geom.box, legendBottom: geom.bottom };
   describe(res);
   readout();
 }
@@ -115,12 +119,24 @@ export function zoom(factor, shift = 0) {
 /** Keeps the current curve to compare with later edits (or drops it). */
 export function pin(on) {
   if (!on || !app.res || !app.res.eps) { app.pinned = null; } else {
-    app.pinned = { g: Array.from(app.res.g), eps: Array.from(app.res.eps), scene: app.drawn.scene, label: 'same scene' };
+    const v = app.drawn.view;
+    app.pinned = {
+      g: Array.from(app.res.g), eps: Array.from(app.res.eps), scene: app.drawn.scene, label: 'same scene',
+      // What computes it again, for the link.
+      source: { scene: app.drawn.scene, accuracy: v.accuracy, from: v.from, to: v.to },
+    };
   }
   pinLabel();
   pinButton();
   // The core draws the pinned curve into the figure: ask for the frame again.
   hooks.schedule();
+}
+
+/** A pinned curve computed again from the link (`source`: its scene, level and speeds). */
+export function restorePin(source, g, eps) {
+  app.pinned = { g: Array.from(g), eps: Array.from(eps), scene: source.scene, label: 'same scene', source };
+  pinLabel();
+  pinButton();
 }
 
 function pinButton() {

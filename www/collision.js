@@ -78,6 +78,9 @@ export class CollisionView {
     if (!this.data) return;
     this.stop();
     if (this.reduced) { this.u = 1; this.draw(); return; }
+    // Its first frame at once (the answer comes from the worker; the animation follows).
+    this.u = 0;
+    this.draw();
     const t0 = performance.now();
     const step = (now) => {
       this.u = Math.min(1, (now - t0) / DURATION_MS);

@@ -90,3 +90,29 @@ export class Computer {
     return this.running !== null || this.queued !== null;
   }
 }
+
+/** The collision card's worker: one integration at a time, the newest request wins (an older
+ *  answer is dropped). Its own worker, so that a frame's restart never drops a collision and a
+ *  collision never waits behind a frame. */
+export class CollisionComputer {
+  constructor(module, onAnswer) {
+    this.id = 0;
+    this.onAnswer = onAnswer;
+    this.worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+    this.worker.onmessage = (ev) => {
+      const m = ev.data;
+      if (m.type === 'collision' && m.id === this.id) this.onAnswer(m, this.pending);
+    };
+    this.worker.onerror = (ev) => {
+      ev.preventDefault();
+      this.onAnswer({ error: `worker: ${ev.message || 'crashed'}` }, this.pending);
+    };
+    this.worker.postMessage({ type: 'init', module });
+  }
+
+  /** Asks for the collision of `scene` (JSON) at `g` with `points` samples at `accuracy`. */
+  request(scene, g, points, accuracy, extra) {
+    this.pending = { scene, g, points, accuracy, ...extra };
+    this.worker.postMessage({ type: 'collision', id: ++this.id, scene, g, points, accuracy });
+  }
+}

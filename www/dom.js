@@ -27,7 +27,9 @@ export function linked(text) {
   for (const m of text.matchAll(EQ)) {
     if (m.index > at) out.push(text.slice(at, m.index));
     const anchor = m[3] ? `decision-${m[3]}` : equationAnchor(m[1]);
-    out.push(el('a', { href: physicsUrl(anchor), class: 'eq', target: '_blank', rel: 'noopener' }, m[0]));
+    // Out of the Tab order (issue 22: 35 of the ~50 stops before the parameters were equation
+    // links); clickable, and every anchor is reachable from the notes' link at the top of the page.
+    out.push(el('a', { href: physicsUrl(anchor), class: 'eq', target: '_blank', rel: 'noopener', tabindex: '-1' }, m[0]));
     at = m.index + m[0].length;
   }
   if (at < text.length) out.push(text.slice(at));

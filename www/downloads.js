@@ -6,7 +6,7 @@ import { mapRecords, qty } from './core.js';
 import { $, el, wrapText } from './dom.js';
 import { chartSpec } from './chart.js';
 import { classColors, epsTSpec, mapSpec } from './map.js';
-import { CanvasPainter, SvgPainter, drawCaption, drawChart, drawLines, drawMap } from './plot.js';
+import { CanvasPainter, SvgPainter, chartLegendHeight, drawCaption, drawChart, drawLines, drawMap } from './plot.js';
 import { app } from './state.js';
 
 let version = '';
@@ -49,12 +49,13 @@ function chartFigure(make) {
   const view = app.drawn.view;
   const fig = app.res.figures[0];
   const lines = captionLines(fig, CHART_W, `; impact speeds ${qty(fig.x.min, 'm/s', 3)} to ${qty(fig.x.max, 'm/s', 3)}.`);
-  const p = make(CHART_W, CHART_H + 10 + lines.length * 14);
+  // The plot keeps its height; the legend (full labels, wrapped, never cut) and the caption follow.
+  const spec = { ...chartSpec(app.res, view, null), plotHeight: CHART_H };
+  const top = CHART_H + chartLegendHeight(spec, CHART_W);
+  const p = make(CHART_W, top + 10 + lines.length * 14);
   p.rect(0, 0, CHART_W, p.height, { fill: '#fff' });
-  p.height = CHART_H;
-  drawChart(p, chartSpec(app.res, view, null));
-  p.height = CHART_H + 10 + lines.length * 14;
-  drawCaption(p, lines, CHART_H);
+  drawChart(p, spec);
+  drawCaption(p, lines, top);
   return p;
 }
 

@@ -155,20 +155,61 @@ export class SvgPainter {
   }
 }
 
-/** Legend rows: entries laid out left to right, wrapping at `width` (approximate text widths). */
-function legendLayout(entries, x0, width) {
-  const rows = [[]];
-  let x = x0;
-  const maxChars = Math.max(12, Math.floor((width - 40) / 6.1));
-  for (const e0 of entries) {
-    // A label longer than a row is cut (the full text is in the figure's description).
-    const e = e0.label.length > maxChars ? { ...e0, label: `${e0.label.slice(0, maxChars - 1)}…` } : e0;
-    const w = 26 + e.label.length * 6.1 + 14;
-    if (x + w > x0 + width && rows[rows.length - 1].length) { rows.push([]); x = x0; }
-    rows[rows.length - 1].push({ ...e, x });
-    x += w;
+/** Approximate width of `text` at `size` px in the page's sans-serif (the SVG has no measure). */
+const textWidth = (text, size) => String(text).length * size * 0.56;
+
+/**
+ * The legend beneath the plot: entries in columns of at least 220 px, each label wrapped to its
+ * column (never cut: issue 22, labels were cut with "…" and the legend on top squeezed the plot).
+ * Returns the rows ({y, h, items: [{x, lines, …entry}]}) and the total height.
+ */
+export function legendLayout(entries, x0, width, size = 11) {
+  // Columns as wide as the longest label needs, between 150 and 260 px.
+  const longest = Math.max(0, ...entries.map((e) => textWidth(e.label, size)));
+  const cols = Math.max(1, Math.min(entries.length, Math.floor(width / Math.min(260, Math.max(150, longest + 42)))));
+  const colW = width / cols;
+  const chars = Math.max(12, Math.floor((colW - 42) / (size * 0.56)));
+  const rows = [];
+  let y = 0;
+  for (let k = 0; k < entries.length; k += cols) {
+    const items = entries.slice(k, k + cols).map((e, c) => ({ ...e, x: x0 + c * colW, lines: wrapLabel(e.label, chars) }));
+    const h = Math.max(...items.map((i) => i.lines.length)) * (size + 3) + 5;
+    rows.push({ y, h, items });
+    y += h;
   }
-  return rows;
+  return { rows, height: y };
+}
+
+function wrapLabel(text, chars) {
+  const lines = [];
+  let line = '';
+  for (let w of String(text).split(/\s+/)) {
+    while (w.length > chars) { if (line) { lines.push(line); line = ''; } lines.push(w.slice(0, chars)); w = w.slice(chars); }
+    if (line && line.length + 1 + w.length > chars) { lines.push(line); line = w; } else line = line ? `${line} ${w}` : w;
+  }
+  if (line) lines.push(line);
+  return lines.length ? lines : [''];
+}
+
+/** The legend entries of a chart spec: series (short or full labels), then the measured ranges. */
+function chartEntries(spec) {
+  const pick = (o) => (spec.shortLabels && o.short ? o.short : o.label);
+  const entries = spec.series.filter((s) => s.label).map((s) => ({ label: pick(s), color: s.color, dash: s.dash, width: s.width }));
+  for (const b of spec.bands || []) entries.push({ label: pick(b), color: b.color, box: true });
+  return entries;
+}
+
+/** The height of the chart's legend drawn beneath a `width` px plot (0 without entries). */
+export function chartLegendHeight(spec, width) {
+  const entries = chartEntries(spec);
+  return entries.length ? legendLayout(entries, 8, width - 16).height + 6 : 0;
+}
+
+/** The y label's lines: whole when it fits beside the plot's height, else split at its "(". */
+function yLabelLines(label, height, size) {
+  if (textWidth(label, size) <= height - 8) return [label];
+  const k = label.indexOf(' (');
+  return k > 0 ? [label.slice(0, k), label.slice(k + 1)] : [label];
 }
 
 /** Lines of a caption block below a figure, `size` px text; returns the height used. */
@@ -185,11 +226,13 @@ export function drawCaption(p, lines, y0, size = 10) {
  * Returns the plot box and the coordinate transforms (for hover).
  */
 export function drawChart(p, spec) {
-  const { width: W, height: H } = p;
-  const entries = spec.series.filter((s) => s.label).map((s) => ({ label: s.label, color: s.color, dash: s.dash, width: s.width }));
-  for (const b of spec.bands || []) entries.push({ label: b.label, color: b.color, box: true });
-  const rows = legendLayout(entries, 60, W - 72);
-  const box = { l: 60, r: W - 12, t: 10 + rows.length * 16 + 6, b: H - 42 };
+  // The plot takes `spec.plotHeight` (the painter's height by default); the legend lies beneath it.
+  const W = p.width;
+  const H = spec.plotHeight ?? p.height;
+  const entries = chartEntries(spec);
+  const legend = legendLayout(entries, 8, W - 16);
+  const yLines = yLabelLines(spec.yLabel, H - 52, 12);
+  const box = { l: 46 + 14 * yLines.length, r: W - 12, t: 10, b: H - 42 };
   const log = spec.yScale !== 'lin';
   const lx = [Math.log10(spec.xMin), Math.log10(spec.xMax)];
   const ly = log ? [Math.log10(spec.yMin), Math.log10(spec.yMax)] : [spec.yMin, spec.yMax];
@@ -198,12 +241,13 @@ export function drawChart(p, spec) {
   const Y = (v) => box.b - ((fy(v) - ly[0]) / (ly[1] - ly[0])) * (box.b - box.t);
   const inv = (px) => 10 ** (lx[0] + ((px - box.l) / (box.r - box.l)) * (lx[1] - lx[0]));
 
-  p.rect(0, 0, W, H, { fill: '#fff' });
-  rows.forEach((row, r) => row.forEach((e) => {
-    const y = 10 + r * 16 + 6;
-    if (e.box) p.rect(e.x + 4, y - 5, 14, 10, { fill: e.color, alpha: 0.18, stroke: e.color });
-    else p.line([[e.x, y], [e.x + 22, y]], { color: e.color, width: Math.max(1.5, e.width || 1.5), dash: e.dash });
-    p.text(e.x + 26, y + 4, e.label, { size: 11 });
+  p.rect(0, 0, W, H + (entries.length ? legend.height + 6 : 0), { fill: '#fff' });
+  legend.rows.forEach((row) => row.items.forEach((e) => {
+    const y = H + 4 + row.y + 6;
+    // A swatch long enough to tell dashes (6/3) from long dashes (14/4).
+    if (e.box) p.rect(e.x + 6, y - 5, 18, 10, { fill: e.color, alpha: 0.18, stroke: e.color });
+    else p.line([[e.x, y], [e.x + 30, y]], { color: e.color, width: Math.max(1.5, e.width || 1.5), dash: e.dash });
+    e.lines.forEach((line, k) => p.text(e.x + 36, y + 4 + k * 14, line, { size: 11 }));
   }));
   // x: decades at their values, minor ticks at 2…9 × 10^k; labels thinned to fit.
   const decadesX = lx[1] - lx[0];
@@ -246,13 +290,17 @@ export function drawChart(p, spec) {
     }
   }
   p.text((box.l + box.r) / 2, H - 8, spec.xLabel, { size: 12, align: 'center' });
-  p.text(16, (box.t + box.b) / 2, spec.yLabel, { size: 12, align: 'center', rotate: -Math.PI / 2 });
+  // Rotated, centred on the plot (never on the figure with its caption), inside the canvas.
+  yLines.forEach((line, k) => p.text(16 + 14 * k, (box.t + box.b) / 2, line, { size: 12, align: 'center', rotate: -Math.PI / 2 }));
 
   p.clip(box.l, box.t, box.r - box.l, box.b - box.t, () => {
     for (const b of spec.bands || []) {
       const x0 = X(b.x[0]), x1 = X(b.x[1]), y0 = Y(b.y[1]), y1 = Y(b.y[0]);
       p.rect(x0, y0, x1 - x0, y1 - y0, { fill: b.color, alpha: 0.16, stroke: b.color });
-      if (x1 - x0 > 18) p.text(x0 + 3, y0 + 12, b.short || '', { size: 10, color: b.color });
+      // The box's name only (its temperature and score are in the legend).
+      // Inside the plot: near its right edge the name ends at the edge instead of being cut.
+      const name = (b.short || '').split(' (')[0];
+      if (x1 - x0 > 18) p.text(Math.max(box.l + 2, Math.min(x0 + 3, box.r - textWidth(name, 10) - 3)), y0 + 12, name, { size: 10, color: b.color });
     }
     (spec.markers || []).forEach((m, i) => {
       if (!(m.x > spec.xMin && m.x < spec.xMax)) return;
@@ -265,7 +313,9 @@ export function drawChart(p, spec) {
         label = m.short || label;
         right = x + fits(label) <= box.r;
       }
-      p.text(x + (right ? 4 : -4), box.b - 8 - i * 15, label, { size: 10.5, color: AXIS, align: right ? 'left' : 'right', bg: 'rgba(255,255,255,0.85)' });
+      // Fitting neither side whole: inside the plot from its left edge (never cut by it).
+      const inside = !right && x - fits(label) < box.l;
+      p.text(inside ? box.l + 2 : x + (right ? 4 : -4), box.b - 8 - i * 15, label, { size: 10.5, color: AXIS, align: right || inside ? 'left' : 'right', bg: 'rgba(255,255,255,0.85)' });
     });
     // Series: broken where ε_N is not finite; on a log axis also where it is 0 (stuck).
     for (const s of spec.series) {
@@ -286,7 +336,7 @@ export function drawChart(p, spec) {
     }
   });
   p.rect(box.l, box.t, box.r - box.l, box.b - box.t, { stroke: AXIS });
-  return { box, X, Y, inv, bottom: H };
+  return { box, X, Y, inv, bottom: H + (entries.length ? legend.height + 6 : 0) };
 }
 
 /**

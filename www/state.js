@@ -17,6 +17,7 @@ export const app = {
   computer: null,
   probeEx: null, // the drawn scene, for probes and collisions
   probeScene: null,
+  pinRequest: null, // {scene, accuracy, from, to}: a pinned curve of the link, computed before the first frame
   view: { ...DEFAULT_VIEW },
   tidalIn: null, // null: the paper's example with the scene's grains; else the typed TidalInput
   pinned: null, // {g, eps, values, label}: a curve kept to compare with later edits

@@ -17,6 +17,9 @@ export function writeHashNow() {
   if (!app.drawn) return;
   let hash = `#s=${encodeURIComponent(app.drawn.scene)}&v=${encodeURIComponent(JSON.stringify(app.drawn.view))}`;
   if (app.drawn.tidal) hash += `&t=${encodeURIComponent(JSON.stringify(app.drawn.tidal))}`;
+  // The pinned curve as what computes it again (its scene, level and speeds; issue 22: the page
+  // said the link holds the whole state, and the pin was not in it).
+  if (app.pinned) hash += `&p=${encodeURIComponent(JSON.stringify(app.pinned.source))}`;
   if (location.hash !== hash) history.replaceState(null, '', hash);
 }
 
@@ -129,6 +132,32 @@ function readTidal(text, problems, validate) {
   return out;
 }
 
+/** The pinned curve of the link ({scene, accuracy, from, to}), checked field by field; null when
+ *  there is none or it cannot be read (named in `problems`). */
+function readPinned(text, problems) {
+  if (text === null) return null;
+  let obj;
+  try { obj = JSON.parse(text); } catch { problems.push('pinned: not JSON'); return null; }
+  if (obj === null || typeof obj !== 'object' || Array.isArray(obj)) { problems.push('pinned: not an object'); return null; }
+  for (const k of Object.keys(obj)) if (!['scene', 'accuracy', 'from', 'to'].includes(k)) problems.push(`pinned.${k}: unknown field`);
+  const out = {};
+  try {
+    const scene = typeof obj.scene === 'string' ? obj.scene : JSON.stringify(obj.scene);
+    app.probeEx.setJson(scene);
+    app.probeScene = null; // the probe editor no longer holds the drawn scene
+    out.scene = app.probeEx.toJson();
+  } catch (e) { problems.push(`pinned.scene: ${errText(e)}`); return null; }
+  const levels = HELP.levels.map((l) => l.name);
+  if (!levels.includes(obj.accuracy)) { problems.push(`pinned.accuracy: one of ${levels.join(', ')}`); return null; }
+  out.accuracy = obj.accuracy;
+  try {
+    out.from = parseChartSpeed('pinned.from', String(obj.from));
+    out.to = parseChartSpeed('pinned.to', String(obj.to));
+  } catch (e) { problems.push(errText(e)); return null; }
+  if (!(out.from < out.to)) { problems.push('pinned.to: must be above pinned.from'); return null; }
+  return out;
+}
+
 /**
  * Applies the state in the hash; returns the problems found (empty when all was read). Fields
  * that could not be read keep their defaults and are named.
@@ -145,6 +174,8 @@ export function loadHash(validateTidal) {
   } else readScene(s, problems);
   app.view = readView(q.get('v'), problems);
   app.tidalIn = readTidal(q.get('t'), problems, validateTidal);
+  app.pinRequest = readPinned(q.get('p'), problems);
+  if (!app.pinRequest) app.pinned = null;
   app.wantScene = app.ex.toJson();
   const shown = capped(problems);
   for (const p of shown) console.error(`rime: link: ${p}`);

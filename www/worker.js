@@ -1,15 +1,31 @@
 // The computing half of the page: a module worker holding the wasm module. It answers each request
 // {gen, scene, view} with one whole frame (one computeFrame call, then its three arrays) or with the
 // request's error, so that no level of accuracy ever blocks the page's input.
-import init, { computeFrame } from './pkg/rime_wasm.js';
+import init, { Explorer, computeFrame } from './pkg/rime_wasm.js';
 
 let ready = null;
+let explorer = null; // the collision card's scene (one per worker)
 
 self.onmessage = async (ev) => {
   const msg = ev.data;
   if (msg.type === 'init') {
     ready = init({ module_or_path: msg.module }).then(() => self.postMessage({ type: 'ready' }));
     try { await ready; } catch (e) { self.postMessage({ type: 'fatal', message: `worker: ${e && e.message ? e.message : e}` }); }
+    return;
+  }
+  if (msg.type === 'collision') {
+    // The collision card's integration (up to ~12 ms at the precise levels, several times that on
+    // a slow phone): here, never on the page's thread (issue 22).
+    await ready;
+    const t0 = performance.now();
+    try {
+      explorer ||= new Explorer();
+      explorer.setJson(msg.scene);
+      const json = explorer.collision(msg.g, msg.points, msg.accuracy);
+      self.postMessage({ type: 'collision', id: msg.id, json, ms: performance.now() - t0 });
+    } catch (e) {
+      self.postMessage({ type: 'collision', id: msg.id, error: String(e && e.message ? e.message : e), ms: performance.now() - t0 });
+    }
     return;
   }
   if (msg.type !== 'frame') return;

@@ -79,6 +79,49 @@ pub struct Citation {
     pub doi: Option<&'static str>,
 }
 
+impl Citation {
+    /// The first author's surname, with "et al." for three or more authors and "& B" for two
+    /// (`Hatzes et al.`, `Gundlach & Blum`): authors are printed as `Surname, I., Surname, I.`.
+    pub fn short_authors(&self) -> alloc_free::ShortAuthors {
+        let mut names = self
+            .authors
+            .split(", ")
+            .filter(|p| !p.is_empty() && !p.ends_with('.'));
+        let first = names.next().unwrap_or(self.authors);
+        let second = names.next();
+        let more = names.next().is_some();
+        alloc_free::ShortAuthors {
+            first,
+            second: if more { None } else { second },
+            et_al: more,
+        }
+    }
+}
+
+/// Formatting without allocation (the atlas is `no_std`).
+pub mod alloc_free {
+    /// A citation's authors in short form; `Display` writes `Hatzes et al.`.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct ShortAuthors {
+        /// The first author's surname.
+        pub first: &'static str,
+        /// The second author's surname, when there are exactly two.
+        pub second: Option<&'static str>,
+        /// Three or more authors.
+        pub et_al: bool,
+    }
+
+    impl core::fmt::Display for ShortAuthors {
+        fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+            match (self.second, self.et_al) {
+                (_, true) => write!(f, "{} et al.", self.first),
+                (Some(b), false) => write!(f, "{} & {b}", self.first),
+                (None, false) => f.write_str(self.first),
+            }
+        }
+    }
+}
+
 /// The mathematical form of an entry. Speeds inside the forms are in the source's own units;
 /// [`Entry::eval`] takes and returns SI.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -42,22 +42,25 @@ pub enum Stroke {
     Dotted,
     /// Unjoined points, each marked (instants, samples).
     Points,
+    /// A line of long dashes (comparisons, once the hues have been used with dots and dashes).
+    LongDash,
 }
 
 impl Stroke {
-    /// The name the page and JSON use: `solid`, `dashed`, `dotted`, `points`.
+    /// The name the page and JSON use: `solid`, `dashed`, `dotted`, `points`, `longdash`.
     pub const fn name(self) -> &'static str {
         match self {
             Stroke::Solid => "solid",
             Stroke::Dashed => "dashed",
             Stroke::Dotted => "dotted",
             Stroke::Points => "points",
+            Stroke::LongDash => "longdash",
         }
     }
 
-    /// Whether the line is broken (dashed or dotted).
+    /// Whether the line is broken (dashed, dotted or long-dashed).
     pub const fn is_broken(self) -> bool {
-        matches!(self, Stroke::Dashed | Stroke::Dotted)
+        matches!(self, Stroke::Dashed | Stroke::Dotted | Stroke::LongDash)
     }
 }
 

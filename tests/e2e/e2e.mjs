@@ -561,12 +561,15 @@ try {
     const near = (a, b) => (a === null && b === null) || Math.abs(a - b) <= 1e-12 * Math.abs(b);
     assert(near(c.eps_n, cli.eps_n) && near(c.t_c, cli.t_c), `page ${c.eps_n}, ${c.t_c} vs rime collision ${cli.eps_n}, ${cli.t_c}`);
     assert(Math.abs(c.closure) < 1e-6 && c.n >= 300, `closure ${c.closure}, ${c.n} samples`);
-    const inked = await pf.evaluate(() => {
+    // The collision comes from its worker and is drawn as it arrives: wait for ink (a hang guard).
+    const loopInk = () => {
       const cv = document.getElementById('collision-loop');
       const d = cv.getContext('2d').getImageData(0, 0, cv.width, cv.height).data;
       let n = 0; for (let k = 3; k < d.length; k += 4) if (d[k] > 0) n++;
       return n;
-    });
+    };
+    await pf.waitForFunction(`(${loopInk.toString()})() > 500`, null, { timeout: GUARD_MS }).catch(() => {});
+    const inked = await pf.evaluate(loopInk);
     assert(inked > 500, `force loop canvas nearly empty (${inked} px)`);
     const ledger = await pf.locator('#collision-ledger').innerText();
     assert(/dissipated in the bulk/.test(ledger) && /closure/.test(ledger), `ledger: "${ledger}"`);
@@ -954,6 +957,18 @@ try {
     const s = await pn.evaluate(() => window.rimeState);
     const pinned = s.figure.series.find((n) => /^pinned/.test(n));
     assert(s.pinned && pinned && /η\* 1 kPa s/.test(pinned), `pinned legend: ${pinned}`);
+    // Issue 22: the pinned curve is in the link, and a reload draws it again, equal to the digit.
+    await pn.waitForFunction(() => {
+      const q = new URLSearchParams(location.hash.slice(1));
+      return q.get('p') !== null && q.get('s') !== null && JSON.parse(q.get('s')).layer.viscosity === 2000;
+    }, null, { timeout: GUARD_MS });
+    const pinLink = watch(await context.newPage(), 'pin-link');
+    await pinLink.goto(pn.url(), { waitUntil: 'load' });
+    await ready(pinLink);
+    const back = await pinLink.evaluate(() => ({ pinned: window.rimeState.pinned, series: window.rimeState.figure.series, pressed: document.getElementById('pin').getAttribute('aria-pressed') }));
+    await pinLink.close();
+    assert(back.pinned && JSON.stringify(back.pinned.g) === JSON.stringify(s.pinned.g) && JSON.stringify(back.pinned.eps) === JSON.stringify(s.pinned.eps), 'the pinned curve of the link differs from the one pinned');
+    assert(back.series.includes(pinned) && back.pressed === 'true', `reloaded legend: ${back.series.filter((n) => /^pinned/.test(n))}, pin pressed ${back.pressed}`);
     assert(s.pinned.eps.some((e, k) => e !== s.eps[k]), 'pinned curve equals the current one');
     assert(s.figure.series.some((n) => /varied around this scene/.test(n)), `family legend: ${s.figure.series}`);
     assert((await inked(pn, 'eps-t')) > 1500, 'no ε_T plot beside the map');
@@ -1058,6 +1073,189 @@ try {
     return 'target/www-screenshot.png, target/www-screenshot-375.png';
   });
 
+  // ---------- issue 22, third round: the legend, the exports, the phone, the keyboard, the main thread ----------
+  const ALL_OVERLAYS = ['atlas:bridges1984', 'atlas:hatzes1988_frost', 'atlas:hatzes1988_compacted', 'atlas:hatzes1988_compacted_r20', 'atlas:supulver1995', 'atlas:higa1996', 'atlas:borderies1984', 'atlas:heisselmann2010', 'atlas:hill2015', 'model:brilliantov2007', 'model:schwager_poschel2008', 'model:muller_poschel2011'];
+  const viewLink = (v) => `${url}#v=${encodeURIComponent(JSON.stringify(v))}`;
+  await check('issue 22: every comparison on — own colour and stroke each, distinct legend texts, the plot keeps its height, no legend label cut', async () => {
+    const q = watch(await context.newPage(), 'legend');
+    await q.goto(viewLink({ accuracy: 'fast' }), { waitUntil: 'load' });
+    await ready(q);
+    const plain = await q.evaluate(() => window.rimeState.chartPlot);
+    expected.push(['legend', /rime: link: no scene/]);
+    await q.goto(viewLink({ accuracy: 'fast', overlays: ALL_OVERLAYS }), { waitUntil: 'load' });
+    await ready(q);
+    await q.waitForFunction((n) => (window.rimeState.overlays || []).length === n, ALL_OVERLAYS.length, { timeout: GUARD_MS });
+    const d = await q.evaluate(() => ({ fig: window.rimeState.figure, plot: window.rimeState.chartPlot, errors: window.rimeState.frameErrors }));
+    await q.close();
+    assert(d.errors.length === 0, `frame errors: ${JSON.stringify(d.errors)}`);
+    const styles = d.fig.styles;
+    const clash = styles.filter((x, i) => styles.indexOf(x) !== i).map((x) => d.fig.series.filter((_, k) => styles[k] === x).join(' = '));
+    assert(clash.length === 0, `series sharing colour and stroke: ${clash.join('; ')}`);
+    const names = [...d.fig.series, ...d.fig.bands];
+    const same = names.filter((x, i) => names.indexOf(x) !== i);
+    assert(same.length === 0, `legend texts read alike: ${same.join('; ')}`);
+    assert(d.fig.series.filter((n) => /^Hatzes et al\. 1988/.test(n)).length === 3, `Hatzes 1988 entries: ${d.fig.series.filter((n) => /Hatzes/.test(n))}`);
+    assert(!d.fig.series.some((n) => /\(this scene\)/.test(n)) && d.fig.series.some((n) => /^this scene \(γ = 0\.1 J\/m²\)/.test(n)), `this scene's member: ${d.fig.series.filter((n) => /this scene/.test(n))}`);
+    const h0 = plain.b - plain.t, h1 = d.plot.b - d.plot.t;
+    assert(h1 === h0, `the plot is ${h1} px tall with every comparison, ${h0} px without`);
+    return `${styles.length} series, ${new Set(styles).size} styles; plot ${h1} px tall with and without comparisons; legend to ${Math.round(d.plot.legendBottom)} px`;
+  });
+
+  await check('issue 22: chart SVG and PNG with every comparison — y label within the plot and off the caption, legend whole above the caption, nothing cut with "…"', async () => {
+    const q = watch(await context.newPage(), 'export');
+    expected.push(['export', /rime: link: no scene/]);
+    await q.goto(viewLink({ accuracy: 'fast', overlays: ALL_OVERLAYS, yScale: 'log' }), { waitUntil: 'load' });
+    await ready(q);
+    await q.waitForFunction((n) => (window.rimeState.overlays || []).length === n, ALL_OVERLAYS.length, { timeout: GUARD_MS });
+    const d = await q.evaluate(() => {
+      const svg = window.rimeExports.chartSvg();
+      const holder = document.createElement('div');
+      holder.innerHTML = svg.replace(/^<\?xml[^>]*>/, '');
+      document.body.append(holder);
+      const texts = [...holder.querySelectorAll('text')].map((t) => {
+        const b = t.getBoundingClientRect();
+        return { s: t.textContent, rot: t.hasAttribute('transform'), x0: b.left, x1: b.right, y0: b.top, y1: b.bottom };
+      });
+      const root = holder.querySelector('svg').getBoundingClientRect();
+      holder.remove();
+      return { texts, root: { x: root.left, y: root.top, w: root.width, h: root.height }, caption: window.rimeState.figure.caption, yLabel: window.rimeState.figure.y.label };
+    });
+    const rel = (t) => ({ ...t, x0: t.x0 - d.root.x, x1: t.x1 - d.root.x, y0: t.y0 - d.root.y, y1: t.y1 - d.root.y });
+    const texts = d.texts.map(rel);
+    const ylab = texts.filter((t) => t.rot);
+    assert(ylab.length >= 1 && ylab.map((t) => t.s).join(' ') === d.yLabel, `rotated y label: ${JSON.stringify(ylab.map((t) => t.s))}`);
+    const captionStart = d.caption.split(' ').slice(0, 3).join(' ');
+    const capTop = Math.min(...texts.filter((t) => t.s.startsWith('Normal restitution') || t.s.startsWith(captionStart)).map((t) => t.y0));
+    const cut = texts.filter((t) => /…$/.test(t.s));
+    assert(cut.length === 0, `texts cut with "…": ${cut.map((t) => t.s).join(' | ')}`);
+    for (const t of ylab) assert(t.x0 >= 0 && t.y0 >= 0 && t.y1 <= capTop, `y label "${t.s}" spans y ${t.y0.toFixed(0)}–${t.y1.toFixed(0)}, x from ${t.x0.toFixed(0)}; caption from ${capTop.toFixed(0)}`);
+    const below = texts.filter((t) => !t.rot && t.y0 >= capTop - 1);
+    const legendInCaption = below.filter((t) => t.x0 > 40 && !t.s.startsWith('Drawn '));
+    assert(legendInCaption.length === 0, `legend lines in the caption: ${legendInCaption.map((t) => t.s).slice(0, 3)}`);
+    assert(texts.every((t) => t.x1 <= d.root.w + 1 && t.y1 <= d.root.h + 1), 'text outside the SVG');
+    // The PNG is the same drawing: its height follows the SVG's.
+    const dl = q.waitForEvent('download', { timeout: GUARD_MS });
+    await q.click('#dl-chart-png');
+    const file = await dl;
+    const saved = path.join(outDir, 'www-e2e-chart-all-comparisons.png');
+    await file.saveAs(saved);
+    const buf = fs.readFileSync(saved);
+    const w = buf.readUInt32BE(16), h = buf.readUInt32BE(20);
+    await q.close();
+    assert(w === 2 * Math.round(d.root.w) && h === 2 * Math.round(d.root.h), `PNG ${w}×${h}, SVG ${d.root.w}×${d.root.h}`);
+    return `y label at y ${Math.round(ylab[0].y0)}–${Math.round(ylab[ylab.length - 1].y1)} px, caption from ${Math.round(capTop)} px; ${texts.length} texts, none cut; PNG ${w}×${h}`;
+  });
+
+  await check('issue 22: the palette keeps its contrast in both themes — every family and comparison line ≥ 3:1 on the plot as drawn', async () => {
+    const out = [];
+    for (const scheme of ['light', 'dark']) {
+      const q = watch(await context.newPage(), `contrast-${scheme}`);
+      expected.push([`contrast-${scheme}`, /rime: link: no scene/]);
+      await q.emulateMedia({ colorScheme: scheme });
+      await q.goto(viewLink({ accuracy: 'fast', overlays: ALL_OVERLAYS }), { waitUntil: 'load' });
+      await ready(q);
+      await q.waitForFunction((n) => (window.rimeState.overlays || []).length === n, ALL_OVERLAYS.length, { timeout: GUARD_MS });
+      const r = await q.evaluate(() => {
+        const c = document.getElementById('chart');
+        const box = window.rimeState.chartPlot;
+        const k = c.width / c.clientWidth;
+        const px = c.getContext('2d').getImageData(Math.round((box.l + 3) * k), Math.round((box.t + 3) * k), 1, 1).data;
+        return { bg: [px[0], px[1], px[2]], styles: window.rimeState.figure.styles, names: window.rimeState.figure.series };
+      });
+      const palette = await q.evaluate(async () => (await import('./core.js')).PALETTE.series);
+      await q.close();
+      const lum = (rgb) => rgb.map((v) => { v /= 255; return v <= 0.04045 ? v / 12.92 : ((v + 0.055) / 1.055) ** 2.4; }).reduce((a, v, i) => a + [0.2126, 0.7152, 0.0722][i] * v, 0);
+      const hex = (h) => [1, 3, 5].map((i) => parseInt(h.slice(i, i + 2), 16));
+      const ratio = (a, b) => { const x = lum(a) + 0.05, y = lum(b) + 0.05; return Math.max(x, y) / Math.min(x, y); };
+      let worst = Infinity, who = '';
+      r.styles.forEach((st, i) => {
+        const idx = Number(st.split('/')[0]);
+        // The family (indices 0–3) and the comparisons (8–12); this scene, the clean surface and the pinned curve are roles of their own.
+        if (!(idx < 4 || (idx >= 8 && idx <= 12))) return;
+        const q2 = ratio(hex(palette[idx]), r.bg);
+        if (q2 < worst) { worst = q2; who = r.names[i]; }
+      });
+      assert(worst >= 3, `${scheme}: ${who} has ${worst.toFixed(2)}:1 on the plot (background rgb(${r.bg}))`);
+      out.push(`${scheme}: plot rgb(${r.bg.join(',')}), lowest ${worst.toFixed(2)}:1 (${who.slice(0, 30)})`);
+    }
+    return out.join('; ');
+  });
+
+  await check('issue 22: on a phone (375×812) the chart\'s plot lies in the first screen', async () => {
+    const q = watch(await context.newPage(), 'first-screen');
+    await q.setViewportSize({ width: 375, height: 812 });
+    await q.goto(url, { waitUntil: 'load' });
+    await ready(q);
+    const d = await q.evaluate(() => ({ top: document.getElementById('chart').getBoundingClientRect().top + window.scrollY, plot: window.rimeState.chartPlot, introAfter: !!document.querySelector('.chart-card ~ .intro') }));
+    await q.close();
+    const bottom = d.top + d.plot.b;
+    assert(bottom <= 812, `the plot ends at ${bottom.toFixed(0)} px on an 812 px screen`);
+    assert(d.introAfter, 'the intro is not after the chart on a phone');
+    return `canvas from ${d.top.toFixed(0)} px, plot to ${bottom.toFixed(0)} px of 812`;
+  });
+
+  await check('issue 22: Tab reaches R₁ in a few stops without the skip link (equation links out of the Tab order, still links)', async () => {
+    const q = watch(await context.newPage(), 'tabs');
+    await q.goto(url, { waitUntil: 'load' });
+    await ready(q);
+    let n = 0;
+    let at = null;
+    const stops = [];
+    for (; n < 120; n++) {
+      await q.keyboard.press('Tab');
+      at = await q.evaluate(() => { const e = document.activeElement; return { path: e.dataset.path || e.id, inControls: !!e.closest('#controls'), eq: e.classList.contains('eq'), tag: e.tagName }; });
+      stops.push(at.path || at.tag);
+      if (at.inControls && /grains\.radius_1/.test(at.path)) break;
+    }
+    const eqLinks = await q.evaluate(() => [...document.querySelectorAll('a.eq')].map((a) => ({ tab: a.tabIndex, href: a.getAttribute('href') })));
+    await q.close();
+    assert(at && /grains\.radius_1/.test(at.path), `R₁ not reached in 120 Tabs: ${stops.slice(-5)}`);
+    assert(n + 1 <= 25, `R₁ after ${n + 1} Tabs: ${stops.join(' → ')}`);
+    assert(eqLinks.length > 20 && eqLinks.every((a) => a.tab === -1 && /physics\.html#/.test(a.href)), `equation links: ${eqLinks.length}, tab indices ${[...new Set(eqLinks.map((a) => a.tab))]}`);
+    return `R₁ after ${n + 1} Tabs (was 51); ${eqLinks.length} equation links kept as links out of the Tab order`;
+  });
+
+  // Reported, never asserted: main-thread long tasks while a slider is dragged at `integrated` on
+  // the phone profile (375×812, CPU slowed 4× through CDP). The collision card integrates in its worker.
+  let longTasks = null;
+  await check('issue 22: main-thread long tasks while dragging a slider at integrated, phone profile with 4× CPU slowdown (reported)', async () => {
+    const q = watch(await context.newPage(), 'longtasks');
+    await q.setViewportSize({ width: 375, height: 812 });
+    await q.goto(url, { waitUntil: 'load' });
+    await ready(q);
+    await q.selectOption('#accuracy', 'integrated');
+    await q.waitForFunction(() => window.rimeState.view.accuracy === 'integrated', null, { timeout: GUARD_MS });
+    await q.waitForFunction(() => window.rimeState.collision, null, { timeout: GUARD_MS });
+    const cdp = await context.newCDPSession(q);
+    await cdp.send('Emulation.setCPUThrottlingRate', { rate: 4 });
+    await q.evaluate(() => {
+      window.__long = [];
+      new PerformanceObserver((l) => { for (const e of l.getEntries()) window.__long.push(e.duration); }).observe({ type: 'longtask', buffered: false });
+    });
+    const slider = q.locator('input[type=range][data-path="adhesion.surface_energy"]');
+    await slider.scrollIntoViewIfNeeded();
+    const box = await slider.boundingBox();
+    const u0 = await updates(q);
+    const t0 = Date.now();
+    await q.mouse.move(box.x + box.width * 0.3, box.y + box.height / 2);
+    await q.mouse.down();
+    for (let k = 1; k <= 30; k++) await q.mouse.move(box.x + box.width * (0.3 + 0.4 * k / 30), box.y + box.height / 2);
+    await q.mouse.up();
+    const dragMs = Date.now() - t0;
+    // Until the last edit's frame and the collision that follows it are drawn.
+    await q.waitForFunction(() => !window.rimeState.busy && document.getElementById('busy').hidden, null, { timeout: GUARD_MS }).catch(() => {});
+    await q.waitForTimeout(1500);
+    const d = await q.evaluate(() => ({ long: window.__long, collisionMs: window.rimeState.collision && window.rimeState.collision.ms, frames: window.rimeState.updates }));
+    await cdp.send('Emulation.setCPUThrottlingRate', { rate: 1 });
+    await q.close();
+    const n = d.long.length;
+    const max = n ? Math.max(...d.long) : 0;
+    const total = d.long.reduce((a, b) => a + b, 0);
+    longTasks = { count: n, max_ms: max, total_ms: total, drag_ms: dragMs, frames: d.frames - u0, collision_worker_ms: d.collisionMs };
+    assert(d.frames > u0, 'no frame drawn during the drag');
+    return `${n} long tasks (max ${max.toFixed(0)} ms, total ${total.toFixed(0)} ms) over a ${dragMs} ms drag, ${d.frames - u0} frames drawn; last collision ${d.collisionMs === undefined ? '?' : d.collisionMs.toFixed(1)} ms in its worker`;
+  });
+
   await check('no console errors or page errors in any page (besides the ones checks provoke)', async () => {
     const left = problems.filter((p) => !expected.some(([tag, re]) => p.startsWith(`${tag}: console error:`) && re.test(p)));
     assert(left.length === 0, left.join('; '));
@@ -1071,6 +1269,10 @@ try {
     inputs: 40, compute_ms: med, input_to_frame_ms: medTotal, input_to_frame_max_ms: maxTotal, cores, load_average: load,
   }], null, 2)}\n`);
   console.log(`report: page at fast (median of 40 slider inputs): recompute ${med.toFixed(2)} ms, input to redrawn frame ${medTotal.toFixed(2)} ms (max ${maxTotal.toFixed(1)} ms); ${cores} cores, load ${load.toFixed(2)}`);
+  if (longTasks) {
+    console.log(`report: phone profile (375×812, CPU 4× slower), slider drag at integrated: ${longTasks.count} main-thread long tasks, max ${longTasks.max_ms.toFixed(0)} ms, total ${longTasks.total_ms.toFixed(0)} ms (drag ${longTasks.drag_ms} ms, ${longTasks.frames} frames)`);
+    fs.writeFileSync(path.join(benchDir, 'page-long-tasks.json'), `${JSON.stringify({ viewport: '375x812', cpu_slowdown: 4, level: 'integrated', edit: 'adhesion.surface_energy slider drag', ...longTasks, cores, load_average: load }, null, 2)}\n`);
+  }
   console.log(`report: page e2e: slowest wait ${(slowestWait.ms / 1000).toFixed(2)} s (${slowestWait.what}); hang guard ${GUARD_MS / 1000} s`);
 } finally {
   await context.close();

@@ -15,6 +15,24 @@ use alloc::format;
 use alloc::string::{String, ToString};
 use alloc::vec::Vec;
 
+/// The strokes of the comparisons, one per round of [`palette::OVERLAYS`]' hues: all broken, so
+/// that no comparison looks like a model curve of this scene (solid).
+pub const OVERLAY_STROKES: [Stroke; 3] = [Stroke::Dotted, Stroke::Dashed, Stroke::LongDash];
+/// How many comparisons can be told apart by colour and stroke together.
+pub const OVERLAY_STYLES: usize = palette::OVERLAYS.len() * OVERLAY_STROKES.len();
+
+/// The series colour index ([`palette::SERIES`]) and the stroke of the `k`-th comparison of a
+/// figure: every hue with dots, then with dashes, then with long dashes — distinct for
+/// `k < OVERLAY_STYLES` (issue 22: with five hues cycling, Bridges, Higa and Schwager were all one
+/// vermillion dotted line).
+pub const fn overlay_style(k: usize) -> (usize, Stroke) {
+    let k = k % OVERLAY_STYLES;
+    (
+        palette::SERIES_OVERLAY + k % palette::OVERLAYS.len(),
+        OVERLAY_STROKES[k / palette::OVERLAYS.len()],
+    )
+}
+
 /// A curve the user pinned to compare with later edits.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Pinned {
@@ -87,7 +105,9 @@ fn overlay_short(o: &super::frame::OverlayCurve) -> String {
     let context = match o.overlay {
         super::frame::Overlay::Atlas(e) => {
             let [lo, hi] = e.temperature;
-            if lo == hi {
+            if !hi.is_finite() {
+                format!(" ({})", e.geometry.name())
+            } else if lo == hi {
                 format!(" ({lo} K, {})", e.geometry.name())
             } else {
                 format!(" ({lo}–{hi} K, {})", e.geometry.name())
@@ -151,7 +171,7 @@ pub fn eps_figure(frame: &Frame, view: &View, version: &str) -> Figure {
         );
     }
     for (k, o) in frame.overlays.iter().enumerate() {
-        let color = palette::SERIES_OVERLAY + k % palette::OVERLAYS.len();
+        let (color, stroke) = overlay_style(k);
         if o.band {
             if let (Some(&x0), Some(&x1), Some(&y0), Some(&y1)) =
                 (o.g.first(), o.g.last(), o.eps.first(), o.eps.last())
@@ -165,14 +185,14 @@ pub fn eps_figure(frame: &Frame, view: &View, version: &str) -> Figure {
                 });
             }
         } else {
-            // Dotted: a comparison may share a hue with a family member (there are eight
-            // colour-blind-safe hues), never a hue and a stroke.
+            // Broken: a comparison may share a hue with a family member (solid), never a hue and
+            // a stroke.
             series.push(Series {
                 name: o.label.clone(),
                 short: overlay_short(o),
                 points: pts(&o.g, &o.eps),
                 color,
-                stroke: Stroke::Dotted,
+                stroke,
             });
         }
         for (name, g) in &o.speeds {
@@ -189,16 +209,25 @@ pub fn eps_figure(frame: &Frame, view: &View, version: &str) -> Figure {
         }
     }
 
-    // The model: family, clean surfaces, pinned, this scene on top.
+    // The model: family, clean surfaces, pinned, this scene on top. The member that is this
+    // scene is its curve, drawn on top as "this scene (γ = 0.1 J/m²)": drawn as a member too it
+    // lay hidden under it with a legend entry of its own (issue 22).
     let meaning = family_meaning(frame);
+    let mut scene_member = None;
+    let mut first_member = true;
     for (k, m) in frame.family.iter().enumerate() {
         let Some(c) = &m.curve else { continue };
+        if m.is_scene && frame.curve.is_some() {
+            scene_member = Some(member_name(frame, m.value, false));
+            continue;
+        }
         let eps = c.eps();
         let short = member_name(frame, m.value, m.is_scene);
-        let name = match (k, &meaning) {
-            (0, Some(meaning)) => format!("{short} (family: {meaning})"),
+        let name = match (first_member, &meaning) {
+            (true, Some(meaning)) => format!("{short} (family: {meaning})"),
             _ => short.clone(),
         };
+        first_member = false;
         series.push(Series {
             name,
             short,
@@ -239,7 +268,8 @@ pub fn eps_figure(frame: &Frame, view: &View, version: &str) -> Figure {
     if let Some(c) = &frame.curve {
         let eps = c.eps();
         series.push(Series {
-            name: "this scene".to_string(),
+            name: scene_member
+                .map_or_else(|| "this scene".to_string(), |m| format!("this scene ({m})")),
             short: "this scene".to_string(),
             points: pts(g, &eps),
             color: palette::SERIES_SCENE,
@@ -405,8 +435,8 @@ pub fn collision_figures(
             name: "brilliantov2007 (dynamic JKR: neck and pull-off)".to_string(),
             short: "brilliantov2007".to_string(),
             points: dynamic_loop.to_vec(),
-            color: palette::SERIES_OVERLAY + 3,
-            stroke: Stroke::Dotted,
+            color: overlay_style(3).0,
+            stroke: overlay_style(3).1,
         });
     }
     series.push(paper(&t.xi, &t.force));
@@ -457,7 +487,7 @@ mod tests {
         let scene = fig
             .series
             .iter()
-            .position(|s| s.name == "this scene")
+            .position(|s| s.short == "this scene" && s.color == palette::SERIES_SCENE)
             .expect("scene drawn");
         assert!(
             bridges < scene,
@@ -533,8 +563,254 @@ mod tests {
             names.iter().any(|n| n.contains("varied around this scene")),
             "{names:?}"
         );
-        let scene_members = f.family.iter().filter(|m| m.is_scene).count();
-        let marked = names.iter().filter(|n| n.contains("(this scene)")).count();
-        assert_eq!(marked, scene_members, "{names:?}");
+        // The member that is this scene is named once, on this scene's own curve (issue 22: it
+        // was drawn as a member too, hidden under the scene's curve with a legend entry of its
+        // own).
+        assert_eq!(f.family.iter().filter(|m| m.is_scene).count(), 1);
+        let member = f
+            .family
+            .iter()
+            .find(|m| m.is_scene)
+            .expect("a scene member");
+        let value = member_name(&f, member.value, false);
+        let scene: Vec<&str> = names
+            .iter()
+            .copied()
+            .filter(|n| n.contains(value.as_str()))
+            .collect();
+        assert_eq!(scene, [format!("this scene ({value})")], "{names:?}");
+        assert!(
+            !names.iter().any(|n| n.contains("(this scene)")),
+            "{names:?}"
+        );
+        // Every other member is drawn.
+        let members = fig
+            .series
+            .iter()
+            .filter(|s| s.color < palette::FAMILY.len())
+            .count();
+        assert_eq!(members, f.family.len() - 1, "{names:?}");
+    }
+
+    /// Every comparison the explorers offer: the terminal's sets and the page's whole list (the
+    /// data atlas' laws and ranges, every other model).
+    fn comparison_sets(scene: &crate::Scene) -> Vec<Vec<crate::explorer::frame::Overlay>> {
+        use crate::explorer::frame::{COMPARISONS, Overlay, comparison};
+        let mut sets: Vec<_> = (0..COMPARISONS.len())
+            .map(|k| comparison(k, scene))
+            .collect();
+        let mut all: Vec<Overlay> = crate::atlas::ENTRIES
+            .iter()
+            .filter(|e| e.kind != crate::atlas::Kind::Threshold)
+            .map(Overlay::Atlas)
+            .collect();
+        all.extend(
+            crate::models::Model::ALL
+                .iter()
+                .filter(|m| **m != crate::models::Model::Hertzsch2002)
+                .filter(|m| m.needs_section().is_none() || scene.plasticity.is_some())
+                .map(|m| Overlay::Model(*m)),
+        );
+        sets.push(all);
+        sets
+    }
+
+    /// Issues 21 and 22: in compare mode no two series share both colour and stroke, on screen or
+    /// in an export (both draw this description); no two legend entries read alike; every
+    /// comparison line reads on the white plot (≥ 3:1).
+    #[test]
+    fn no_two_series_share_colour_and_stroke_in_any_comparison_issue_22() {
+        let mut plastic = Preset::IceSticky.scene();
+        plastic.plasticity = Some(crate::scene::Plasticity::default());
+        let mut checked = 0;
+        for scene in [Preset::IceSticky.scene(), Preset::IceFrost.scene(), plastic] {
+            for set in comparison_sets(&scene) {
+                let mut req = Request::new(scene, Accuracy::Fast);
+                req.points = 24;
+                req.map_n = 4;
+                req.overlays = set.clone();
+                let f = compute(&req, &|| false).expect("not cancelled");
+                assert!(f.errors.is_empty(), "{:?}", f.errors);
+                assert_eq!(f.overlays.len(), set.len());
+                let pinned = Pinned {
+                    label: "γ 0.2 J/m²".to_string(),
+                    g: f.g.clone(),
+                    eps: f.g.iter().map(|_| 0.5).collect(),
+                };
+                for y_log in [false, true] {
+                    let view = View {
+                        y_log,
+                        experiments: true,
+                        pinned: Some(pinned.clone()),
+                    };
+                    let fig = eps_figure(&f, &view, "test");
+                    for (i, a) in fig.series.iter().enumerate() {
+                        for b in &fig.series[i + 1..] {
+                            assert!(
+                                (a.color, a.stroke) != (b.color, b.stroke),
+                                "{} and {} are both colour {} {:?} ({} overlays)",
+                                a.name,
+                                b.name,
+                                a.color,
+                                a.stroke,
+                                set.len()
+                            );
+                        }
+                    }
+                    let mut legend: Vec<&str> = fig
+                        .series
+                        .iter()
+                        .map(|s| s.name.as_str())
+                        .chain(fig.bands.iter().map(|b| b.label.as_str()))
+                        .collect();
+                    let n = legend.len();
+                    legend.sort_unstable();
+                    legend.dedup();
+                    assert_eq!(legend.len(), n, "legend entries read alike: {legend:?}");
+                    // Measured ranges chosen to compare have a colour each (the experimental
+                    // context's two boxes share its one colour and carry their names inside).
+                    let compared: Vec<&Band> = fig
+                        .bands
+                        .iter()
+                        .filter(|b| b.color >= palette::SERIES_OVERLAY)
+                        .collect();
+                    for (i, a) in compared.iter().enumerate() {
+                        for b in &compared[i + 1..] {
+                            assert_ne!(a.color, b.color, "{} and {}", a.label, b.label);
+                        }
+                    }
+                    for s in fig
+                        .series
+                        .iter()
+                        .filter(|s| s.color >= palette::SERIES_OVERLAY)
+                    {
+                        let c = palette::SERIES[s.color];
+                        assert!(c.contrast(palette::WHITE) >= 3.0, "{}: {c:?}", s.name);
+                    }
+                    checked += 1;
+                }
+            }
+        }
+        // 3 scenes × 4 sets × 2 axes; the page's whole list has 12 or 13 comparisons.
+        assert_eq!(checked, 24);
+        const { assert!(OVERLAY_STYLES >= 13) };
+    }
+
+    /// The check above can fail: with the old rule (five hues, all dotted) a long list repeats.
+    #[test]
+    fn overlay_styles_repeat_only_after_every_pair() {
+        let styles: Vec<_> = (0..OVERLAY_STYLES).map(overlay_style).collect();
+        for (i, a) in styles.iter().enumerate() {
+            assert!(!styles[i + 1..].contains(a), "{a:?} repeats");
+        }
+        assert_eq!(overlay_style(OVERLAY_STYLES), overlay_style(0));
+        let old = |k: usize| (palette::SERIES_OVERLAY + k % 5, Stroke::Dotted);
+        assert_eq!(
+            old(0),
+            old(5),
+            "the old rule gave Bridges and Higa one style"
+        );
+    }
+}
+
+#[cfg(all(test, feature = "plot"))]
+mod render_tests {
+    use super::*;
+    use crate::Accuracy;
+    use crate::explorer::frame::{Overlay, Request, compute};
+    use crate::scene::Preset;
+
+    /// `(x, y, text)` of every `<text>` of an SVG from plotters.
+    fn texts(svg: &str) -> Vec<(f64, f64, String)> {
+        let mut out = Vec::new();
+        for part in svg.split("<text").skip(1) {
+            let attr = |name: &str| {
+                let key = format!(" {name}=\"");
+                part.find(&key).and_then(|i| {
+                    let rest = &part[i + key.len()..];
+                    rest[..rest.find('"')?].parse::<f64>().ok()
+                })
+            };
+            let body = part
+                .split_once('>')
+                .and_then(|(_, r)| r.split_once("</text>"))
+                .map_or(String::new(), |(t, _)| t.trim().to_string());
+            if let (Some(x), Some(y)) = (attr("x"), attr("y")) {
+                out.push((x, y, body));
+            }
+        }
+        out
+    }
+
+    /// Issue 22: with every comparison on, the legend grew past the figure (17 entries of full
+    /// citations) and long labels were cut with "…". Every legend line now lies above the caption,
+    /// no label is cut, and the plot keeps at least half the width.
+    #[test]
+    fn the_legend_of_every_comparison_fits_above_the_caption_issue_22() {
+        let scene = Preset::IceSticky.scene();
+        let mut req = Request::new(scene, Accuracy::Fast);
+        req.points = 24;
+        req.map_n = 4;
+        req.overlays = crate::atlas::ENTRIES
+            .iter()
+            .filter(|e| e.kind != crate::atlas::Kind::Threshold)
+            .map(Overlay::Atlas)
+            .chain(
+                [
+                    crate::models::Model::Brilliantov2007,
+                    crate::models::Model::SchwagerPoschel2008,
+                    crate::models::Model::MullerPoschel2011,
+                ]
+                .map(Overlay::Model),
+            )
+            .collect();
+        let f = compute(&req, &|| false).expect("not cancelled");
+        let fig = eps_figure(&f, &View::default(), "test");
+        assert!(fig.series.len() + fig.bands.len() >= 17);
+        for (w, h) in [(1200, 800), (800, 500)] {
+            let svg = crate::figure::render_svg(&fig, w, h).expect("rendered");
+            let all = texts(&svg);
+            // The caption's lines are the last texts, at x = 12; everything else lies above them.
+            let caption_top = all
+                .iter()
+                .filter(|t| t.0 == 12.0 && fig.caption.contains(t.2.trim_end_matches(" …")))
+                .map(|t| t.1)
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                caption_top.is_finite() && caption_top < f64::from(h),
+                "{caption_top}"
+            );
+            let legend: Vec<&(f64, f64, String)> =
+                all.iter().filter(|t| t.0 > f64::from(w) / 2.0).collect();
+            assert!(legend.len() >= 10, "{} legend lines", legend.len());
+            for (_, y, text) in &legend {
+                assert!(
+                    *y < caption_top - 4.0,
+                    "{w}×{h}: legend line {text:?} at y {y} reaches the caption at {caption_top}"
+                );
+                assert!(!text.ends_with('…'), "{w}×{h}: cut legend label {text:?}");
+            }
+            // Each drawn entry is in the legend, whole or in its short form, or counted as left out.
+            let more = legend.iter().find_map(|t| {
+                t.2.strip_prefix("… and ")
+                    .and_then(|r| r.strip_suffix(" more"))
+                    .and_then(|n| n.parse::<usize>().ok())
+            });
+            let first = |t: &str| t.split_whitespace().next().unwrap_or_default().to_string();
+            let listed = fig
+                .series
+                .iter()
+                .filter(|s| {
+                    legend.iter().any(|t| {
+                        t.2.starts_with(&first(&s.name)) || t.2.starts_with(&first(&s.short))
+                    })
+                })
+                .count();
+            assert!(
+                listed + more.unwrap_or(0) >= fig.series.len(),
+                "{w}×{h}: {listed} of {} series listed, {more:?} more",
+                fig.series.len()
+            );
+        }
     }
 }

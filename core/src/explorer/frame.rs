@@ -262,16 +262,23 @@ pub fn overlay_curve(
         Overlay::Atlas(entry) => {
             let [lo, hi] = entry.valid_speed;
             let t = entry.temperature;
-            let temperature = if t[0] == t[1] {
+            // An ansatz with no experiment (borderies1984) has no temperature: none is printed.
+            let temperature = if !t[1].is_finite() {
+                String::from("any temperature")
+            } else if t[0] == t[1] {
                 format!("{} K", t[0])
             } else {
                 format!("{}–{} K", t[0], t[1])
             };
+            // What tells entries of one paper apart (Hatzes et al. 1988 has three): the material.
             let label = format!(
-                "{} {} ({temperature}, {}, measured {lo:.2e}–{hi:.2e} m/s)",
-                entry.citation.authors,
+                "{} {}, {} ({temperature}, {}, measured {}–{})",
+                entry.citation.short_authors(),
                 entry.citation.year,
-                entry.geometry.name()
+                entry.material,
+                entry.geometry.name(),
+                crate::figure::speed_label(lo),
+                crate::figure::speed_label(hi),
             );
             // An entry that needs a radius takes the scene's reduced radius.
             let radius = entry.needs_radius().then_some(contact.r_eff);

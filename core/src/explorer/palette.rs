@@ -5,14 +5,23 @@
 //! Roles, not hues, are what the views use:
 //!
 //! * this scene's curve and its critical-speed markers: orange (a marker has its curve's colour);
-//! * the family of curves: sky blue, bluish green, reddish purple, yellow;
+//! * the family of curves: mid blue, bluish green, reddish purple, ochre (sky blue and yellow,
+//!   too pale on a white plot, darkened so that every line reads: see below);
 //! * the clean surface: light grey; the experimental context (Bridges et al. 1984 and the
 //!   microgravity boxes): vermillion, so that neither shares a grey with the other;
 //! * stick-map classes: "aggregation" (sticking) vermillion and "rolling" sky blue stay far apart
 //!   under deuteranopia; `sliding_gap`, an artifact of the printed law, is grey.
 //!
 //! Every role that a terminal prints as text has a contrast of at least 4.5:1 on black (no dark
-//! blue), checked by a test.
+//! blue), checked by a test. Every family and comparison line has at least 3:1 (WCAG 2.1, 1.4.11,
+//! graphical objects) on the white plot area that the figures, the exports and the page draw on in
+//! both of its themes; the yellow γ = 0.5 member had 1.3:1 (issue 22). This scene's orange (2.3:1,
+//! drawn thickest and on top) and the clean surface's light grey (1.9:1, a faint reference by
+//! design) keep their colours.
+//!
+//! A comparison (`explorer::figures::overlay_style`) takes a hue and a stroke of its own: five hues by three broken
+//! strokes give fifteen pairs, more than the comparisons offered (thirteen), so no two series of a
+//! figure share both colour and stroke (issue 21, 22).
 
 use crate::tangential::StickClass;
 
@@ -93,9 +102,13 @@ pub const GREY_LIGHT: Rgb = Rgb::hex(0xBBBBBB);
 pub const GREY_DARK: Rgb = Rgb::hex(0x555555);
 /// White `#FFFFFF`.
 pub const WHITE: Rgb = Rgb::hex(0xFFFFFF);
+/// Mid blue `#3A7DC9`: sky blue darkened to read on white (4.2:1) and on black (5.0:1).
+pub const MID_BLUE: Rgb = Rgb::hex(0x3A7DC9);
+/// Ochre `#A08C00`: yellow darkened to read on white (3.4:1) and on black (6.3:1).
+pub const OCHRE: Rgb = Rgb::hex(0xA08C00);
 
 /// The palette's colours with the word a caption uses for them.
-const NAMES: [(Rgb, &str); 11] = [
+const NAMES: [(Rgb, &str); 13] = [
     (BLACK, "black"),
     (ORANGE, "orange"),
     (SKY_BLUE, "sky-blue"),
@@ -107,6 +120,8 @@ const NAMES: [(Rgb, &str); 11] = [
     (GREY_LIGHT, "light grey"),
     (GREY_DARK, "dark grey"),
     (WHITE, "white"),
+    (MID_BLUE, "mid blue"),
+    (OCHRE, "ochre"),
 ];
 
 impl Rgb {
@@ -125,14 +140,16 @@ pub const SCENE: Rgb = ORANGE;
 /// Critical-speed markers (g_s) of this scene: the colour of its curve.
 pub const CRITICAL: Rgb = SCENE;
 /// The family of curves over a swept parameter, in order (repeats after four).
-pub const FAMILY: [Rgb; 4] = [SKY_BLUE, BLUISH_GREEN, REDDISH_PURPLE, YELLOW];
+pub const FAMILY: [Rgb; 4] = [MID_BLUE, BLUISH_GREEN, REDDISH_PURPLE, OCHRE];
 /// The clean-surface curve (no layer, no adhesion).
 pub const CLEAN: Rgb = GREY_LIGHT;
 /// The experimental context: the Bridges et al. (1984) law and the microgravity boxes.
 pub const EXPERIMENT: Rgb = VERMILLION;
 
-/// The comparisons drawn over the ε_N chart (measured laws and other models), in order (repeats).
-pub const OVERLAYS: [Rgb; 5] = [VERMILLION, SKY_BLUE, BLUISH_GREEN, REDDISH_PURPLE, YELLOW];
+/// The hues of the comparisons drawn over the ε_N chart (measured laws and other models), in
+/// order; with three broken strokes they give each comparison its own style
+/// (`explorer::figures::overlay_style`).
+pub const OVERLAYS: [Rgb; 5] = [VERMILLION, BLUE, BLUISH_GREEN, REDDISH_PURPLE, OCHRE];
 /// A curve pinned to compare with later edits.
 pub const PINNED: Rgb = GREY_DARK;
 
@@ -298,6 +315,37 @@ mod tests {
         }
     }
 
+    /// Issue 22: the γ = 0.5 family member was yellow on white (1.3:1). Every family and
+    /// comparison line reads on the white plot area of the figures, the exports and the page (its
+    /// dark theme keeps the plot white), and as text on a dark terminal.
+    #[test]
+    fn family_and_comparison_lines_read_on_white_and_on_black_issue_22() {
+        for c in FAMILY.into_iter().chain(OVERLAYS) {
+            assert!(
+                c.contrast(WHITE) >= 3.0,
+                "{c:?} on white: {}",
+                c.contrast(WHITE)
+            );
+            assert!(
+                c.contrast(BLACK) >= 4.0,
+                "{c:?} on black: {}",
+                c.contrast(BLACK)
+            );
+        }
+        for c in FAMILY {
+            assert!(c.contrast(BLACK) >= 4.5, "{c:?}");
+        }
+        // The check can fail: the old fourth member.
+        assert!(YELLOW.contrast(WHITE) < 1.5);
+        // Within the family the hues stay apart under deuteranopia.
+        for (i, a) in FAMILY.iter().enumerate() {
+            for b in &FAMILY[i + 1..] {
+                let d = dist(deuteranopia(*a), deuteranopia(*b));
+                assert!(d > 40.0, "{a:?} vs {b:?}: {d}");
+            }
+        }
+    }
+
     #[test]
     fn roles_are_distinct() {
         assert_ne!(
@@ -319,6 +367,6 @@ mod tests {
         for c in StickClass::ALL {
             assert!(j.contains(&alloc::format!("\"{}\":\"#", c.name())), "{j}");
         }
-        assert!(j.contains("\"family\":[\"#56B4E9\",\"#009E73\",\"#CC79A7\",\"#F0E442\"]"));
+        assert!(j.contains("\"family\":[\"#3A7DC9\",\"#009E73\",\"#CC79A7\",\"#A08C00\"]"));
     }
 }

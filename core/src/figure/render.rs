@@ -8,6 +8,7 @@ use super::{Figure, PALETTE, Stroke, class_color};
 use crate::error::{Error, Result};
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use std::format;
 use std::string::String;
 use std::vec;
 use std::vec::Vec;
@@ -123,13 +124,15 @@ enum Swatch {
     Line(RGBColor, Stroke),
 }
 
-/// The legend's entries in drawing order: map classes present, measured ranges, curves.
-fn legend_entries(fig: &Figure) -> Vec<(String, Swatch)> {
+/// The legend's entries in drawing order: map classes present, measured ranges, curves; each with
+/// its full text and its short one.
+fn legend_entries(fig: &Figure) -> Vec<(String, String, Swatch)> {
     let mut out = Vec::new();
     if let Some(map) = &fig.map {
         for c in crate::tangential::StickClass::ALL {
             if map.classes.contains(&c) {
                 out.push((
+                    String::from(c.label()),
                     String::from(c.label()),
                     Swatch::Box(rgb(class_color(c)), 1.0),
                 ));
@@ -138,7 +141,11 @@ fn legend_entries(fig: &Figure) -> Vec<(String, Swatch)> {
     }
     for band in &fig.bands {
         let color = rgb(PALETTE[band.color % PALETTE.len()]);
-        out.push((band.label.clone(), Swatch::Box(color, 0.3)));
+        out.push((
+            band.label.clone(),
+            band.short.clone(),
+            Swatch::Box(color, 0.3),
+        ));
     }
     for s in &fig.series {
         let drawable = s.points.iter().any(|&(x, y)| {
@@ -146,10 +153,49 @@ fn legend_entries(fig: &Figure) -> Vec<(String, Swatch)> {
         });
         if drawable {
             let color = rgb(PALETTE[s.color % PALETTE.len()]);
-            out.push((s.name.clone(), Swatch::Line(color, s.stroke)));
+            out.push((
+                s.name.clone(),
+                s.short.clone(),
+                Swatch::Line(color, s.stroke),
+            ));
         }
     }
     out
+}
+
+/// The legend's lines within `rows` lines of `max_chars`: every full text wrapped (never cut) when
+/// they fit, else the short texts (a figure with every comparison on: the full citations are in
+/// the caption's sources and the records), else as many entries as fit and a last line saying how
+/// many are left out. Returns the widest line and the lines.
+fn fit_legend(
+    entries: &[(String, String, Swatch)],
+    max_chars: usize,
+    rows: usize,
+) -> (usize, Vec<(String, Option<Swatch>)>) {
+    let full: Vec<(String, Swatch)> = entries.iter().map(|(n, _, s)| (n.clone(), *s)).collect();
+    let (w, lines) = wrap_legend(&full, max_chars);
+    if lines.len() <= rows {
+        return (w, lines);
+    }
+    let short: Vec<(String, Swatch)> = entries.iter().map(|(_, n, s)| (n.clone(), *s)).collect();
+    let (w, mut lines) = wrap_legend(&short, max_chars);
+    if lines.len() > rows {
+        // Whole entries only (never a label's first half), then how many are left out.
+        let keep = rows.saturating_sub(1);
+        let starts: Vec<usize> = (0..lines.len()).filter(|&k| lines[k].1.is_some()).collect();
+        let (mut end, mut shown) = (0, 0);
+        for (i, _) in starts.iter().enumerate() {
+            let stop = starts.get(i + 1).copied().unwrap_or(lines.len());
+            if stop > keep {
+                break;
+            }
+            end = stop;
+            shown += 1;
+        }
+        lines.truncate(end);
+        lines.push((format!("… and {} more", entries.len() - shown), None));
+    }
+    (w, lines)
 }
 
 /// The legend's lines: each label wrapped at word boundaries to at most `max_chars` characters
@@ -205,6 +251,7 @@ fn draw_legend<DB: DrawingBackend>(
                     Stroke::Dashed => &[[2, 8], [11, 17], [20, 24]],
                     Stroke::Dotted => &[[2, 4], [7, 9], [12, 14], [17, 19], [22, 24]],
                     Stroke::Points => &[[8, 16]],
+                    Stroke::LongDash => &[[2, 16], [20, 24]],
                 };
                 for [a, b] in parts {
                     area.draw(&PathElement::new(vec![(*a, y), (*b, y)], style))
@@ -274,7 +321,8 @@ fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Resul
     // (a terminal pane) place it with `Figure::legend_corner` instead.
     let entries = legend_entries(fig);
     let width = body.dim_in_pixel().0 as i32;
-    let (label_width, legend_lines) = wrap_legend(&entries, (width as f64 * 0.3) as usize / 7);
+    let rows = ((body.dim_in_pixel().1 as i32 - 44 - 8) / 16).max(1) as usize;
+    let (label_width, legend_lines) = fit_legend(&entries, (width as f64 * 0.3) as usize / 7, rows);
     let legend_width = if entries.is_empty() {
         0
     } else {
@@ -400,6 +448,9 @@ fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Resul
                 Stroke::Points => chart
                     .draw_series(seg.into_iter().map(|p| Cross::new(p, 4, style)))
                     .map_err(plot_err)?,
+                Stroke::LongDash => chart
+                    .draw_series(DashedLineSeries::new(seg, 14, 4, style))
+                    .map_err(plot_err)?,
             };
             if first {
                 // The legend's sample of the stroke: a line, dashes, dots or a dot.
@@ -419,6 +470,12 @@ fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Resul
                             [(5, 0), (7, 0)],
                             [(10, 0), (12, 0)],
                             [(15, 0), (17, 0)],
+                        ],
+                        Stroke::LongDash => [
+                            [(0, 0), (13, 0)],
+                            [(16, 0), (18, 0)],
+                            [(0, 0), (13, 0)],
+                            [(16, 0), (18, 0)],
                         ],
                         Stroke::Points => [
                             [(5, -4), (13, 4)],

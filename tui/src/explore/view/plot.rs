@@ -28,6 +28,7 @@ pub fn swatch(stroke: Stroke) -> &'static str {
         Stroke::Dashed => "╍╍",
         Stroke::Dotted => "┈┈",
         Stroke::Points => "×",
+        Stroke::LongDash => "━╺",
     }
 }
 
@@ -88,7 +89,7 @@ pub fn legend(fig: &Figure, tags: &[Option<char>]) -> Vec<Entry> {
             0
         } else if s.color == palette::SERIES_PINNED {
             1
-        } else if s.stroke == Stroke::Dotted {
+        } else if s.color >= palette::SERIES_OVERLAY {
             2
         } else {
             3
@@ -193,6 +194,7 @@ fn pieces(pts: &[(f64, f64)], stroke: Stroke, scale: (f64, f64)) -> Vec<((f64, f
     let (on, off) = match stroke {
         Stroke::Dashed => (2.0, 1.0),
         Stroke::Dotted => (0.5, 1.0),
+        Stroke::LongDash => (3.5, 1.0),
         _ => (f64::INFINITY, 0.0),
     };
     let mut out = Vec::new();
