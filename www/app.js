@@ -36,7 +36,7 @@ function schedule() {
 function requestPinned() {
   const p = app.pinRequest;
   const view = {
-    accuracy: p.accuracy, from: p.from, to: p.to, points: CURVE_POINTS, mapN: 2, family: false,
+    accuracy: p.accuracy, from: p.from, to: p.to, mapN: 2, family: false,
     experiments: false, date: new Date().toISOString().slice(0, 19) + 'Z',
   };
   app.computer.request(p.scene, view, { pin: p, view: { accuracy: p.accuracy }, t0: performance.now(), calls: 0, format: 0 });
