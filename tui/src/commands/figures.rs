@@ -67,6 +67,7 @@ fn run_explorer(c: &Common, out: &Path, x: &ExplorerFigures) -> CliResult<String
         out,
         &frame,
         &view,
+        None,
         &crate::explore::frame_export::date(secs),
     )?;
     let mut s = String::new();

@@ -51,7 +51,8 @@ impl App {
             experiments: self.experiments,
             pinned: self.pinned.clone(),
         };
-        match frame_export::export(&self.out_dir, data, &view) {
+        let ring = self.ring_card.as_ref().and_then(|c| c.as_ref().ok());
+        match frame_export::export(&self.out_dir, data, &view, ring) {
             Ok(dir) => self.info(format!(
                 "exported scene.json, CSV tables, SVG + PNG figures to {}/",
                 dir.display()
@@ -131,5 +132,35 @@ impl App {
         };
         self.inside = Some((g, result));
         self.inside_key = Some((self.scene, self.accuracy));
+    }
+
+    /// Recomputes the ring card when its inputs changed: the scene, τ, the planet distance (the
+    /// tidal appendix's planet, so both cards describe one ring) or the chart's speeds.
+    pub(crate) fn refresh_ring(&mut self) {
+        if !self.ring {
+            return;
+        }
+        let Some(chart) = self
+            .data
+            .as_ref()
+            .and_then(|d| Some((*d.g.first()?, *d.g.last()?)))
+        else {
+            return;
+        };
+        let key = (self.scene, self.ring_tau, self.tidal_factor, chart);
+        if self.ring_key == Some(key) {
+            return;
+        }
+        let planet = super::tidal::view(&self.scene, self.tidal_factor).input;
+        let input = rime_core::ring::RingInput {
+            tau: self.ring_tau,
+            orbit: rime_core::ring::Orbit::of_tidal(&planet),
+            damping_set_for_radius: None,
+        };
+        self.ring_card = Some(
+            rime_core::explorer::ring::ring_card(&self.scene, &input, chart)
+                .map_err(|e| e.to_string()),
+        );
+        self.ring_key = Some(key);
     }
 }

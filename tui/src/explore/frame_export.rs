@@ -9,6 +9,7 @@ use crate::scene_io::{CliError, CliResult, scene_json, write_atomic};
 use rime_core::explorer::figures::{View, frame_figures};
 use rime_core::explorer::frame::Frame;
 use rime_core::explorer::records;
+use rime_core::explorer::ring::RingCard;
 use std::path::{Path, PathBuf};
 
 /// The program's version, as records and captions cite it.
@@ -36,7 +37,13 @@ pub fn date(secs: u64) -> String {
 /// `eps_family.csv` (every curve side by side), `stick_map.csv` (the records of `rime map`, when the
 /// frame has a map) and the figures as SVG and PNG into `dir`, which must exist. Each CSV starts
 /// with `# ` context lines (version, level, scene, `date`, citation). Returns the files written.
-pub fn write_frame(dir: &Path, f: &Frame, view: &View, date: &str) -> CliResult<Vec<String>> {
+pub fn write_frame(
+    dir: &Path,
+    f: &Frame,
+    view: &View,
+    ring: Option<&RingCard>,
+    date: &str,
+) -> CliResult<Vec<String>> {
     let context = |what: &str| records::context(f, what, VERSION, date);
     let mut texts = vec![
         (
@@ -58,7 +65,11 @@ pub fn write_frame(dir: &Path, f: &Frame, view: &View, date: &str) -> CliResult<
             context(records::MAP_WHAT) + &map,
         ));
     }
-    let figures = frame_figures(f, view, VERSION);
+    let mut figures = frame_figures(f, view, VERSION);
+    // The ring card's ε_cr line, meeting point and marker, as on screen.
+    if let (Some(card), Some(eps)) = (ring, figures.first_mut()) {
+        card.overlay(eps);
+    }
     for fig in &figures {
         let svg = rime_core::figure::render_svg(fig, 1000, 650)?;
         texts.push((format!("{}.svg", fig.name), svg));
@@ -82,7 +93,12 @@ pub fn write_frame(dir: &Path, f: &Frame, view: &View, date: &str) -> CliResult<
 
 /// Writes the frame ([`write_frame`]) into a new folder `rime-export-<UTC timestamp>` under
 /// `base`; returns the folder.
-pub fn export(base: &Path, frame: &Frame, view: &View) -> CliResult<PathBuf> {
+pub fn export(
+    base: &Path,
+    frame: &Frame,
+    view: &View,
+    ring: Option<&RingCard>,
+) -> CliResult<PathBuf> {
     let secs = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_secs());
@@ -95,6 +111,6 @@ pub fn export(base: &Path, frame: &Frame, view: &View) -> CliResult<PathBuf> {
     }
     std::fs::create_dir_all(&dir)
         .map_err(|e| CliError::input(format!("{}: {e}", dir.display())))?;
-    write_frame(&dir, frame, view, &date(secs))?;
+    write_frame(&dir, frame, view, ring, &date(secs))?;
     Ok(dir)
 }

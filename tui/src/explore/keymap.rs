@@ -149,6 +149,12 @@ pub enum Action {
     FitToLaw,
     /// The sticking-thresholds panel on/off.
     Stick,
+    /// Ring card on/off.
+    Ring,
+    /// Ring optical depth ÷1.25.
+    RingThinner,
+    /// Ring optical depth ×1.25.
+    RingDenser,
     /// Tidal planet distance ÷1.05.
     TidalNearer,
     /// Tidal planet distance ×1.05.
@@ -318,6 +324,15 @@ pub const KEYMAP: &[Row] = &[
             (Key::Char('t'), Action::Tidal),
             (Key::Char('<'), Action::TidalNearer),
             (Key::Char('>'), Action::TidalFarther),
+        ],
+    },
+    Row {
+        keys: "r  (then ( ) < >)",
+        does: "ring card: what this law does to a ring (τ ÷/×1.25)",
+        bindings: &[
+            (Key::Char('r'), Action::Ring),
+            (Key::Char('('), Action::RingThinner),
+            (Key::Char(')'), Action::RingDenser),
         ],
     },
     Row {

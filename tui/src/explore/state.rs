@@ -101,6 +101,14 @@ pub struct App {
     pub inside_key: Option<(Scene, Accuracy)>,
     /// With adhesion, the dynamic JKR model's (ξ, F) loop at the same speed (issue 16).
     pub inside_dynamic: Vec<(f64, f64)>,
+    /// Whether the ring card is shown (`r`).
+    pub ring: bool,
+    /// The ring card's optical depth τ.
+    pub ring_tau: f64,
+    /// The ring card (or why it could not be computed), for [`App::ring_key`].
+    pub ring_card: Option<Result<rime_core::explorer::ring::RingCard, String>>,
+    /// What the ring card was computed for: scene, τ, planet-distance factor, chart speeds.
+    pub ring_key: Option<(Scene, f64, f64, (f64, f64))>,
     /// Planet distance of the tidal calculator as a multiple of the paper's (Encke division).
     pub tidal_factor: f64,
     /// Path being typed after `o` (None when not opening a scene file).
@@ -193,6 +201,11 @@ pub(crate) fn nearest(g: &[f64], target: f64) -> usize {
         .map_or(0, |(i, _)| i)
 }
 
+/// The ring card's optical depth when it opens: Saturn's A ring.
+pub const RING_TAU: f64 = 0.5;
+/// Factor by which `(` / `)` change the ring card's optical depth.
+pub const RING_TAU_STEP: f64 = 1.25;
+
 /// Factor by which `<` / `>` change the tidal calculator's planet distance.
 pub const TIDAL_STEP: f64 = 1.05;
 
@@ -229,6 +242,10 @@ impl App {
             stick: None,
             inside_dynamic: Vec::new(),
             tidal_factor: 1.0,
+            ring: false,
+            ring_tau: RING_TAU,
+            ring_card: None,
+            ring_key: None,
             open: None,
             map_shown: false,
             help_scroll: 0,

@@ -1,7 +1,7 @@
 //! Tests of the explorer: `update` logic, `TestBackend` buffer assertions and insta snapshots.
 
 use super::compute::{SWEEPS, compute};
-use super::state::{App, Confirm, Event, Focus, Tone};
+use super::state::{App, Confirm, Event, Focus, RING_TAU, RING_TAU_STEP, TIDAL_STEP, Tone};
 use super::update::update;
 use super::view::render;
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
@@ -990,6 +990,49 @@ fn the_thresholds_panel_draws_the_cores_figure_when_tall_issue_21() {
     let small = text(&screen(&app, 80, 24));
     assert!(!small.contains(&fig.series[0].short), "{small}");
     assert!(small.contains("9.6 m/s"), "{small}");
+}
+
+#[test]
+fn the_ring_card_opens_on_r_and_draws_eps_cr_on_the_chart_issue_24() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('r'));
+    let card = match app.ring_card.clone() {
+        Some(Ok(card)) => card,
+        other => panic!("no ring card: {other:?}"),
+    };
+    let s = text(&screen(&app, 160, 45));
+    assert!(s.contains("ring: what the law does to it"), "{s}");
+    assert!(
+        s.contains(&card.eps_cr_line.short),
+        "ε_cr line not in the legend\n{s}"
+    );
+    for row in &card.rows {
+        assert!(
+            s.contains(&row.text),
+            "missing {}: {}\n{s}",
+            row.label,
+            row.text
+        );
+    }
+    // τ and the planet distance are inputs: the card follows them.
+    update(&mut app, ch(')'));
+    assert_eq!(app.ring_tau, RING_TAU * RING_TAU_STEP);
+    assert!(matches!(&app.ring_card, Some(Ok(c)) if c.record.tau == app.ring_tau));
+    let omega = |app: &App| match &app.ring_card {
+        Some(Ok(c)) => c.record.omega,
+        _ => f64::NAN,
+    };
+    let before = omega(&app);
+    update(&mut app, ch('>'));
+    // Ω ∝ d^(-3/2): one step of 1.05 farther.
+    let expected = before * TIDAL_STEP.powf(-1.5);
+    assert!(
+        (omega(&app) - expected).abs() <= 1e-12 * expected,
+        "{} vs {expected}",
+        omega(&app)
+    );
+    update(&mut app, ch('r'));
+    assert!(!text(&screen(&app, 160, 45)).contains("ring: what the law does to it"));
 }
 
 /// Issue 22: the `v` panel is computed for the scene's A (it kept the A it was opened with): at

@@ -27,6 +27,7 @@ pub fn update(app: &mut App, event: Event) {
         }
     }
     app.refresh_inside();
+    app.refresh_ring();
 }
 
 impl App {
@@ -396,11 +397,18 @@ impl App {
             (Action::Inside, _) => self.toggle_collision_panel(),
             (Action::Experiments, _) => self.toggle_experiments(),
             (Action::Tidal, _) => self.toggle_tidal(),
-            (Action::TidalNearer | Action::TidalFarther, _) if self.tidal => {
+            (Action::Ring, _) => self.toggle_ring(),
+            (Action::RingThinner | Action::RingDenser, _) if self.ring => self.ring_depth(action),
+            (Action::RingThinner | Action::RingDenser, _) => {
+                self.info("( ) change the ring card's optical depth: press r first");
+            }
+            (Action::TidalNearer | Action::TidalFarther, _) if self.tidal || self.ring => {
                 self.tidal_distance(action)
             }
             (Action::TidalNearer | Action::TidalFarther, _) => {
-                self.info("< > change the tidal appendix's planet distance: press t first");
+                self.info(
+                    "< > change the planet distance of the tidal appendix (t) or the ring card (r)",
+                );
             }
             (Action::Open, _) => self.open_prompt(),
             (Action::Export, _) => self.export(),
@@ -872,5 +880,29 @@ impl App {
         let j = pick(column - r.x, r.width);
         let i = pick(r.height - 1 - (row - r.y), r.height);
         self.map_cursor = (i, j);
+    }
+
+    /// `r`: the ring card on or off.
+    pub(crate) fn toggle_ring(&mut self) {
+        self.ring = !self.ring;
+        self.info(if self.ring {
+            "ring card: ε_cr(τ) on the ε_N chart · ( ) optical depth · < > planet distance · r closes"
+        } else {
+            "ring card closed"
+        });
+    }
+
+    /// `(` / `)`: the ring card's optical depth ÷/× [`RING_TAU_STEP`], within the card's domain.
+    pub(crate) fn ring_depth(&mut self, action: Action) {
+        let f = if action == Action::RingDenser {
+            RING_TAU_STEP
+        } else {
+            1.0 / RING_TAU_STEP
+        };
+        self.ring_tau = (self.ring_tau * f).clamp(1e-3, 5.0);
+        self.info(format!(
+            "ring: optical depth τ = {}",
+            super::format::sig(self.ring_tau, 3)
+        ));
     }
 }

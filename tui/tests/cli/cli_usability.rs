@@ -296,7 +296,10 @@ fn decades_are_exact_and_numbers_carry_no_float_noise() {
         .map(|l| l.split(',').next().unwrap())
         .collect();
     // One number rule (issue 21): plain from 1e-4, like error messages.
-    assert_eq!(first, ["1e-6", "1e-5", "0.0001", "0.001", "0.01", "0.1", "1"]);
+    assert_eq!(
+        first,
+        ["1e-6", "1e-5", "0.0001", "0.001", "0.01", "0.1", "1"]
+    );
     // Halves of decades too: 10^-5.5 to the double.
     let v = json(&["curve", "--from", "1e-6", "--to", "1e-5", "--points", "3"]);
     assert_eq!(v[1]["g_n"].as_f64().unwrap(), 10f64.powf(-5.5));

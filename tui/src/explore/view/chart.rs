@@ -37,6 +37,8 @@ pub struct ChartView<'a> {
     pub shared: bool,
     /// The terminal's colours.
     pub colors: Colors,
+    /// The ring card, whose ε_cr line and meeting point go on the chart.
+    pub ring: Option<&'a rime_core::explorer::ring::RingCard>,
 }
 
 /// The figure this chart shows: the core's, for the same view `x` exports.
@@ -46,7 +48,11 @@ pub fn figure(data: &Computed, app: &ChartView) -> rime_core::figure::Figure {
         experiments: app.experiments,
         pinned: app.pinned.cloned(),
     };
-    figures::eps_figure(&data.frame, &view, env!("CARGO_PKG_VERSION"))
+    let mut fig = figures::eps_figure(&data.frame, &view, env!("CARGO_PKG_VERSION"));
+    if let Some(card) = app.ring {
+        card.overlay(&mut fig);
+    }
+    fig
 }
 
 /// Draws the ε_N chart: the core's figure with the cursor, and the readout. Returns the speed

@@ -73,6 +73,11 @@ pub fn render(app: &App, frame: &mut Frame) {
                 pinned: app.pinned.as_ref(),
                 shared: l.shared,
                 colors: app.colors,
+                ring: app
+                    .ring
+                    .then_some(app.ring_card.as_ref())
+                    .flatten()
+                    .and_then(|c| c.as_ref().ok()),
             },
         );
     }
@@ -139,6 +144,9 @@ pub fn render(app: &App, frame: &mut Frame) {
             };
             frame.render_widget(Paragraph::new(line), l.status);
         }
+    }
+    if app.ring {
+        ring::render_over(frame, l.map, l.views(), l.shared, app.ring_card.as_ref());
     }
     if app.tidal {
         let view = super::tidal::view(&app.scene, app.tidal_factor);

@@ -2,19 +2,11 @@
 //! [`RingCard`] (`rime_core::explorer::ring`), the same card the page shows and the same numbers
 //! `rime ring` prints. The ε_cr line, the meeting point and the impact-speed marker go on the ε_N
 //! chart through [`RingCard::overlay`] (the chart's figure), not here.
-// Not wired into the explorer yet (issue 24: the app and keymap are being restructured); the
-// expectation fails, and so reminds to drop this line, once `render` is called.
-#![cfg_attr(
-    not(test),
-    expect(
-        dead_code,
-        reason = "the ring card is wired into the explorer separately"
-    )
-)]
 
 use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Modifier, Style};
+use ratatui::text::Text;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph, Wrap};
 use rime_core::explorer::format::{qty, sig};
@@ -53,19 +45,53 @@ pub fn lines(card: &RingCard) -> Vec<Line<'static>> {
 
 /// Draws the card over `area`.
 pub fn render(frame: &mut Frame, area: Rect, card: &RingCard) {
+    draw(frame, area, lines(card).into());
+}
+
+/// The card's frame (title, keys) around `text`.
+fn draw(frame: &mut Frame, area: Rect, text: Text<'static>) {
     frame.render_widget(Clear, area);
     let block = Block::bordered()
         .border_style(Style::new().fg(Color::White))
         .title(Span::styled(
             " ring: what the law does to it ",
             Style::new().add_modifier(Modifier::BOLD),
-        ));
+        ))
+        .title_bottom(" ( ) τ · < > planet distance · r closes ");
     let inner = block.inner(area);
     frame.render_widget(block, area);
-    frame.render_widget(
-        Paragraph::new(lines(card)).wrap(Wrap { trim: false }),
-        inner,
-    );
+    frame.render_widget(Paragraph::new(text).wrap(Wrap { trim: false }), inner);
+}
+
+/// Draws the card where it leaves the ε_N chart (and its ε_cr line) in view: over the stick map's
+/// pane, or, where the chart and the map share one pane, over the pane's lower part. `card` is
+/// `None` before the first frame, and an error names the field that stopped it.
+pub fn render_over(
+    frame: &mut Frame,
+    map: Rect,
+    views: Rect,
+    shared: bool,
+    card: Option<&Result<RingCard, String>>,
+) {
+    let text: Text<'static> = match card {
+        Some(Ok(c)) => lines(c).into(),
+        Some(Err(e)) => Line::from(Span::styled(
+            format!("no ring card: {e}"),
+            Style::new().fg(Color::LightRed),
+        ))
+        .into(),
+        None => Line::from(Span::styled("computing…", Style::new().fg(Color::Gray))).into(),
+    };
+    let area = if shared {
+        let h = (text.height() as u16 + 2).min(views.height / 2).max(3);
+        Rect::new(views.x, views.y + views.height - h, views.width, h)
+    } else {
+        map
+    };
+    match card {
+        Some(Ok(c)) => render(frame, area, c),
+        _ => draw(frame, area, text),
+    }
 }
 
 #[cfg(test)]
