@@ -327,6 +327,8 @@ fn layer_work(a: f64, b: f64, lambda: f64, x0: f64, x1: f64) -> f64 {
 impl Contact {
     /// One collision at impact speed `g` \[m/s\]: `points` samples evenly spaced in time over the
     /// contact (plus the phase instants), the phases and the energy ledger.
+    // Long by design: one collision integrated phase by phase with one shared state; the phases
+    // are commented in order.
     pub fn collision(&self, g: f64, points: usize, accuracy: Accuracy) -> Result<Trajectory> {
         let normal = self.normal(g, accuracy)?;
         if points < 2 {
@@ -483,6 +485,8 @@ impl Contact {
     }
 
     /// The literal reading's integrated steps and its closed-form tail.
+    // Long by design: the literal layer reading's contact pieces in time order with one shared
+    // state.
     fn literal_pieces(
         &self,
         sc: Scale,
@@ -569,6 +573,8 @@ impl Contact {
     }
 
     #[allow(clippy::too_many_arguments)]
+    // Long by design: assembles every field of a trajectory (samples, phases, ledger) from one
+    // integration; each block fills one field.
     fn finish(
         &self,
         g: f64,

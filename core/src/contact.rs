@@ -92,6 +92,8 @@ impl Contact {
     /// Derives the contact constants: the single validity gate of a scene. Checks every field
     /// (the error names it by its dotted path), then fails if a derived quantity over- or
     /// underflows.
+    // Long by design: derives every contact constant once, in dependency order, each checked where
+    // it is derived (the one validity gate).
     pub fn new(scene: &Scene) -> Result<Contact> {
         scene.check_fields()?;
         let g = &scene.grains;

@@ -138,6 +138,8 @@ fn ratio_factor(cell: &str, unit: &str) -> core::result::Result<f64, String> {
 
 /// Parses (g, ε[, σ]) points: cells separated by commas, semicolons, tabs or spaces; `#` comments
 /// and blank lines skipped. Units in a header are applied (g to m/s, `%` to fractions).
+// Long by design: reads a data file line by line with a named error for every malformed field and
+// unit.
 pub fn parse_points(text: &str) -> core::result::Result<Points, ParseError> {
     let mut p = Points::default();
     let mut sigma: Vec<f64> = Vec::new();
@@ -533,6 +535,8 @@ pub fn fit_to_entry(
 }
 
 /// Fits the numeric scene parameters `paths` to the points (σ optional, same length).
+// Long by design: one Levenberg–Marquardt loop whose steps share the Jacobian, the damping and the
+// bounds; the steps are commented in order.
 pub fn fit(
     scene: &Scene,
     paths: &[&str],

@@ -343,6 +343,8 @@ impl<const N: usize, const M: usize> Dopri5<N, M> {
     }
 
     /// Advances by one accepted step, or reports the next event inside the last step.
+    // Long by design: one Dormand–Prince 5(4) step with its error control and dense-output
+    // coefficients, as the method is written.
     pub fn step<S: OdeSystem<N, M>>(&mut self, sys: &S) -> Result<StepOutcome<N>> {
         if self.pending_pos < self.pending_len {
             let (t, which) = self.pending[self.pending_pos];

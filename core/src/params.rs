@@ -340,6 +340,8 @@ impl Scene {
     /// `on`/`off` for effects). Setting a field of an absent effect switches the effect on with its
     /// preset values first; setting `bulk.damping.time` or a viscosity switches the damping form.
     /// The scene is changed only if the result validates: on error, nothing the user had is lost.
+    // Long by design: one arm per parameter path, so the path table and the setter read side by
+    // side.
     pub fn set(&mut self, path: &str, text: &str) -> Result<()> {
         let p = parameter(path).ok_or(Error::UnknownParameter)?;
         let field = p.path;

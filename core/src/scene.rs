@@ -398,6 +398,8 @@ impl Scene {
     /// Checks every field against its range; the error names the first offending one by its
     /// dotted path. Only `Contact::new` calls this: it is the single validity
     /// gate (fields, then every derived quantity), and [`Scene::validate`] asks it.
+    // Long by design: one check per scene field, in the order of the scene's sections; a table of
+    // checks would hide the messages.
     pub(crate) fn check_fields(&self) -> Result<()> {
         within(
             "grains.radius_1",

@@ -244,6 +244,8 @@ impl State {
     }
 
     /// Resolves one collision (see the module documentation).
+    // Long by design: the C collision callback: one pass over both particles' state, no
+    // allocation, shared by every branch.
     fn resolve(&self, sim: *mut u8, c: &RebCollision) -> Result<c_int, String> {
         // SAFETY: `sim` is the live simulation REBOUND passed to the handler.
         let (Some(p1), Some(p2)) = (unsafe { self.particle(sim, c.p1) }, unsafe {
@@ -461,6 +463,8 @@ fn positive(field: &str, v: f64) -> PyResult<f64> {
 #[pyfunction]
 #[pyo3(signature = (sim, layout, scene, length_unit, time_unit, mass_unit, density, sticking, track_spins, accuracy))]
 #[allow(clippy::too_many_arguments)]
+// Long by design: checks every argument of the REBOUND handler at the Python boundary, one named
+// error each, before the C callback is registered.
 fn _attach(
     sim: usize,
     layout: HashMap<String, usize>,

@@ -23,6 +23,8 @@ fn prediction<'py>(py: Python<'py>, p: &Prediction) -> PyResult<Bound<'py, PyDic
 #[pyfunction]
 #[pyo3(signature = (scene, *, tau, omega = None, planet_mass = None, distance = None, radius = None, scale_damping = false))]
 #[allow(clippy::too_many_arguments)]
+// Long by design: converts every Python argument at the boundary with a named error each, then one
+// call.
 pub(crate) fn ring_equilibrium<'py>(
     py: Python<'py>,
     scene: PyRef<'py, PyScene>,

@@ -80,6 +80,7 @@ fn speeds() -> Vec<f64> {
 }
 
 /// Runs the benchmark; `quick` shortens the timing samples (for tests).
+// Long by design: the benchmark's sections in the order the report prints them.
 pub fn run(out_dir: &Path, quick: bool) -> CliResult<(Vec<Row>, String)> {
     let min_sample = if quick { 0.002 } else { 0.05 };
     let reference = Accuracy::Tolerance(1e-12); // live DP5 at rtol 1e-14
@@ -249,6 +250,7 @@ fn render(rows: &[Row], frame: &[(&str, f64)]) -> String {
 
 /// A log–log work–precision figure: error against time per ε evaluation, one marker per
 /// (model, level). Hand-written SVG (no font needed).
+// Long by design: one SVG document written in drawing order.
 fn work_precision_svg(rows: &[Row]) -> String {
     let (w, h, left, bottom, top, right) = (720.0, 480.0, 80.0, 60.0, 40.0, 200.0);
     let pw = w - left - right;

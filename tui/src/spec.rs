@@ -648,6 +648,8 @@ fn value_words(flag: &str) -> Option<String> {
 const PATH_FLAGS: [&str; 4] = ["--scene", "--data", "--out", "--g-file"];
 
 /// `rime completions bash|zsh|fish`.
+// Long by design: three shells' completion scripts, each a template generated from the one flag
+// table.
 pub fn completions(shell: &str) -> Option<String> {
     let names = sub_names();
     let valued = ["--preset", "--accuracy", "--format", "--gamma"];

@@ -222,6 +222,8 @@ fn values(scene: &Scene) -> Json {
 
 /// Computes the frame of `scene` as seen through `view`. Fails only for a request that is not
 /// valid (scene or view naming the field); a part that fails is listed in `errors` instead.
+// Long by design: packs every part of one frame into the page's JSON in one place, the binding's
+// single entry point.
 pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
     let scene = parse_scene(scene_json)?;
     let view = parse_view(view_json)?;

@@ -142,6 +142,8 @@ pub fn caption(frame: &Frame, version: &str) -> String {
 }
 
 /// The ε_N chart of a frame, as `view` shows it.
+// Long by design: the ε_N figure's parts in drawing order (family, clean, scene, overlays,
+// experiments, pinned, markers), each a short block.
 pub fn eps_figure(frame: &Frame, view: &View, version: &str) -> Figure {
     let g = &frame.g;
     let (g0, g1) = (
@@ -377,6 +379,7 @@ fn linear(label: &str, (min, max): (f64, f64)) -> Axis {
 /// time ξ(t) and the force–overlap loop F(ξ), each with the phase instants marked
 /// (docs/physics.md#collision); with adhesion, `dynamic_loop` — the dynamic JKR model's (ξ, F)
 /// loop of brilliantov2007 (docs/physics.md#models) — dotted beside the paper's.
+// Long by design: the collision panel's two figures built side by side from one trajectory.
 pub fn collision_figures(
     g: f64,
     t: &crate::collision::Trajectory,

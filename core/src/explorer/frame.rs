@@ -250,6 +250,8 @@ pub fn stick_threshold(contact: &Contact, accuracy: Accuracy) -> crate::Result<O
 const OVERLAY_LAW_POINTS: usize = 64;
 
 /// One overlay on the frame's speeds `g` (see [`OverlayCurve`]).
+// Long by design: one overlay of each kind (measured law, range, model) with its own speeds and
+// score; the kinds share the frame's grid.
 pub fn overlay_curve(
     overlay: Overlay,
     scene: &Scene,
@@ -363,6 +365,8 @@ pub fn overlay_curve(
 /// // A computation told to stop returns nothing.
 /// assert!(compute(&request, &|| true).is_none());
 /// ```
+// Long by design: the frame's parts in order (contact, curve, clean, family, markers, map,
+// warnings), each failing on its own; the cancellation checks sit between them.
 pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<Frame> {
     let scene = req.scene;
     let sweep = req.sweep.unwrap_or_else(|| Sweep::default_for(&scene));

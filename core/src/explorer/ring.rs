@@ -85,6 +85,8 @@ fn row(label: &str, text: String) -> RingRow {
 
 /// The card for `scene` at `input`, drawn over the ε_N chart's speed range `chart` \[m/s\]
 /// (`0 < from < to`, finite). Errors name the field (`tau`, `omega`, …, `chart`).
+// Long by design: the card's rows in the order they are shown, each from the one equilibrium
+// record.
 pub fn ring_card(scene: &Scene, input: &RingInput, chart: (f64, f64)) -> Result<RingCard> {
     let (from, to) = chart;
     if !(from.is_finite() && to.is_finite() && from > 0.0 && to > from) {

@@ -263,6 +263,8 @@ type Raw = (f64, f64, f64, Outcome, usize);
 /// is decided when the grains are caught (the energy falls below what pull-off needs); with
 /// `follow_caught` the path is followed on to where they stop separating (for the force loop),
 /// as far as the step budget allows.
+// Long by design: one integration of the JKR contact with its events (neck, pull-off) and step
+// budget; the state is shared by every branch.
 fn integrate(
     delta: f64,
     kappa: f64,

@@ -313,6 +313,8 @@ pub fn literal(
 
 /// [`literal`], handing every accepted step and the closed-form tail to `recorder` (the collision
 /// trajectory).
+// Long by design: the literal Eq. (8) contact integrated phase by phase (crushing, bulk, exit)
+// with one shared state and event log, like the integrators.
 pub(crate) fn literal_recorded(
     delta: f64,
     lambda: f64,

@@ -134,6 +134,8 @@ pub(crate) fn check_speed(g: f64) -> Result<f64> {
 impl Contact {
     /// Normal restitution at impact speed `g` \[m/s\] with every effect the scene enables.
     #[doc(alias = "Eq. (5)")]
+    // Long by design: the dispatch of every model branch (viscoelastic, layer readings, adhesion)
+    // with the error bound of each, in one match.
     pub fn normal(&self, g: f64, accuracy: Accuracy) -> Result<Normal> {
         let g = check_speed(g)?;
         let error_estimate = accuracy.error_bound();

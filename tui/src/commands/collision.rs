@@ -43,6 +43,8 @@ fn finite_or_null(v: f64) -> Value {
 }
 
 /// Runs `rime collision`.
+// Long by design: one trajectory's three outputs (JSON, CSV, table) side by side so that their
+// fields stay in step.
 pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     let contact = crate::args::contact(common)?;
     let tr = contact

@@ -156,6 +156,8 @@ fn list_table(rows: &[Listing], width: usize) -> String {
 }
 
 /// Runs `rime compare`.
+// Long by design: one command's modes (list, bench, evaluate) and its three output formats kept
+// together so the fields stay in step.
 pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     if args.list {
         let mut rows: Vec<Listing> = Model::ALL

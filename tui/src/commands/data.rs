@@ -86,6 +86,8 @@ fn entry_json(e: &Entry) -> serde_json::Value {
 }
 
 /// Runs `rime data`.
+// Long by design: the atlas listing and a law's evaluation, each with three outputs kept side by
+// side.
 pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     let Some((id, speeds, radius)) = &args.law else {
         return Ok(match common.format {

@@ -78,6 +78,10 @@ pub fn read_points(path: &Path) -> CliResult<Points> {
     parse_points(&text).map_err(|e| CliError::input(format!("--data {shown}: {e}")))
 }
 
+// Long by design: one fit's three outputs (JSON, CSV, table) side by side so that their fields
+
+// stay in step.
+
 fn render(common: &Common, f: &SceneFit, points: &Points, what: &str) -> CliResult<String> {
     let n = points.g.len();
     Ok(match common.format {

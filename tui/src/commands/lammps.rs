@@ -103,6 +103,8 @@ fn rows(scene: &Scene, contact: &Contact, m: &Mapping) -> CliResult<Vec<Row>> {
     Ok(out)
 }
 
+// Long by design: the LAMMPS input deck as one template, in the order LAMMPS reads it.
+
 fn deck(scene: &Scene, contact: &Contact, m: &Mapping, scene_json: &str) -> String {
     let (r1, r2) = (scene.grains.radius_1, scene.grains.radius_2);
     let rho = scene.grains.density;
@@ -256,6 +258,8 @@ fn deck(scene: &Scene, contact: &Contact, m: &Mapping, scene_json: &str) -> Stri
     );
     d
 }
+
+// Long by design: the exported README as one template, in reading order.
 
 fn readme(scene: &Scene, contact: &Contact, m: &Mapping) -> String {
     let mut s = String::new();

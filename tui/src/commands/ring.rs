@@ -54,6 +54,8 @@ pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
 }
 
 /// The ring's record in the chosen format.
+// Long by design: one record's three outputs (JSON, CSV, table) side by side so that their fields
+// stay in step.
 pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     let mut scene = common.scene;
     let set_for = scene.grains.radius_1;

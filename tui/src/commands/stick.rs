@@ -129,6 +129,8 @@ fn column_header(c: &Column) -> String {
 }
 
 /// Runs `rime stick`.
+// Long by design: one table's three outputs (JSON, CSV, table) and its export side by side so that
+// their fields stay in step.
 pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     let table_data = ThresholdTable::compute(
         &common.scene,

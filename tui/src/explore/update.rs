@@ -760,6 +760,8 @@ impl App {
     /// Mouse: a click focuses the pane under it and selects the parameter row or places the chart
     /// or map cursor there; the wheel moves the cursor (chart), zooms (over the g_N axis, or with
     /// Ctrl), pans (sideways wheel), selects (panel) or scrolls the help.
+    // Long by design: one mouse event routed by the pane under it; the panes share the hit-testing
+    // closures.
     pub(crate) fn handle_mouse(&mut self, m: MouseEvent) {
         let Some(layout) = super::layout::layout(self.size.0, self.size.1) else {
             return;

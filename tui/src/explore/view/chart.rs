@@ -57,6 +57,8 @@ pub fn figure(data: &Computed, app: &ChartView) -> rime_core::figure::Figure {
 
 /// Draws the ε_N chart: the core's figure with the cursor, and the readout. Returns the speed
 /// axis as drawn (for mouse clicks).
+// Long by design: one pane drawn top to bottom (title, figure, cursor readout) with the layout
+// shared by its parts.
 pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) -> Option<LogAxis> {
     let focus = app.focused;
     let axis_word = if app.y_log { "log" } else { "linear" };

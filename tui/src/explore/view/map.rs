@@ -42,6 +42,8 @@ pub fn legend_label(c: StickClass, w: usize) -> String {
 /// Draws the stick map of `data` with the cursor at grid cell `cursor` = (i for g_N, j for g_T);
 /// `shared`: the map shares its pane with the chart (the title says how to switch). Returns the
 /// cells of the map grid (for mouse clicks).
+// Long by design: the pane's sizing decisions (legend beside or below, label widths, plot size)
+// made once and handed to the parts it calls.
 pub fn map(
     buf: &mut Buffer,
     area: Rect,
@@ -104,7 +106,6 @@ pub fn map(
     }
     // The core's figure of the map (what `x` exports): its axes' ticks and labels.
     let fig = figures::map_figure(&data.frame, env!("CARGO_PKG_VERSION"))?;
-    let max = fig.x.max;
     let legend_w: u16 = if inner.width >= 60 { 24 } else { 20 };
     let too_small = inner.height < 6;
     let y_ticks: Vec<(f64, String)> = fig
@@ -131,160 +132,24 @@ pub fn map(
     let plot_h = inner.height - 1 - below_rows;
     let px = inner.x + axis_w;
     let py = inner.y;
-    let gray = Style::new().fg(Color::Gray);
-    // Where a speed is drawn: the cell of the grid point nearest it.
-    let col_of = |v: f64| (v / max * f64::from(plot_w - 1)).round() as u16;
-    let row_of = |v: f64| plot_h - 1 - (v / max * f64::from(plot_h - 1)).round() as u16;
-    // Y labels on the rows of their values, g_N on a free row between them.
-    let mut taken_rows = Vec::new();
-    for (v, label) in &y_ticks {
-        let r = row_of(*v);
-        if r < plot_h && !taken_rows.contains(&r) && !too_small {
-            buf.set_stringn(inner.x, py + r, label, (axis_w - 1) as usize, gray);
-            taken_rows.push(r);
-        }
-    }
-    if let Some(r) = (plot_h / 3..plot_h).find(|r| !taken_rows.iter().any(|t| t.abs_diff(*r) < 1)) {
-        buf.set_stringn(inner.x, py + r, "g_N ↑", (axis_w - 1) as usize, gray);
-        // The unit of both axes (the x title may not fit).
-        if r + 1 < plot_h && !taken_rows.contains(&(r + 1)) {
-            buf.set_stringn(inner.x, py + r + 1, "[m/s]", (axis_w - 1) as usize, gray);
-        }
-    }
-    // X labels centred on their columns where they fit, then the axis' title with its unit.
-    let ly = py + plot_h;
-    let mut taken: Vec<(u16, u16)> = Vec::new();
-    let x_ticks = fig.x.ticks(usize::from((plot_w / 9).max(2)));
-    for t in &x_ticks {
-        let Some(label) = &t.label else { continue };
-        let w = label.chars().count() as u16;
-        let c = px + col_of(t.value);
-        let start = c
-            .saturating_sub(w / 2)
-            .max(px)
-            .min((px + plot_w).saturating_sub(w));
-        if taken.iter().all(|(a, b)| start + w < *a || start > *b + 1) {
-            buf.set_string(start, ly, label, gray);
-            taken.push((start, start + w));
-        }
-    }
-    let free_from = taken.iter().map(|(_, b)| *b + 2).max().unwrap_or(px);
-    let end = px + plot_w;
-    let words: Vec<&str> = fig.x.label.split(' ').collect();
-    if let Some(tail) = (0..words.len())
-        .map(|k| words[k..].join(" "))
-        .find(|t| free_from + t.chars().count() as u16 <= end)
-    {
-        let w = tail.chars().count() as u16;
-        buf.set_string(end - w, ly, &tail, gray);
-    }
-    // One cell per terminal cell: the class letter on the class colour (readable without colour).
-    let index = |k: u16, len: u16| -> usize {
-        if len <= 1 {
-            0
-        } else {
-            ((f64::from(k) * (n - 1) as f64 / f64::from(len - 1)).round() as usize).min(n - 1)
-        }
+    let plot = Rect::new(px, py, plot_w, plot_h);
+    let labels = AxisLabels {
+        left: inner.x,
+        width: axis_w,
+        y_ticks: if too_small { &[] } else { &y_ticks },
     };
-    for r in 0..plot_h {
-        let i = index(plot_h - 1 - r, plot_h);
-        for c in 0..plot_w {
-            let j = index(c, plot_w);
-            let Some(class) = m.class.get(i * n + j).copied() else {
-                continue;
-            };
-            if let Some(cell) = buf.cell_mut((px + c, py + r)) {
-                cell.set_char(class.letter())
-                    .set_style(class_cell(class, colors));
-            }
-        }
-    }
-    // Cursor.
-    let (ci, cj) = cursor;
-    let to_cell = |k: usize, len: u16| -> u16 {
-        ((k as f64 * f64::from(len - 1) / (n - 1) as f64).round() as u16).min(len - 1)
-    };
-    let cc = to_cell(cj, plot_w);
-    let cr = plot_h - 1 - to_cell(ci, plot_h);
-    if let Some(cell) = buf.cell_mut((px + cc, py + cr)) {
-        cell.set_symbol("┼")
-            .set_style(Style::new().fg(Color::Black).bg(Color::White));
-    }
-    // Legend.
+    draw_axes(buf, plot, &labels, &fig);
+    draw_cells(buf, plot, m, cursor, colors);
     if legend_below {
-        let mut spans = Vec::new();
-        for c in StickClass::ALL {
-            let artifact = super::help::class_meaning(c).1;
-            spans.push(Span::styled(c.letter().to_string(), class_cell(c, colors)));
-            let name = if artifact {
-                format!(
-                    "\u{a0}{}\u{a0}(artifact) ",
-                    class_label(c).replace(' ', "\u{a0}")
-                )
-            } else {
-                format!("\u{a0}{} ", class_label(c).replace(' ', "\u{a0}"))
-            };
-            spans.push(Span::styled(
-                name,
-                Style::new().fg(if artifact {
-                    Color::LightYellow
-                } else {
-                    Color::Gray
-                }),
-            ));
-        }
-        spans.push(Span::styled(
-            "· ? explains",
-            Style::new().fg(Color::DarkGray),
-        ));
-        Paragraph::new(Line::from(spans))
-            .wrap(Wrap { trim: true })
-            .render(
-                Rect::new(inner.x, py + plot_h + 1, inner.width, below_rows),
-                buf,
-            );
+        legend_below_map(
+            buf,
+            Rect::new(inner.x, py + plot_h + 1, inner.width, below_rows),
+            colors,
+        );
     }
     if show_legend {
-        let lx = px + plot_w + 1;
-        for (k, c) in StickClass::ALL.iter().enumerate() {
-            let y = py + k as u16;
-            if y >= inner.y + inner.height {
-                break;
-            }
-            buf.set_string(lx, y, format!("{}", c.letter()), class_cell(*c, colors));
-            let artifact = super::help::class_meaning(*c).1;
-            buf.set_stringn(
-                lx + 2,
-                y,
-                legend_label(*c, (legend_w - 3) as usize),
-                (legend_w - 3) as usize,
-                Style::new().fg(if artifact {
-                    Color::LightYellow
-                } else {
-                    Color::Gray
-                }),
-            );
-        }
-        // The convention behind "stuck" (docs/physics.md#decision-7).
-        let y = py + StickClass::ALL.len() as u16;
-        if y < inner.y + inner.height {
-            buf.set_stringn(
-                lx,
-                y,
-                "ε_N<1e-9 = rebound",
-                legend_w as usize,
-                Style::new().fg(Color::DarkGray),
-            );
-        }
-        if y + 1 < inner.y + inner.height {
-            buf.set_stringn(
-                lx,
-                y + 1,
-                "? explains classes",
-                legend_w as usize,
-                Style::new().fg(Color::DarkGray),
-            );
-        }
+        let rows = Rect::new(px + plot_w + 1, py, legend_w, inner.y + inner.height - py);
+        legend_beside_map(buf, rows, colors);
     }
     Some(Rect::new(px, py, plot_w, plot_h))
 }
@@ -324,4 +189,206 @@ fn map_readout(data: Option<&Computed>, cursor: (usize, usize), colors: Colors) 
             Style::new().fg(Color::LightYellow),
         ),
     ])
+}
+
+/// The class legend below the map (narrow terminals): one wrapped line of letters and names.
+fn legend_below_map(buf: &mut Buffer, area: Rect, colors: Colors) {
+    let mut spans = Vec::new();
+    for c in StickClass::ALL {
+        let artifact = super::help::class_meaning(c).1;
+        spans.push(Span::styled(c.letter().to_string(), class_cell(c, colors)));
+        let name = if artifact {
+            format!(
+                "\u{a0}{}\u{a0}(artifact) ",
+                class_label(c).replace(' ', "\u{a0}")
+            )
+        } else {
+            format!("\u{a0}{} ", class_label(c).replace(' ', "\u{a0}"))
+        };
+        spans.push(Span::styled(
+            name,
+            Style::new().fg(if artifact {
+                Color::LightYellow
+            } else {
+                Color::Gray
+            }),
+        ));
+    }
+    spans.push(Span::styled(
+        "· ? explains",
+        Style::new().fg(Color::DarkGray),
+    ));
+    Paragraph::new(Line::from(spans))
+        .wrap(Wrap { trim: true })
+        .render(area, buf);
+}
+
+/// The class legend beside the map, one class per row, then the stuck convention and the help key.
+fn legend_beside_map(buf: &mut Buffer, area: Rect, colors: Colors) {
+    let lx = area.x;
+    for (k, c) in StickClass::ALL.iter().enumerate() {
+        let y = area.y + k as u16;
+        if y >= area.y + area.height {
+            break;
+        }
+        buf.set_string(lx, y, format!("{}", c.letter()), class_cell(*c, colors));
+        let artifact = super::help::class_meaning(*c).1;
+        buf.set_stringn(
+            lx + 2,
+            y,
+            legend_label(*c, (area.width - 3) as usize),
+            (area.width - 3) as usize,
+            Style::new().fg(if artifact {
+                Color::LightYellow
+            } else {
+                Color::Gray
+            }),
+        );
+    }
+    // The convention behind "stuck" (docs/physics.md#decision-7).
+    let y = area.y + StickClass::ALL.len() as u16;
+    if y < area.y + area.height {
+        buf.set_stringn(
+            lx,
+            y,
+            "ε_N<1e-9 = rebound",
+            area.width as usize,
+            Style::new().fg(Color::DarkGray),
+        );
+    }
+    if y + 1 < area.y + area.height {
+        buf.set_stringn(
+            lx,
+            y + 1,
+            "? explains classes",
+            area.width as usize,
+            Style::new().fg(Color::DarkGray),
+        );
+    }
+}
+
+/// The map's cells, one per terminal cell (the class letter on the class colour, readable without
+/// colour), and the cursor at grid cell `cursor` = (i for g_N, j for g_T).
+fn draw_cells(
+    buf: &mut Buffer,
+    plot: Rect,
+    m: &rime_core::sweep::StickMap,
+    cursor: (usize, usize),
+    colors: Colors,
+) {
+    let n = m.n();
+    let index = |k: u16, len: u16| -> usize {
+        if len <= 1 {
+            0
+        } else {
+            ((f64::from(k) * (n - 1) as f64 / f64::from(len - 1)).round() as usize).min(n - 1)
+        }
+    };
+    for r in 0..plot.height {
+        let i = index(plot.height - 1 - r, plot.height);
+        for c in 0..plot.width {
+            let j = index(c, plot.width);
+            let Some(class) = m.class.get(i * n + j).copied() else {
+                continue;
+            };
+            if let Some(cell) = buf.cell_mut((plot.x + c, plot.y + r)) {
+                cell.set_char(class.letter())
+                    .set_style(class_cell(class, colors));
+            }
+        }
+    }
+    // Cursor.
+    let (ci, cj) = cursor;
+    let to_cell = |k: usize, len: u16| -> u16 {
+        ((k as f64 * f64::from(len - 1) / (n - 1) as f64).round() as u16).min(len - 1)
+    };
+    let cc = to_cell(cj, plot.width);
+    let cr = plot.height - 1 - to_cell(ci, plot.height);
+    if let Some(cell) = buf.cell_mut((plot.x + cc, plot.y + cr)) {
+        cell.set_symbol("┼")
+            .set_style(Style::new().fg(Color::Black).bg(Color::White));
+    }
+}
+
+/// Where the map's axis labels go: the column left of the plot and the y ticks to label.
+struct AxisLabels<'a> {
+    /// First column of the y labels.
+    left: u16,
+    /// Width of the y labels' column (the plot starts after it).
+    width: u16,
+    /// The y ticks (value, label); none on a map too small for them.
+    y_ticks: &'a [(f64, String)],
+}
+
+/// The map's axes from the core's figure: y labels on the rows of their values with g_N and the
+/// unit on a free row, x labels centred on their columns where they fit, then the x title.
+fn draw_axes(buf: &mut Buffer, plot: Rect, labels: &AxisLabels, fig: &rime_core::figure::Figure) {
+    let max = fig.x.max;
+    let gray = Style::new().fg(Color::Gray);
+    // Where a speed is drawn: the cell of the grid point nearest it.
+    let col_of = |v: f64| (v / max * f64::from(plot.width - 1)).round() as u16;
+    let row_of = |v: f64| plot.height - 1 - (v / max * f64::from(plot.height - 1)).round() as u16;
+    // Y labels on the rows of their values, g_N on a free row between them.
+    let mut taken_rows = Vec::new();
+    for (v, label) in labels.y_ticks {
+        let r = row_of(*v);
+        if r < plot.height && !taken_rows.contains(&r) {
+            buf.set_stringn(
+                labels.left,
+                plot.y + r,
+                label,
+                (labels.width - 1) as usize,
+                gray,
+            );
+            taken_rows.push(r);
+        }
+    }
+    if let Some(r) =
+        (plot.height / 3..plot.height).find(|r| !taken_rows.iter().any(|t| t.abs_diff(*r) < 1))
+    {
+        buf.set_stringn(
+            labels.left,
+            plot.y + r,
+            "g_N ↑",
+            (labels.width - 1) as usize,
+            gray,
+        );
+        // The unit of both axes (the x title may not fit).
+        if r + 1 < plot.height && !taken_rows.contains(&(r + 1)) {
+            buf.set_stringn(
+                labels.left,
+                plot.y + r + 1,
+                "[m/s]",
+                (labels.width - 1) as usize,
+                gray,
+            );
+        }
+    }
+    // X labels centred on their columns where they fit, then the axis' title with its unit.
+    let ly = plot.y + plot.height;
+    let mut taken: Vec<(u16, u16)> = Vec::new();
+    let x_ticks = fig.x.ticks(usize::from((plot.width / 9).max(2)));
+    for t in &x_ticks {
+        let Some(label) = &t.label else { continue };
+        let w = label.chars().count() as u16;
+        let c = plot.x + col_of(t.value);
+        let start = c
+            .saturating_sub(w / 2)
+            .max(plot.x)
+            .min((plot.x + plot.width).saturating_sub(w));
+        if taken.iter().all(|(a, b)| start + w < *a || start > *b + 1) {
+            buf.set_string(start, ly, label, gray);
+            taken.push((start, start + w));
+        }
+    }
+    let free_from = taken.iter().map(|(_, b)| *b + 2).max().unwrap_or(plot.x);
+    let end = plot.x + plot.width;
+    let words: Vec<&str> = fig.x.label.split(' ').collect();
+    if let Some(tail) = (0..words.len())
+        .map(|k| words[k..].join(" "))
+        .find(|t| free_from + t.chars().count() as u16 <= end)
+    {
+        let w = tail.chars().count() as u16;
+        buf.set_string(end - w, ly, &tail, gray);
+    }
 }

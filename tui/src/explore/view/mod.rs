@@ -36,6 +36,8 @@ pub(super) fn pane_border(focused: bool) -> (BorderType, Style) {
 }
 
 /// Draws the whole screen: the one place that reads the whole [`App`] and hands each view its data.
+// Long by design: the screen's panes and overlays in drawing order, the one place that decides
+// what covers what.
 pub fn render(app: &App, frame: &mut Frame) {
     let area = frame.area();
     let Some(l) = layout(area.width, area.height) else {

@@ -438,6 +438,8 @@ fn legend_above(buf: &mut Buffer, f: &Frame, entries: &[Entry], colors: Colors) 
 /// The graph: bands, series (by stroke), markers and the cursor, each in its own canvas layer
 /// (later on top); this scene's curve bold; point marks and tags over it. About 100 lines: one
 /// canvas paint whose layer order is the figure's draw order, kept in one place on purpose.
+// Long by design: draws the graph area of a figure in paint order (bands, series, markers, cursor)
+// over one braille canvas.
 fn graph(buf: &mut Buffer, f: &Frame, fig: &Figure, opts: &Options, tags: &[Option<char>]) {
     let (x_lo, x_hi, y_lo, y_hi) = f.bounds;
     let colors = opts.colors;

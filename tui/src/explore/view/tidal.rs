@@ -43,6 +43,7 @@ fn compare(computed: f64, printed: f64) -> (String, Color) {
 }
 
 /// The calculator's lines.
+// Long by design: the appendix's rows (A.1)–(A.7) in the paper's order, one short block each.
 pub fn lines(t: &TidalView) -> Vec<Line<'static>> {
     let dim = Style::new().fg(Color::Gray);
     let input = t.input;
