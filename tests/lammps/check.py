@@ -31,8 +31,13 @@ g_cr at the pull-off end; the time-step error of g(dt) must fall as dt (ratio of
 g(dt) − R in [0.3, 0.7]). The neck end's g_cr is reported beside it: the two ends' sticking speeds
 differ (elastic ratio √(3.50260/7.09220) = 0.70276, damping raises it towards 1).
 
-usage: check.py DIR [DIR …] [--sticking DIR G_PULL_OFF G_NECK]  (each DIR holds in.rime and
-reference.tsv); prints a table and `report:` lines, exits 1 on any failure.
+`--always-sticks DIR` marks a deck where rime's g_cr is "always sticks": every row of its
+reference.tsv must be stuck_by_adhesion, and LAMMPS's grains must be caught at each (the rows are
+run like every deck's, which needs no rebounding speed there).
+
+usage: check.py DIR [DIR …] [--sticking DIR G_PULL_OFF G_NECK] [--always-sticks DIR]  (each DIR
+holds in.rime and reference.tsv; an --always-sticks DIR is also given as a DIR); prints a table and
+`report:` lines, exits 1 on any failure.
 """
 import json
 import math
@@ -218,15 +223,18 @@ def reference(deck_dir):
 
 
 def main(argv):
-    dirs, sticking = [], None
+    dirs, sticking, always = [], None, []
     while argv:
         a = argv.pop(0)
         if a == "--sticking":
             sticking = (argv[0], float(argv[1]), float(argv[2]))
             argv = argv[3:]
+        elif a == "--always-sticks":
+            always.append(argv.pop(0))
         else:
             dirs.append(a)
     failures = []
+    separated = set()
     worst = {"eps_n": 0.0, "t_c": 0.0, "xi_max": 0.0}
     dt_error = {"eps_n": 0.0, "t_c": 0.0, "xi_max": 0.0}
     print(f"{'deck':<28} {'g [m/s]':>8} {'rime eps_n':>14} {'LAMMPS dt':>14} {'LAMMPS dt/2':>14}"
@@ -242,6 +250,7 @@ def main(argv):
                 ok = not apart
                 print(f"{name:<28} {g:>8.0e} {'stuck':>14} {'caught' if ok else 'SEPARATED':>14}")
                 if not ok:
+                    separated.add(d)
                     failures.append(f"{name} g={g}: rime sticks, LAMMPS separates")
                 continue
             if status != "rebound":
@@ -288,7 +297,7 @@ def main(argv):
                 if abs(e_dt) > 1e-7 * ref and not 0.3 <= e_half / e_dt <= 0.7:
                     failures.append(f"{name} g={g}: {what}'s time-step error ratio "
                                     f"{e_half / e_dt:.3f}, not first order")
-        if rebounds < 3:
+        if rebounds < 3 and d not in always:
             failures.append(f"{name}: only {rebounds} rebounding speeds checked (need >= 3)")
     print(f"report: LAMMPS vs rime after Richardson (dt, dt/2): eps_n |diff| <= {worst['eps_n']:.1e}, "
           f"t_c relative <= {worst['t_c']:.1e}, xi_max relative <= {worst['xi_max']:.1e} "
@@ -297,6 +306,14 @@ def main(argv):
           f"t_c relative <= {dt_error['t_c']:.1e}, xi_max relative <= {dt_error['xi_max']:.1e}")
     if sticking:
         check_sticking(*sticking, failures)
+    for d in always:
+        rows = reference(d)
+        if len(rows) < 3 or any(r[2] != "stuck_by_adhesion" for r in rows):
+            failures.append(f"{d}: rime does not stick at every speed of reference.tsv")
+        names = os.path.basename(os.path.normpath(d))
+        verdict = "caught at every speed" if d not in separated else "SEPARATED at some speed"
+        print(f"report: {names}: rime's g_cr is 'always sticks'; LAMMPS's grains {verdict} of "
+              f"reference.tsv ({', '.join(f'{r[0]:g}' for r in rows)} m/s)")
     for f in failures:
         print("FAIL:", f)
     return 1 if failures else 0
