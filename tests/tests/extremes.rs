@@ -1096,3 +1096,43 @@ fn issue_25_ice_sticky_with_a_1e_3_is_stuck_by_adhesion() {
         }
     }
 }
+
+/// Issue 25: the paper's model's g_cr answers "always sticks" too where no speed up to 1e6 m/s
+/// rebounds (1 µm ice-sticky grains at A = 1e-4 s: δ ≳ 1e4 over the whole range, docs/physics.md's
+/// table of where the models disagree), and a speed where one exists.
+#[test]
+fn issue_25_paper_model_g_cr_always_sticks_on_micron_grains() {
+    use rime_core::models::{Evaluator, Model, ModelStatus, SpeedStatus};
+    let mut scene = Preset::IceSticky.scene();
+    scene.grains.radius_1 = 1e-6;
+    scene.grains.radius_2 = 1e-6;
+    let ev = Evaluator::new(Model::Hertzsch2002, &scene).unwrap();
+    let g_cr = ev
+        .characteristic_speeds(Accuracy::Precise)
+        .unwrap()
+        .find("g_cr")
+        .unwrap();
+    assert_eq!(g_cr.status, SpeedStatus::AlwaysSticks);
+    assert_eq!(g_cr.value, f64::INFINITY);
+    for g in [1e-6, 1e-3, 1.0, 1e3, 1e6] {
+        let r = ev.eps(g, Accuracy::Precise).unwrap();
+        assert_eq!(r.eps, 0.0, "g = {g}");
+        assert_ne!(r.status, ModelStatus::Rebound, "g = {g}");
+    }
+    // 2 cm grains: a speed, the border between sticking and rebounding.
+    let ev = Evaluator::new(Model::Hertzsch2002, &Preset::IceSticky.scene()).unwrap();
+    let g_cr = ev
+        .characteristic_speeds(Accuracy::Precise)
+        .unwrap()
+        .find("g_cr")
+        .unwrap();
+    assert_eq!(g_cr.status, SpeedStatus::Value);
+    let below = ev
+        .eps(g_cr.value * (1.0 - 1e-6), Accuracy::Precise)
+        .unwrap();
+    let above = ev
+        .eps(g_cr.value * (1.0 + 1e-6), Accuracy::Precise)
+        .unwrap();
+    assert_eq!(below.eps, 0.0);
+    assert!(above.eps > 0.0, "{above:?}");
+}
