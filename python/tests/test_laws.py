@@ -212,3 +212,21 @@ def test_type_stubs_are_shipped_and_cover_the_api():
         names |= {a.asname or a.name for n in tree.body if isinstance(n, ast.ImportFrom) for a in n.names}
         missing = [name for name in module.__all__ if name not in names]
         assert not missing, (stub, missing)
+
+
+def test_jkr_end_is_a_scene_key_issue_25():
+    # Issue 25: where the JKR contact ends is a scene key in Python too; brilliantov2007 reads it.
+    # Expected values: the `rime` binary's `compare` with the same --set (6.3e-4 m/s lies between
+    # the pull-off end's g_cr, 0.579 mm/s, and the neck's, 0.692 mm/s, on ice-sticky).
+    g = [6.3e-4, 0.01]
+    for end in ["neck", "pull_off_force"]:
+        scene = rime.Scene.preset("ice-sticky")
+        scene.set("adhesion.jkr_end", end)
+        assert scene.get("adhesion.jkr_end") == end
+        want = cli("compare", "--preset", "ice-sticky", "--set", f"adhesion.jkr_end={end}",
+                   "--models", "brilliantov2007", "--g", "6.3e-4,0.01")["records"]
+        got = rime.compare(["brilliantov2007"], g, scene)["brilliantov2007"]
+        assert list(got) == [w["eps_n"] for w in want]
+        assert (got[0] == 0.0) == (end == "neck")
+    with pytest.raises(ValueError, match="adhesion.jkr_end"):
+        rime.Scene.preset("ice-sticky").set("adhesion.jkr_end", "halfway")

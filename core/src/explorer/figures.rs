@@ -99,6 +99,14 @@ fn member_name(frame: &Frame, value: f64, is_scene: bool) -> String {
 
 /// A comparison's legend entry on small surfaces: its key's name, temperature and geometry for
 /// measured data (docs/physics.md#data-atlas), and the scene's rms against it.
+/// Whether an overlay model's `g_cr` is the status "always sticks" (a value of `+∞`,
+/// [`crate::models::SpeedStatus::AlwaysSticks`]): it has no marker, so its legend says it.
+fn always_sticks(o: &super::frame::OverlayCurve) -> bool {
+    o.speeds
+        .iter()
+        .any(|(name, g)| *name == "g_cr" && *g == f64::INFINITY)
+}
+
 fn overlay_short(o: &super::frame::OverlayCurve) -> String {
     let key = o.overlay.key();
     let name = key.split_once(':').map_or(key.as_str(), |(_, n)| n);
@@ -113,6 +121,7 @@ fn overlay_short(o: &super::frame::OverlayCurve) -> String {
                 format!(" ({lo}–{hi} K, {})", e.geometry.name())
             }
         }
+        super::frame::Overlay::Model(_) if always_sticks(o) => " (always sticks)".to_string(),
         super::frame::Overlay::Model(_) => String::new(),
     };
     let score = o
@@ -189,8 +198,16 @@ pub fn eps_figure(frame: &Frame, view: &View, version: &str) -> Figure {
         } else {
             // Broken: a comparison may share a hue with a family member (solid), never a hue and
             // a stroke.
+            let name = if always_sticks(o) {
+                format!(
+                    "{} — always sticks (g_cr beyond every accepted speed)",
+                    o.label
+                )
+            } else {
+                o.label.clone()
+            };
             series.push(Series {
-                name: o.label.clone(),
+                name,
                 short: overlay_short(o),
                 points: pts(&o.g, &o.eps),
                 color,
@@ -815,5 +832,45 @@ mod render_tests {
                 fig.series.len()
             );
         }
+    }
+
+    /// Issue 25: a model whose grains stick at every speed has no g_cr marker (there is no speed to
+    /// mark) and says "always sticks" in its legend; a model with a threshold gets its marker.
+    #[test]
+    fn an_always_sticking_model_says_so_in_its_legend_issue_25() {
+        let overlay = |a: f64| {
+            let mut scene = Preset::IceSticky.scene();
+            scene.bulk.damping = crate::Damping::Time(a);
+            let mut req = Request::new(scene, Accuracy::Fast);
+            req.points = 40;
+            req.map_n = 8;
+            req.overlays = alloc::vec![super::super::frame::Overlay::Model(
+                crate::models::Model::Brilliantov2007
+            )];
+            let f = compute(&req, &|| false).expect("not cancelled");
+            eps_figure(&f, &View::default(), "test")
+        };
+        let stuck = overlay(1e-3);
+        let series = stuck
+            .series
+            .iter()
+            .find(|s| s.short.starts_with("brilliantov2007"))
+            .expect("model drawn");
+        assert!(series.name.contains("always sticks"), "{}", series.name);
+        assert_eq!(series.short, "brilliantov2007 (always sticks)");
+        assert!(!stuck.markers.iter().any(|m| m.label.starts_with("g_cr")));
+        let rebounds = overlay(1e-4);
+        assert!(
+            rebounds
+                .markers
+                .iter()
+                .any(|m| m.label.starts_with("g_cr of brilliantov2007"))
+        );
+        assert!(
+            !rebounds
+                .series
+                .iter()
+                .any(|s| s.name.contains("always sticks"))
+        );
     }
 }

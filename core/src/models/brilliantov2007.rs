@@ -51,6 +51,28 @@ pub fn hysteresis_constant() -> f64 {
     powf(core::f64::consts::PI, 5.0 / 3.0) * (0.1 + 0.6 * powf(2.0, 2.0 / 3.0))
 }
 
+/// The largest impact speed every model accepts \[m/s\] (`g_n` ∈ (0, 1e6]).
+pub const MAX_SPEED: f64 = crate::limits::SPEED_MAX;
+
+/// Where impacts stick: the model's sticking threshold `g_cr`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Sticking {
+    /// Impacts slower than this speed \[m/s\] stick; faster ones separate.
+    Below(f64),
+    /// The grains stick at every speed the model accepts (up to [`MAX_SPEED`]).
+    Always,
+}
+
+impl Sticking {
+    /// The threshold speed \[m/s\], `None` when the grains always stick.
+    pub fn speed(self) -> Option<f64> {
+        match self {
+            Sticking::Below(g) => Some(g),
+            Sticking::Always => None,
+        }
+    }
+}
+
 /// How a dynamic adhesive collision ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Outcome {
@@ -517,16 +539,28 @@ impl Dynamic {
         })
     }
 
-    /// The critical aggregation speed `g_cr` \[m/s\]: impacts slower than it stick. `None` without
-    /// adhesion, or where every collision near it is overdamped. Found by bisection in ln g to
-    /// relative 1e-10, bracketed from the elastic estimate `√(2W/m_eff)`.
-    pub fn critical_speed(&self, m_eff: f64, rtol: f64) -> Result<Option<f64>> {
+    /// The critical aggregation speed: impacts slower than `g_cr` \[m/s\] stick
+    /// ([`Sticking::Below`]), or the grains stick at every speed the model accepts, up to
+    /// [`MAX_SPEED`] ([`Sticking::Always`]). `None` without adhesion, or where the search meets a
+    /// collision it cannot decide (δ above [`DELTA_LIMIT`] with a rebound bound that could still pay
+    /// the hysteresis; never on issue 25's grid). Found by bisection in ln g to relative 1e-10,
+    /// bracketed from the elastic estimate `√(2W/m_eff)`: damping only adds loss, so `g_cr` lies
+    /// above it (up to integration error).
+    ///
+    /// Why a scene can always stick: at large δ the rebound speed `ε_N g` tends to a constant
+    /// (`ε_N ∝ δ⁻⁵ ∝ 1/g`, docs/physics.md#decision-2), so when that constant rebound cannot pay
+    /// the hysteresis `W`, no impact speed separates the grains (docs/physics.md#model-brilliantov2007).
+    pub fn critical_speed(&self, m_eff: f64, rtol: f64) -> Result<Option<Sticking>> {
         if self.work_of_adhesion == 0.0 {
             return Ok(None);
         }
         let estimate = sqrt(2.0 * self.hysteresis_energy() / m_eff);
-        if !(estimate.is_finite() && estimate > 0.0 && estimate < 1e6) {
+        if !(estimate > 0.0) {
             return Ok(None);
+        }
+        // Even the elastic (undamped) threshold lies beyond every accepted speed.
+        if !(estimate < MAX_SPEED) {
+            return Ok(Some(Sticking::Always));
         }
         let stuck = |g: f64| -> Result<Option<bool>> {
             let c = self.collide(g, rtol)?;
@@ -537,29 +571,20 @@ impl Dynamic {
             })
         };
         let (mut lo, mut hi) = (estimate, estimate);
-        // Damping only adds loss: g_cr ≥ the elastic estimate, up to integration error.
-        let mut found = false;
-        for _ in 0..80 {
+        loop {
             match stuck(hi)? {
-                Some(false) => {
-                    found = true;
-                    break;
-                }
+                Some(false) => break,
+                Some(true) if hi == MAX_SPEED => return Ok(Some(Sticking::Always)),
                 Some(true) => {
                     lo = hi;
-                    hi *= 2.0;
-                    if hi > 1e6 {
-                        return Ok(None);
-                    }
+                    hi = (2.0 * hi).min(MAX_SPEED);
                 }
                 None => return Ok(None),
             }
         }
-        if !found {
-            return Ok(None);
-        }
         if lo == hi {
-            found = false;
+            // The estimate already separates (integration error of the elastic limit): step down.
+            let mut found = false;
             for _ in 0..80 {
                 lo *= 0.5;
                 if stuck(lo)? == Some(true) {
@@ -579,7 +604,7 @@ impl Dynamic {
                 None => return Ok(None),
             }
         }
-        Ok(Some(sqrt(lo * hi)))
+        Ok(Some(Sticking::Below(sqrt(lo * hi))))
     }
 
     /// The force–overlap loop of one collision: the first contact (jump-in), every accepted step,

@@ -134,14 +134,44 @@ pub struct ModelResult {
     pub status: ModelStatus,
 }
 
+/// Whether a characteristic speed is a number or a physical status in its place.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SpeedStatus {
+    /// The speed is [`CharacteristicSpeed::value`].
+    Value,
+    /// `g_cr` only: the grains stick at every speed the model accepts (up to 1e6 m/s); the value is
+    /// `+∞` (impacts slower than it stick).
+    AlwaysSticks,
+}
+
+impl SpeedStatus {
+    /// The snake_case name used in JSON and CSV.
+    pub fn name(self) -> &'static str {
+        match self {
+            SpeedStatus::Value => "value",
+            SpeedStatus::AlwaysSticks => "always_sticks",
+        }
+    }
+
+    /// Words for tables and legends (`None` where the value is shown instead).
+    pub fn words(self) -> Option<&'static str> {
+        match self {
+            SpeedStatus::Value => None,
+            SpeedStatus::AlwaysSticks => Some("always sticks"),
+        }
+    }
+}
+
 /// A named speed that characterises a model on a scene (`g_cr`, `v_yield`, …).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CharacteristicSpeed {
     /// `g_cr` (impacts slower than it stick), `g_s_adhesion` (Eq. (15), a rebound speed),
     /// `g_s_layer` (Eq. (10)), `v_yield` (first plastic yield).
     pub name: &'static str,
-    /// The speed \[m/s\].
+    /// The speed \[m/s\]; `+∞` for `g_cr` when the grains always stick.
     pub value: f64,
+    /// A number, or the physical status in its place.
+    pub status: SpeedStatus,
 }
 
 /// Up to four [`CharacteristicSpeed`]s, without allocation.
@@ -152,8 +182,16 @@ pub struct CharacteristicSpeeds {
 
 impl CharacteristicSpeeds {
     fn push(&mut self, name: &'static str, value: f64) {
+        self.push_status(name, value, SpeedStatus::Value);
+    }
+
+    fn push_status(&mut self, name: &'static str, value: f64, status: SpeedStatus) {
         if let Some(slot) = self.items.iter_mut().find(|s| s.is_none()) {
-            *slot = Some(CharacteristicSpeed { name, value });
+            *slot = Some(CharacteristicSpeed {
+                name,
+                value,
+                status,
+            });
         }
     }
 
@@ -162,9 +200,15 @@ impl CharacteristicSpeeds {
         self.items.iter().flatten().copied()
     }
 
-    /// The speed called `name`, if the model has it on this scene.
+    /// The speed called `name`, if the model has it on this scene (`+∞` for a `g_cr` that
+    /// always sticks).
     pub fn get(&self, name: &str) -> Option<f64> {
         self.iter().find(|s| s.name == name).map(|s| s.value)
+    }
+
+    /// The speed called `name` with its status, if the model has it on this scene.
+    pub fn find(&self, name: &str) -> Option<CharacteristicSpeed> {
+        self.iter().find(|s| s.name == name)
     }
 }
 
@@ -287,15 +331,23 @@ impl Evaluator {
                         .adhesion
                         .map_or(0.0, |a| a.critical_velocity)
                         .max(self.contact.layer.map_or(0.0, |l| l.critical_velocity));
-                    if let Some(g) = threshold(stuck, start)? {
-                        out.push("g_cr", g);
+                    match threshold(stuck, start)? {
+                        Some(brilliantov2007::Sticking::Below(g)) => out.push("g_cr", g),
+                        Some(brilliantov2007::Sticking::Always) => {
+                            out.push_status("g_cr", f64::INFINITY, SpeedStatus::AlwaysSticks);
+                        }
+                        None => {}
                     }
                 }
             }
             Model::Brilliantov2007 => {
                 let d = self.dynamic.ok_or(Error::UnknownParameter)?;
-                if let Some(g) = d.critical_speed(self.contact.m_eff, accuracy.integrator_rtol())? {
-                    out.push("g_cr", g);
+                match d.critical_speed(self.contact.m_eff, accuracy.integrator_rtol())? {
+                    Some(brilliantov2007::Sticking::Below(g)) => out.push("g_cr", g),
+                    Some(brilliantov2007::Sticking::Always) => {
+                        out.push_status("g_cr", f64::INFINITY, SpeedStatus::AlwaysSticks);
+                    }
+                    None => {}
                 }
             }
             Model::Thornton1997 => {
@@ -322,17 +374,26 @@ impl Evaluator {
 }
 
 /// The speed below which `stuck` holds (it must hold for small and fail for large speeds), by
-/// bisection in ln g to relative 1e-10; bracketed from `start` (or 1 µm/s if 0). `None` if no
-/// bracket is found in (1e-15, 1e6] m/s.
-fn threshold(stuck: impl Fn(f64) -> Result<bool>, start: f64) -> Result<Option<f64>> {
-    let start = if start > 0.0 { start } else { 1e-6 };
+/// bisection in ln g to relative 1e-10; bracketed from `start` (or 1 µm/s if 0).
+/// [`Sticking::Always`](brilliantov2007::Sticking::Always) if `stuck` holds up to the largest
+/// accepted speed (1e6 m/s); `None` if it holds nowhere above 1e-15 m/s.
+fn threshold(
+    stuck: impl Fn(f64) -> Result<bool>,
+    start: f64,
+) -> Result<Option<brilliantov2007::Sticking>> {
+    use brilliantov2007::{MAX_SPEED, Sticking};
+    let start = if start > 0.0 {
+        start.min(MAX_SPEED)
+    } else {
+        1e-6
+    };
     let (mut lo, mut hi) = (start, start);
     while stuck(hi)? {
-        lo = hi;
-        hi *= 2.0;
-        if hi > crate::limits::SPEED_MAX {
-            return Ok(None);
+        if hi == MAX_SPEED {
+            return Ok(Some(Sticking::Always));
         }
+        lo = hi;
+        hi = (2.0 * hi).min(MAX_SPEED);
     }
     if lo == hi {
         loop {
@@ -354,5 +415,5 @@ fn threshold(stuck: impl Fn(f64) -> Result<bool>, start: f64) -> Result<Option<f
             hi = mid;
         }
     }
-    Ok(Some(crate::math::sqrt(lo * hi)))
+    Ok(Some(Sticking::Below(crate::math::sqrt(lo * hi))))
 }

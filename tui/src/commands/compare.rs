@@ -5,7 +5,7 @@ use crate::output::{num, table};
 use crate::scene_io::{CliError, CliResult, err};
 use rime_core::Accuracy;
 use rime_core::error::Number;
-use rime_core::models::{Evaluator, Model};
+use rime_core::models::{Evaluator, Model, SpeedStatus};
 use serde::Serialize;
 
 /// What `--models` may name: a collision model, or a measured law of the data atlas
@@ -96,7 +96,10 @@ struct Record {
 struct Speed {
     model: &'static str,
     name: &'static str,
-    value: f64,
+    /// `None` (JSON null, an empty CSV cell) where a physical status stands in its place.
+    value: Option<f64>,
+    /// `value`, or `always_sticks` (g_cr: the grains stick at every accepted speed).
+    status: &'static str,
 }
 
 #[derive(Serialize)]
@@ -228,7 +231,8 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
             speeds.push(Speed {
                 model: name,
                 name: s.name,
-                value: s.value,
+                value: (s.status == SpeedStatus::Value).then_some(s.value),
+                status: s.status.name(),
             });
         }
     }
@@ -259,7 +263,8 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
             speeds.push(Speed {
                 model: law.id,
                 name,
-                value,
+                value: Some(value),
+                status: SpeedStatus::Value.name(),
             });
         }
     }
@@ -279,9 +284,10 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                     r.status
                 ));
             }
-            s.push_str("\nmodel,name,value [m/s]\n");
+            s.push_str("\nmodel,name,value [m/s],status\n");
             for c in &speeds {
-                s.push_str(&format!("{},{},{}\n", c.model, c.name, num(c.value)));
+                let value = c.value.map(num).unwrap_or_default();
+                s.push_str(&format!("{},{},{value},{}\n", c.model, c.name, c.status));
             }
             s
         }
@@ -298,7 +304,10 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                 &["model", "speed", "value [m/s]"],
                 &speeds
                     .iter()
-                    .map(|c| vec![c.model.into(), c.name.into(), num(c.value)])
+                    .map(|c| {
+                        let value = c.value.map_or_else(|| c.status.replace('_', " "), num);
+                        vec![c.model.into(), c.name.into(), value]
+                    })
                     .collect::<Vec<_>>(),
             ));
             s

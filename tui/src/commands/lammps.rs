@@ -124,7 +124,11 @@ fn deck(scene: &Scene, contact: &Contact, m: &Mapping, scene_json: &str) -> Stri
     let _ = writeln!(d, "# for LAMMPS {LAMMPS_VERSION}.");
     let _ = writeln!(
         d,
-        "# Two grains collide head-on at speed g; the deck prints eps_n = separation speed / g."
+        "# Two grains collide head-on at speed g; the deck prints eps_n = separation speed / g"
+    );
+    let _ = writeln!(
+        d,
+        "# and caught = 1 when they stick (then eps_n means nothing)."
     );
     let _ = writeln!(
         d,
@@ -236,16 +240,37 @@ fn deck(scene: &Scene, contact: &Contact, m: &Mapping, scene_json: &str) -> Stri
     );
     let _ = writeln!(
         d,
-        "# distance, where no force acts) or 200 contact durations (then they stuck)."
+        "# distance, where no force acts), until they turn back towards each other while still in"
+    );
+    let _ = writeln!(
+        d,
+        "# contact (caught: the damping only takes energy away, so they can never reach pull-off"
+    );
+    let _ = writeln!(
+        d,
+        "# again), or for 200 contact durations (then they stuck: caught = 1)."
     );
     let _ = writeln!(d, "variable gap equal x[2]-x[1]-{:e}", r1 + r2);
     let _ = writeln!(d, "variable apart equal {apart:e}");
+    let _ = writeln!(d, "variable vrel equal vx[2]-vx[1]");
+    let _ = writeln!(d, "variable separating equal 0\nvariable caught equal 1");
     let _ = writeln!(d, "variable chunk equal ceil(v_steps_per_contact/4)");
     let _ = writeln!(
         d,
         "variable n loop 800\nlabel again\nrun ${{chunk}} pre no post no"
     );
-    let _ = writeln!(d, "if \"${{gap}} > ${{apart}}\" then \"jump SELF done\"");
+    let _ = writeln!(
+        d,
+        "if \"${{gap}} > ${{apart}}\" then \"variable caught equal 0\" \"jump SELF done\""
+    );
+    let _ = writeln!(
+        d,
+        "if \"${{separating}} == 1 && ${{vrel}} < 0\" then \"jump SELF done\""
+    );
+    let _ = writeln!(
+        d,
+        "if \"${{vrel}} > 0\" then \"variable separating equal 1\""
+    );
     let _ = writeln!(d, "next n\njump SELF again\nlabel done");
     let _ = writeln!(d, "variable eps_n equal (vx[2]-vx[1])/v_g");
     let _ = writeln!(
@@ -254,7 +279,7 @@ fn deck(scene: &Scene, contact: &Contact, m: &Mapping, scene_json: &str) -> Stri
     );
     let _ = writeln!(
         d,
-        "print \"rime-lammps g ${{g}} eps_n ${{eps_n}} dt ${{dt}} pull-off jump bound ${{jump_bound}}\""
+        "print \"rime-lammps g ${{g}} eps_n ${{eps_n}} caught ${{caught}} dt ${{dt}} pull-off jump bound ${{jump_bound}}\""
     );
     d
 }
@@ -281,7 +306,7 @@ fn readme(scene: &Scene, contact: &Contact, m: &Mapping) -> String {
     );
     let _ = writeln!(
         s,
-        "from this directory); it prints `eps_n`. `reference.tsv` holds what rime computes for the same grains.\n"
+        "from this directory); it prints `eps_n` and `caught` (1 when the grains turned back towards each other while in contact, or never parted: they stick, and `eps_n` means nothing). `reference.tsv` holds what rime computes for the same grains; rime's `make test` also reads t_c and ξ_max from the run (tests/lammps/check.py).\n"
     );
     let _ = writeln!(
         s,

@@ -108,4 +108,38 @@ fn issue_25_ice_sticky_a_1e_3_compare_exits_0_stuck_at_every_speed() {
         assert_eq!(r["status"], "stuck_by_adhesion", "{r}");
         assert_eq!(r["eps_n"], 0.0);
     }
+    // g_cr is the status "always sticks" (no speed separates these grains), in every format.
+    let speeds = v["characteristic_speeds"].as_array().unwrap();
+    assert_eq!(
+        speeds,
+        &vec![
+            serde_json::json!({"model": "brilliantov2007", "name": "g_cr",
+                                 "value": null, "status": "always_sticks"})
+        ]
+    );
+    let args = |format| {
+        [
+            "compare",
+            "--preset",
+            "ice-sticky",
+            "--set",
+            "bulk.damping.time=1e-3",
+            "--models",
+            "brilliantov2007",
+            "--g",
+            "0.01",
+            "--format",
+            format,
+        ]
+    };
+    let (code, csv, err) = rime(&args("csv"));
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        csv.ends_with("model,name,value [m/s],status\nbrilliantov2007,g_cr,,always_sticks\n"),
+        "{csv}"
+    );
+    let (code, table, err) = rime(&args("table"));
+    assert_eq!(code, 0, "{err}");
+    let row = table.lines().find(|l| l.contains("g_cr")).unwrap();
+    assert!(row.trim_end().ends_with("always sticks"), "{table}");
 }

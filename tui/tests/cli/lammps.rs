@@ -65,6 +65,11 @@ fn issue_25_lammps_deck_maps_every_number() {
     assert_eq!(n[3], 0.05, "γ = w/2");
     let table = std::fs::read_to_string(dir.join("reference.tsv")).unwrap();
     assert!(table.contains("stuck_by_adhesion"), "{table}");
+    // The deck says whether the grains stuck: caught once they turn back towards each other while
+    // in contact (the Lyapunov argument of docs/physics.md#model-brilliantov2007), not apart.
+    assert!(deck.contains("variable caught equal 1"), "{deck}");
+    assert!(deck.contains("if \"${separating} == 1 && ${vrel} < 0\" then \"jump SELF done\""));
+    assert!(deck.contains("then \"variable caught equal 0\" \"jump SELF done\""));
     let _ = std::fs::remove_dir_all(dir);
 }
 

@@ -60,7 +60,12 @@ fn without_damping_the_jkr_hysteresis_sets_g_cr_and_matches_eq_15() {
         let s = sticky(0.0, gamma);
         let c = Contact::new(&s).unwrap();
         let d = brilliantov2007::Dynamic::new(&c, gamma, rime_core::JkrEnd::Neck).unwrap();
-        let g_cr = d.critical_speed(c.m_eff, 1e-13).unwrap().unwrap();
+        let g_cr = d
+            .critical_speed(c.m_eff, 1e-13)
+            .unwrap()
+            .unwrap()
+            .speed()
+            .unwrap();
         let e_star = d.modulus;
         let unit = (gamma.powi(5) * c.r_eff.powi(4) / (e_star * e_star)).cbrt();
         let measured = 0.5 * c.m_eff * g_cr * g_cr / unit;
@@ -435,8 +440,18 @@ fn issue_25_pull_off_force_end_sets_g_cr_from_its_own_hysteresis() {
         let neck = brilliantov2007::Dynamic::new(&c, gamma, rime_core::JkrEnd::Neck).unwrap();
         let pull =
             brilliantov2007::Dynamic::new(&c, gamma, rime_core::JkrEnd::PullOffForce).unwrap();
-        let g_n = neck.critical_speed(c.m_eff, 1e-13).unwrap().unwrap();
-        let g_p = pull.critical_speed(c.m_eff, 1e-13).unwrap().unwrap();
+        let g_n = neck
+            .critical_speed(c.m_eff, 1e-13)
+            .unwrap()
+            .unwrap()
+            .speed()
+            .unwrap();
+        let g_p = pull
+            .critical_speed(c.m_eff, 1e-13)
+            .unwrap()
+            .unwrap()
+            .speed()
+            .unwrap();
         let unit = (gamma.powi(5) * c.r_eff.powi(4) / (pull.modulus * pull.modulus)).cbrt();
         let measured = 0.5 * c.m_eff * g_p * g_p / unit;
         println!(
@@ -461,6 +476,8 @@ fn issue_25_pull_off_force_end_sets_g_cr_from_its_own_hysteresis() {
                 .unwrap()
                 .critical_speed(c.m_eff, 1e-10)
                 .unwrap()
+                .unwrap()
+                .speed()
                 .unwrap()
         };
         let ratio = g(rime_core::JkrEnd::PullOffForce) / g(rime_core::JkrEnd::Neck);
