@@ -130,6 +130,65 @@ pub struct MapRecord {
     pub eps_n: alloc::vec::Vec<f64>,
 }
 
+/// Header of comparison records (`rime compare`).
+pub const COMPARE_HEADER: [&str; 4] = ["model", "g_n [m/s]", "eps_n", "status"];
+/// Header of characteristic-speed records (`rime compare`).
+pub const SPEED_HEADER: [&str; 4] = ["model", "name", "value [m/s]", "status"];
+
+/// ε_N of one model or measured law at one speed (`rime compare`).
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct CompareRecord {
+    /// The model's name or the atlas law's id.
+    pub model: &'static str,
+    /// Impact speed \[m/s\].
+    pub g_n: f64,
+    /// ε_N.
+    pub eps_n: f64,
+    /// The model's status, or `measured` / `extrapolated` for a law.
+    pub status: &'static str,
+}
+
+impl CompareRecord {
+    /// Its CSV cells, in the order of [`COMPARE_HEADER`].
+    pub fn cells(&self) -> [String; 4] {
+        [
+            self.model.into(),
+            cell(self.g_n),
+            cell(self.eps_n),
+            self.status.into(),
+        ]
+    }
+}
+
+/// A model's characteristic speed (`g_cr`, `v_yield`, …) or a law's measured range
+/// (`rime compare`).
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct SpeedRecord {
+    /// The model's name or the atlas law's id.
+    pub model: &'static str,
+    /// The speed's name.
+    pub name: &'static str,
+    /// The speed \[m/s\]; `None` (JSON null, an empty cell) where a physical status stands in its
+    /// place.
+    pub value: Option<f64>,
+    /// `value`, or `always_sticks` (g_cr: the grains stick at every accepted speed).
+    pub status: &'static str,
+}
+
+impl SpeedRecord {
+    /// Its CSV cells, in the order of [`SPEED_HEADER`].
+    pub fn cells(&self) -> [String; 4] {
+        [
+            self.model.into(),
+            self.name.into(),
+            self.value.map(cell).unwrap_or_default(),
+            self.status.into(),
+        ]
+    }
+}
+
 /// Header of stick-map records (`rime map`, the explorer's map).
 pub const MAP_HEADER: [&str; 4] = ["g_n [m/s]", "g_t [m/s]", "eps_t", "class"];
 

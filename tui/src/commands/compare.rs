@@ -84,23 +84,9 @@ pub fn parse_models(text: &str) -> CliResult<(Vec<Model>, Vec<&'static rime_core
     Ok((models, laws))
 }
 
-#[derive(Serialize)]
-struct Record {
-    model: &'static str,
-    g_n: f64,
-    eps_n: f64,
-    status: &'static str,
-}
-
-#[derive(Serialize)]
-struct Speed {
-    model: &'static str,
-    name: &'static str,
-    /// `None` (JSON null, an empty CSV cell) where a physical status stands in its place.
-    value: Option<f64>,
-    /// `value`, or `always_sticks` (g_cr: the grains stick at every accepted speed).
-    status: &'static str,
-}
+use rime_core::explorer::records::{
+    COMPARE_HEADER, CompareRecord as Record, SPEED_HEADER, SpeedRecord as Speed,
+};
 
 #[derive(Serialize)]
 struct Listing {
@@ -274,29 +260,23 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
             "characteristic_speeds": speeds,
         }))?,
         Format::Csv => {
-            let mut s = String::from("model,g_n [m/s],eps_n,status\n");
+            let mut s = COMPARE_HEADER.join(",") + "\n";
             for r in &records {
-                s.push_str(&format!(
-                    "{},{},{},{}\n",
-                    r.model,
-                    num(r.g_n),
-                    num(r.eps_n),
-                    r.status
-                ));
+                s.push_str(&(r.cells().join(",") + "\n"));
             }
-            s.push_str("\nmodel,name,value [m/s],status\n");
+            s.push('\n');
+            s.push_str(&(SPEED_HEADER.join(",") + "\n"));
             for c in &speeds {
-                let value = c.value.map(num).unwrap_or_default();
-                s.push_str(&format!("{},{},{value},{}\n", c.model, c.name, c.status));
+                s.push_str(&(c.cells().join(",") + "\n"));
             }
             s
         }
         Format::Table => {
             let mut s = table(
-                &["model", "g_n [m/s]", "eps_n", "status"],
+                &COMPARE_HEADER,
                 &records
                     .iter()
-                    .map(|r| vec![r.model.into(), num(r.g_n), num(r.eps_n), r.status.into()])
+                    .map(|r| r.cells().to_vec())
                     .collect::<Vec<_>>(),
             );
             s.push('\n');
