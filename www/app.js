@@ -21,7 +21,7 @@ import { chartSvg, curvesCsv, familyCsv, mapCsv, mapSvg, setVersion, wireDownloa
 // Exposed for tests and curious users.
 window.rimeState = { ready: false, errors: [] };
 // Test hook: parts of the frame to fail on purpose (see the view's `fail` in wasm/src/frame.rs).
-window.rimeTest = { fail: [], delayMs: 0 };
+window.rimeTest = { fail: [], delayMs: 0, beforeFrame: null };
 
 let pending = false;
 
@@ -119,6 +119,9 @@ function onFrame(msg, req) {
     }
     return;
   }
+  // Test hook: an input that lands while this (now older) frame was on its way.
+  const racing = window.rimeTest.beforeFrame;
+  if (racing) { window.rimeTest.beforeFrame = null; racing(); }
   const res = decode(msg, req.page);
   const sceneChanged = !app.drawn || app.drawn.scene !== req.scene;
   app.res = res;

@@ -188,6 +188,9 @@ export function buildControls(h) {
  *  inactive parameter (its effect off) is greyed and disabled, its slider at the start. */
 export function syncControls() {
   const values = app.res.values;
+  // A frame older than the newest edit (a slider still being dragged while the worker catches up)
+  // leaves the control in the user's hand where the user put it: its thumb used to jump back.
+  const stale = app.wantScene !== null && app.drawn !== null && app.drawn.scene !== app.wantScene;
   for (const [path, row] of rows) {
     const v = values[path];
     if (row.cb) {
@@ -210,8 +213,10 @@ export function syncControls() {
         row.slider.setAttribute('aria-valuetext', 'off');
       } else {
         row.typed.placeholder = '';
-        row.slider.value = toSlider(row.p, v);
-        row.slider.setAttribute('aria-valuetext', shown(row.p, v));
+        if (!(stale && document.activeElement === row.slider)) {
+          row.slider.value = toSlider(row.p, v);
+          row.slider.setAttribute('aria-valuetext', shown(row.p, v));
+        }
         // A refused text stays until it is fixed (or the slider moves): the user's typo is not lost.
         if (!typing && row.typed.dataset.refused !== '1') row.typed.value = editable(v, row.p.unit);
       }

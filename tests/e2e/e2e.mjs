@@ -470,6 +470,29 @@ try {
     return `banner: "${text.split('\n').slice(1, 3).join(' | ').slice(0, 160)}…"; ${gaps} gaps`;
   });
 
+  await check('a dragged slider stays where the user put it when an older frame arrives (issue 22)', async () => {
+    const slider = pf.locator('input[type=range][data-path="grains.density"]');
+    await slider.focus();
+    const start = Number(await slider.inputValue());
+    const u = await updates(pf);
+    // The drag's next step lands just before the previous step's frame is drawn (the race a slow
+    // drag hits between an answer and the next animation frame's request).
+    await slider.evaluate((e, v) => {
+      // The newer step's frame is held 2 s in the worker, so the older frame's drawing is what is read.
+      window.rimeTest.beforeFrame = () => { window.rimeTest.delayMs = 2000; e.value = String(v - 80); e.dispatchEvent(new Event('input', { bubbles: true })); };
+      e.value = String(v - 40);
+      e.dispatchEvent(new Event('input', { bubbles: true }));
+    }, start);
+    await pf.waitForFunction((n) => window.rimeState.updates > n, u, { timeout: GUARD_MS });
+    const during = Number(await slider.inputValue());
+    await pf.evaluate(() => { window.rimeTest.delayMs = 0; });
+    await pf.waitForFunction((n) => window.rimeState.updates > n + 1, u, { timeout: GUARD_MS });
+    const after = Number(await slider.inputValue());
+    assert(during === start - 80, `the thumb jumped to ${during} when the older frame arrived (the user put it at ${start - 80})`);
+    assert(after === start - 80, `the newest frame moved the thumb to ${after}`);
+    return `thumb kept at ${during} while the frame of ${start - 40} was drawn`;
+  });
+
   await check('the worker: during a slow computation (a frame held 20 s in the worker) typing is handled at once; a newer edit supersedes it', async () => {
     await pf.selectOption('#preset', 'ice-frost');
     await pf.waitForFunction(() => JSON.parse(window.rimeState.sceneJson).layer.thickness === 1e-6, null, { timeout: GUARD_MS });
