@@ -189,6 +189,98 @@ impl SpeedRecord {
     }
 }
 
+/// One collision as `rime collision` writes it in JSON (field names are a contract, docs/cli.md):
+/// the trajectory's samples, phases, ending and energy ledger, and with a tangential speed the
+/// oblique impact's tangential side.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct CollisionRecord<'a> {
+    /// Normal impact speed \[m/s\].
+    pub g: f64,
+    /// Sample times \[s\].
+    pub t: &'a [f64],
+    /// Overlap ξ \[m\].
+    pub xi: &'a [f64],
+    /// ξ' \[m/s\].
+    pub xi_dot: &'a [f64],
+    /// Normal force \[N\].
+    pub force: &'a [f64],
+    /// The named instants.
+    pub phases: &'a [crate::collision::Phase],
+    /// Contact duration \[s\]; `null` when the grains stick.
+    pub t_c: Option<f64>,
+    /// Maximum compression \[m\].
+    pub xi_max: f64,
+    /// ε_N.
+    pub eps_n: f64,
+    /// How the collision ended.
+    pub status: &'static str,
+    /// Whether the contact ended inside the integration.
+    pub resolved: bool,
+    /// Where the impact energy went \[J\] (closure: relative).
+    pub ledger: crate::collision::Ledger,
+    /// The tangential side of an oblique impact (`--gt`).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub tangential: Option<ObliqueRecord>,
+}
+
+impl<'a> CollisionRecord<'a> {
+    /// The record of trajectory `t` at impact speed `g`, with the oblique impact's side if any.
+    pub fn new(
+        g: f64,
+        t: &'a crate::collision::Trajectory,
+        oblique: Option<&crate::collision::Oblique>,
+    ) -> Self {
+        CollisionRecord {
+            g,
+            t: &t.t,
+            xi: &t.xi,
+            xi_dot: &t.xi_dot,
+            force: &t.force,
+            phases: &t.phases,
+            t_c: t.t_c.is_finite().then_some(t.t_c),
+            xi_max: t.xi_max,
+            eps_n: t.eps_n,
+            status: t.status.name(),
+            resolved: t.resolved,
+            ledger: t.ledger,
+            tangential: oblique.map(ObliqueRecord::new),
+        }
+    }
+}
+
+/// The tangential side of an oblique impact in a [`CollisionRecord`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct ObliqueRecord {
+    /// ε_T of Eq. (26).
+    pub eps_t: f64,
+    /// The stick-map class.
+    pub class: &'static str,
+    /// Tangential kinetic energy before \[J\].
+    pub energy_before: f64,
+    /// After \[J\].
+    pub energy_after: f64,
+    /// Work of the friction impulse \[J\].
+    pub friction_work: f64,
+    /// Change of each grain's spin \[rad/s\].
+    pub spin_change: [f64; 2],
+}
+
+impl ObliqueRecord {
+    /// The record of an oblique impact's tangential side.
+    pub fn new(o: &crate::collision::Oblique) -> Self {
+        ObliqueRecord {
+            eps_t: o.eps_t,
+            class: o.class.name(),
+            energy_before: o.energy_before,
+            energy_after: o.energy_after,
+            friction_work: o.friction_work,
+            spin_change: o.spin_change,
+        }
+    }
+}
+
 /// Header of stick-map records (`rime map`, the explorer's map).
 pub const MAP_HEADER: [&str; 4] = ["g_n [m/s]", "g_t [m/s]", "eps_t", "class"];
 

@@ -4,7 +4,6 @@
 use crate::args::{Common, Format, number, speed};
 use crate::output::{num, table};
 use crate::scene_io::{CliError, CliResult, err};
-use serde_json::{Value, json};
 
 /// Arguments of `rime collision`.
 #[derive(Debug, Clone)]
@@ -36,10 +35,6 @@ pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
         }
     };
     Ok(Args { g, gt, points })
-}
-
-fn finite_or_null(v: f64) -> Value {
-    if v.is_finite() { json!(v) } else { Value::Null }
 }
 
 /// Runs `rime collision`.
@@ -92,27 +87,10 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     });
     Ok(match common.format {
         Format::Json => {
-            let mut v = json!({
-                "g": args.g,
-                "t": tr.t, "xi": tr.xi, "xi_dot": tr.xi_dot, "force": tr.force,
-                "phases": tr.phases.iter().map(|p| json!({"name": p.name, "t": p.t})).collect::<Vec<_>>(),
-                "t_c": finite_or_null(tr.t_c),
-                "xi_max": tr.xi_max,
-                "eps_n": tr.eps_n,
-                "status": tr.status.name(),
-                "resolved": tr.resolved,
-                "ledger": ledger.iter().map(|(k, v, _)| ((*k).to_string(), json!(v))).collect::<serde_json::Map<_, _>>(),
-            });
-            if let Some(o) = oblique {
-                v["tangential"] = json!({
-                    "eps_t": o.eps_t,
-                    "class": o.class.name(),
-                    "energy_before": o.energy_before,
-                    "energy_after": o.energy_after,
-                    "friction_work": o.friction_work,
-                    "spin_change": o.spin_change,
-                });
-            }
+            // The core's record of this collision (field names are a contract, docs/cli.md).
+            let record =
+                rime_core::explorer::records::CollisionRecord::new(args.g, &tr, oblique.as_ref());
+            let v = serde_json::to_value(&record).map_err(|e| CliError::input(e.to_string()))?;
             crate::output::pretty_json(&v)
         }
         Format::Csv => {
