@@ -157,9 +157,7 @@ fn edit(
     let mut first = None;
     let mut compute_ms = 0.0;
     let mut frames = Vec::new();
-    let never = || false;
-    let mut deliver = |c: Computed| frames.push(c);
-    run_job(&job, mode, &never, &mut deliver);
+    run_job(&job, mode, &mut |c: Computed| frames.push(c));
     for c in frames {
         compute_ms = c.elapsed.as_secs_f64() * 1e3;
         update(app, Event::Computed(Box::new(c)));
@@ -176,9 +174,12 @@ fn edit(
 }
 
 /// Computes `job` as the terminal's worker does, handing each frame to `deliver`.
-fn run_job(job: &Job, mode: Mode, cancelled: &dyn Fn() -> bool, deliver: &mut dyn FnMut(Computed)) {
-    let _ = mode;
-    if let Some(c) = compute::compute(job, cancelled) {
+fn run_job(job: &Job, mode: Mode, deliver: &mut dyn FnMut(Computed)) {
+    let threads = match mode {
+        Mode::Parallel => compute::threads(),
+        Mode::Sequential => 1,
+    };
+    if let Some(c) = compute::compute_on(job, &|| false, threads) {
         deliver(c);
     }
 }

@@ -1866,3 +1866,63 @@ fn a_cut_status_line_says_so_issue_22() {
     assert_eq!(shown.chars().count(), 80);
     assert!(shown.ends_with("… ? lists all"));
 }
+
+/// Issue 26: the frame computed on several threads is the core's sequential frame, bit for bit
+/// (compared through `Debug`, which prints every f64 exactly and NaN as NaN), on several scenes,
+/// levels, comparisons and forced failures, whatever the number of threads.
+#[test]
+fn parallel_frames_equal_the_sequential_reference_issue_26() {
+    use rime_core::explorer::frame::{self, Request};
+    let frost = Preset::IceFrost.scene();
+    let literal = Scene {
+        layer: frost.layer.map(|l| rime_core::Layer {
+            reading: rime_core::LayerReading::Literal,
+            ..l
+        }),
+        ..frost
+    };
+    let cases = [
+        (Preset::Ice.scene(), Accuracy::Balanced, 2, vec![]),
+        (frost, Accuracy::Precise, 0, vec!["curve", "map"]),
+        (literal, Accuracy::Fast, 0, vec![]),
+        (
+            Preset::IceSticky.scene(),
+            Accuracy::Precise,
+            1,
+            vec!["family"],
+        ),
+        (Preset::Ice.scene(), Accuracy::Precise, 2, vec![]),
+    ];
+    for (k, (scene, accuracy, set, fail)) in cases.into_iter().enumerate() {
+        let mut req = Request::new(scene, accuracy);
+        req.overlays = frame::comparison(set, &scene);
+        req.fail = fail.iter().map(|s| s.to_string()).collect();
+        if accuracy == Accuracy::Balanced {
+            req.points = 97; // live integration: fewer points keep the test short
+        }
+        let reference = format!("{:?}", frame::compute(&req, &|| false).expect("computed"));
+        for threads in [2, 3, 8] {
+            let parallel = super::compute::frame(&req, &|| false, threads).expect("computed");
+            assert!(
+                format!("{parallel:?}") == reference,
+                "case {k} at {accuracy:?} on {threads} threads differs"
+            );
+        }
+    }
+}
+
+/// Issue 26: the parallel frame stays cancellable: cancelled before it starts or part-way through
+/// (after some units ran), it returns nothing.
+#[test]
+fn parallel_frames_are_cancellable_issue_26() {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let req = rime_core::explorer::frame::Request::new(Preset::IceFrost.scene(), Accuracy::Precise);
+    assert!(super::compute::frame(&req, &|| true, 2).is_none());
+    let asked = AtomicUsize::new(0);
+    let later = || asked.fetch_add(1, Ordering::Relaxed) > 20;
+    assert!(super::compute::frame(&req, &later, 2).is_none());
+    assert!(
+        asked.load(Ordering::Relaxed) > 20,
+        "it was asked part-way through"
+    );
+}
