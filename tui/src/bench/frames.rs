@@ -6,12 +6,14 @@
 //! queues, the frame the worker computes from it (the same function as the terminal's worker), and
 //! the terminal's render of the new state into a ratatui `TestBackend` of the case's size. The
 //! terminal's request does not depend on the size (points and map side are fixed); the size
-//! changes only what is drawn. Everything runs on this thread in sequence, so `final_ms` includes
-//! the preview's render too (in the terminal that render overlaps the refinement).
+//! changes only what is drawn. At `precise` and `integrated` the worker first sends a `fast`
+//! preview: `first_ms` is the preview drawn, `final_ms` the requested level drawn. Everything runs
+//! on this thread in sequence, so `final_ms` includes the preview's compute and render too (in the
+//! terminal that render overlaps the refinement).
 //!
 //! Times are medians of `runs` edits and are reported, never asserted.
 
-use crate::explore::compute::{self, Computed, Job};
+use crate::explore::compute::{self, Computed};
 use crate::explore::state::{App, Event};
 use crate::explore::update::update;
 use crate::scene_io::{CliError, CliResult, write_atomic};
@@ -142,7 +144,8 @@ fn draw(app: &App, terminal: &mut Terminal<TestBackend>) -> CliResult<()> {
         .map_err(|e| CliError::input(format!("bench --frames: drawing failed: {e}")))
 }
 
-/// One edit: the key's state change, the worker's frames, each drawn as it arrives.
+/// One edit: the key's state change, then the worker's frames (a `fast` preview, then the requested
+/// level, as [`compute::progressive`] sends them), each drawn as it arrives.
 fn edit(
     app: &mut App,
     terminal: &mut Terminal<TestBackend>,
@@ -154,16 +157,23 @@ fn edit(
     let job = app
         .take_request()
         .ok_or_else(|| CliError::input("bench --frames: the edit queued no request"))?;
+    let threads = match mode {
+        Mode::Parallel => compute::threads(),
+        Mode::Sequential => 1,
+    };
     let mut first = None;
     let mut compute_ms = 0.0;
-    let mut frames = Vec::new();
-    run_job(&job, mode, &mut |c: Computed| frames.push(c));
-    for c in frames {
-        compute_ms = c.elapsed.as_secs_f64() * 1e3;
+    let mut drawn = Ok(());
+    compute::progressive(&job, &|| false, threads, &mut |c: Computed| {
+        if !c.preview {
+            compute_ms = c.elapsed.as_secs_f64() * 1e3;
+        }
         update(app, Event::Computed(Box::new(c)));
-        draw(app, terminal)?;
+        drawn = draw(app, terminal);
         first.get_or_insert(start.elapsed().as_secs_f64() * 1e3);
-    }
+        drawn.is_ok()
+    });
+    drawn?;
     let last = start.elapsed().as_secs_f64() * 1e3;
     let first = first.ok_or_else(|| CliError::input("bench --frames: no frame was computed"))?;
     Ok(Edit {
@@ -171,17 +181,6 @@ fn edit(
         last,
         compute: compute_ms,
     })
-}
-
-/// Computes `job` as the terminal's worker does, handing each frame to `deliver`.
-fn run_job(job: &Job, mode: Mode, deliver: &mut dyn FnMut(Computed)) {
-    let threads = match mode {
-        Mode::Parallel => compute::threads(),
-        Mode::Sequential => 1,
-    };
-    if let Some(c) = compute::compute_on(job, &|| false, threads) {
-        deliver(c);
-    }
 }
 
 /// Times one case: `runs` edits in each mode, interleaved so both see the same load.

@@ -4,8 +4,10 @@
 //!
 //! The core's frame is a [`Plan`] of independent units (curve chunks, family members, map rows);
 //! [`frame`] runs them on every core with scoped threads and assembles the same frame, bit for bit,
-//! as the core's sequential [`frame::compute`].
+//! as the core's sequential [`frame::compute`]. [`progressive`] first sends a preview at `fast`,
+//! then the frame at the requested level (issue 26).
 
+use rime_core::Accuracy;
 use rime_core::explorer::frame::{self, Frame, Output, Plan};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
@@ -61,8 +63,10 @@ pub fn threads() -> usize {
 /// handing it out costs nothing.
 const CHUNK: usize = 32;
 
-/// Work a frame does alone before it calls in the other cores.
-const SPAWN_AFTER: Duration = Duration::from_micros(300);
+/// Work a frame does alone before it calls in the other cores: a helper that takes a unit and then
+/// waits for a core on a busy machine holds the frame back by a scheduler slice (milliseconds),
+/// which only a frame longer than that can afford.
+const SPAWN_AFTER: Duration = Duration::from_millis(2);
 
 /// Computes `req` on `threads` threads (1: the core's sequential [`frame::compute`]); `None` as soon
 /// as `cancelled()` says a newer request is waiting. The frame equals the sequential one bit for
@@ -152,4 +156,43 @@ pub fn compute_on(
         frame,
         preview: false,
     })
+}
+/// The preview of a request: the same request at `fast` (same speeds, so the chart's cursor keeps
+/// its place); `None` when the request is already at `fast`.
+pub fn preview_request(req: &frame::Request) -> Option<frame::Request> {
+    (req.accuracy != Accuracy::Fast).then(|| frame::Request {
+        accuracy: Accuracy::Fast,
+        ..req.clone()
+    })
+}
+
+/// What the worker does with a job: a `fast` preview first (when the job asks for another level),
+/// handed to `deliver` marked as a preview, then the frame at the job's level. Stops as soon as
+/// `cancelled()` (a newer edit, or quitting) or when `deliver` returns `false` (the receiver is
+/// gone); returns `false` in that last case.
+pub fn progressive(
+    job: &Job,
+    cancelled: &(dyn Fn() -> bool + Sync),
+    threads: usize,
+    deliver: &mut dyn FnMut(Computed) -> bool,
+) -> bool {
+    if let Some(request) = preview_request(&job.request) {
+        let start = Instant::now();
+        let Some(frame) = frame(&request, cancelled, threads) else {
+            return true;
+        };
+        let preview = Computed {
+            generation: job.generation,
+            elapsed: start.elapsed(),
+            frame,
+            preview: true,
+        };
+        if !deliver(preview) {
+            return false;
+        }
+    }
+    match compute_on(job, cancelled, threads) {
+        Some(done) => deliver(done),
+        None => true,
+    }
 }
