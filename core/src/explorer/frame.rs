@@ -549,7 +549,7 @@ impl Plan {
     }
 
     /// The units of this frame, in the order their outputs are assembled. A curve is split into
-    /// units of about `chunk` points (at least [`MIN_CHUNK`]; `usize::MAX`: whole curves), the
+    /// units of about `chunk` points (at least 16; `usize::MAX`: whole curves), the
     /// map's rows likewise.
     pub fn units(&self, chunk: usize) -> Vec<Unit> {
         let chunk = chunk.max(MIN_CHUNK);

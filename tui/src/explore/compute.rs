@@ -3,7 +3,7 @@
 //! as it is.
 //!
 //! The core's frame is a [`Plan`] of independent units (curve chunks, family members, map rows);
-//! [`frame`] runs them on every core with scoped threads and assembles the same frame, bit for bit,
+//! [`frame()`] runs them on every core with scoped threads and assembles the same frame, bit for bit,
 //! as the core's sequential [`frame::compute`]. [`progressive`] first sends a preview at `fast`,
 //! then the frame at the requested level (issue 26).
 
