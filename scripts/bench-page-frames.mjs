@@ -68,17 +68,17 @@ const context = await chromium.launchPersistentContext(userDataDir, {
 });
 const records = [];
 for (const profile of PROFILES) {
-  const page = await context.newPage();
-  await page.setViewportSize(profile.viewport);
-  if (profile.slowdown > 1) {
-    const cdp = await context.newCDPSession(page);
-    await cdp.send('Emulation.setCPUThrottlingRate', { rate: profile.slowdown });
-  }
   for (const sc of SCENES) {
     for (const level of LEVELS) {
+      // A fresh page per case: nothing of the previous case (its worker, its state) carries over.
+      const page = await context.newPage();
+      await page.setViewportSize(profile.viewport);
+      if (profile.slowdown > 1) {
+        const cdp = await context.newCDPSession(page);
+        await cdp.send('Emulation.setCPUThrottlingRate', { rate: profile.slowdown });
+      }
       const view = { accuracy: level, overlays: sc.overlays };
       await page.goto(`${url}#s=${encodeURIComponent(sc.scene)}&v=${encodeURIComponent(JSON.stringify(view))}`);
-      await page.reload(); // a hash-only navigation does not reload the page
       await page.waitForFunction(() => window.rimeState && window.rimeState.ready, null, { timeout: GUARD_MS });
       const loadAvg = load();
       const runs = [];
@@ -102,7 +102,7 @@ for (const profile of PROFILES) {
             if (first === null && ((s.previews || 0) > p0 || (s.updates || 0) > u0)) first = now - t0;
             if ((s.updates || 0) > u0) {
               // Let the observer deliver the tasks of this edit before reporting.
-              setTimeout(() => { obs.disconnect(); resolve({ first, final: now - t0, tasks }); }, 0);
+              setTimeout(() => { obs.disconnect(); resolve({ first, final: now - t0, tasks, previews: (s.previews || 0) - p0 }); }, 0);
               return;
             }
             requestAnimationFrame(tick);
@@ -115,14 +115,15 @@ for (const profile of PROFILES) {
         surface: 'page', scene: sc.name, level, size: `${profile.viewport.width}x${profile.viewport.height}`,
         profile: profile.name, cpu_slowdown: profile.slowdown,
         first_ms: median(runs.map((r) => r.first)), final_ms: median(runs.map((r) => r.final)),
+        first_each_ms: runs.map((r) => r.first), final_each_ms: runs.map((r) => r.final), previews: runs.map((r) => r.previews),
         long_tasks: tasks.filter((d) => d > 50).length, max_task_ms: tasks.length ? Math.max(...tasks) : 0,
         runs: RUNS, cores, load: loadAvg,
       };
       records.push(rec);
       console.log(`${profile.name.padEnd(8)} ${sc.name.padEnd(34)} ${level.padEnd(10)} first ${rec.first_ms.toFixed(1).padStart(7)} ms  final ${rec.final_ms.toFixed(1).padStart(7)} ms  long tasks ${rec.long_tasks} (max ${rec.max_task_ms.toFixed(0)} ms)`);
+      await page.close();
     }
   }
-  await page.close();
 }
 await context.close();
 const out = path.join(root, 'target', 'bench');
