@@ -20,8 +20,10 @@ import { chartSvg, curvesCsv, familyCsv, mapCsv, mapSvg, setVersion, wireDownloa
 
 // Exposed for tests and curious users.
 window.rimeState = { ready: false, errors: [] };
-// Test hook: parts of the frame to fail on purpose (see the view's `fail` in wasm/src/frame.rs).
-window.rimeTest = { fail: [], delayMs: 0, beforeFrame: null };
+// Test hooks: parts of the frame to fail on purpose (see the view's `fail` in wasm/src/frame.rs),
+// a slow computation (`delayMs`), a slow refinement after the preview (`refineDelayMs`) and an
+// input landing just before a frame is drawn (`beforeFrame`).
+window.rimeTest = { fail: [], delayMs: 0, refineDelayMs: 0, beforeFrame: null };
 
 let pending = false;
 
@@ -54,11 +56,12 @@ function request() {
   };
   if (window.rimeTest.fail.length) view.fail = [...window.rimeTest.fail];
   if (window.rimeTest.delayMs > 0) view.testDelayMs = window.rimeTest.delayMs;
+  if (window.rimeTest.refineDelayMs > 0) view.testRefineDelayMs = window.rimeTest.refineDelayMs;
   // Main-thread calls across the wasm boundary made for this request (edits since the last one).
   const page = { view: { ...v, overlays: [...v.overlays] }, tidal: app.tidalIn, t0: performance.now(), calls: calls.compute, format: calls.format };
   calls.compute = 0;
   calls.format = 0;
-  app.computer.request(app.wantScene, view, page);
+  app.computer.request(app.wantScene, view, page, true);
 }
 
 /** The frame's parts as typed-array views into its two flat arrays. */
@@ -119,6 +122,28 @@ function onFrame(msg, req) {
     }
     return;
   }
+  if (msg.preview) {
+    // The fast preview (issue 26): the chart and map drawn now, the rest of the page (warnings,
+    // controls, link, collision card, the test's state) waits for the requested level, and so do
+    // the downloads.
+    const res = { ...decode(msg, req.page), accuracy: 'fast' };
+    const sceneChanged = !app.drawn || app.drawn.scene !== req.scene;
+    app.res = res;
+    app.preview = true;
+    app.drawn = { scene: req.scene, view: req.page.view, tidal: req.page.tidal };
+    if (sceneChanged) app.mapRow = null;
+    ringOverlay(res, req.scene);
+    draw();
+    const t2 = performance.now();
+    $('timing').textContent = `preview: ${qty(msg.ms / 1e3, 's', 3)} in the worker at fast, on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)} — refining to ${req.page.view.accuracy}…`;
+    $('timing').classList.add('busy');
+    const s = window.rimeState;
+    s.previews = (s.previews || 0) + 1;
+    s.previewMs = t2 - req.page.t0;
+    document.body.dataset.previews = String(s.previews);
+    return;
+  }
+  app.preview = false;
   // Test hook: an input that lands while this (now older) frame was on its way.
   const racing = window.rimeTest.beforeFrame;
   if (racing) { window.rimeTest.beforeFrame = null; racing(); }
@@ -194,7 +219,8 @@ function onBusy(busy) {
   if (!busy) { $('timing').classList.remove('busy'); $('busy').hidden = true; return; }
   // Say so only when it takes long enough to notice.
   busyTimer = setTimeout(() => {
-    if (!app.computer.busy) return;
+    // A preview on screen already says "refining to …".
+    if (!app.computer.busy || app.preview) return;
     $('timing').classList.add('busy');
     $('timing').textContent = `computing (${app.view.accuracy})…`;
     $('busy').hidden = false;

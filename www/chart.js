@@ -118,6 +118,8 @@ export function zoom(factor, shift = 0) {
 
 /** Keeps the current curve to compare with later edits (or drops it). */
 export function pin(on) {
+  // A preview is never pinned (issue 26): the pin waits for the requested level.
+  if (on && app.preview) { pinButton(); return; }
   if (!on || !app.res || !app.res.eps) { app.pinned = null; } else {
     const v = app.drawn.view;
     app.pinned = {

@@ -42,9 +42,10 @@ export class Computer {
   }
 
   /** Asks for the frame of `scene` (JSON text) seen through `view`; `page` comes back with the
-   *  answer. Returns the request's generation. */
-  request(scene, view, page) {
-    const req = { type: 'frame', gen: ++this.gen, scene, view, page };
+   *  answer; with `preview`, a `fast` preview comes first (`msg.preview`). Returns the request's
+   *  generation. */
+  request(scene, view, page, preview = false) {
+    const req = { type: 'frame', gen: ++this.gen, scene, view, page, preview };
     this.queued = req;
     const run = this.running;
     if (!run) {
@@ -78,6 +79,12 @@ export class Computer {
       return;
     }
     const run = this.running;
+    if (msg.preview) {
+      // The request's fast preview; the worker goes on to the requested level (a newer request
+      // still restarts it after RESTART_AFTER_MS).
+      if (run && msg.gen === this.gen) this.onFrame(msg, run.req);
+      return;
+    }
     this.running = null;
     if (run && msg.gen === this.gen) this.onFrame(msg, run.req);
     // else: a stale answer (a newer request exists), dropped.

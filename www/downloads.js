@@ -125,7 +125,8 @@ function download(name, type, data) {
 }
 
 export function wireDownloads(onError) {
-  const ok = () => app.res && app.drawn;
+  // Never a preview (issue 26): the downloads wait for the requested level.
+  const ok = () => app.res && app.drawn && !app.preview;
   $('dl-curves').addEventListener('click', () => ok() && download('rime-curve.csv', 'text/csv', curvesCsv()));
   $('dl-family').addEventListener('click', () => ok() && download('rime-curves-all.csv', 'text/csv', familyCsv()));
   $('dl-map').addEventListener('click', () => ok() && mapCsv() && download('rime-map.csv', 'text/csv', mapCsv()));
@@ -134,7 +135,7 @@ export function wireDownloads(onError) {
   const png = (name, fig) => pngOf(fig).then((b) => download(name, 'image/png', b)).catch((e) => onError(e));
   $('dl-chart-png').addEventListener('click', () => ok() && png('rime-chart.png', chartFigure));
   $('dl-map-png').addEventListener('click', () => ok() && app.res.map && png('rime-map.png', mapFigure));
-  $('dl-scene').addEventListener('click', () => app.drawn && download('rime-scene.json', 'application/json', JSON.stringify(JSON.parse(app.drawn.scene), null, 2) + '\n'));
+  $('dl-scene').addEventListener('click', () => app.drawn && !app.preview && download('rime-scene.json', 'application/json', JSON.stringify(JSON.parse(app.drawn.scene), null, 2) + '\n'));
   $('copy-link').addEventListener('click', async () => {
     try {
       await navigator.clipboard.writeText(location.href);

@@ -14,6 +14,7 @@ export const app = {
   wantScene: null, // its JSON, the newest scene asked of the worker
   drawn: null, // {scene, view} of the frame on screen
   res: null, // the decoded frame on screen
+  preview: false, // whether it is the fast preview of the newest request (never downloaded)
   computer: null,
   probeEx: null, // the drawn scene, for probes and collisions
   probeScene: null,

@@ -1,6 +1,7 @@
 // The computing half of the page: a module worker holding the wasm module. It answers each request
 // {gen, scene, view} with one whole frame (one computeFrame call, then its three arrays) or with the
-// request's error, so that no level of accuracy ever blocks the page's input.
+// request's error, so that no level of accuracy ever blocks the page's input. With `preview` it
+// first sends the frame at `fast`, marked `preview: true` (issue 26).
 import init, { Explorer, computeFrame } from './pkg/rime_wasm.js';
 
 let ready = null;
@@ -34,15 +35,26 @@ self.onmessage = async (ev) => {
   let calls = 0;
   try {
     // The end-to-end test's stand-in for a slow computation: the worker is busy, the page is not.
-    const { testDelayMs, ...view } = msg.view;
+    const { testDelayMs, testRefineDelayMs, ...view } = msg.view;
     if (testDelayMs > 0) { const until = performance.now() + testDelayMs; while (performance.now() < until) { /* busy */ } }
+    // A preview first (issue 26): the same view at `fast`, drawn while the requested level computes.
+    if (msg.preview && view.accuracy !== 'fast') {
+      const p = computeFrame(msg.scene, JSON.stringify({ ...view, accuracy: 'fast' }));
+      const [pjson, pnumbers, pcodes] = [p.json(), p.numbers(), p.codes()];
+      p.free();
+      calls += 5;
+      self.postMessage({ type: 'frame', gen: msg.gen, preview: true, json: pjson, numbers: pnumbers, codes: pcodes, ms: performance.now() - t0, calls: 0 }, [pnumbers.buffer, pcodes.buffer]);
+      // The end-to-end test's stand-in for a slow refinement (the preview stays on screen).
+      if (testRefineDelayMs > 0) { const until = performance.now() + testRefineDelayMs; while (performance.now() < until) { /* busy */ } }
+    }
+    const t1 = performance.now();
     const f = computeFrame(msg.scene, JSON.stringify(view));
     const json = f.json();
     const numbers = f.numbers();
     const codes = f.codes();
     f.free();
     calls += 5;
-    const ms = performance.now() - t0;
+    const ms = performance.now() - t1;
     self.postMessage({ type: 'frame', gen: msg.gen, json, numbers, codes, ms, calls }, [numbers.buffer, codes.buffer]);
   } catch (e) {
     calls += 1;

@@ -1048,6 +1048,44 @@ try {
   // from a slider's input to the redrawn frame at fast, and the worker's compute time within it,
   // go to the log and to target/bench/page-frame.json.
   let med = NaN, medTotal = NaN, maxTotal = NaN, frameScene = null;
+  await check('issue 26: an edit at precise draws the fast preview ("refining to precise…"), downloads wait for the refined frame, and the swap redraws the chart in full', async () => {
+    if ((await page.evaluate(() => window.rimeState.view.accuracy)) !== 'precise') {
+      await page.selectOption('#accuracy', 'precise');
+      await page.waitForFunction(() => window.rimeState.view.accuracy === 'precise', null, { timeout: GUARD_MS });
+    }
+    // The refinement is held up 3 s in the worker, so the preview is on screen while we look.
+    await page.evaluate(() => { window.rimeTest.refineDelayMs = 3000; });
+    const u = await updates(page);
+    const p0 = await page.evaluate(() => window.rimeState.previews || 0);
+    let downloads = 0;
+    const counted = () => { downloads++; };
+    page.on('download', counted);
+    try {
+      const slider = page.locator('input[type=range][data-path="layer.viscosity"]');
+      await slider.evaluate((e) => { e.value = String(Number(e.value) + 40); e.dispatchEvent(new Event('input', { bubbles: true })); });
+      await page.waitForFunction((p) => (window.rimeState.previews || 0) > p, p0, { timeout: GUARD_MS });
+      const mid = await page.evaluate(() => ({ timing: document.getElementById('timing').textContent, updates: window.rimeState.updates }));
+      assert(/refining to precise/.test(mid.timing), `status during the preview: "${mid.timing}"`);
+      assert(mid.updates === u, 'the refined frame arrived before the preview was looked at');
+      const inkPreview = await inked(page, 'chart');
+      await page.locator('#chart').screenshot({ path: path.join(outDir, 'www-preview-26.png') });
+      await page.click('#dl-curves'); // refused: a preview is on screen
+      await waitUpdate(page, u);
+      await page.locator('#chart').screenshot({ path: path.join(outDir, 'www-refined-26.png') });
+      const inkRefined = await inked(page, 'chart');
+      const timing = await page.evaluate(() => document.getElementById('timing').textContent);
+      assert(!/refining/.test(timing), `status after the refinement: "${timing}"`);
+      assert(inkPreview > 2000 && Math.abs(inkPreview - inkRefined) < 0.02 * inkRefined, `preview ${inkPreview} vs refined ${inkRefined} inked pixels`);
+      assert(downloads === 0, 'a download was made from the preview');
+    } finally {
+      page.off('download', counted);
+      await page.evaluate(() => { window.rimeTest.refineDelayMs = 0; });
+    }
+    const [dl] = await Promise.all([page.waitForEvent('download', { timeout: GUARD_MS }), page.click('#dl-curves')]);
+    assert(/rime-curve\.csv/.test(dl.suggestedFilename()), dl.suggestedFilename());
+    return 'screenshots target/www-preview-26.png and target/www-refined-26.png';
+  });
+
   await check('40 slider inputs at fast each give a recomputed, redrawn frame (timings reported)', async () => {
     if ((await page.evaluate(() => window.rimeState.view.accuracy)) !== 'fast') {
       await page.selectOption('#accuracy', 'fast');

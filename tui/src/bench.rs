@@ -6,6 +6,8 @@
 //! 200×200 map). It writes the table as JSON and a work–precision figure (error vs time, log–log)
 //! as SVG. Absolute times drift on a shared machine; compare ratios measured in one run.
 
+pub mod frames;
+
 use crate::scene_io::{CliError, CliResult, write_atomic};
 use rime_core::sweep::{self, StickMap};
 use rime_core::{Accuracy, Contact, Layer, LayerReading, Preset, Scene};

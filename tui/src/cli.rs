@@ -47,8 +47,8 @@ pub enum Command {
     Figures(Common, PathBuf, Option<Box<ExplorerFigures>>),
     /// `rime compare --models LIST --g LIST | --list | --bench`.
     Compare(Common, crate::commands::compare::Args),
-    /// `rime bench [--out DIR] [--quick]`.
-    Bench(PathBuf, bool),
+    /// `rime bench [--out DIR] [--quick] [--frames]`.
+    Bench(PathBuf, bool, bool),
     /// `rime help [SUB]`, `rime SUB --help`: the overview or one subcommand's help.
     Help(Option<&'static crate::spec::Sub>),
     /// `rime completions bash|zsh|fish`.
@@ -297,7 +297,7 @@ fn subcommand(sub: &'static Sub, common: Common, given: &Given) -> CliResult<Com
         "collision" => Command::Collision(common, crate::commands::collision::parse(&owned)?),
         "bench" => {
             let out = PathBuf::from(get("--out").unwrap_or("target/bench"));
-            Command::Bench(out, switch("--quick"))
+            Command::Bench(out, switch("--quick"), switch("--frames"))
         }
         "compare" => compare(common, flags)?,
         "eps" => match (get("--g"), get("--g-file")) {

@@ -44,7 +44,7 @@ fn run(command: Command) -> CliResult<Option<String>> {
         Command::Ring(c, a) => ring::run(&c, &a)?,
         Command::Collision(c, a) => collision::run(&c, &a)?,
         Command::Figures(c, out, explorer) => figures::run(&c, &out, explorer.as_deref())?,
-        Command::Bench(out, quick) => bench::run(&out, quick)?,
+        Command::Bench(out, quick, frames) => bench::run(&out, quick, frames)?,
         Command::Explore(c) => return explore::run(c).map(|()| None),
     }))
 }

@@ -452,9 +452,11 @@ pub const SUBS: &[Sub] = &[
     },
     Sub {
         name: "bench",
-        usage: "bench [--out DIR] [--quick]",
+        usage: "bench [--out DIR] [--quick] [--frames]",
         about: "Speed and accuracy of every model and level; writes DIR/bench.json and \
-                DIR/work-precision.svg (its scenes are fixed).",
+                DIR/work-precision.svg (its scenes are fixed). With --frames: the explorer's \
+                input → first and final frame per level, scene and terminal size; writes \
+                DIR/frames.json.",
         flags: &[
             f(
                 "--out",
@@ -464,6 +466,10 @@ pub const SUBS: &[Sub] = &[
             switch(
                 "--quick",
                 "short timing samples (seconds instead of half a minute)",
+            ),
+            switch(
+                "--frames",
+                "time the explorer's frames (input → first and final frame)",
             ),
         ],
         scene: false,

@@ -175,17 +175,20 @@ fn part_error(part: impl Into<String>, message: impl Into<String>) -> PartError 
     }
 }
 
-/// ε_N at every speed; `None` if cancelled. `force` fails every 40th speed (a test of gaps).
+/// ε_N at every speed of `g`, the speeds `offset..` of a curve; `None` if cancelled. `force`
+/// fails every 40th speed of the curve (a test of gaps).
 fn curve(
     contact: &Contact,
     g: &[f64],
+    offset: usize,
     accuracy: Accuracy,
     force: bool,
     cancelled: &dyn Fn() -> bool,
-) -> Option<(Curve, Option<String>)> {
+) -> Option<(Vec<Option<Normal>>, Option<String>)> {
     let mut points = Vec::with_capacity(g.len());
     let mut first = None;
-    for (i, &gi) in g.iter().enumerate() {
+    for (k, &gi) in g.iter().enumerate() {
+        let i = offset + k;
         if i % 32 == 31 && cancelled() {
             return None;
         }
@@ -202,7 +205,7 @@ fn curve(
             }
         }
     }
-    Some((Curve { points }, first))
+    Some((points, first))
 }
 
 fn gap_error(part: &str, c: &Curve, first: Option<String>) -> Option<PartError> {
@@ -248,6 +251,13 @@ pub fn stick_threshold(contact: &Contact, accuracy: Accuracy) -> crate::Result<O
 
 /// Points on an atlas law's measured speeds.
 const OVERLAY_LAW_POINTS: usize = 64;
+
+/// A model's ε_N at the speeds `g` (NaN where it fails).
+fn model_eps(evaluator: &crate::models::Evaluator, g: &[f64], accuracy: Accuracy) -> Vec<f64> {
+    g.iter()
+        .map(|&gi| evaluator.eps(gi, accuracy).map_or(f64::NAN, |r| r.eps))
+        .collect()
+}
 
 /// One overlay on the frame's speeds `g` (see [`OverlayCurve`]).
 // Long by design: one overlay of each kind (measured law, range, model) with its own speeds and
@@ -325,10 +335,7 @@ pub fn overlay_curve(
         }
         Overlay::Model(model) => {
             let evaluator = crate::models::Evaluator::new(model, scene)?;
-            let eps = g
-                .iter()
-                .map(|&gi| evaluator.eps(gi, accuracy).map_or(f64::NAN, |r| r.eps))
-                .collect();
+            let eps = model_eps(&evaluator, g, accuracy);
             let speeds = evaluator
                 .characteristic_speeds(accuracy)
                 .map(|s| s.iter().map(|c| (c.name, c.value)).collect())
@@ -346,8 +353,482 @@ pub fn overlay_curve(
     }
 }
 
+/// Which curve of a frame a [`Unit`] computes points of.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CurveOf {
+    /// The scene's curve.
+    Scene,
+    /// The clean surface's curve.
+    Clean,
+    /// Family member `k` (index into [`Plan::members`]).
+    Member(usize),
+}
+
+/// One independent piece of a frame's work: a frame is the [`Plan::assemble`] of its plan's
+/// units' outputs, in the order of [`Plan::units`], whichever order (or thread) computed them.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Unit {
+    /// The points `from..to` of a curve.
+    Curve {
+        /// Which curve.
+        of: CurveOf,
+        /// First speed index.
+        from: usize,
+        /// One past the last speed index.
+        to: usize,
+    },
+    /// The "sticks below" marker (a bisection on the scene's status).
+    Threshold,
+    /// Overlay `k` of the request (for a model: its label and characteristic speeds; its points
+    /// are [`Unit::OverlayPoints`]).
+    Overlay(usize),
+    /// ε_N of model overlay `k` at the speeds `from..to`.
+    OverlayPoints {
+        /// Which overlay.
+        k: usize,
+        /// First speed index.
+        from: usize,
+        /// One past the last speed index.
+        to: usize,
+    },
+    /// ε_N at the stick map's grid speeds `from..to` (its rows; the cells are classified from
+    /// them when the frame is assembled).
+    MapRows {
+        /// First grid index.
+        from: usize,
+        /// One past the last grid index.
+        to: usize,
+    },
+}
+
+/// What a [`Unit`] computed.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Output {
+    /// Points of a curve and the first failure among them (`at g_N = …: cause`).
+    Curve(Vec<Option<Normal>>, Option<String>),
+    /// The stick threshold, or why it failed.
+    Threshold(Result<Option<f64>, String>),
+    /// An overlay, or why it failed.
+    Overlay(Result<OverlayCurve, String>),
+    /// ε_N of a model overlay at some speeds (NaN where the model failed).
+    OverlayPoints(Vec<f64>),
+    /// ε_N at the map rows and the right-hand-side evaluations spent, or the first failure.
+    MapRows(Result<(Vec<f64>, usize), String>),
+}
+
+/// A member of the family before its curve is computed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlannedMember {
+    /// Value of the swept parameter.
+    pub value: f64,
+    /// Whether it is the scene itself.
+    pub is_scene: bool,
+    /// Its contact, or why it has none.
+    pub contact: Result<Contact, String>,
+}
+
+/// The stick map before its rows are computed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlannedMap {
+    /// Upper end of both axes \[m/s\].
+    pub max: f64,
+    /// The automatic range, when it is one.
+    pub auto: Option<MapRange>,
+    /// The grid speeds, or why the map cannot be computed.
+    pub grid: Result<Vec<f64>, String>,
+}
+
+/// A frame's work, split into independent [`Unit`]s: everything cheap is decided here (the
+/// speeds, the contacts of the scene, the clean surface and the family members, the map's range);
+/// the units do the expensive rest. `Plan` is `Sync`: threads may run its units side by side.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Plan {
+    /// The frame without its computed parts.
+    pub frame: Frame,
+    /// The scene's contact.
+    pub contact: Contact,
+    /// The clean surface's contact (or why it has none), when the scene has a layer or adhesion.
+    pub clean: Option<Result<Contact, String>>,
+    /// The family's members.
+    pub members: Vec<PlannedMember>,
+    /// The stick map, when the scene has friction.
+    pub map: Option<PlannedMap>,
+}
+
+/// Points per curve unit below which a curve is not split further.
+const MIN_CHUNK: usize = 16;
+
+impl Plan {
+    /// Plans `req`; a request that is not valid or a scene that cannot be evaluated gives the
+    /// finished frame (with its `request` or `scene` error) instead.
+    pub fn new(req: &Request) -> Result<Plan, alloc::boxed::Box<Frame>> {
+        let scene = req.scene;
+        let sweep = req.sweep.unwrap_or_else(|| Sweep::default_for(&scene));
+        let contact = Contact::new(&scene);
+        let mut frame = Frame {
+            request: req.clone(),
+            contact: contact.as_ref().ok().copied(),
+            sweep,
+            g: Vec::new(),
+            curve: None,
+            clean: None,
+            family: Vec::new(),
+            markers: Vec::new(),
+            map: None,
+            warnings: Vec::new(),
+            overlays: Vec::new(),
+            errors: Vec::new(),
+        };
+        if let Err(e) = req.validate() {
+            frame.errors.push(part_error("request", format!("{e}")));
+            return Err(alloc::boxed::Box::new(frame));
+        }
+        let (from, to) = req.speeds.unwrap_or_else(|| {
+            let (lo, hi) = chart_decades(contact.as_ref().ok());
+            (
+                crate::sweep::exact_decade(lo),
+                crate::sweep::exact_decade(hi),
+            )
+        });
+        frame.g = alloc::vec![0.0; req.points];
+        log_space(from, to, &mut frame.g);
+        let contact = match contact {
+            Ok(c) => c,
+            Err(e) => {
+                frame.errors.push(part_error("scene", format!("{e}")));
+                return Err(alloc::boxed::Box::new(frame));
+            }
+        };
+        let clean = (scene.layer.is_some() || scene.adhesion.is_some()).then(|| {
+            Contact::new(&Scene {
+                layer: None,
+                adhesion: None,
+                ..scene
+            })
+            .map_err(|e| format!("{e}"))
+        });
+        let s = SWEEPS[sweep];
+        let mut members = Vec::new();
+        if req.family && s.available(&scene) {
+            let current = s.current(&scene);
+            for v in s.values(&scene) {
+                let contact = if req.forced("family") {
+                    Err(String::from("failure forced for testing"))
+                } else {
+                    s.apply(&scene, v)
+                        .and_then(|m| Contact::new(&m))
+                        .map_err(|e| format!("{e}"))
+                };
+                members.push(PlannedMember {
+                    value: v,
+                    is_scene: v == current,
+                    contact,
+                });
+            }
+        }
+        let map = contact.friction.is_some().then(|| {
+            let auto = req.map_max.is_none().then(|| auto_map_range(&contact));
+            let max = req.map_max.or(auto.map(|a| a.max)).unwrap_or(1.0);
+            let grid = if req.forced("map") {
+                Err(String::from("failure forced for testing"))
+            } else if !speed_is_valid(max) {
+                // A range the models refuse fails the map alone.
+                Err(format!("map_max: {max} m/s is not a speed in (0, 1e6] m/s"))
+            } else {
+                let mut g = alloc::vec![0.0; req.map_n];
+                crate::sweep::linear_space(max, &mut g);
+                Ok(g)
+            };
+            PlannedMap { max, auto, grid }
+        });
+        Ok(Plan {
+            frame,
+            contact,
+            clean,
+            members,
+            map,
+        })
+    }
+
+    /// The units of this frame, in the order their outputs are assembled. A curve is split into
+    /// units of about `chunk` points (at least 16; `usize::MAX`: whole curves), the
+    /// map's rows likewise.
+    pub fn units(&self, chunk: usize) -> Vec<Unit> {
+        let chunk = chunk.max(MIN_CHUNK);
+        let ranges = |n: usize| {
+            let parts = n.div_ceil(chunk).max(1);
+            (0..parts).map(move |k| (k * n / parts, (k + 1) * n / parts))
+        };
+        let n = self.frame.g.len();
+        let mut units = Vec::new();
+        let curve = |of: CurveOf, units: &mut Vec<Unit>| {
+            units.extend(ranges(n).map(|(from, to)| Unit::Curve { of, from, to }));
+        };
+        curve(CurveOf::Scene, &mut units);
+        if matches!(self.clean, Some(Ok(_))) {
+            curve(CurveOf::Clean, &mut units);
+        }
+        for (k, m) in self.members.iter().enumerate() {
+            if m.contact.is_ok() {
+                curve(CurveOf::Member(k), &mut units);
+            }
+        }
+        units.push(Unit::Threshold);
+        for (k, o) in self.frame.request.overlays.iter().enumerate() {
+            units.push(Unit::Overlay(k));
+            if matches!(o, Overlay::Model(_)) {
+                units.extend(ranges(n).map(|(from, to)| Unit::OverlayPoints { k, from, to }));
+            }
+        }
+        if let Some(PlannedMap { grid: Ok(g), .. }) = &self.map {
+            units.extend(ranges(g.len()).map(|(from, to)| Unit::MapRows { from, to }));
+        }
+        units
+    }
+
+    /// Computes one unit; `None` if cancelled.
+    pub fn run(&self, unit: &Unit, cancelled: &dyn Fn() -> bool) -> Option<Output> {
+        if cancelled() {
+            return None;
+        }
+        let req = &self.frame.request;
+        match *unit {
+            Unit::Curve { of, from, to } => {
+                let (contact, force) = match of {
+                    CurveOf::Scene => (Some(&self.contact), req.forced("curve")),
+                    CurveOf::Clean => (self.clean.as_ref().and_then(|c| c.as_ref().ok()), false),
+                    CurveOf::Member(k) => (
+                        self.members.get(k).and_then(|m| m.contact.as_ref().ok()),
+                        false,
+                    ),
+                };
+                let g = self.frame.g.get(from..to).unwrap_or_default();
+                let (points, first) = match contact {
+                    Some(c) => curve(c, g, from, req.accuracy, force, cancelled)?,
+                    None => (alloc::vec![None; g.len()], None),
+                };
+                Some(Output::Curve(points, first))
+            }
+            Unit::Threshold => {
+                let threshold = if req.forced("marker") {
+                    Err(String::from("failure forced for testing"))
+                } else {
+                    stick_threshold(&self.contact, req.accuracy).map_err(|e| format!("{e}"))
+                };
+                Some(Output::Threshold(threshold))
+            }
+            Unit::Overlay(k) => {
+                let o = req
+                    .overlays
+                    .get(k)
+                    .ok_or_else(|| String::from("no such overlay"));
+                Some(Output::Overlay(o.and_then(|o| {
+                    // A model's points are units of their own: here only its label and speeds.
+                    let g: &[f64] = match o {
+                        Overlay::Model(_) => &[],
+                        Overlay::Atlas(_) => &self.frame.g,
+                    };
+                    overlay_curve(*o, &req.scene, &self.contact, g, req.accuracy)
+                        .map_err(|e| format!("{e}"))
+                })))
+            }
+            Unit::OverlayPoints { k, from, to } => {
+                let g = self.frame.g.get(from..to).unwrap_or_default();
+                let eps = match req.overlays.get(k) {
+                    Some(Overlay::Model(model)) => {
+                        match crate::models::Evaluator::new(*model, &req.scene) {
+                            Ok(evaluator) => model_eps(&evaluator, g, req.accuracy),
+                            Err(_) => alloc::vec![f64::NAN; g.len()],
+                        }
+                    }
+                    _ => alloc::vec![f64::NAN; g.len()],
+                };
+                Some(Output::OverlayPoints(eps))
+            }
+            Unit::MapRows { from, to } => {
+                let g = match &self.map {
+                    Some(PlannedMap { grid: Ok(g), .. }) => g.get(from..to).unwrap_or_default(),
+                    _ => &[],
+                };
+                let mut eps = alloc::vec![0.0; g.len()];
+                Some(Output::MapRows(
+                    crate::sweep::eps_n_into(&self.contact, g, req.accuracy, &mut eps)
+                        .map(|evaluations| (eps, evaluations))
+                        .map_err(|e| format!("{e}")),
+                ))
+            }
+        }
+    }
+
+    /// The frame from the outputs of [`Plan::units`] (`outputs[i]` from `units[i]`), with its
+    /// parts, errors and warnings in the order [`compute`] gives them.
+    pub fn assemble(self, units: &[Unit], outputs: Vec<Output>) -> Frame {
+        let Plan {
+            mut frame,
+            contact,
+            clean,
+            members,
+            map,
+        } = self;
+        let mut curves: Vec<(CurveOf, Vec<Option<Normal>>, Option<String>)> = Vec::new();
+        let mut threshold = Ok(None);
+        let mut overlays = Vec::new();
+        let mut rows: Result<(Vec<f64>, usize), String> = Ok((Vec::new(), 0));
+        for (unit, output) in units.iter().zip(outputs) {
+            match (unit, output) {
+                (Unit::Curve { of, .. }, Output::Curve(points, first)) => {
+                    match curves.last_mut().filter(|c| c.0 == *of) {
+                        Some(c) => {
+                            c.1.extend(points);
+                            if c.2.is_none() {
+                                c.2 = first;
+                            }
+                        }
+                        None => curves.push((*of, points, first)),
+                    }
+                }
+                (Unit::Threshold, Output::Threshold(t)) => threshold = t,
+                (Unit::Overlay(k), Output::Overlay(o)) => overlays.push((*k, o)),
+                (Unit::OverlayPoints { k, .. }, Output::OverlayPoints(eps)) => {
+                    if let Some((_, Ok(o))) = overlays.last_mut().filter(|o| o.0 == *k) {
+                        if o.g.is_empty() {
+                            o.g = frame.g.clone();
+                        }
+                        o.eps.extend(eps);
+                    }
+                }
+                (Unit::MapRows { .. }, Output::MapRows(r)) => {
+                    if let Ok((all, evaluations)) = &mut rows {
+                        match r {
+                            Ok((eps, e)) => {
+                                all.extend(eps);
+                                *evaluations += e;
+                            }
+                            Err(e) => rows = Err(e),
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+        let mut curves = curves.into_iter().map(|(of, points, first)| {
+            let c = Curve { points };
+            (of, c, first)
+        });
+        let mut next_curve = |of: CurveOf| {
+            curves
+                .next()
+                .filter(|c| c.0 == of)
+                .map(|(_, c, first)| (c, first))
+        };
+        if let Some((c, first)) = next_curve(CurveOf::Scene) {
+            frame.errors.extend(gap_error("curve", &c, first));
+            frame.curve = Some(c);
+        }
+        match clean {
+            Some(Ok(_)) => {
+                if let Some((c, first)) = next_curve(CurveOf::Clean) {
+                    frame.errors.extend(gap_error("clean", &c, first));
+                    frame.clean = Some(c);
+                }
+            }
+            Some(Err(e)) => frame.errors.push(part_error("clean", e)),
+            None => {}
+        }
+        let symbol = SWEEPS[frame.sweep].symbol;
+        for (k, m) in members.into_iter().enumerate() {
+            let part = format!("family {symbol} = {}", m.value);
+            let curve = match m.contact {
+                Ok(_) => next_curve(CurveOf::Member(k)).map(|(c, first)| {
+                    frame.errors.extend(gap_error(&part, &c, first));
+                    c
+                }),
+                Err(e) => {
+                    frame.errors.push(part_error(part, e));
+                    None
+                }
+            };
+            frame.family.push(Member {
+                value: m.value,
+                is_scene: m.is_scene,
+                curve,
+            });
+        }
+        if let Some(l) = &contact.layer {
+            frame.markers.push(Marker {
+                key: "layer",
+                label: "g_s layer (Eq. (10))",
+                value: l.critical_velocity,
+            });
+        }
+        if let Some(a) = &contact.adhesion {
+            frame.markers.push(Marker {
+                key: "adhesion",
+                label: "g_s adhesion (Eq. (15)), a rebound speed",
+                value: a.critical_velocity,
+            });
+        }
+        match threshold {
+            Ok(Some(t)) => frame.markers.push(Marker {
+                key: "stick",
+                label: "sticks below",
+                value: t,
+            }),
+            Ok(None) => {}
+            Err(e) => frame.errors.push(part_error("marker \"sticks below\"", e)),
+        }
+        frame.warnings = super::warning::warnings(
+            &frame.request.scene,
+            frame
+                .curve
+                .iter()
+                .flat_map(|c| c.points.iter().map(|p| p.map(|n| n.status))),
+            Some(contact.damping_time),
+        );
+        for (k, o) in overlays {
+            match o {
+                Ok(o) => frame.overlays.push(o),
+                Err(e) => {
+                    let part = frame.request.overlays.get(k).map(|o| o.key());
+                    frame.errors.push(part_error(part.unwrap_or_default(), e));
+                }
+            }
+        }
+        if let Some(PlannedMap { max, auto, grid }) = map {
+            let map = grid.and_then(|g| {
+                let (eps_n, rhs_evaluations) = rows?;
+                let n = g.len();
+                let mut class = alloc::vec![crate::tangential::StickClass::Undefined; n * n];
+                let mut eps_t = alloc::vec![0.0; n * n];
+                crate::sweep::stick_map_into(&contact, &g, &eps_n, &mut class, &mut eps_t)
+                    .map_err(|e| format!("{e}"))?;
+                Ok(StickMap {
+                    g,
+                    eps_n,
+                    class,
+                    eps_t,
+                    rhs_evaluations,
+                })
+            });
+            let map = match map {
+                Ok(m) => Some(m),
+                Err(e) => {
+                    frame.errors.push(part_error("stick map", e));
+                    None
+                }
+            };
+            frame.map = Some(MapPart { max, auto, map });
+        }
+        frame
+    }
+}
+
 /// Computes a frame. Returns `None` as soon as `cancelled()` says a newer request is waiting.
 /// A request that is not valid (see [`Request::validate`]) is reported as a `request` part error.
+///
+/// This is the sequential reference: the [`Plan`]'s units one after another. A surface with
+/// threads may run the units side by side and [`Plan::assemble`] their outputs: the frame is the
+/// same, bit for bit.
 ///
 /// # Examples
 ///
@@ -368,176 +849,16 @@ pub fn overlay_curve(
 // Long by design: the frame's parts in order (contact, curve, clean, family, markers, map,
 // warnings), each failing on its own; the cancellation checks sit between them.
 pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<Frame> {
-    let scene = req.scene;
-    let sweep = req.sweep.unwrap_or_else(|| Sweep::default_for(&scene));
-    let contact = Contact::new(&scene);
-    let mut frame = Frame {
-        request: req.clone(),
-        contact: contact.as_ref().ok().copied(),
-        sweep,
-        g: Vec::new(),
-        curve: None,
-        clean: None,
-        family: Vec::new(),
-        markers: Vec::new(),
-        map: None,
-        warnings: Vec::new(),
-        overlays: Vec::new(),
-        errors: Vec::new(),
+    let plan = match Plan::new(req) {
+        Ok(plan) => plan,
+        Err(frame) => return Some(*frame),
     };
-    if let Err(e) = req.validate() {
-        frame.errors.push(part_error("request", format!("{e}")));
-        return Some(frame);
+    let units = plan.units(usize::MAX);
+    let mut outputs = Vec::with_capacity(units.len());
+    for unit in &units {
+        outputs.push(plan.run(unit, cancelled)?);
     }
-    let (from, to) = req.speeds.unwrap_or_else(|| {
-        let (lo, hi) = chart_decades(contact.as_ref().ok());
-        (
-            crate::sweep::exact_decade(lo),
-            crate::sweep::exact_decade(hi),
-        )
-    });
-    frame.g = alloc::vec![0.0; req.points];
-    log_space(from, to, &mut frame.g);
-    let contact = match contact {
-        Ok(c) => c,
-        Err(e) => {
-            frame.errors.push(part_error("scene", format!("{e}")));
-            return Some(frame);
-        }
-    };
-    let (c, first) = curve(
-        &contact,
-        &frame.g,
-        req.accuracy,
-        req.forced("curve"),
-        cancelled,
-    )?;
-    frame.errors.extend(gap_error("curve", &c, first));
-    frame.curve = Some(c);
-
-    if scene.layer.is_some() || scene.adhesion.is_some() {
-        let clean = Scene {
-            layer: None,
-            adhesion: None,
-            ..scene
-        };
-        match Contact::new(&clean) {
-            Ok(cc) => {
-                let (c, first) = curve(&cc, &frame.g, req.accuracy, false, cancelled)?;
-                frame.errors.extend(gap_error("clean", &c, first));
-                frame.clean = Some(c);
-            }
-            Err(e) => frame.errors.push(part_error("clean", format!("{e}"))),
-        }
-    }
-
-    let s = SWEEPS[sweep];
-    if req.family && s.available(&scene) {
-        let current = s.current(&scene);
-        for v in s.values(&scene) {
-            if cancelled() {
-                return None;
-            }
-            let part = format!("family {} = {v}", s.symbol);
-            let member_contact = if req.forced("family") {
-                Err(String::from("failure forced for testing"))
-            } else {
-                s.apply(&scene, v)
-                    .and_then(|m| Contact::new(&m))
-                    .map_err(|e| format!("{e}"))
-            };
-            let curve = match member_contact {
-                Ok(mc) => {
-                    let (c, first) = curve(&mc, &frame.g, req.accuracy, false, cancelled)?;
-                    frame.errors.extend(gap_error(&part, &c, first));
-                    Some(c)
-                }
-                Err(e) => {
-                    frame.errors.push(part_error(part, e));
-                    None
-                }
-            };
-            frame.family.push(Member {
-                value: v,
-                is_scene: v == current,
-                curve,
-            });
-        }
-    }
-
-    if let Some(l) = &contact.layer {
-        frame.markers.push(Marker {
-            key: "layer",
-            label: "g_s layer (Eq. (10))",
-            value: l.critical_velocity,
-        });
-    }
-    if let Some(a) = &contact.adhesion {
-        frame.markers.push(Marker {
-            key: "adhesion",
-            label: "g_s adhesion (Eq. (15)), a rebound speed",
-            value: a.critical_velocity,
-        });
-    }
-    if cancelled() {
-        return None;
-    }
-    let threshold = if req.forced("marker") {
-        Err(String::from("failure forced for testing"))
-    } else {
-        stick_threshold(&contact, req.accuracy).map_err(|e| format!("{e}"))
-    };
-    match threshold {
-        Ok(Some(t)) => frame.markers.push(Marker {
-            key: "stick",
-            label: "sticks below",
-            value: t,
-        }),
-        Ok(None) => {}
-        Err(e) => frame.errors.push(part_error("marker \"sticks below\"", e)),
-    }
-    frame.warnings = super::warning::warnings(
-        &scene,
-        frame
-            .curve
-            .iter()
-            .flat_map(|c| c.points.iter().map(|p| p.map(|n| n.status))),
-        Some(contact.damping_time),
-    );
-    for overlay in &req.overlays {
-        if cancelled() {
-            return None;
-        }
-        match overlay_curve(*overlay, &scene, &contact, &frame.g, req.accuracy) {
-            Ok(o) => frame.overlays.push(o),
-            Err(e) => frame.errors.push(part_error(overlay.key(), format!("{e}"))),
-        }
-    }
-
-    if contact.friction.is_some() {
-        if cancelled() {
-            return None;
-        }
-        let auto = req.map_max.is_none().then(|| auto_map_range(&contact));
-        let max = req.map_max.or(auto.map(|a| a.max)).unwrap_or(1.0);
-        let map = if req.forced("map") {
-            Err(String::from("failure forced for testing"))
-        } else if !speed_is_valid(max) {
-            // A range the models refuse fails the map alone.
-            Err(format!("map_max: {max} m/s is not a speed in (0, 1e6] m/s"))
-        } else {
-            StickMap::new(&contact, max, req.map_n, req.accuracy).map_err(|e| format!("{e}"))
-        };
-        let map = match map {
-            Ok(m) => Some(m),
-            Err(e) => {
-                frame.errors.push(part_error("stick map", e));
-                None
-            }
-        };
-        frame.map = Some(MapPart { max, auto, map });
-    }
-    Some(frame)
+    Some(plan.assemble(&units, outputs))
 }
 
 #[cfg(test)]
@@ -611,6 +932,52 @@ mod tests {
         );
         assert_eq!(f.overlays[1].g, f.g);
         assert!(Overlay::parse("atlas:nope").is_err() && Overlay::parse("bridges1984").is_err());
+    }
+
+    /// Issue 26: the plan's units, split finely and run in reverse order, assemble into the frame
+    /// `compute` gives, bit for bit (compared through `Debug`, which prints every f64 exactly and
+    /// NaN as NaN), gaps, forced failures, overlays and the map included.
+    #[test]
+    fn units_in_any_order_assemble_the_sequential_frame_issue_26() {
+        let literal = Scene {
+            layer: Preset::IceFrost.scene().layer.map(|l| crate::Layer {
+                reading: crate::LayerReading::Literal,
+                ..l
+            }),
+            ..Preset::IceFrost.scene()
+        };
+        let scenes = [
+            Preset::Ice.scene(),
+            Preset::IceFrost.scene(),
+            Preset::IceSticky.scene(),
+            literal,
+        ];
+        for (k, scene) in scenes.into_iter().enumerate() {
+            for accuracy in [Accuracy::Fast, Accuracy::Precise] {
+                let mut req = Request::new(scene, accuracy);
+                req.points = 57;
+                req.map_n = 23;
+                req.overlays = comparison(1 + k % 2, &scene);
+                if k == 1 {
+                    req.fail = alloc::vec![String::from("curve"), String::from("marker")];
+                }
+                let reference = compute(&req, &|| false).unwrap();
+                let plan = Plan::new(&req).unwrap();
+                let units = plan.units(MIN_CHUNK);
+                assert!(units.len() > 8, "{units:?}");
+                let mut outputs: Vec<Option<Output>> = alloc::vec![None; units.len()];
+                for (i, u) in units.iter().enumerate().rev() {
+                    outputs[i] = plan.run(u, &|| false);
+                }
+                let outputs = outputs.into_iter().map(Option::unwrap).collect();
+                let frame = plan.assemble(&units, outputs);
+                assert_eq!(
+                    format!("{frame:?}"),
+                    format!("{reference:?}"),
+                    "{k} {accuracy:?}"
+                );
+            }
+        }
     }
 
     #[test]

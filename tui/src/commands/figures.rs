@@ -40,14 +40,15 @@ pub fn run(c: &Common, out: &Path, explorer: Option<&ExplorerFigures>) -> CliRes
 /// `--explorer`: one frame of the core's explorer model, written like the explorer's `x`.
 fn run_explorer(c: &Common, out: &Path, x: &ExplorerFigures) -> CliResult<String> {
     use rime_core::explorer::figures::View;
-    use rime_core::explorer::frame::compute;
     // The scene and level are the common options' (the request was built from them).
     let mut req = x.request.clone();
     req.scene = c.scene;
     req.accuracy = c.accuracy;
     let mut progress = crate::progress::Progress::new("figures", 1);
     progress.step("computing the frame");
-    let frame = compute(&req, &|| false).ok_or_else(|| CliError::input("figures: cancelled"))?;
+    // On every core; the frame is the core's sequential one, bit for bit.
+    let frame = crate::explore::compute::frame(&req, &|| false, crate::explore::compute::threads())
+        .ok_or_else(|| CliError::input("figures: cancelled"))?;
     if let Some(e) = frame
         .errors
         .iter()

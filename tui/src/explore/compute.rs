@@ -1,8 +1,16 @@
 //! The worker's job: the core's request ([`frame::Request`]) tagged with the generation that
-//! asked for it, computed by the one explorer model ([`frame::compute`]) into the core's
-//! [`Frame`], which the views read as it is.
+//! asked for it, computed by the one explorer model into the core's [`Frame`], which the views read
+//! as it is.
+//!
+//! The core's frame is a [`Plan`] of independent units (curve chunks, family members, map rows);
+//! [`frame()`] runs them on every core with scoped threads and assembles the same frame, bit for bit,
+//! as the core's sequential [`frame::compute`]. [`progressive`] first sends a preview at `fast`,
+//! then the frame at the requested level (issue 26).
 
-use rime_core::explorer::frame::{self, Frame};
+use rime_core::Accuracy;
+use rime_core::explorer::frame::{self, Frame, Output, Plan};
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 pub use rime_core::explorer::frame::{SWEEPS, Sweep};
@@ -25,6 +33,8 @@ pub struct Computed {
     pub elapsed: Duration,
     /// The core's frame: what every view draws and the `x` export writes.
     pub frame: Frame,
+    /// Whether this is the `fast` preview of a request at another level (never exported).
+    pub preview: bool,
 }
 
 impl std::ops::Deref for Computed {
@@ -43,13 +53,146 @@ pub fn auto_speeds(data: &Frame) -> (f64, f64) {
     }
 }
 
-/// Computes a job. Returns `None` as soon as `cancelled()` says a newer request is waiting.
-pub fn compute(job: &Job, cancelled: &dyn Fn() -> bool) -> Option<Computed> {
+/// Threads a frame uses: the cores this process may use.
+pub fn threads() -> usize {
+    std::thread::available_parallelism().map_or(1, |n| n.get())
+}
+
+/// Points per curve unit: a 241-point curve is 8 units, so the cores share even a frame whose cost
+/// is one curve (a compared model's), and a unit is long enough (≥ 30 ε_N evaluations) that
+/// handing it out costs nothing.
+const CHUNK: usize = 32;
+
+/// Work a frame does alone before it calls in the other cores: a helper that takes a unit and then
+/// waits for a core on a busy machine holds the frame back by a scheduler slice (milliseconds),
+/// which only a frame longer than that can afford.
+const SPAWN_AFTER: Duration = Duration::from_millis(2);
+
+/// Computes `req` on `threads` threads (1: the core's sequential [`frame::compute`]); `None` as soon
+/// as `cancelled()` says a newer request is waiting. The frame equals the sequential one bit for
+/// bit: the units are the same and are assembled in the same order.
+pub fn frame(
+    req: &frame::Request,
+    cancelled: &(dyn Fn() -> bool + Sync),
+    threads: usize,
+) -> Option<Frame> {
+    if threads <= 1 {
+        return frame::compute(req, cancelled);
+    }
+    let plan = match Plan::new(req) {
+        Ok(plan) => plan,
+        Err(frame) => return Some(*frame),
+    };
+    let units = plan.units(CHUNK);
+    let outputs: Vec<Mutex<Option<Output>>> = units.iter().map(|_| Mutex::new(None)).collect();
+    let next = AtomicUsize::new(0);
+    let stop = AtomicBool::new(false);
+    // Takes the next unit and runs it; `false` when none is left or the frame was cancelled (a
+    // thread that is cancelled stops the others).
+    let step = || {
+        let stopped = || stop.load(Ordering::Relaxed) || cancelled();
+        let i = next.fetch_add(1, Ordering::Relaxed);
+        let Some(unit) = units.get(i) else {
+            return false;
+        };
+        match plan.run(unit, &stopped) {
+            Some(out) => {
+                if let Ok(mut slot) = outputs[i].lock() {
+                    *slot = Some(out);
+                }
+                true
+            }
+            None => {
+                stop.store(true, Ordering::Relaxed);
+                false
+            }
+        }
+    };
+    std::thread::scope(|s| {
+        // Helpers start only once the frame has shown it is not cheap: on a busy machine a new
+        // thread can wait milliseconds for a core, more than a whole `fast` frame takes.
+        let start = Instant::now();
+        let mut helpers = Vec::new();
+        while step() {
+            if helpers.is_empty() && start.elapsed() >= SPAWN_AFTER {
+                helpers = (1..threads)
+                    .map(|_| s.spawn(move || while step() {}))
+                    .collect();
+            }
+        }
+        for h in helpers {
+            if let Err(panic) = h.join() {
+                std::panic::resume_unwind(panic);
+            }
+        }
+    });
+    if stop.load(Ordering::Relaxed) {
+        return None;
+    }
+    let outputs = outputs
+        .into_iter()
+        .map(|m| m.into_inner().ok().flatten())
+        .collect::<Option<Vec<Output>>>()?;
+    Some(plan.assemble(&units, outputs))
+}
+
+/// Computes a job at its level on every core. Returns `None` as soon as `cancelled()` says a newer
+/// request is waiting.
+pub fn compute(job: &Job, cancelled: &(dyn Fn() -> bool + Sync)) -> Option<Computed> {
+    compute_on(job, cancelled, threads())
+}
+
+/// [`compute`] on `threads` threads.
+pub fn compute_on(
+    job: &Job,
+    cancelled: &(dyn Fn() -> bool + Sync),
+    threads: usize,
+) -> Option<Computed> {
     let start = Instant::now();
-    let frame = frame::compute(&job.request, cancelled)?;
+    let frame = frame(&job.request, cancelled, threads)?;
     Some(Computed {
         generation: job.generation,
         elapsed: start.elapsed(),
         frame,
+        preview: false,
     })
+}
+/// The preview of a request: the same request at `fast` (same speeds, so the chart's cursor keeps
+/// its place); `None` when the request is already at `fast`.
+pub fn preview_request(req: &frame::Request) -> Option<frame::Request> {
+    (req.accuracy != Accuracy::Fast).then(|| frame::Request {
+        accuracy: Accuracy::Fast,
+        ..req.clone()
+    })
+}
+
+/// What the worker does with a job: a `fast` preview first (when the job asks for another level),
+/// handed to `deliver` marked as a preview, then the frame at the job's level. Stops as soon as
+/// `cancelled()` (a newer edit, or quitting) or when `deliver` returns `false` (the receiver is
+/// gone); returns `false` in that last case.
+pub fn progressive(
+    job: &Job,
+    cancelled: &(dyn Fn() -> bool + Sync),
+    threads: usize,
+    deliver: &mut dyn FnMut(Computed) -> bool,
+) -> bool {
+    if let Some(request) = preview_request(&job.request) {
+        let start = Instant::now();
+        let Some(frame) = frame(&request, cancelled, threads) else {
+            return true;
+        };
+        let preview = Computed {
+            generation: job.generation,
+            elapsed: start.elapsed(),
+            frame,
+            preview: true,
+        };
+        if !deliver(preview) {
+            return false;
+        }
+    }
+    match compute_on(job, cancelled, threads) {
+        Some(done) => deliver(done),
+        None => true,
+    }
 }

@@ -40,6 +40,15 @@ impl App {
     }
 
     pub(crate) fn export(&mut self) {
+        // Exports come from the requested level, never from a preview (issue 26).
+        if self.previewing() {
+            self.info(format!(
+                "a fast preview is on screen — nothing exported; press x again once the {} \
+                 frame is in",
+                self.accuracy.name()
+            ));
+            return;
+        }
         let Some(data) = self.data.as_ref().filter(|d| d.request.scene == self.scene) else {
             self.info("still computing — press x again in a moment");
             return;

@@ -22,7 +22,7 @@ pub mod tidal;
 pub mod update;
 pub mod view;
 
-use compute::{Job, compute};
+use compute::Job;
 use rime_core::{Accuracy, Scene};
 use state::{App, Event};
 use std::sync::Arc;
@@ -31,17 +31,22 @@ use std::sync::mpsc::{self, Receiver, Sender};
 use std::time::Duration;
 use update::update;
 
-/// Computes the newest request, dropping older ones and abandoning stale work.
+/// The generation the worker is told about when the user quits: no request has it, so whatever
+/// the worker is computing (a refinement, say) is abandoned at its next check.
+const QUIT: u64 = u64::MAX;
+
+/// Computes the newest request, dropping older ones and abandoning stale work: first a `fast`
+/// preview, then the requested level ([`compute::progressive`]).
 fn worker(requests: Receiver<Job>, events: Sender<Event>, latest: Arc<AtomicU64>) {
+    let threads = compute::threads();
     while let Ok(mut req) = requests.recv() {
         while let Ok(newer) = requests.try_recv() {
             req = newer;
         }
         let generation = req.generation;
         let cancelled = || latest.load(Ordering::Relaxed) != generation;
-        if let Some(data) = compute(&req, &cancelled)
-            && events.send(Event::Computed(Box::new(data))).is_err()
-        {
+        let mut deliver = |data| events.send(Event::Computed(Box::new(data))).is_ok();
+        if !compute::progressive(&req, &cancelled, threads, &mut deliver) {
             return;
         }
     }
@@ -136,5 +141,7 @@ fn event_loop(
             break;
         }
     }
+    // Quitting cancels the worker's computation at once (it checks between every few points).
+    latest.store(QUIT, Ordering::Relaxed);
     Ok(())
 }

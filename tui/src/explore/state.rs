@@ -291,11 +291,19 @@ impl App {
         self.pending.take()
     }
 
-    /// Whether the shown data are older than the latest request.
+    /// Whether the shown data are older than the latest request, or only its preview.
     pub fn computing(&self) -> bool {
         self.data
             .as_ref()
-            .is_none_or(|d| d.generation != self.generation)
+            .is_none_or(|d| d.generation != self.generation || d.preview)
+    }
+
+    /// Whether the frame on screen is the `fast` preview of the latest request, its refinement to
+    /// the requested level still computing.
+    pub fn previewing(&self) -> bool {
+        self.data
+            .as_ref()
+            .is_some_and(|d| d.generation == self.generation && d.preview)
     }
 
     pub(crate) fn info(&mut self, text: impl Into<String>) {

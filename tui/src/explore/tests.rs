@@ -1866,3 +1866,224 @@ fn a_cut_status_line_says_so_issue_22() {
     assert_eq!(shown.chars().count(), 80);
     assert!(shown.ends_with("… ? lists all"));
 }
+
+/// Issue 26: the frame computed on several threads is the core's sequential frame, bit for bit
+/// (compared through `Debug`, which prints every f64 exactly and NaN as NaN), on several scenes,
+/// levels, comparisons and forced failures, whatever the number of threads.
+#[test]
+fn parallel_frames_equal_the_sequential_reference_issue_26() {
+    use rime_core::explorer::frame::{self, Request};
+    let frost = Preset::IceFrost.scene();
+    let literal = Scene {
+        layer: frost.layer.map(|l| rime_core::Layer {
+            reading: rime_core::LayerReading::Literal,
+            ..l
+        }),
+        ..frost
+    };
+    let cases = [
+        (Preset::Ice.scene(), Accuracy::Balanced, 2, vec![]),
+        (frost, Accuracy::Precise, 0, vec!["curve", "map"]),
+        (literal, Accuracy::Fast, 0, vec![]),
+        (
+            Preset::IceSticky.scene(),
+            Accuracy::Precise,
+            1,
+            vec!["family"],
+        ),
+        (Preset::Ice.scene(), Accuracy::Precise, 2, vec![]),
+    ];
+    for (k, (scene, accuracy, set, fail)) in cases.into_iter().enumerate() {
+        let mut req = Request::new(scene, accuracy);
+        req.overlays = frame::comparison(set, &scene);
+        req.fail = fail.iter().map(|s| s.to_string()).collect();
+        if accuracy == Accuracy::Balanced {
+            req.points = 97; // live integration: fewer points keep the test short
+        }
+        let reference = format!("{:?}", frame::compute(&req, &|| false).expect("computed"));
+        for threads in [2, 3, 8] {
+            let parallel = super::compute::frame(&req, &|| false, threads).expect("computed");
+            assert!(
+                format!("{parallel:?}") == reference,
+                "case {k} at {accuracy:?} on {threads} threads differs"
+            );
+        }
+    }
+}
+
+/// Issue 26: the parallel frame stays cancellable: cancelled before it starts or part-way through
+/// (after some units ran), it returns nothing.
+#[test]
+fn parallel_frames_are_cancellable_issue_26() {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let req = rime_core::explorer::frame::Request::new(Preset::IceFrost.scene(), Accuracy::Precise);
+    assert!(super::compute::frame(&req, &|| true, 2).is_none());
+    let asked = AtomicUsize::new(0);
+    let later = || asked.fetch_add(1, Ordering::Relaxed) > 20;
+    assert!(super::compute::frame(&req, &later, 2).is_none());
+    assert!(
+        asked.load(Ordering::Relaxed) > 20,
+        "it was asked part-way through"
+    );
+}
+
+/// The frames the worker sends for the pending request (a preview first when the level is not
+/// `fast`), computed as the worker computes them.
+fn worker_frames(app: &mut App) -> Vec<super::compute::Computed> {
+    let job = app.take_request().expect("a request");
+    let mut frames = Vec::new();
+    super::compute::progressive(&job, &|| false, 2, &mut |c| {
+        frames.push(c);
+        true
+    });
+    frames
+}
+
+/// Issue 26: after an edit at `precise` the worker sends a `fast` preview, marked as one, then the
+/// refined frame; the status line says "refining to precise…" over the preview; drawn in sequence
+/// on one terminal, the preview already shows the curves and the swap to the refined frame
+/// changes nothing but the status line (no blank or "computing…" frame between).
+#[test]
+fn preview_then_refined_frame_without_flicker_issue_26() {
+    let mut app = App::new(Preset::IceFrost.scene(), Accuracy::Precise);
+    app.fixed_elapsed = Some(Duration::from_millis(3));
+    for c in worker_frames(&mut app) {
+        update(&mut app, Event::Computed(Box::new(c)));
+    }
+    let mut t = Terminal::new(TestBackend::new(120, 40)).expect("terminal");
+    t.draw(|f| render(&app, f)).expect("draw");
+    let before = app.scene;
+    update(&mut app, key(KeyCode::Right)); // the panel's selected parameter, one step up
+    assert_ne!(app.scene, before, "an edit");
+    let frames = worker_frames(&mut app);
+    let kinds: Vec<(bool, Accuracy)> = frames
+        .iter()
+        .map(|c| (c.preview, c.request.accuracy))
+        .collect();
+    assert_eq!(
+        kinds,
+        [(true, Accuracy::Fast), (false, Accuracy::Precise)],
+        "preview first, then the requested level"
+    );
+    let mut screens = Vec::new();
+    for c in frames {
+        update(&mut app, Event::Computed(Box::new(c)));
+        t.draw(|f| render(&app, f)).expect("draw");
+        screens.push(text(&t));
+    }
+    let (preview, refined) = (&screens[0], &screens[1]);
+    assert!(preview.contains("refining to precise…"), "{preview}");
+    assert!(
+        !refined.contains("refining") && !refined.contains("computing…"),
+        "{refined}"
+    );
+    assert!(
+        !preview.contains("computing…"),
+        "the preview is drawn in full: {preview}"
+    );
+    let rows = |s: &str| s.lines().map(str::to_owned).collect::<Vec<_>>();
+    let (p, r) = (rows(preview), rows(refined));
+    let changed: Vec<usize> = (0..p.len()).filter(|&i| p[i] != r[i]).collect();
+    assert!(
+        changed.len() == 1 && p[changed[0]].contains("refining to precise"),
+        "only the status line changes: rows {changed:?}\n{preview}\n{refined}"
+    );
+}
+
+/// Issue 26: `x` and `P` never take a preview: with only the preview on screen `x` says so and
+/// writes nothing; once the refined frame is in, it exports.
+#[test]
+fn a_preview_is_never_exported_issue_26() {
+    let dir = std::env::temp_dir().join(format!("rime-tui-test-preview-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("tmp");
+    let mut app = App::new(Preset::IceSticky.scene(), Accuracy::Balanced);
+    app.out_dir = dir.clone();
+    let mut frames = worker_frames(&mut app).into_iter();
+    let preview = frames.next().expect("preview");
+    assert!(preview.preview);
+    update(&mut app, Event::Computed(Box::new(preview)));
+    assert!(app.previewing() && app.computing());
+    update(&mut app, ch('x'));
+    let (msg, _) = app.message.clone().expect("message");
+    assert!(
+        msg.contains("preview") && msg.contains("integrated"),
+        "{msg}"
+    );
+    assert_eq!(
+        std::fs::read_dir(&dir).expect("read").count(),
+        0,
+        "nothing exported"
+    );
+    update(&mut app, ch('P'));
+    assert!(app.pinned.is_none(), "a preview is not pinned");
+    update(
+        &mut app,
+        Event::Computed(Box::new(frames.next().expect("refined"))),
+    );
+    assert!(!app.previewing() && !app.computing());
+    update(&mut app, ch('x'));
+    let (msg, _) = app.message.clone().expect("message");
+    assert!(msg.contains("exported"), "{msg}");
+    assert_eq!(std::fs::read_dir(&dir).expect("read").count(), 1);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 26: a preview that arrives after its refined frame (it cannot, but a stale one must not
+/// win) leaves the refined frame on screen.
+#[test]
+fn a_late_preview_never_replaces_the_refined_frame_issue_26() {
+    let mut app = App::new(Preset::Ice.scene(), Accuracy::Precise);
+    let mut frames = worker_frames(&mut app);
+    let refined = frames.pop().expect("refined");
+    let preview = frames.pop().expect("preview");
+    update(&mut app, Event::Computed(Box::new(refined)));
+    update(&mut app, Event::Computed(Box::new(preview)));
+    assert!(app.data.as_ref().is_some_and(|d| !d.preview));
+}
+
+/// Issue 26: quitting cancels the worker's refinement: once the preview is in and the event loop
+/// tells the worker it quits, the refined frame (a long live integration here) is never sent and
+/// the worker ends.
+#[test]
+fn quitting_cancels_the_refinement_issue_26() {
+    use std::sync::Arc;
+    use std::sync::atomic::{AtomicU64, Ordering};
+    use std::sync::mpsc;
+    let frost = Preset::IceFrost.scene();
+    let literal = Scene {
+        layer: frost.layer.map(|l| rime_core::Layer {
+            reading: rime_core::LayerReading::Literal,
+            ..l
+        }),
+        ..frost
+    };
+    let mut request = rime_core::explorer::frame::Request::new(literal, Accuracy::Balanced);
+    request.points = 4000; // minutes of live integration if it were not cancelled
+    let (job_tx, job_rx) = mpsc::channel();
+    let (event_tx, event_rx) = mpsc::channel();
+    let latest = Arc::new(AtomicU64::new(1));
+    let worker = {
+        let latest = Arc::clone(&latest);
+        std::thread::spawn(move || super::worker(job_rx, event_tx, latest))
+    };
+    job_tx
+        .send(super::compute::Job {
+            generation: 1,
+            request,
+        })
+        .expect("send");
+    // Hang guard: the fast preview of 4000 points takes well under a second even on a loaded
+    // machine.
+    let first = event_rx
+        .recv_timeout(Duration::from_secs(60))
+        .expect("preview");
+    assert!(matches!(first, Event::Computed(c) if c.preview));
+    latest.store(super::QUIT, Ordering::Relaxed);
+    drop(job_tx);
+    worker.join().expect("the worker ends");
+    assert!(
+        event_rx.try_recv().is_err(),
+        "no refined frame after quitting"
+    );
+}

@@ -17,8 +17,13 @@ pub fn update(app: &mut App, event: Event) {
         Event::Mouse(m) => app.handle_mouse(m),
         Event::Resize(w, h) => app.size = (w, h),
         Event::Computed(data) => {
-            // Drop stale results: a newer request is on its way.
-            if data.generation == app.generation {
+            // Drop stale results: a newer request is on its way. A preview never replaces the
+            // refined frame of its own request.
+            let refined_shown = app
+                .data
+                .as_ref()
+                .is_some_and(|d| d.generation == data.generation && !d.preview);
+            if data.generation == app.generation && !(data.preview && refined_shown) {
                 if let Some(g) = app.cursor_at.take() {
                     app.cursor = nearest(&data.g, g);
                 }
@@ -708,6 +713,13 @@ impl App {
     pub(crate) fn pin(&mut self) {
         if self.pinned.take().is_some() {
             self.info("pinned curve removed");
+            return;
+        }
+        if self.previewing() {
+            self.info(format!(
+                "a fast preview is on screen — press P again once the {} frame is in",
+                self.accuracy.name()
+            ));
             return;
         }
         let Some(data) = self.data.as_ref().filter(|d| d.request.scene == self.scene) else {

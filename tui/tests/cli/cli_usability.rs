@@ -126,7 +126,7 @@ fn documented() -> Vec<(&'static str, Vec<&'static str>)> {
             "compare",
             with(&["--models", "--g", "--list", "--bench"], true, true),
         ),
-        ("bench", vec!["--out", "--quick"]),
+        ("bench", vec!["--out", "--quick", "--frames"]),
     ]
 }
 
@@ -212,6 +212,45 @@ fn switches_work_bare_and_with_true() {
     let v = json(&["compare", "--list"]);
     assert!(v.as_array().unwrap().len() >= 2);
     refused(&["bench", "--quick=maybe"], "--quick");
+}
+
+/// Issue 26: `bench --frames` writes one record per (scene, level, size) with the documented
+/// fields; the times are reported, never asserted (only that they are times, and that the first
+/// frame is drawn no later than the final one).
+#[test]
+fn bench_frames_writes_one_record_per_case_issue_26() {
+    let d = scratch("bench-frames");
+    let text = ok(&[
+        "bench",
+        "--frames",
+        "--quick",
+        "--out",
+        d.0.to_str().unwrap(),
+    ]);
+    assert!(
+        text.contains("frames.json") && text.contains("cores"),
+        "{text}"
+    );
+    let records: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(d.0.join("frames.json")).unwrap()).unwrap();
+    let records = records.as_array().unwrap();
+    // --quick: 7 scenes × 3 levels at 80×24.
+    assert_eq!(records.len(), 7 * 3, "{records:?}");
+    let mut cases = std::collections::BTreeSet::new();
+    for r in records {
+        assert_eq!(r["surface"], "terminal");
+        assert_eq!(r["size"], "80x24");
+        assert!(["fast", "precise", "integrated"].contains(&r["level"].as_str().unwrap()));
+        let (first, last) = (
+            r["first_ms"].as_f64().unwrap(),
+            r["final_ms"].as_f64().unwrap(),
+        );
+        assert!(first > 0.0 && first <= last && last.is_finite(), "{r}");
+        assert!(r["cores"].as_u64().unwrap() >= 1);
+        assert!(r["load"].is_number() || r["load"].is_null(), "{r}");
+        cases.insert((r["scene"].to_string(), r["level"].to_string()));
+    }
+    assert_eq!(cases.len(), records.len(), "each case once");
 }
 
 #[test]

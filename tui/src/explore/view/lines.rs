@@ -93,6 +93,22 @@ pub fn status_spans(app: &StatusView, width: u16) -> Vec<Span<'static>> {
     );
     let mut spans = Vec::new();
     match app.data {
+        Some(d) if d.preview => {
+            // The preview's own level, then what it is being refined to.
+            let t = app.elapsed.unwrap_or(d.elapsed);
+            spans.push(Span::raw(format!(
+                " preview in {} at ",
+                qty3(t.as_secs_f64(), "s")
+            )));
+            spans.push(Span::styled(
+                d.request.accuracy.name().to_string(),
+                Style::new().fg(Color::Black).bg(Color::Cyan),
+            ));
+            spans.push(Span::styled(
+                format!(" refining to {}… ", app.accuracy.name()),
+                Style::new().fg(Color::Yellow),
+            ));
+        }
         Some(d) => {
             let t = app.elapsed.unwrap_or(d.elapsed);
             spans.push(Span::raw(format!(
@@ -108,7 +124,7 @@ pub fn status_spans(app: &StatusView, width: u16) -> Vec<Span<'static>> {
             spans.push(Span::raw(" "));
         }
     }
-    if app.computing {
+    if app.computing && !app.data.is_some_and(|d| d.preview) {
         spans.push(Span::styled(" computing… ", Style::new().fg(Color::Yellow)));
     }
     let warn = Style::new().fg(Color::LightRed);

@@ -1,0 +1,133 @@
+// The page's input → frame matrix (issue 26), in headless Chromium; outside `make test` (it takes
+// minutes). For each profile (desktop 1280×800; phone 375×812 at 4× CPU slowdown) × scene × level it
+// opens the page on that scene and view, moves a slider (an `input` event) `RUNS` times and times,
+// inside the page, input → the preview painted (first) and input → the requested level painted
+// (final): the first animation frame after the page drew each, and counts the main thread's long
+// tasks over 50 ms meanwhile. Writes target/bench/frames-page.json: one record per case in the
+// shape of `rime bench --frames` (`surface: "page"`), plus `profile`, `long_tasks` and `max_task_ms`.
+//
+// Usage: scripts/build-www.sh && scripts/setup-npm.sh && node scripts/bench-page-frames.mjs [--quick]
+// (serves www/ itself on a free local port; needs target/release/rime for the scenes' JSON).
+import { spawn, execFileSync } from 'node:child_process';
+import { createRequire } from 'node:module';
+import fs from 'node:fs';
+import os from 'node:os';
+import net from 'node:net';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+const { chromium } = createRequire(path.join(root, 'tests', 'e2e', 'package.json'))('playwright-core');
+const rime = process.env.RIME_BIN || path.join(root, 'target', 'release', 'rime');
+const quick = process.argv.includes('--quick');
+const RUNS = quick ? 3 : 9;
+// Hang guard per wait (the slowest frame, the literal reading at precise on the phone profile, takes
+// about 1 s): never a speed check.
+const GUARD_MS = 120000;
+
+const sceneJson = (args) => JSON.stringify(JSON.parse(execFileSync(rime, ['scene', ...args], { encoding: 'utf8' })));
+const SCENES = [
+  { name: 'ice', scene: sceneJson(['--preset', 'ice']), overlays: [] },
+  { name: 'ice-frost', scene: sceneJson(['--preset', 'ice-frost']), overlays: [] },
+  { name: 'ice-frost, layer.reading=literal', scene: sceneJson(['--preset', 'ice-frost', '--set', 'layer.reading=literal']), overlays: [] },
+  { name: 'ice-sticky', scene: sceneJson(['--preset', 'ice-sticky']), overlays: [] },
+  { name: 'ice, compare other models', scene: sceneJson(['--preset', 'ice']), overlays: ['model:brilliantov2007', 'model:muller_poschel2011'] },
+  { name: 'ice, compare measured ice', scene: sceneJson(['--preset', 'ice']), overlays: ['atlas:bridges1984', 'atlas:hatzes1988_frost', 'atlas:supulver1995', 'atlas:heisselmann2010', 'atlas:hill2015'] },
+];
+const LEVELS = ['fast', 'precise', 'integrated'];
+const PROFILES = quick
+  ? [{ name: 'desktop', viewport: { width: 1280, height: 800 }, slowdown: 1 }]
+  : [
+      { name: 'desktop', viewport: { width: 1280, height: 800 }, slowdown: 1 },
+      { name: 'phone', viewport: { width: 375, height: 812 }, slowdown: 4, mobile: true },
+    ];
+
+const freePort = () => new Promise((resolve) => {
+  const s = net.createServer();
+  s.listen(0, '127.0.0.1', () => { const { port } = s.address(); s.close(() => resolve(port)); });
+});
+const port = await freePort();
+const server = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', path.join(root, 'www')], { stdio: 'ignore' });
+process.on('exit', () => server.kill());
+await new Promise((r) => setTimeout(r, 500));
+const url = `http://127.0.0.1:${port}/`;
+
+const median = (a) => {
+  const s = [...a].sort((x, y) => x - y);
+  const m = s.length >> 1;
+  return s.length ? (s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2) : null;
+};
+const load = () => Number(fs.readFileSync('/proc/loadavg', 'utf8').split(' ')[0]);
+const cores = os.availableParallelism ? os.availableParallelism() : os.cpus().length;
+
+const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'rime-bench-'));
+const context = await chromium.launchPersistentContext(userDataDir, {
+  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+  headless: true,
+  args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-dev-shm-usage'],
+});
+const records = [];
+for (const profile of PROFILES) {
+  for (const sc of SCENES) {
+    for (const level of LEVELS) {
+      // A fresh page per case: nothing of the previous case (its worker, its state) carries over.
+      const page = await context.newPage();
+      await page.setViewportSize(profile.viewport);
+      if (profile.slowdown > 1) {
+        const cdp = await context.newCDPSession(page);
+        await cdp.send('Emulation.setCPUThrottlingRate', { rate: profile.slowdown });
+      }
+      const view = { accuracy: level, overlays: sc.overlays };
+      await page.goto(`${url}#s=${encodeURIComponent(sc.scene)}&v=${encodeURIComponent(JSON.stringify(view))}`);
+      await page.waitForFunction(() => window.rimeState && window.rimeState.ready, null, { timeout: GUARD_MS });
+      const loadAvg = load();
+      const runs = [];
+      for (let i = 0; i < RUNS; i++) {
+        // One slider step, timed inside the page: input → the animation frame after each draw.
+        runs.push(await page.evaluate(({ guard, step }) => new Promise((resolve, reject) => {
+          const s = window.rimeState;
+          const [u0, p0] = [s.updates || 0, s.previews || 0];
+          const slider = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]')
+            || document.querySelector('input[type=range]');
+          const tasks = [];
+          const obs = new PerformanceObserver((l) => { for (const e of l.getEntries()) tasks.push(e.duration); });
+          obs.observe({ type: 'longtask' });
+          let first = null;
+          const t0 = performance.now();
+          slider.value = String(Number(slider.value) + step);
+          slider.dispatchEvent(new Event('input', { bubbles: true }));
+          const tick = () => {
+            const now = performance.now();
+            if (now - t0 > guard) { obs.disconnect(); reject(new Error('no frame within the guard')); return; }
+            if (first === null && ((s.previews || 0) > p0 || (s.updates || 0) > u0)) first = now - t0;
+            if ((s.updates || 0) > u0) {
+              // Let the observer deliver the tasks of this edit before reporting.
+              setTimeout(() => { obs.disconnect(); resolve({ first, final: now - t0, tasks, previews: (s.previews || 0) - p0 }); }, 0);
+              return;
+            }
+            requestAnimationFrame(tick);
+          };
+          requestAnimationFrame(tick);
+        }), { guard: GUARD_MS, step: i % 2 ? -7 : 7 }));
+      }
+      const tasks = runs.flatMap((r) => r.tasks);
+      const rec = {
+        surface: 'page', scene: sc.name, level, size: `${profile.viewport.width}x${profile.viewport.height}`,
+        profile: profile.name, cpu_slowdown: profile.slowdown,
+        first_ms: median(runs.map((r) => r.first)), final_ms: median(runs.map((r) => r.final)),
+        first_each_ms: runs.map((r) => r.first), final_each_ms: runs.map((r) => r.final), previews: runs.map((r) => r.previews),
+        long_tasks: tasks.filter((d) => d > 50).length, max_task_ms: tasks.length ? Math.max(...tasks) : 0,
+        runs: RUNS, cores, load: loadAvg,
+      };
+      records.push(rec);
+      console.log(`${profile.name.padEnd(8)} ${sc.name.padEnd(34)} ${level.padEnd(10)} first ${rec.first_ms.toFixed(1).padStart(7)} ms  final ${rec.final_ms.toFixed(1).padStart(7)} ms  long tasks ${rec.long_tasks} (max ${rec.max_task_ms.toFixed(0)} ms)`);
+      await page.close();
+    }
+  }
+}
+await context.close();
+const out = path.join(root, 'target', 'bench');
+fs.mkdirSync(out, { recursive: true });
+fs.writeFileSync(path.join(out, 'frames-page.json'), JSON.stringify(records, null, 2) + '\n');
+console.log(`${cores} cores, load average ${load().toFixed(2)} at the end; wrote target/bench/frames-page.json`);
+server.kill();
