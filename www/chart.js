@@ -4,10 +4,21 @@
 // lin/log y axis; zoom and pan of the speed range; a text alternative.
 import { HELP, PALETTE, qty, sig, speed } from './core.js';
 import { $, el } from './dom.js';
-import { CanvasPainter, chartLegendHeight, drawChart } from './plot.js';
+import { CanvasPainter, chartGeometry, chartLegendHeight, drawChartBack, drawChartFront } from './plot.js';
 import { app } from './state.js';
 
 let geom = null;
+let backKey = null;
+let backDraws = 0;
+let frontDraws = 0;
+
+/** What the background layer shows: size, axes, labels and the legend's entries. */
+function backgroundKey(spec, w, h) {
+  const legend = spec.series.map((s) => [s.label, s.short, s.color, s.dash, s.width])
+    .concat((spec.bands || []).map((b) => [b.label, b.short, b.color]));
+  return JSON.stringify([w, h, window.devicePixelRatio, spec.xMin, spec.xMax, spec.yScale, spec.yMin,
+    spec.yMax, spec.xLabel, spec.yLabel, spec.shortLabels, legend]);
+}
 let hooks = { schedule: () => {}, replay: () => {} };
 
 /**
@@ -52,7 +63,20 @@ export function drawChartCanvas(width) {
   // On screen the legend beneath the plot takes the core's short labels (the full ones are in the
   // downloads, the Compare list and the text alternative); the plot keeps its height.
   const spec = { ...chartSpec(res, app.drawn.view, hover, { shortLabels: true }), plotHeight: h };
-  geom = drawChart(new CanvasPainter(canvas, w, h + chartLegendHeight(spec, w)), spec);
+  const total = h + chartLegendHeight(spec, w);
+  // Two layers: the background (legend, grid, ticks, labels) is redrawn only when it changes; a
+  // slider step or a hover redraws the data layer alone (issue 26: the redraw was the main
+  // thread's cost per frame).
+  const back = backgroundKey(spec, w, total);
+  const front = new CanvasPainter($('chart-fg'), w, total);
+  const g = chartGeometry(front, spec);
+  if (back !== backKey) {
+    drawChartBack(new CanvasPainter(canvas, w, total), spec, g);
+    backKey = back;
+    backDraws++;
+  }
+  geom = drawChartFront(front, spec, g);
+  window.rimeState.chartLayers = { backDraws, frontDraws: ++frontDraws };
   window.rimeState.chartPlot = { ...geom.box, legendBottom: geom.bottom };
   describe(res);
   readout();

@@ -225,7 +225,8 @@ export function drawCaption(p, lines, y0, size = 10) {
  *        label, short, color}], hover: {x, y} | null}
  * Returns the plot box and the coordinate transforms (for hover).
  */
-export function drawChart(p, spec) {
+/** Where everything of the chart goes (shared by its two layers and by exports). */
+export function chartGeometry(p, spec) {
   // The plot takes `spec.plotHeight` (the painter's height by default); the legend lies beneath it.
   const W = p.width;
   const H = spec.plotHeight ?? p.height;
@@ -241,6 +242,13 @@ export function drawChart(p, spec) {
   const Y = (v) => box.b - ((fy(v) - ly[0]) / (ly[1] - ly[0])) * (box.b - box.t);
   const inv = (px) => 10 ** (lx[0] + ((px - box.l) / (box.r - box.l)) * (lx[1] - lx[0]));
 
+  return { W, H, entries, legend, yLines, box, log, lx, ly, X, Y, inv };
+}
+
+/** The chart's background layer: legend, grid, ticks and axis labels (what an edit of the scene
+ *  alone leaves unchanged, so the page redraws it only when it changes). */
+export function drawChartBack(p, spec, g = chartGeometry(p, spec)) {
+  const { W, H, entries, legend, yLines, box, log, lx, ly, X, Y } = g;
   p.rect(0, 0, W, H + (entries.length ? legend.height + 6 : 0), { fill: '#fff' });
   legend.rows.forEach((row) => row.items.forEach((e) => {
     const y = H + 4 + row.y + 6;
@@ -293,6 +301,11 @@ export function drawChart(p, spec) {
   // Rotated, centred on the plot (never on the figure with its caption), inside the canvas.
   yLines.forEach((line, k) => p.text(16 + 14 * k, (box.t + box.b) / 2, line, { size: 12, align: 'center', rotate: -Math.PI / 2 }));
 
+}
+
+/** The chart's data layer: bands, markers, series, hover cursor and the plot's frame. */
+export function drawChartFront(p, spec, g = chartGeometry(p, spec)) {
+  const { H, entries, legend, box, log, X, Y, inv } = g;
   p.clip(box.l, box.t, box.r - box.l, box.b - box.t, () => {
     for (const b of spec.bands || []) {
       const x0 = X(b.x[0]), x1 = X(b.x[1]), y0 = Y(b.y[1]), y1 = Y(b.y[0]);
@@ -337,6 +350,13 @@ export function drawChart(p, spec) {
   });
   p.rect(box.l, box.t, box.r - box.l, box.b - box.t, { stroke: AXIS });
   return { box, X, Y, inv, bottom: H + (entries.length ? legend.height + 6 : 0) };
+}
+
+/** The whole chart on one painter (exports): background, then data. */
+export function drawChart(p, spec) {
+  const g = chartGeometry(p, spec);
+  drawChartBack(p, spec, g);
+  return drawChartFront(p, spec, g);
 }
 
 /**

@@ -89,13 +89,15 @@ async function waitUpdate(page, before) {
   await page.waitForFunction((b) => window.rimeState.updates > b, before, { timeout: GUARD_MS });
   notedWait('a frame after an edit', t0);
 }
-/** Number of non-white pixels of a canvas (is anything drawn?). */
+/** Number of non-white pixels of a canvas (is anything drawn?); the chart counts both its layers
+ *  (background and data canvas, as they are seen on top of each other). */
 async function inked(page, id) {
   return page.evaluate((cid) => {
-    const c = document.getElementById(cid);
-    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    const layers = [cid, `${cid}-fg`].map((k) => document.getElementById(k)).filter(Boolean)
+      .map((c) => c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
+    const ink = (d, i) => d[i + 3] > 0 && (d[i] < 240 || d[i + 1] < 240 || d[i + 2] < 240);
     let n = 0;
-    for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 0 && (d[i] < 240 || d[i + 1] < 240 || d[i + 2] < 240)) n++;
+    for (let i = 0; i < layers[0].length; i += 4) if (layers.some((d) => d.length === layers[0].length && ink(d, i))) n++;
     return n;
   }, id);
 }
