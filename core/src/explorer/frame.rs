@@ -461,6 +461,8 @@ const MIN_CHUNK: usize = 16;
 impl Plan {
     /// Plans `req`; a request that is not valid or a scene that cannot be evaluated gives the
     /// finished frame (with its `request` or `scene` error) instead.
+    // Long by design: every unit of the frame planned in the order compute() runs them, so the
+    // two stay one reading.
     pub fn new(req: &Request) -> Result<Plan, alloc::boxed::Box<Frame>> {
         let scene = req.scene;
         let sweep = req.sweep.unwrap_or_else(|| Sweep::default_for(&scene));
@@ -662,6 +664,8 @@ impl Plan {
 
     /// The frame from the outputs of [`Plan::units`] (`outputs[i]` from `units[i]`), with its
     /// parts, errors and warnings in the order [`compute`] gives them.
+    // Long by design: the frame's parts put back together in compute()'s order (curve, clean,
+    // family, overlays, markers, map, warnings), each part's failure kept on its own.
     pub fn assemble(self, units: &[Unit], outputs: Vec<Output>) -> Frame {
         let Plan {
             mut frame,
