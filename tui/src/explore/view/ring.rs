@@ -12,7 +12,7 @@ use ratatui::widgets::{Block, Clear, Paragraph, Wrap};
 use rime_core::explorer::format::{qty, sig};
 use rime_core::explorer::ring::RingCard;
 
-/// The card's lines: the inputs, the verdict sentence, then the printed rows.
+/// The card's lines: the inputs, the verdict, the printed rows, then the verdict's sentence.
 pub fn lines(card: &RingCard) -> Vec<Line<'static>> {
     let dim = Style::new().fg(Color::Gray);
     let r = &card.record;
@@ -32,14 +32,15 @@ pub fn lines(card: &RingCard) -> Vec<Line<'static>> {
             Span::raw(qty(r.radius, "m")),
         ]),
         Line::from(Span::styled(card.verdict.to_string(), verdict_style)),
-        Line::from(card.sentence.clone()),
     ];
+    // The numbers before the sentence: a small terminal cuts the card from the bottom.
     for row in &card.rows {
         out.push(Line::from(vec![
             Span::styled(format!("{}: ", row.label), dim),
             Span::raw(row.text.clone()),
         ]));
     }
+    out.push(Line::from(card.sentence.clone()));
     out
 }
 
