@@ -615,7 +615,11 @@ fn x_axis(buf: &mut Buffer, f: &Frame, fig: &Figure) {
             Some(label) => {
                 buf.set_string(c, axis_row, "┼", AXIS);
                 let w = label.chars().count() as u16;
-                let start = c.saturating_sub(w / 2).max(area.x);
+                // Centred on its tick; at the plot's right end, ending at the edge (it was dropped).
+                let start = c
+                    .saturating_sub(w / 2)
+                    .max(area.x)
+                    .min(area.right().saturating_sub(w));
                 let free = start + w <= area.right()
                     && taken.iter().all(|(a, b)| start + w < *a || start > *b);
                 if free {
