@@ -64,6 +64,7 @@ impl Geometry {
 
 /// A bibliographic reference.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Citation {
     /// Authors as printed, e.g. `"Bridges, F. G., Hatzes, A. P., Lin, D. N. C."`.
     pub authors: &'static str,

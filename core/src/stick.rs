@@ -54,6 +54,14 @@ impl Convention {
 /// The measured sticking threshold of µm ice below ~210 K (Gundlach & Blum 2015) \[m/s\].
 pub const MEASURED_UM_ICE: f64 = 9.6;
 
+/// Whether threshold `t` lies where µm ice was measured to stick (the atlas' `gundlach2015`:
+/// inside its radii, at or below its warmest temperature), so [`MEASURED_UM_ICE`] compares.
+pub fn in_measured_regime(t: &Threshold) -> bool {
+    crate::atlas::find("gundlach2015").is_some_and(|e| {
+        t.radius >= e.radius[0] && t.radius <= e.radius[1] && t.temperature <= e.temperature[1]
+    })
+}
+
 /// Largest speed searched for the full-model threshold \[m/s\].
 pub const SEARCH_MAX: f64 = crate::limits::SPEED_MAX;
 

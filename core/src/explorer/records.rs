@@ -281,6 +281,146 @@ impl ObliqueRecord {
     }
 }
 
+/// One entry of the data atlas as `rime data` lists it (field names are a contract, docs/cli.md).
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct AtlasRecord {
+    /// The entry's id.
+    pub id: &'static str,
+    /// `law`, `range` or `threshold`.
+    pub kind: &'static str,
+    /// The source.
+    pub citation: crate::atlas::Citation,
+    /// What was measured.
+    pub material: &'static str,
+    /// The law as published.
+    pub formula: &'static str,
+    /// Units of the formula.
+    pub units: &'static str,
+    /// Measured impact speeds \[m/s\].
+    pub valid_speed: [f64; 2],
+    /// Grain radii \[m\].
+    pub radius: [f64; 2],
+    /// Temperatures \[K\].
+    pub temperature: [f64; 2],
+    /// The experiment's geometry.
+    pub geometry: &'static str,
+    /// How the law is clamped.
+    pub clamp: &'static str,
+    /// Where in the source.
+    pub source: &'static str,
+    /// What was checked against the source.
+    pub verified: &'static str,
+    /// Entries it disagrees with.
+    pub conflicts_with: &'static str,
+}
+
+impl AtlasRecord {
+    /// The record of an atlas entry.
+    pub fn new(e: &crate::atlas::Entry) -> Self {
+        AtlasRecord {
+            id: e.id,
+            kind: e.kind.name(),
+            citation: e.citation,
+            material: e.material,
+            formula: e.formula,
+            units: e.units,
+            valid_speed: e.valid_speed,
+            radius: e.radius,
+            temperature: e.temperature,
+            geometry: e.geometry.name(),
+            clamp: e.clamp,
+            source: e.source,
+            verified: e.verified,
+            conflicts_with: e.conflicts_with,
+        }
+    }
+}
+
+/// Header of a measured law's records (`rime data --law`).
+pub const LAW_HEADER: [&str; 3] = ["g_n [m/s]", "eps_n", "extrapolated"];
+
+/// A measured law at one speed (`rime data --law`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct LawRecord {
+    /// Impact speed \[m/s\].
+    pub g_n: f64,
+    /// ε_N of the law.
+    pub eps_n: f64,
+    /// Whether `g_n` lies outside the speeds the law was measured at.
+    pub extrapolated: bool,
+}
+
+impl LawRecord {
+    /// The record of a law's evaluation.
+    pub fn new(e: &crate::atlas::Evaluation) -> Self {
+        LawRecord {
+            g_n: e.g,
+            eps_n: e.eps,
+            extrapolated: e.extrapolated,
+        }
+    }
+
+    /// Its CSV cells, in the order of [`LAW_HEADER`].
+    pub fn cells(&self) -> [String; 3] {
+        [
+            cell(self.g_n),
+            cell(self.eps_n),
+            alloc::string::ToString::to_string(&self.extrapolated),
+        ]
+    }
+}
+
+/// One sticking threshold as `rime stick` writes it in JSON (field names are a contract,
+/// docs/cli.md).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct StickRecord {
+    /// Grain radius \[m\].
+    pub radius: f64,
+    /// Temperature \[K\].
+    pub temperature: f64,
+    /// γ(T) as the source gives it \[J/m²\].
+    pub gamma_source: f64,
+    /// The paper's γ used in Eq. (12) and (15) \[J/m²\].
+    pub gamma: f64,
+    /// How γ(T) was read.
+    pub convention: &'static str,
+    /// Eq. (15) alone \[m/s\].
+    pub v_elastic: f64,
+    /// The full model's sticking threshold \[m/s\]; `null` when the grains stick at every speed.
+    pub v_stick: Option<f64>,
+    /// The scene's damping time used by `v_stick` \[s\].
+    pub damping_time: f64,
+    /// The measured threshold where the row lies in its measured regime \[m/s\].
+    pub measured_v_stick: Option<f64>,
+}
+
+impl StickRecord {
+    /// The record of threshold `t` of a table with `damping_time`, read with `convention`; with
+    /// the measured µm-ice threshold where `t` lies inside the measurement's radii and
+    /// temperatures (the atlas' `gundlach2015`).
+    pub fn new(
+        t: &crate::stick::Threshold,
+        convention: crate::stick::Convention,
+        damping_time: f64,
+    ) -> Self {
+        let measured = crate::stick::in_measured_regime(t);
+        StickRecord {
+            radius: t.radius,
+            temperature: t.temperature,
+            gamma_source: t.gamma_source,
+            gamma: t.gamma,
+            convention: convention.name(),
+            v_elastic: t.v_elastic,
+            v_stick: t.v_stick,
+            damping_time,
+            measured_v_stick: measured.then_some(crate::stick::MEASURED_UM_ICE),
+        }
+    }
+}
+
 /// Header of stick-map records (`rime map`, the explorer's map).
 pub const MAP_HEADER: [&str; 4] = ["g_n [m/s]", "g_t [m/s]", "eps_t", "class"];
 

@@ -4,6 +4,7 @@ use crate::args::{Common, Format, quantity, speed_list};
 use crate::output::{num, table};
 use crate::scene_io::{CliError, CliResult, err};
 use rime_core::atlas::{ENTRIES, Entry, Kind, find};
+use rime_core::explorer::records::{AtlasRecord, LAW_HEADER, LawRecord};
 
 /// Arguments of `rime data`.
 #[derive(Debug, Clone)]
@@ -64,27 +65,6 @@ fn range(v: [f64; 2]) -> String {
     }
 }
 
-fn entry_json(e: &Entry) -> serde_json::Value {
-    let c = &e.citation;
-    serde_json::json!({
-        "id": e.id,
-        "kind": e.kind.name(),
-        "citation": {"authors": c.authors, "year": c.year, "journal": c.journal,
-            "volume": c.volume, "pages": c.pages, "doi": c.doi},
-        "material": e.material,
-        "formula": e.formula,
-        "units": e.units,
-        "valid_speed": e.valid_speed,
-        "radius": e.radius,
-        "temperature": e.temperature,
-        "geometry": e.geometry.name(),
-        "clamp": e.clamp,
-        "source": e.source,
-        "verified": e.verified,
-        "conflicts_with": e.conflicts_with,
-    })
-}
-
 /// Runs `rime data`.
 // Long by design: the atlas listing and a law's evaluation, each with three outputs kept side by
 // side.
@@ -92,7 +72,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     let Some((id, speeds, radius)) = &args.law else {
         return Ok(match common.format {
             Format::Json => {
-                let all: Vec<_> = ENTRIES.iter().map(entry_json).collect();
+                let all: Vec<_> = ENTRIES.iter().map(AtlasRecord::new).collect();
                 serde_json::to_string_pretty(&all).map_err(|e| CliError::input(e.to_string()))?
                     + "\n"
             }
@@ -150,27 +130,21 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
             .map_err(|e| CliError::input(format!("--law {}: {e}", entry.id)))?;
         rows.push(e);
     }
+    let rows: Vec<LawRecord> = rows.iter().map(LawRecord::new).collect();
     Ok(match common.format {
         Format::Json => {
-            let v: Vec<_> = rows
-                .iter()
-                .map(|e| serde_json::json!({"g_n": e.g, "eps_n": e.eps, "extrapolated": e.extrapolated}))
-                .collect();
-            serde_json::to_string_pretty(&v).map_err(|e| CliError::input(e.to_string()))? + "\n"
+            serde_json::to_string_pretty(&rows).map_err(|e| CliError::input(e.to_string()))? + "\n"
         }
         Format::Csv => {
-            let mut s = String::from("g_n [m/s],eps_n,extrapolated\n");
-            for e in &rows {
-                s.push_str(&format!("{},{},{}\n", num(e.g), num(e.eps), e.extrapolated));
+            let mut s = LAW_HEADER.join(",") + "\n";
+            for r in &rows {
+                s.push_str(&(r.cells().join(",") + "\n"));
             }
             s
         }
         Format::Table => table(
-            &["g_n [m/s]", "eps_n", "extrapolated"],
-            &rows
-                .iter()
-                .map(|e| vec![num(e.g), num(e.eps), e.extrapolated.to_string()])
-                .collect::<Vec<_>>(),
+            &LAW_HEADER,
+            &rows.iter().map(|r| r.cells().to_vec()).collect::<Vec<_>>(),
         ),
     })
 }

@@ -76,12 +76,6 @@ pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
     })
 }
 
-fn in_measured_regime(t: &Threshold) -> bool {
-    rime_core::atlas::find("gundlach2015").is_some_and(|e| {
-        t.radius >= e.radius[0] && t.radius <= e.radius[1] && t.temperature <= e.temperature[1]
-    })
-}
-
 /// The standalone C source: γ(T) of Musiolik & Wurm (2019) and Eq. (15) for two equal grains.
 pub fn c_source(scene: &Scene, convention: Convention) -> String {
     let nu = scene.bulk.poisson_ratio;
@@ -191,7 +185,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     let people = |v: f64| sig(v, 4);
     let gap: Vec<String> = rows
         .iter()
-        .filter(|t| in_measured_regime(t))
+        .filter(|t| rime_core::stick::in_measured_regime(t))
         .map(|t| {
             let full = t.v_stick.map_or(
                 "the full model sticks at every speed (it over-closes the gap)".into(),
@@ -218,11 +212,11 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
             let v: Vec<_> = rows
                 .iter()
                 .map(|t| {
-                    serde_json::json!({"radius": t.radius, "temperature": t.temperature,
-                    "gamma_source": t.gamma_source, "gamma": t.gamma, "convention": args.convention.name(),
-                    "v_elastic": t.v_elastic, "v_stick": t.v_stick,
-                    "damping_time": table_data.damping_time,
-                    "measured_v_stick": in_measured_regime(t).then_some(MEASURED_UM_ICE)})
+                    rime_core::explorer::records::StickRecord::new(
+                        t,
+                        args.convention,
+                        table_data.damping_time,
+                    )
                 })
                 .collect();
             serde_json::to_string_pretty(&v).map_err(|e| CliError::input(e.to_string()))? + "\n"
