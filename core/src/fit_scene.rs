@@ -283,6 +283,7 @@ pub const REDUCED_CHI2_RANGE: [f64; 2] = [0.1, 10.0];
 
 /// A two-sided Wald–Wolfowitz runs test on the signs of residuals.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct RunsTest {
     /// Runs of equal sign observed.
     pub runs: usize,

@@ -421,6 +421,105 @@ impl StickRecord {
     }
 }
 
+/// One fitted parameter in a [`FitRecord`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct FitParamRecord {
+    /// The parameter's path.
+    pub param: &'static str,
+    /// Its fitted value (SI).
+    pub value: f64,
+    /// Its SI unit.
+    pub unit: &'static str,
+    /// Its standard error; `null` where the fit cannot give one.
+    pub standard_error: Option<f64>,
+}
+
+/// A fit of the scene to data as `rime fit` writes it in JSON (field names are a contract,
+/// docs/cli.md). With one parameter its fields are repeated at the top level.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct FitRecord<'a> {
+    /// What was fitted to (the file or the law).
+    pub source: &'a str,
+    /// The fitted parameters.
+    pub params: alloc::vec::Vec<FitParamRecord>,
+    /// Their correlation matrix, where the fit gives one.
+    pub correlation: &'a Option<alloc::vec::Vec<alloc::vec::Vec<f64>>>,
+    /// Root-mean-square residual of ε.
+    pub rms_error: f64,
+    /// χ² per degree of freedom (unscaled without uncertainties).
+    pub reduced_chi2: f64,
+    /// Degrees of freedom.
+    pub dof: usize,
+    /// Data points.
+    pub points: usize,
+    /// Whether the data's σ column weighted the fit.
+    pub weighted: bool,
+    /// The data file's header line.
+    pub header: &'a Option<String>,
+    /// The unit the speeds were read in.
+    pub g_unit: &'a str,
+    /// Whether that unit was assumed (no unit in the header).
+    pub g_unit_assumed: bool,
+    /// Misfit warnings.
+    pub warnings: &'a [String],
+    /// Residuals ε_data − ε_fit.
+    pub residuals: &'a [f64],
+    /// The runs test on the residuals' signs.
+    pub runs_test: Option<crate::fit_scene::RunsTest>,
+    /// Whether χ² is scaled by the data's uncertainties.
+    pub chi2_scaled: bool,
+    /// The fitted scene.
+    pub scene: crate::Scene,
+    /// The one parameter's fields at the top level (a fit of one parameter).
+    #[cfg_attr(feature = "serde", serde(flatten))]
+    pub single: Option<FitParamRecord>,
+}
+
+impl<'a> FitRecord<'a> {
+    /// The record of fit `f` of `points` to `source`.
+    pub fn new(
+        f: &'a crate::fit_scene::SceneFit,
+        points: &'a crate::fit_scene::Points,
+        source: &'a str,
+    ) -> Self {
+        let params: alloc::vec::Vec<FitParamRecord> = f
+            .params
+            .iter()
+            .map(|p| FitParamRecord {
+                param: p.path,
+                value: p.value,
+                unit: p.unit,
+                standard_error: p.standard_error,
+            })
+            .collect();
+        let single = match params.as_slice() {
+            [one] => Some(*one),
+            _ => None,
+        };
+        FitRecord {
+            source,
+            params,
+            correlation: &f.correlation,
+            rms_error: f.rms_error,
+            reduced_chi2: f.reduced_chi2,
+            dof: f.dof,
+            points: points.g.len(),
+            weighted: f.weighted,
+            header: &points.header,
+            g_unit: points.g_unit.as_deref().unwrap_or("m/s"),
+            g_unit_assumed: points.g_unit.is_none(),
+            warnings: &f.warnings,
+            residuals: &f.residuals,
+            runs_test: f.runs_test,
+            chi2_scaled: f.weighted,
+            scene: f.scene,
+            single,
+        }
+    }
+}
+
 /// Header of stick-map records (`rime map`, the explorer's map).
 pub const MAP_HEADER: [&str; 4] = ["g_n [m/s]", "g_t [m/s]", "eps_t", "class"];
 

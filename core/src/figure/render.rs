@@ -275,9 +275,7 @@ fn draw_legend<DB: DrawingBackend>(
 }
 
 // Long by design: one plotters drawing pass in paint order (map, bands, series, markers, legend,
-
 // caption); split, each part would need the chart's whole coordinate state.
-
 fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Result<()> {
     root.fill(&WHITE).map_err(plot_err)?;
     // Caption: wrapped over at most five lines; the figure gives up the height they need.

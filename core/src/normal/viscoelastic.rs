@@ -211,9 +211,7 @@ pub fn dimensionless_through_creep(
 }
 
 // Long by design: one adaptive integration of Eq. (4) with its end-of-contact events and dense
-
 // output; the state is shared by every branch.
-
 fn integrate(
     delta: f64,
     end: ContactEnd,

@@ -79,40 +79,14 @@ pub fn read_points(path: &Path) -> CliResult<Points> {
 }
 
 // Long by design: one fit's three outputs (JSON, CSV, table) side by side so that their fields
-
 // stay in step.
-
 fn render(common: &Common, f: &SceneFit, points: &Points, what: &str) -> CliResult<String> {
     let n = points.g.len();
     Ok(match common.format {
         Format::Json => {
-            let params: Vec<_> = f
-                .params
-                .iter()
-                .map(|p| {
-                    serde_json::json!({"param": p.path, "value": p.value, "unit": p.unit,
-                    "standard_error": p.standard_error})
-                })
-                .collect();
-            let mut v = serde_json::json!({
-                "source": what, "params": params, "correlation": f.correlation,
-                "rms_error": f.rms_error, "reduced_chi2": f.reduced_chi2, "dof": f.dof,
-                "points": n, "weighted": f.weighted, "header": points.header,
-                "g_unit": points.g_unit.as_deref().unwrap_or("m/s"),
-                "g_unit_assumed": points.g_unit.is_none(),
-                "warnings": f.warnings, "residuals": f.residuals,
-                "runs_test": f.runs_test.map(|t| serde_json::json!({"runs": t.runs,
-                    "expected": t.expected, "positive": t.positive, "negative": t.negative,
-                    "p": t.p})),
-                "chi2_scaled": f.weighted,
-                "scene": serde_json::to_value(f.scene).map_err(|e| CliError::input(e.to_string()))?,
-            });
-            if let ([p], Some(obj)) = (f.params.as_slice(), v.as_object_mut()) {
-                obj.insert("param".into(), p.path.into());
-                obj.insert("value".into(), p.value.into());
-                obj.insert("unit".into(), p.unit.into());
-                obj.insert("standard_error".into(), p.standard_error.into());
-            }
+            // The core's record of this fit (field names are a contract, docs/cli.md).
+            let record = rime_core::explorer::records::FitRecord::new(f, points, what);
+            let v = serde_json::to_value(&record).map_err(|e| CliError::input(e.to_string()))?;
             format!("{v:#}\n")
         }
         _ => {

@@ -104,7 +104,6 @@ fn rows(scene: &Scene, contact: &Contact, m: &Mapping) -> CliResult<Vec<Row>> {
 }
 
 // Long by design: the LAMMPS input deck as one template, in the order LAMMPS reads it.
-
 fn deck(scene: &Scene, contact: &Contact, m: &Mapping, scene_json: &str) -> String {
     let (r1, r2) = (scene.grains.radius_1, scene.grains.radius_2);
     let rho = scene.grains.density;
@@ -285,7 +284,6 @@ fn deck(scene: &Scene, contact: &Contact, m: &Mapping, scene_json: &str) -> Stri
 }
 
 // Long by design: the exported README as one template, in reading order.
-
 fn readme(scene: &Scene, contact: &Contact, m: &Mapping) -> String {
     let mut s = String::new();
     let steps = if m.gamma.is_some() {
