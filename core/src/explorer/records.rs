@@ -520,6 +520,74 @@ impl<'a> FitRecord<'a> {
     }
 }
 
+/// Header of the tidal appendix's records (`rime tidal`).
+pub const TIDAL_HEADER: [&str; 3] = ["name", "value", "unit"];
+
+/// The tidal appendix (Eq. (A.1)–(A.7)) of one input as `rime tidal` writes it: its named values
+/// with their units (the CSV rows and the JSON fields), whether the pair stays in contact, and the
+/// verdict.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TidalRecord {
+    /// `(name, value, unit)`; `None` where the appendix has no value (no `r_max`).
+    pub values: alloc::vec::Vec<(&'static str, Option<f64>, &'static str)>,
+    /// Whether the surface force holds the pair together (Eq. (A.4)).
+    pub stays_in_contact: bool,
+    /// The verdict in words.
+    pub verdict: String,
+}
+
+impl TidalRecord {
+    /// The record of `input` and its result `t`.
+    pub fn new(input: &crate::tidal::TidalInput, t: &crate::tidal::Tidal) -> Self {
+        TidalRecord {
+            values: alloc::vec![
+                ("planet_mass", Some(input.planet_mass), "kg"),
+                ("distance", Some(input.distance), "m"),
+                ("radius", Some(input.radius), "m"),
+                ("density", Some(input.density), "kg/m3"),
+                ("surface_energy", Some(input.surface_energy), "J/m2"),
+                ("grain_mass", Some(t.mass), "kg"),
+                ("delta_f", Some(t.delta_f), "N"),
+                ("delta_f_approx", Some(t.delta_f_approx), "N"),
+                ("surface_force", Some(t.surface_force), "N"),
+                ("surface_force_paper", Some(t.surface_force_paper), "N"),
+                ("gravity", Some(t.gravity), "N"),
+                ("d_roche", Some(t.d_roche), "m"),
+                ("d_min", Some(t.d_min), "m"),
+                ("r_max", t.r_max, "m"),
+                // The core's verdict: above 1 the pair stays in contact (Eq. (A.4)).
+                ("hold_margin", Some(t.margin()), ""),
+            ],
+            stays_in_contact: t.holds(),
+            verdict: t.verdict(),
+        }
+    }
+
+    /// The CSV rows, in the order of [`TIDAL_HEADER`] (an empty cell where there is no value).
+    pub fn rows(&self) -> alloc::vec::Vec<[String; 3]> {
+        self.values
+            .iter()
+            .map(|(k, v, u)| [(*k).into(), v.map(cell).unwrap_or_default(), (*u).into()])
+            .collect()
+    }
+}
+
+/// JSON: one object, every value by its name (`null` where there is none), then
+/// `stays_in_contact` and `verdict`.
+#[cfg(feature = "serde")]
+impl serde::Serialize for TidalRecord {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> core::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut m = s.serialize_map(Some(self.values.len() + 2))?;
+        for (k, v, _) in &self.values {
+            m.serialize_entry(k, v)?;
+        }
+        m.serialize_entry("stays_in_contact", &self.stays_in_contact)?;
+        m.serialize_entry("verdict", &self.verdict)?;
+        m.end()
+    }
+}
+
 /// Header of stick-map records (`rime map`, the explorer's map).
 pub const MAP_HEADER: [&str; 4] = ["g_n [m/s]", "g_t [m/s]", "eps_t", "class"];
 
