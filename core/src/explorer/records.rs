@@ -588,6 +588,152 @@ impl serde::Serialize for TidalRecord {
     }
 }
 
+/// A ring's equilibrium as `rime ring` writes it (field names are a contract, docs/cli.md): the
+/// named values with their units (`smooth.*`, `rough.*` for the two predictions), the verdicts,
+/// and the note on a damping time set for another grain size.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RingOutput {
+    /// `(name, value, unit)`; `None` where there is no value.
+    pub values: alloc::vec::Vec<(String, Option<f64>, &'static str)>,
+    /// `(name, word)`: the verdict, each prediction's, and which prediction applies.
+    pub verdicts: [(&'static str, &'static str); 4],
+    /// Whether the ring reaches a steady state (an equilibrium or the monolayer floor).
+    pub equilibrium: bool,
+    /// The verdict in words.
+    pub verdict_words: &'static str,
+    /// What A describes when it was set for, or scaled from, another grain size.
+    pub damping_note: Option<String>,
+}
+
+impl RingOutput {
+    /// The output of `rec` with its damping note.
+    pub fn new(rec: &crate::ring::RingRecord, damping_note: Option<String>) -> Self {
+        let p = rec.prediction();
+        let mut values: alloc::vec::Vec<(String, Option<f64>, &'static str)> = alloc::vec![
+            ("tau".into(), Some(rec.tau), "1"),
+            ("omega".into(), Some(rec.omega), "1/s"),
+            ("radius".into(), Some(rec.radius), "m"),
+            ("eps_cr_dilute".into(), Some(rec.eps_cr), "1"),
+            ("eps_cr".into(), Some(p.eps_cr), "1"),
+            (
+                "velocity_dispersion".into(),
+                Some(p.velocity_dispersion),
+                "m/s"
+            ),
+            (
+                "velocity_dispersion_r_omega".into(),
+                Some(p.velocity_dispersion / (rec.radius * rec.omega)),
+                "1",
+            ),
+            ("thickness".into(), Some(p.thickness), "m"),
+            ("mean_impact_speed".into(), Some(p.mean_impact_speed), "m/s"),
+            ("eps_effective".into(), Some(p.eps_effective), "1"),
+            (
+                "equilibration_orbits".into(),
+                Some(p.equilibration_orbits),
+                "orbits"
+            ),
+            ("floor_dispersion".into(), Some(rec.floor_dispersion), "m/s"),
+            ("damping_time".into(), Some(rec.damping_time), "s"),
+            ("scaled_damping_time".into(), rec.scaled_damping_time, "s"),
+        ];
+        for (label, pred) in [("smooth", &rec.smooth), ("rough", &rec.rough)] {
+            let fields: [(&str, f64, &'static str); 7] = [
+                ("velocity_dispersion", pred.velocity_dispersion, "m/s"),
+                ("thickness", pred.thickness, "m"),
+                ("mean_impact_speed", pred.mean_impact_speed, "m/s"),
+                ("eps_effective", pred.eps_effective, "1"),
+                ("eps_cr", pred.eps_cr, "1"),
+                ("sticking_fraction", pred.sticking_fraction, "1"),
+                ("equilibration_orbits", pred.equilibration_orbits, "orbits"),
+            ];
+            for (k, v, u) in fields {
+                values.push((format!("{label}.{k}"), Some(v), u));
+            }
+        }
+        RingOutput {
+            values,
+            verdicts: [
+                ("verdict", p.verdict.name()),
+                ("smooth.verdict", rec.smooth.verdict.name()),
+                ("rough.verdict", rec.rough.verdict.name()),
+                ("prediction", if rec.friction { "rough" } else { "smooth" }),
+            ],
+            equilibrium: p.verdict.is_equilibrium(),
+            verdict_words: p.verdict.words(),
+            damping_note,
+        }
+    }
+}
+
+/// JSON: the top-level values and verdicts by name, `smooth` and `rough` as nested objects, then
+/// `damping_note`, `equilibrium` and `verdict_words`.
+#[cfg(feature = "serde")]
+impl serde::Serialize for RingOutput {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> core::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        struct Nested<'a>(alloc::vec::Vec<(&'a str, Value<'a>)>);
+        enum Value<'a> {
+            Number(Option<f64>),
+            Word(&'a str),
+        }
+        impl serde::Serialize for Value<'_> {
+            fn serialize<S: serde::Serializer>(
+                &self,
+                s: S,
+            ) -> core::result::Result<S::Ok, S::Error> {
+                match self {
+                    Value::Number(v) => v.serialize(s),
+                    Value::Word(w) => w.serialize(s),
+                }
+            }
+        }
+        impl serde::Serialize for Nested<'_> {
+            fn serialize<S: serde::Serializer>(
+                &self,
+                s: S,
+            ) -> core::result::Result<S::Ok, S::Error> {
+                let mut m = s.serialize_map(Some(self.0.len()))?;
+                for (k, v) in &self.0 {
+                    m.serialize_entry(k, v)?;
+                }
+                m.end()
+            }
+        }
+        let entries = self
+            .values
+            .iter()
+            .map(|(k, v, _)| (k.as_str(), Value::Number(*v)))
+            .chain(self.verdicts.iter().map(|(k, w)| (*k, Value::Word(w))));
+        let mut top = alloc::vec::Vec::new();
+        let mut nested = [
+            ("smooth", Nested(alloc::vec::Vec::new())),
+            ("rough", Nested(alloc::vec::Vec::new())),
+        ];
+        for (k, v) in entries {
+            match k.split_once('.') {
+                Some((outer, inner)) => {
+                    if let Some((_, n)) = nested.iter_mut().find(|(n, _)| *n == outer) {
+                        n.0.push((inner, v));
+                    }
+                }
+                None => top.push((k, v)),
+            }
+        }
+        let mut m = s.serialize_map(None)?;
+        for (k, v) in &top {
+            m.serialize_entry(k, v)?;
+        }
+        for (k, n) in &nested {
+            m.serialize_entry(k, n)?;
+        }
+        m.serialize_entry("damping_note", &self.damping_note)?;
+        m.serialize_entry("equilibrium", &self.equilibrium)?;
+        m.serialize_entry("verdict_words", &self.verdict_words)?;
+        m.end()
+    }
+}
+
 /// Header of stick-map records (`rime map`, the explorer's map).
 pub const MAP_HEADER: [&str; 4] = ["g_n [m/s]", "g_t [m/s]", "eps_t", "class"];
 

@@ -100,95 +100,14 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
             )
         })
     };
-    let mut values: Vec<(String, Option<f64>, &str)> = vec![
-        ("tau".into(), Some(rec.tau), "1"),
-        ("omega".into(), Some(rec.omega), "1/s"),
-        ("radius".into(), Some(rec.radius), "m"),
-        ("eps_cr_dilute".into(), Some(rec.eps_cr), "1"),
-        ("eps_cr".into(), Some(p.eps_cr), "1"),
-        (
-            "velocity_dispersion".into(),
-            Some(p.velocity_dispersion),
-            "m/s",
-        ),
-        (
-            "velocity_dispersion_r_omega".into(),
-            Some(p.velocity_dispersion / (rec.radius * rec.omega)),
-            "1",
-        ),
-        ("thickness".into(), Some(p.thickness), "m"),
-        ("mean_impact_speed".into(), Some(p.mean_impact_speed), "m/s"),
-        ("eps_effective".into(), Some(p.eps_effective), "1"),
-        (
-            "equilibration_orbits".into(),
-            Some(p.equilibration_orbits),
-            "orbits",
-        ),
-        ("floor_dispersion".into(), Some(rec.floor_dispersion), "m/s"),
-        ("damping_time".into(), Some(rec.damping_time), "s"),
-        ("scaled_damping_time".into(), rec.scaled_damping_time, "s"),
-    ];
-    for (label, pred) in [("smooth", &rec.smooth), ("rough", &rec.rough)] {
-        let fields: [(&str, f64, &str); 7] = [
-            ("velocity_dispersion", pred.velocity_dispersion, "m/s"),
-            ("thickness", pred.thickness, "m"),
-            ("mean_impact_speed", pred.mean_impact_speed, "m/s"),
-            ("eps_effective", pred.eps_effective, "1"),
-            ("eps_cr", pred.eps_cr, "1"),
-            ("sticking_fraction", pred.sticking_fraction, "1"),
-            ("equilibration_orbits", pred.equilibration_orbits, "orbits"),
-        ];
-        for (k, v, u) in fields {
-            values.push((format!("{label}.{k}"), Some(v), u));
-        }
-    }
-    let verdicts = [
-        ("verdict", p.verdict.name()),
-        ("smooth.verdict", rec.smooth.verdict.name()),
-        ("rough.verdict", rec.rough.verdict.name()),
-        ("prediction", if rec.friction { "rough" } else { "smooth" }),
-    ];
+    // The core's record of this ring (field names are a contract, docs/cli.md).
+    let out = rime_core::explorer::records::RingOutput::new(&rec, note.clone());
+    let (values, verdicts) = (&out.values, out.verdicts);
     Ok(match common.format {
         Format::Json => {
-            use serde_json::{Map, Value};
-            let mut map = Map::new();
-            let mut nested: [(&str, Map<String, Value>); 2] =
-                [("smooth", Map::new()), ("rough", Map::new())];
-            for (k, v, _) in &values {
-                let value = v.map_or(Value::Null, Value::from);
-                match k.split_once('.') {
-                    Some((outer, inner)) => {
-                        if let Some((_, m)) = nested.iter_mut().find(|(n, _)| *n == outer) {
-                            m.insert(inner.to_string(), value);
-                        }
-                    }
-                    None => {
-                        map.insert(k.clone(), value);
-                    }
-                }
-            }
-            for (k, v) in verdicts {
-                match k.split_once('.') {
-                    Some((outer, inner)) => {
-                        if let Some((_, m)) = nested.iter_mut().find(|(n, _)| *n == outer) {
-                            m.insert(inner.to_string(), Value::from(v));
-                        }
-                    }
-                    None => {
-                        map.insert(k.to_string(), Value::from(v));
-                    }
-                }
-            }
-            for (n, m) in nested {
-                map.insert(n.to_string(), Value::Object(m));
-            }
-            map.insert("damping_note".into(), note.map_or(Value::Null, Value::from));
-            map.insert(
-                "equilibrium".into(),
-                Value::from(p.verdict.is_equilibrium()),
-            );
-            map.insert("verdict_words".into(), Value::from(p.verdict.words()));
-            serde_json::to_string_pretty(&map).map_err(|e| CliError::input(e.to_string()))? + "\n"
+            // Through a value: the keys sorted, as this output has always printed them.
+            let v = serde_json::to_value(&out).map_err(|e| CliError::input(e.to_string()))?;
+            serde_json::to_string_pretty(&v).map_err(|e| CliError::input(e.to_string()))? + "\n"
         }
         Format::Csv => {
             let mut s = String::from("name,value,unit\n");
@@ -200,7 +119,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                 p.verdict.is_equilibrium(),
                 p.verdict.words()
             ));
-            for (k, v, u) in &values {
+            for (k, v, u) in values {
                 s.push_str(&format!(
                     "{k},{},{u}\n",
                     v.map(output::num).unwrap_or_default()
