@@ -92,6 +92,14 @@ pub fn scenes() -> Vec<Case> {
         case("ice, compare other models", Preset::Ice.scene(), None, 2),
         case("ice, compare measured ice", Preset::Ice.scene(), None, 1),
         case("ice-frost, family over R₁=R₂", frost, radius, 0),
+        // The paper's viscosities (A = 404 s, every contact overdamped): the issue's
+        // "integrated ≤ 100 ms" case, still by live integration.
+        case(
+            "ice, the paper's viscosities",
+            Preset::IcePaperViscosities.scene(),
+            None,
+            0,
+        ),
     ]
 }
 
