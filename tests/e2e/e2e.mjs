@@ -874,6 +874,12 @@ try {
     await pn.selectOption('#accuracy', 'precise');
     await pn.waitForFunction(() => window.rimeState.view.accuracy === 'precise', null, { timeout: GUARD_MS });
     await typeIn(pn, 'layer.viscosity', '3 kPa s');
+    // The typed scene drawn at the chosen level before the readout is read (an earlier frame's
+    // answer must not stand in for it).
+    await pn.waitForFunction(() => {
+      const s = window.rimeState;
+      return JSON.parse(s.sceneJson).layer.viscosity === 3000 && s.view.accuracy === 'precise';
+    }, null, { timeout: GUARD_MS });
     await pn.locator('#chart').focus();
     for (let k = 0; k < 6; k++) await pn.keyboard.press('ArrowRight');
     const readEps = async () => {
@@ -885,6 +891,7 @@ try {
     let u = await updates(pn);
     await pn.keyboard.press('Control+z');
     await waitUpdate(pn, u);
+    await pn.waitForFunction(() => JSON.parse(window.rimeState.sceneJson).layer.viscosity !== 3000, null, { timeout: GUARD_MS });
     // The readout is redrawn with the frame: wait until it shows a new value (not a fixed time).
     await pn.waitForFunction((b) => document.getElementById('chart-readout').innerText !== b, before.t, { timeout: GUARD_MS }).catch(() => {});
     const after = await readEps();
