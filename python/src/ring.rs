@@ -3,21 +3,8 @@
 use crate::{PyScene, core_error, value_error};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use rime_core::ring::{Orbit, Prediction, RingInput, equilibrium, scaled_damping_time};
+use rime_core::ring::{Orbit, RingInput, equilibrium, scaled_damping_time};
 use rime_core::scene::Damping;
-
-fn prediction<'py>(py: Python<'py>, p: &Prediction) -> PyResult<Bound<'py, PyDict>> {
-    let d = PyDict::new(py);
-    d.set_item("velocity_dispersion", p.velocity_dispersion)?;
-    d.set_item("thickness", p.thickness)?;
-    d.set_item("mean_impact_speed", p.mean_impact_speed)?;
-    d.set_item("eps_effective", p.eps_effective)?;
-    d.set_item("eps_cr", p.eps_cr)?;
-    d.set_item("sticking_fraction", p.sticking_fraction)?;
-    d.set_item("equilibration_orbits", p.equilibration_orbits)?;
-    d.set_item("verdict", p.verdict.name())?;
-    Ok(d)
-}
 
 /// The ring's equilibrium: the same fields as `rime ring --format json`.
 #[pyfunction]
@@ -79,29 +66,6 @@ pub(crate) fn ring_equilibrium<'py>(
         damping_set_for_radius: (r != set_for && !scale_damping).then_some(set_for),
     };
     let rec = py.detach(|| equilibrium(&s, &input)).map_err(core_error)?;
-    let p = rec.prediction();
-    let d = PyDict::new(py);
-    d.set_item("verdict", p.verdict.name())?;
-    d.set_item("equilibrium", p.verdict.is_equilibrium())?;
-    d.set_item("verdict_words", p.verdict.words())?;
-    d.set_item("prediction", if rec.friction { "rough" } else { "smooth" })?;
-    d.set_item("tau", rec.tau)?;
-    d.set_item("omega", rec.omega)?;
-    d.set_item("radius", rec.radius)?;
-    d.set_item("eps_cr_dilute", rec.eps_cr)?;
-    d.set_item("eps_cr", p.eps_cr)?;
-    d.set_item("velocity_dispersion", p.velocity_dispersion)?;
-    d.set_item(
-        "velocity_dispersion_r_omega",
-        p.velocity_dispersion / (rec.radius * rec.omega),
-    )?;
-    d.set_item("thickness", p.thickness)?;
-    d.set_item("mean_impact_speed", p.mean_impact_speed)?;
-    d.set_item("eps_effective", p.eps_effective)?;
-    d.set_item("equilibration_orbits", p.equilibration_orbits)?;
-    d.set_item("floor_dispersion", rec.floor_dispersion)?;
-    d.set_item("damping_time", rec.damping_time)?;
-    d.set_item("scaled_damping_time", rec.scaled_damping_time)?;
     let note = if scale_damping {
         Some(format!(
             "A scaled to {} s = A·R/R_set for R = {} m (A was set for {} m grains): this keeps \
@@ -117,8 +81,31 @@ pub(crate) fn ring_equilibrium<'py>(
             )
         })
     };
-    d.set_item("damping_note", note)?;
-    d.set_item("smooth", prediction(py, &rec.smooth)?)?;
-    d.set_item("rough", prediction(py, &rec.rough)?)?;
+    // The fields of the core's record, as `rime ring --format json` writes them: the flat ones
+    // at the top, `smooth.*` and `rough.*` in their own dicts.
+    let out = rime_core::explorer::records::RingOutput::new(&rec, note);
+    let d = PyDict::new(py);
+    let nested = [("smooth", PyDict::new(py)), ("rough", PyDict::new(py))];
+    let put = |key: &str, value: Bound<'py, PyAny>| -> PyResult<()> {
+        match key.split_once('.') {
+            Some((outer, inner)) => match nested.iter().find(|(n, _)| *n == outer) {
+                Some((_, m)) => m.set_item(inner, value),
+                None => d.set_item(key, value),
+            },
+            None => d.set_item(key, value),
+        }
+    };
+    for (k, v, _) in &out.values {
+        put(k, v.into_pyobject(py)?.into_any())?;
+    }
+    for (k, w) in out.verdicts {
+        put(k, w.into_pyobject(py)?.into_any())?;
+    }
+    d.set_item("equilibrium", out.equilibrium)?;
+    d.set_item("verdict_words", out.verdict_words)?;
+    d.set_item("damping_note", out.damping_note)?;
+    for (k, m) in nested {
+        d.set_item(k, m)?;
+    }
     Ok(d)
 }
