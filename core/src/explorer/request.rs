@@ -228,6 +228,19 @@ pub fn comparison(set: usize, scene: &Scene) -> Vec<Overlay> {
         .unwrap_or_default()
 }
 
+/// An end of a chart's speed range, or an error naming `field` (see [`chart_speed_is_valid`]).
+fn check_chart_speed(field: &'static str, g: f64) -> crate::Result<()> {
+    if chart_speed_is_valid(g) {
+        Ok(())
+    } else {
+        Err(Error::OutOfRange {
+            field,
+            value: g,
+            expected: "a speed in [1e-12, 1e6] m/s",
+        })
+    }
+}
+
 /// Parts of a frame that a request can make fail on purpose (to test how a surface shows failures).
 pub const FORCIBLE: [&str; 4] = ["curve", "family", "marker", "map"];
 
@@ -298,15 +311,8 @@ impl Request {
     /// [`super::frame::compute`]).
     pub fn validate(&self) -> crate::Result<()> {
         if let Some((from, to)) = self.speeds {
-            for (field, g) in [("from", from), ("to", to)] {
-                if !chart_speed_is_valid(g) {
-                    return Err(Error::OutOfRange {
-                        field,
-                        value: g,
-                        expected: "a speed in [1e-12, 1e6] m/s",
-                    });
-                }
-            }
+            check_chart_speed("from", from)?;
+            check_chart_speed("to", to)?;
             if from >= to {
                 return Err(Error::OutOfRange {
                     field: "to",
@@ -420,13 +426,8 @@ mod wire {
             };
             // A bad speed is named before a missing partner.
             for (field, g) in [("from", w.from), ("to", w.to)] {
-                if let Some(g) = g
-                    && !crate::explorer::limits::chart_speed_is_valid(g)
-                {
-                    return Err(format!(
-                        "{field}: a speed in [1e-12, 1e6] m/s (got {})",
-                        crate::error::Number(g)
-                    ));
+                if let Some(g) = g {
+                    super::check_chart_speed(field, g).map_err(|e| e.to_string())?;
                 }
             }
             let speeds = match (w.from, w.to) {
