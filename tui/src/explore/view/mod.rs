@@ -35,6 +35,23 @@ pub(super) fn pane_border(focused: bool) -> (BorderType, Style) {
     }
 }
 
+/// An overlay panel over `area` (the tidal appendix, the sticking thresholds, the ring card): the
+/// area cleared, a white border with the bold `title` and the panel's keys on the bottom edge.
+/// Returns the area inside the border.
+pub(super) fn overlay_panel(frame: &mut Frame, area: Rect, title: &str, keys: &str) -> Rect {
+    frame.render_widget(ratatui::widgets::Clear, area);
+    let block = ratatui::widgets::Block::bordered()
+        .border_style(Style::new().fg(Color::White))
+        .title(Span::styled(
+            format!(" {title} "),
+            Style::new().add_modifier(Modifier::BOLD),
+        ))
+        .title_bottom(format!(" {keys} "));
+    let inner = block.inner(area);
+    frame.render_widget(block, area);
+    inner
+}
+
 /// Draws the whole screen: the one place that reads the whole [`App`] and hands each view its data.
 // Long by design: the screen's panes and overlays in drawing order, the one place that decides
 // what covers what.

@@ -8,7 +8,7 @@ use ratatui::layout::Rect;
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::Text;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Clear, Paragraph, Wrap};
+use ratatui::widgets::{Paragraph, Wrap};
 use rime_core::explorer::format::{qty, sig};
 use rime_core::explorer::ring::RingCard;
 
@@ -51,16 +51,12 @@ pub fn render(frame: &mut Frame, area: Rect, card: &RingCard) {
 
 /// The card's frame (title, keys) around `text`.
 fn draw(frame: &mut Frame, area: Rect, text: Text<'static>) {
-    frame.render_widget(Clear, area);
-    let block = Block::bordered()
-        .border_style(Style::new().fg(Color::White))
-        .title(Span::styled(
-            " ring: what the law does to it ",
-            Style::new().add_modifier(Modifier::BOLD),
-        ))
-        .title_bottom(" ( ) τ · < > planet distance · r closes ");
-    let inner = block.inner(area);
-    frame.render_widget(block, area);
+    let inner = super::overlay_panel(
+        frame,
+        area,
+        "ring: what the law does to it",
+        "( ) τ · < > planet distance · r closes",
+    );
     frame.render_widget(Paragraph::new(text).wrap(Wrap { trim: false }), inner);
 }
 

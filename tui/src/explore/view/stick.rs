@@ -6,9 +6,9 @@ use super::plot::{self, Colors};
 use crate::explore::format::qty3;
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::style::{Color, Modifier, Style};
+use ratatui::style::{Color, Style};
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Clear, Paragraph, Wrap};
+use ratatui::widgets::{Paragraph, Wrap};
 use rime_core::explorer::thresholds::thresholds_figure;
 use rime_core::stick::{MEASURED_UM_ICE, Threshold, ThresholdTable};
 
@@ -75,16 +75,12 @@ const FIGURE_MIN_ROWS: u16 = 12;
 /// Draws the panel over `area`: the tables, and below them, where the terminal is tall enough, the
 /// core's figure of the same numbers ([`thresholds_figure`]) drawn by the one adapter.
 pub fn render(frame: &mut Frame, area: Rect, table: &ThresholdTable, colors: Colors) {
-    frame.render_widget(Clear, area);
-    let block = Block::bordered()
-        .border_style(Style::new().fg(Color::White))
-        .title(Span::styled(
-            " sticking thresholds for dust codes ",
-            Style::new().add_modifier(Modifier::BOLD),
-        ))
-        .title_bottom(" rime stick --out DIR: table + C function · v closes ");
-    let inner = block.inner(area);
-    frame.render_widget(block, area);
+    let inner = super::overlay_panel(
+        frame,
+        area,
+        "sticking thresholds for dust codes",
+        "rime stick --out DIR: table + C function · v closes",
+    );
     let text = lines(table);
     // Rows the tables take once wrapped to the panel's width.
     let wrapped: u16 = text

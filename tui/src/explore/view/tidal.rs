@@ -7,7 +7,7 @@ use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Clear, Paragraph, Wrap};
+use ratatui::widgets::{Paragraph, Wrap};
 use rime_core::tidal::{PAPER_QUOTED, TidalInput};
 
 /// A value with its unit in the calculator's format: 4 significant digits, plain SI, powers of ten
@@ -219,16 +219,12 @@ pub fn lines(t: &TidalView) -> Vec<Line<'static>> {
 
 /// Draws the calculator over `area` (the chart and the stick map).
 pub fn render(frame: &mut Frame, area: Rect, view: &TidalView) {
-    frame.render_widget(Clear, area);
-    let block = Block::bordered()
-        .border_style(Style::new().fg(Color::White))
-        .title(Span::styled(
-            " tidal appendix A.1–A.7 ",
-            Style::new().add_modifier(Modifier::BOLD),
-        ))
-        .title_bottom(" < > distance ÷×1.05 · t/Esc closes ");
-    let inner = block.inner(area);
-    frame.render_widget(block, area);
+    let inner = super::overlay_panel(
+        frame,
+        area,
+        "tidal appendix A.1–A.7",
+        "< > distance ÷×1.05 · t/Esc closes",
+    );
     frame.render_widget(
         Paragraph::new(lines(view)).wrap(Wrap { trim: false }),
         inner,
