@@ -9,16 +9,7 @@ cd "$(dirname "$0")/../.."
 scripts/setup-web.sh # make test's setup steps did this; run alone, this step installs what it needs
 scripts/build-www.sh >/dev/null
 rime_bin=$(scripts/rime-bin.sh)
-port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
-python3 -m http.server "$port" --bind 127.0.0.1 --directory www >/dev/null 2>&1 &
-server=$!
-trap 'kill "$server" 2>/dev/null || true' EXIT
-# Wait for the server (it answers within about 0.1 s; 30 s is only a hang guard).
-start=$SECONDS
-until python3 -c "import urllib.request; urllib.request.urlopen('http://127.0.0.1:$port/')" 2>/dev/null; do
-  (( SECONDS - start < 30 )) || { echo "the local web server did not answer within 30 s" >&2; exit 1; }
-  sleep 0.1
-done
+source scripts/serve-www.sh # sets port; the server stops on exit
 out=$(mktemp)
 rc=0
 RIME_BIN=${RIME_BIN:-$rime_bin} node tests/e2e/ring.mjs "http://127.0.0.1:$port/" | tee "$out" || rc=$?
