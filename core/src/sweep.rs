@@ -99,6 +99,17 @@ pub fn eps_n_into(
     accuracy: Accuracy,
     out: &mut [f64],
 ) -> Result<usize> {
+    eps_n_into_with(contact, g, accuracy, out, &crate::normal::memo::NoMemo)
+}
+
+/// [`eps_n_into`] with the literal layer reading's outcomes kept in `memo`.
+pub fn eps_n_into_with(
+    contact: &Contact,
+    g: &[f64],
+    accuracy: Accuracy,
+    out: &mut [f64],
+    memo: &dyn crate::normal::memo::LayerMemo,
+) -> Result<usize> {
     if out.len() != g.len() {
         return Err(Error::InvalidValue {
             field: "out",
@@ -110,7 +121,7 @@ pub fn eps_n_into(
         if gi == 0.0 {
             *o = contact.eps_n_at_rest();
         } else {
-            let n = contact.normal(gi, accuracy)?;
+            let n = contact.normal_with(gi, accuracy, memo)?;
             *o = n.eps;
             evaluations += n.rhs_evaluations;
         }

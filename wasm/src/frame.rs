@@ -7,9 +7,10 @@
 //! two flat arrays (`f64` and `u8`); the JSON gives each array as `{"at": offset, "len": n}` into them.
 
 use crate::explorer::{STATUSES, class_code, parse_scene, status_code, tidal_json};
-use rime_core::explorer::frame::{Curve, Request, SWEEPS, compute};
+use rime_core::explorer::frame::{Curve, Request, SWEEPS, compute_with};
 use rime_core::explorer::{figures, records};
 use rime_core::figure::Figure;
+use rime_core::normal::memo::SharedLayerMemo;
 use rime_core::params::{PARAMETERS, Value};
 use rime_core::tidal::TidalInput;
 use rime_core::{Scene, Status};
@@ -220,6 +221,11 @@ fn values(scene: &Scene) -> Json {
     Json::Object(m)
 }
 
+/// The literal layer reading's outcomes kept between this worker's frames (issue 26): an edit that
+/// leaves the layer stage's inputs unchanged is answered without integrating again. Each worker
+/// instantiates the module, so each has its own.
+static LAYER_MEMO: SharedLayerMemo = SharedLayerMemo::new();
+
 /// Computes the frame of `scene` as seen through `view`. Fails only for a request that is not
 /// valid (scene or view naming the field); a part that fails is listed in `errors` instead.
 // Long by design: packs every part of one frame into the page's JSON in one place, the binding's
@@ -235,7 +241,7 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
     // The one explorer model of the core computes every part; this binding only packs it.
     let mut req = view.request.clone();
     req.scene = scene;
-    let f = compute(&req, &|| false).ok_or("frame: cancelled")?;
+    let f = compute_with(&req, &|| false, &LAYER_MEMO).ok_or("frame: cancelled")?;
     out.insert("g".into(), pack.f(&f.g));
     for e in &f.errors {
         errors.push(&e.part, e.message.clone());

@@ -9,6 +9,7 @@
 
 use super::limits::speed_is_valid;
 use super::range::{MapRange, auto_map_range, chart_decades};
+use crate::normal::memo::{LayerMemo, NoMemo};
 use crate::normal::{Normal, Status};
 use crate::sweep::{StickMap, log_space};
 use crate::{Accuracy, Contact};
@@ -184,6 +185,7 @@ fn curve(
     accuracy: Accuracy,
     force: bool,
     cancelled: &dyn Fn() -> bool,
+    memo: &dyn LayerMemo,
 ) -> Option<(Vec<Option<Normal>>, Option<String>)> {
     let mut points = Vec::with_capacity(g.len());
     let mut first = None;
@@ -195,7 +197,9 @@ fn curve(
         let r = if force && i % 40 == 20 {
             Err(String::from("failure forced for testing"))
         } else {
-            contact.normal(gi, accuracy).map_err(|e| format!("{e}"))
+            contact
+                .normal_with(gi, accuracy, memo)
+                .map_err(|e| format!("{e}"))
         };
         match r {
             Ok(n) => points.push(Some(n)),
@@ -224,8 +228,17 @@ fn gap_error(part: &str, c: &Curve, first: Option<String>) -> Option<PartError> 
 /// The largest impact speed at which the grains stick, by bisection in log speed on the status the
 /// core reports (`None` when they never stick in \[1e-12, 1e2\] m/s, or always do).
 pub fn stick_threshold(contact: &Contact, accuracy: Accuracy) -> crate::Result<Option<f64>> {
+    stick_threshold_with(contact, accuracy, &NoMemo)
+}
+
+/// [`stick_threshold`] with the literal layer reading's outcomes kept in `memo`.
+pub fn stick_threshold_with(
+    contact: &Contact,
+    accuracy: Accuracy,
+    memo: &dyn LayerMemo,
+) -> crate::Result<Option<f64>> {
     let stuck = |g: f64| -> crate::Result<bool> {
-        let r = contact.normal(g, accuracy)?;
+        let r = contact.normal_with(g, accuracy, memo)?;
         Ok(matches!(
             r.status,
             Status::StuckInLayer | Status::StuckByAdhesion
@@ -590,6 +603,18 @@ impl Plan {
 
     /// Computes one unit; `None` if cancelled.
     pub fn run(&self, unit: &Unit, cancelled: &dyn Fn() -> bool) -> Option<Output> {
+        self.run_with(unit, cancelled, &NoMemo)
+    }
+
+    /// [`Plan::run`] with the literal layer reading's outcomes kept in `memo` between frames
+    /// (the same output, bit for bit; see [`crate::normal::memo`]).
+    // Long by design: one arm per kind of unit, each reading its part of the plan.
+    pub fn run_with(
+        &self,
+        unit: &Unit,
+        cancelled: &dyn Fn() -> bool,
+        memo: &dyn LayerMemo,
+    ) -> Option<Output> {
         if cancelled() {
             return None;
         }
@@ -606,7 +631,7 @@ impl Plan {
                 };
                 let g = self.frame.g.get(from..to).unwrap_or_default();
                 let (points, first) = match contact {
-                    Some(c) => curve(c, g, from, req.accuracy, force, cancelled)?,
+                    Some(c) => curve(c, g, from, req.accuracy, force, cancelled, memo)?,
                     None => (alloc::vec![None; g.len()], None),
                 };
                 Some(Output::Curve(points, first))
@@ -615,7 +640,8 @@ impl Plan {
                 let threshold = if req.forced("marker") {
                     Err(String::from("failure forced for testing"))
                 } else {
-                    stick_threshold(&self.contact, req.accuracy).map_err(|e| format!("{e}"))
+                    stick_threshold_with(&self.contact, req.accuracy, memo)
+                        .map_err(|e| format!("{e}"))
                 };
                 Some(Output::Threshold(threshold))
             }
@@ -654,7 +680,7 @@ impl Plan {
                 };
                 let mut eps = alloc::vec![0.0; g.len()];
                 Some(Output::MapRows(
-                    crate::sweep::eps_n_into(&self.contact, g, req.accuracy, &mut eps)
+                    crate::sweep::eps_n_into_with(&self.contact, g, req.accuracy, &mut eps, memo)
                         .map(|evaluations| (eps, evaluations))
                         .map_err(|e| format!("{e}")),
                 ))
@@ -853,6 +879,16 @@ impl Plan {
 // Long by design: the frame's parts in order (contact, curve, clean, family, markers, map,
 // warnings), each failing on its own; the cancellation checks sit between them.
 pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<Frame> {
+    compute_with(req, cancelled, &NoMemo)
+}
+
+/// [`compute`] with the literal layer reading's outcomes kept in `memo` between frames: the same
+/// frame, bit for bit, without integrating again what an earlier frame integrated.
+pub fn compute_with(
+    req: &Request,
+    cancelled: &dyn Fn() -> bool,
+    memo: &dyn LayerMemo,
+) -> Option<Frame> {
     let plan = match Plan::new(req) {
         Ok(plan) => plan,
         Err(frame) => return Some(*frame),
@@ -860,7 +896,7 @@ pub fn compute(req: &Request, cancelled: &dyn Fn() -> bool) -> Option<Frame> {
     let units = plan.units(usize::MAX);
     let mut outputs = Vec::with_capacity(units.len());
     for unit in &units {
-        outputs.push(plan.run(unit, cancelled)?);
+        outputs.push(plan.run_with(unit, cancelled, memo)?);
     }
     Some(plan.assemble(&units, outputs))
 }
@@ -981,6 +1017,66 @@ mod tests {
                     "{k} {accuracy:?}"
                 );
             }
+        }
+    }
+
+    /// A frame computed with a memo is the frame computed without one, bit for bit, whether the
+    /// memo is cold, warm from the same request, or warm from a scene that differs only after the
+    /// layer stage (adhesion, friction); and the warm frames integrate no literal contact again.
+    #[cfg(feature = "std")]
+    #[test]
+    fn frames_with_the_literal_memo_equal_frames_without_it_issue_26() {
+        use crate::normal::memo::SharedLayerMemo;
+        let frost = Preset::IceFrost.scene();
+        let literal = Scene {
+            layer: frost.layer.map(|l| crate::Layer {
+                reading: crate::LayerReading::Literal,
+                ..l
+            }),
+            ..frost
+        };
+        let mut sticky = literal;
+        sticky.set_number("adhesion.surface_energy", 0.02).unwrap();
+        let mut rough = literal;
+        rough.set_number("friction.coefficient", 0.45).unwrap();
+        // One memo for both levels: the integrator's tolerance is part of what is kept.
+        let memo = SharedLayerMemo::new();
+        for accuracy in [Accuracy::Fast, Accuracy::Precise] {
+            let request = |scene: Scene| {
+                let mut req = Request::new(scene, accuracy);
+                req.points = 41;
+                req.map_n = 17;
+                req
+            };
+            let plain =
+                |scene: Scene| format!("{:?}", compute(&request(scene), &|| false).unwrap());
+            let kept = |scene: Scene| {
+                format!(
+                    "{:?}",
+                    compute_with(&request(scene), &|| false, &memo).unwrap()
+                )
+            };
+            let (_, before) = memo.hits_and_misses();
+            assert_eq!(kept(literal), plain(literal), "cold, {accuracy:?}");
+            let (_, cold_misses) = memo.hits_and_misses();
+            assert!(cold_misses - before > 41, "{cold_misses} {before}");
+            // The same request again, then an edit of friction: every literal contact is kept.
+            for scene in [literal, rough] {
+                assert_eq!(kept(scene), plain(scene), "warm, {accuracy:?}");
+                assert_eq!(memo.hits_and_misses().1, cold_misses, "{accuracy:?}");
+            }
+            // An edit of adhesion keeps the curve and the map; only the stick threshold's
+            // bisection (at most 2 ends + 80 halvings) may ask for new speeds.
+            assert_eq!(kept(sticky), plain(sticky), "warm, {accuracy:?}");
+            let (_, misses) = memo.hits_and_misses();
+            assert!(misses - cold_misses <= 82, "{misses} {cold_misses}");
+            // An edit of the layer stage's inputs (A) is integrated again, and still equal.
+            let mut slower = literal;
+            slower
+                .set_number("bulk.damping.time", 1.1 * literal.damping_time())
+                .unwrap();
+            assert_eq!(kept(slower), plain(slower), "{accuracy:?}");
+            assert!(memo.hits_and_misses().1 > misses + 41, "{accuracy:?}");
         }
     }
 

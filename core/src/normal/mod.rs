@@ -3,6 +3,7 @@
 
 pub mod adhesion;
 pub mod layer;
+pub mod memo;
 pub(crate) mod trace;
 pub mod viscoelastic;
 
@@ -12,6 +13,7 @@ use crate::error::{Error, Result};
 use crate::master::Resolution;
 use crate::math::powf;
 use crate::scene::LayerReading;
+use memo::{LayerMemo, LiteralKey};
 pub use viscoelastic::OVERDAMPED_THRESHOLD;
 
 /// How a normal collision ends.
@@ -134,9 +136,16 @@ pub(crate) fn check_speed(g: f64) -> Result<f64> {
 impl Contact {
     /// Normal restitution at impact speed `g` \[m/s\] with every effect the scene enables.
     #[doc(alias = "Eq. (5)")]
+    pub fn normal(&self, g: f64, accuracy: Accuracy) -> Result<Normal> {
+        self.normal_with(g, accuracy, &memo::NoMemo)
+    }
+
+    /// [`Contact::normal`], taking the literal layer reading's outcome from `memo` where it is kept
+    /// and keeping what it integrates (issue 26): bit for bit the same result, without the
+    /// integration when the layer stage's inputs were seen before ([`memo`]).
     // Long by design: the dispatch of every model branch (viscoelastic, layer readings, adhesion)
     // with the error bound of each, in one match.
-    pub fn normal(&self, g: f64, accuracy: Accuracy) -> Result<Normal> {
+    pub fn normal_with(&self, g: f64, accuracy: Accuracy, memo: &dyn LayerMemo) -> Result<Normal> {
         let g = check_speed(g)?;
         let error_estimate = accuracy.error_bound();
         let mut literal_widening = 1.0;
@@ -177,13 +186,16 @@ impl Contact {
                     let xi_star = self.length_scale(g);
                     let d = layer.thickness / xi_star;
                     let lambda = layer.drag * xi_star * crate::math::sqrt(xi_star) / g;
-                    let out = layer::literal(
-                        self.delta(g),
-                        lambda,
-                        d,
-                        self.contact_end,
-                        accuracy.integrator_rtol(),
-                    )?;
+                    let (delta, rtol) = (self.delta(g), accuracy.integrator_rtol());
+                    let key = LiteralKey::new(delta, lambda, d, self.contact_end, rtol);
+                    let out = match memo.get(&key) {
+                        Some(kept) => kept,
+                        None => {
+                            let out = layer::literal(delta, lambda, d, self.contact_end, rtol)?;
+                            memo.put(key, out);
+                            out
+                        }
+                    };
                     // ε = v_exit − g_s/g: the exit speed's relative error grows by (ε + g_s/g)/ε
                     // near the threshold, where ε is a small difference.
                     if out.eps > 0.0 {

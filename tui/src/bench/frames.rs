@@ -1,9 +1,12 @@
 //! `rime bench --frames`: input → first frame and input → final frame of the terminal explorer, for
 //! every accuracy level × scene × terminal size (issue 26).
 //!
-//! Each case drives the explorer's own state ([`App`]) the way a key press does: an edit of the
-//! damping time A (alternately ×1.1 and back, so the scene never drifts), the request the edit
-//! queues, the frame the worker computes from it (the same function as the terminal's worker), and
+//! Each case drives the explorer's own state ([`App`]) the way a key press does: an edit of one
+//! parameter (the damping time A unless the case says otherwise; alternately up by about 10 % and
+//! back, each edit to a value not seen before, so the scene never drifts and no edit finds the
+//! worker's literal-layer memo warm by coming back to an earlier value), the request the edit
+//! queues, the frame the worker computes from it (the same function as the terminal's worker, with
+//! a memo of its own per case, as the terminal's session has), and
 //! the terminal's render of the new state into a ratatui `TestBackend` of the case's size. The
 //! terminal's request does not depend on the size (points and map side are fixed); the size
 //! changes only what is drawn. At `precise` and `integrated` the worker first sends a `fast`
@@ -20,6 +23,8 @@ use crate::scene_io::{CliError, CliResult, write_atomic};
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use rime_core::explorer::frame::SWEEPS;
+use rime_core::normal::memo::SharedLayerMemo;
+use rime_core::params::Value;
 use rime_core::{Accuracy, Layer, LayerReading, Preset, Scene};
 use std::path::Path;
 use std::time::Instant;
@@ -31,6 +36,8 @@ pub struct Record {
     pub surface: &'static str,
     /// The scene (see [`scenes`]).
     pub scene: String,
+    /// The parameter each edit changed (a scene path).
+    pub edit: &'static str,
     /// Accuracy level requested.
     pub level: &'static str,
     /// Terminal size, `COLSxROWS`.
@@ -53,8 +60,8 @@ pub struct Record {
     pub load: f64,
 }
 
-/// A scene of the matrix: name, scene, sweep (index into [`SWEEPS`], `None`: the default) and
-/// comparison set (index into the core's `COMPARISONS`).
+/// A scene of the matrix: name, scene, sweep (index into [`SWEEPS`], `None`: the default),
+/// comparison set (index into the core's `COMPARISONS`) and the parameter each edit changes.
 pub struct Case {
     /// Name in the table and the JSON.
     pub name: &'static str,
@@ -64,7 +71,12 @@ pub struct Case {
     pub sweep: Option<usize>,
     /// The comparison set drawn over the chart.
     pub overlay_set: usize,
+    /// The parameter an edit changes (a scene path).
+    pub edit: &'static str,
 }
+
+/// The parameter edited unless a case says otherwise.
+const DAMPING_TIME: &str = "bulk.damping.time";
 
 /// The scenes of the matrix: the presets, the literal Eq. (8) layer reading, the two comparison
 /// sets and a family swept over the grain radius.
@@ -83,11 +95,18 @@ pub fn scenes() -> Vec<Case> {
         scene,
         sweep,
         overlay_set,
+        edit: DAMPING_TIME,
     };
     vec![
         case("ice", Preset::Ice.scene(), None, 0),
         case("ice-frost", frost, None, 0),
         case("ice-frost, layer.reading=literal", literal, None, 0),
+        // An edit that leaves the literal layer stage's inputs unchanged: the friction coefficient
+        // (the stick map is classified again; no contact is integrated again).
+        Case {
+            edit: "friction.coefficient",
+            ..case("literal, edit of friction μ", literal, None, 0)
+        },
         case("ice-sticky", Preset::IceSticky.scene(), None, 0),
         case("ice, compare other models", Preset::Ice.scene(), None, 2),
         case("ice, compare measured ice", Preset::Ice.scene(), None, 1),
@@ -159,6 +178,7 @@ fn edit(
     terminal: &mut Terminal<TestBackend>,
     next: Scene,
     mode: Mode,
+    memo: &SharedLayerMemo,
 ) -> CliResult<Edit> {
     let start = Instant::now();
     app.scene_changed(next);
@@ -172,7 +192,7 @@ fn edit(
     let mut first = None;
     let mut compute_ms = 0.0;
     let mut drawn = Ok(());
-    compute::progressive(&job, &|| false, threads, &mut |c: Computed| {
+    compute::progressive(&job, &|| false, threads, memo, &mut |c: Computed| {
         if !c.preview {
             compute_ms = c.elapsed.as_secs_f64() * 1e3;
         }
@@ -201,32 +221,55 @@ fn case(c: &Case, level: Accuracy, size: (u16, u16), runs: usize) -> CliResult<R
     let mut terminal = Terminal::new(TestBackend::new(size.0, size.1))
         .map_err(|e| CliError::input(format!("bench --frames: {e}")))?;
     // The first frame of the session (not timed), as the terminal shows it at start.
+    let memo = SharedLayerMemo::new();
     if let Some(job) = app.take_request()
-        && let Some(data) = compute::compute(&job, &|| false)
+        && let Some(data) = compute::compute(&job, &|| false, &memo)
     {
         update(&mut app, Event::Computed(Box::new(data)));
     }
     draw(&app, &mut terminal)?;
-    let damping = SWEEPS
-        .iter()
-        .find(|s| s.path == "bulk.damping.time")
-        .ok_or_else(|| CliError::input("bench --frames: no damping-time sweep"))?;
     let base = c.scene;
-    let edited = damping.apply(&base, 1.1 * base.damping_time())?;
+    // A swept parameter is edited as the terminal's sweep edits it (the damping time of a scene
+    // given by viscosities stays a scene of viscosities); any other as a scene path.
+    let sweep = SWEEPS.iter().find(|s| s.path == c.edit);
+    let value = match (sweep, base.get(c.edit)) {
+        (Some(s), _) => s.current(&base),
+        (None, Ok(Value::Number(v))) => v,
+        _ => {
+            return Err(CliError::input(format!(
+                "bench --frames: {} is not a number of the scene",
+                c.edit
+            )));
+        }
+    };
+    let set = |v: f64| -> CliResult<Scene> {
+        Ok(match sweep {
+            Some(s) => s.apply(&base, v)?,
+            None => {
+                let mut next = base;
+                next.set_number(c.edit, v)?;
+                next
+            }
+        })
+    };
     let load = load_average();
     let mut by_mode = [Vec::new(), Vec::new()];
-    for run in 0..runs {
+    let mut edits = 0_u32;
+    for _ in 0..runs {
         for (k, mode) in [Mode::Parallel, Mode::Sequential].into_iter().enumerate() {
-            // Alternate between the edited and the original scene: every edit is a real change.
-            let next = if app.scene == base { edited } else { base };
-            by_mode[k].push(edit(&mut app, &mut terminal, next, mode)?);
+            // Alternately about 10 % up and back near the start, each time to a new value: every
+            // edit is a real change and none returns to a value the memo has seen.
+            edits += 1;
+            let factor = if edits % 2 == 1 { 1.1 } else { 1.0 } + 1e-3 * f64::from(edits);
+            let next = set(factor * value)?;
+            by_mode[k].push(edit(&mut app, &mut terminal, next, mode, &memo)?);
         }
-        let _ = run;
     }
     let [par, seq] = by_mode;
     Ok(Record {
         surface: "terminal",
         scene: c.name.to_string(),
+        edit: c.edit,
         level: level.name(),
         size: format!("{}x{}", size.0, size.1),
         first_ms: median(par.iter().map(|e| e.first).collect()),

@@ -47,8 +47,13 @@ fn run_explorer(c: &Common, out: &Path, x: &ExplorerFigures) -> CliResult<String
     let mut progress = crate::progress::Progress::new("figures", 1);
     progress.step("computing the frame");
     // On every core; the frame is the core's sequential one, bit for bit.
-    let frame = crate::explore::compute::frame(&req, &|| false, crate::explore::compute::threads())
-        .ok_or_else(|| CliError::input("figures: cancelled"))?;
+    let frame = crate::explore::compute::frame(
+        &req,
+        &|| false,
+        crate::explore::compute::threads(),
+        &rime_core::normal::memo::NoMemo,
+    )
+    .ok_or_else(|| CliError::input("figures: cancelled"))?;
     if let Some(e) = frame
         .errors
         .iter()

@@ -9,6 +9,7 @@
 
 use rime_core::Accuracy;
 use rime_core::explorer::frame::{self, Frame, Output, Plan};
+use rime_core::normal::memo::LayerMemo;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
@@ -70,14 +71,16 @@ const SPAWN_AFTER: Duration = Duration::from_millis(2);
 
 /// Computes `req` on `threads` threads (1: the core's sequential [`frame::compute`]); `None` as soon
 /// as `cancelled()` says a newer request is waiting. The frame equals the sequential one bit for
-/// bit: the units are the same and are assembled in the same order.
+/// bit: the units are the same and are assembled in the same order. `memo` keeps the literal layer
+/// reading's outcomes between frames (the terminal's session keeps one; the same frame either way).
 pub fn frame(
     req: &frame::Request,
     cancelled: &(dyn Fn() -> bool + Sync),
     threads: usize,
+    memo: &dyn LayerMemo,
 ) -> Option<Frame> {
     if threads <= 1 {
-        return frame::compute(req, cancelled);
+        return frame::compute_with(req, cancelled, memo);
     }
     let plan = match Plan::new(req) {
         Ok(plan) => plan,
@@ -95,7 +98,7 @@ pub fn frame(
         let Some(unit) = units.get(i) else {
             return false;
         };
-        match plan.run(unit, &stopped) {
+        match plan.run_with(unit, &stopped, memo) {
             Some(out) => {
                 if let Ok(mut slot) = outputs[i].lock() {
                     *slot = Some(out);
@@ -138,8 +141,12 @@ pub fn frame(
 
 /// Computes a job at its level on every core. Returns `None` as soon as `cancelled()` says a newer
 /// request is waiting.
-pub fn compute(job: &Job, cancelled: &(dyn Fn() -> bool + Sync)) -> Option<Computed> {
-    compute_on(job, cancelled, threads())
+pub fn compute(
+    job: &Job,
+    cancelled: &(dyn Fn() -> bool + Sync),
+    memo: &dyn LayerMemo,
+) -> Option<Computed> {
+    compute_on(job, cancelled, threads(), memo)
 }
 
 /// [`compute`] on `threads` threads.
@@ -147,9 +154,10 @@ pub fn compute_on(
     job: &Job,
     cancelled: &(dyn Fn() -> bool + Sync),
     threads: usize,
+    memo: &dyn LayerMemo,
 ) -> Option<Computed> {
     let start = Instant::now();
-    let frame = frame(&job.request, cancelled, threads)?;
+    let frame = frame(&job.request, cancelled, threads, memo)?;
     Some(Computed {
         generation: job.generation,
         elapsed: start.elapsed(),
@@ -174,11 +182,12 @@ pub fn progressive(
     job: &Job,
     cancelled: &(dyn Fn() -> bool + Sync),
     threads: usize,
+    memo: &dyn LayerMemo,
     deliver: &mut dyn FnMut(Computed) -> bool,
 ) -> bool {
     if let Some(request) = preview_request(&job.request) {
         let start = Instant::now();
-        let Some(frame) = frame(&request, cancelled, threads) else {
+        let Some(frame) = frame(&request, cancelled, threads, memo) else {
             return true;
         };
         let preview = Computed {
@@ -191,7 +200,7 @@ pub fn progressive(
             return false;
         }
     }
-    match compute_on(job, cancelled, threads) {
+    match compute_on(job, cancelled, threads, memo) {
         Some(done) => deliver(done),
         None => true,
     }

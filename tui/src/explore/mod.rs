@@ -39,6 +39,9 @@ const QUIT: u64 = u64::MAX;
 /// preview, then the requested level ([`compute::progressive`]).
 fn worker(requests: Receiver<Job>, events: Sender<Event>, latest: Arc<AtomicU64>) {
     let threads = compute::threads();
+    // The session's literal-layer outcomes: an edit that leaves the layer stage's inputs unchanged
+    // (adhesion, friction, overlays, ...) is answered without integrating again.
+    let memo = rime_core::normal::memo::SharedLayerMemo::new();
     while let Ok(mut req) = requests.recv() {
         while let Ok(newer) = requests.try_recv() {
             req = newer;
@@ -46,7 +49,7 @@ fn worker(requests: Receiver<Job>, events: Sender<Event>, latest: Arc<AtomicU64>
         let generation = req.generation;
         let cancelled = || latest.load(Ordering::Relaxed) != generation;
         let mut deliver = |data| events.send(Event::Computed(Box::new(data))).is_ok();
-        if !compute::progressive(&req, &cancelled, threads, &mut deliver) {
+        if !compute::progressive(&req, &cancelled, threads, &memo, &mut deliver) {
             return;
         }
     }

@@ -7,6 +7,7 @@ use super::view::render;
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
+use rime_core::normal::memo::NoMemo;
 use rime_core::params::{PARAMETERS, Value};
 use rime_core::{Accuracy, Preset, Scene};
 use std::time::Duration;
@@ -22,7 +23,7 @@ fn ch(c: char) -> Event {
 /// Runs the pending request synchronously, as the worker would.
 fn settle(app: &mut App) {
     if let Some(req) = app.take_request() {
-        let data = compute(&req, &|| false).expect("not cancelled");
+        let data = compute(&req, &|| false, &NoMemo).expect("not cancelled");
         update(app, Event::Computed(Box::new(data)));
     }
 }
@@ -268,7 +269,7 @@ fn stale_results_are_dropped() {
     let mut app = App::new(Scene::default(), Accuracy::Fast);
     let old = app.take_request().expect("initial request");
     update(&mut app, ch('a'));
-    let data = compute(&old, &|| false).expect("computed");
+    let data = compute(&old, &|| false, &NoMemo).expect("computed");
     update(&mut app, Event::Computed(Box::new(data)));
     assert!(app.data.is_none(), "stale frame ignored");
     settle(&mut app);
@@ -280,7 +281,7 @@ fn stale_results_are_dropped() {
 fn cancelled_computation_returns_nothing() {
     let app = App::new(Preset::IceFrost.scene(), Accuracy::Fast);
     let req = app.pending.clone().expect("request");
-    assert!(compute(&req, &|| true).is_none());
+    assert!(compute(&req, &|| true, &NoMemo).is_none());
 }
 
 #[test]
@@ -874,7 +875,7 @@ fn compare_key_overlays_measured_ice_then_other_models_issues_15_16() {
     let mut app = app_on(Preset::IceSticky.scene());
     update(&mut app, ch('c'));
     let req = app.take_request().expect("a new request");
-    let data = compute(&req, &|| false).expect("frame");
+    let data = compute(&req, &|| false, &NoMemo).expect("frame");
     let law = data
         .overlays
         .iter()
@@ -890,7 +891,7 @@ fn compare_key_overlays_measured_ice_then_other_models_issues_15_16() {
     assert!(s.contains("bridges1984 (") && s.contains(" rms "), "{s}");
     update(&mut app, ch('c'));
     let req = app.take_request().expect("a new request");
-    let data = compute(&req, &|| false).expect("frame");
+    let data = compute(&req, &|| false, &NoMemo).expect("frame");
     let model = data
         .overlays
         .iter()
@@ -1902,7 +1903,8 @@ fn parallel_frames_equal_the_sequential_reference_issue_26() {
         }
         let reference = format!("{:?}", frame::compute(&req, &|| false).expect("computed"));
         for threads in [2, 3, 8] {
-            let parallel = super::compute::frame(&req, &|| false, threads).expect("computed");
+            let parallel =
+                super::compute::frame(&req, &|| false, threads, &NoMemo).expect("computed");
             assert!(
                 format!("{parallel:?}") == reference,
                 "case {k} at {accuracy:?} on {threads} threads differs"
@@ -1917,10 +1919,10 @@ fn parallel_frames_equal_the_sequential_reference_issue_26() {
 fn parallel_frames_are_cancellable_issue_26() {
     use std::sync::atomic::{AtomicUsize, Ordering};
     let req = rime_core::explorer::frame::Request::new(Preset::IceFrost.scene(), Accuracy::Precise);
-    assert!(super::compute::frame(&req, &|| true, 2).is_none());
+    assert!(super::compute::frame(&req, &|| true, 2, &NoMemo).is_none());
     let asked = AtomicUsize::new(0);
     let later = || asked.fetch_add(1, Ordering::Relaxed) > 20;
-    assert!(super::compute::frame(&req, &later, 2).is_none());
+    assert!(super::compute::frame(&req, &later, 2, &NoMemo).is_none());
     assert!(
         asked.load(Ordering::Relaxed) > 20,
         "it was asked part-way through"
@@ -1932,7 +1934,7 @@ fn parallel_frames_are_cancellable_issue_26() {
 fn worker_frames(app: &mut App) -> Vec<super::compute::Computed> {
     let job = app.take_request().expect("a request");
     let mut frames = Vec::new();
-    super::compute::progressive(&job, &|| false, 2, &mut |c| {
+    super::compute::progressive(&job, &|| false, 2, &NoMemo, &mut |c| {
         frames.push(c);
         true
     });

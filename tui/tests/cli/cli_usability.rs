@@ -234,8 +234,8 @@ fn bench_frames_writes_one_record_per_case_issue_26() {
     let records: serde_json::Value =
         serde_json::from_slice(&std::fs::read(d.0.join("frames.json")).unwrap()).unwrap();
     let records = records.as_array().unwrap();
-    // --quick: 8 scenes × 3 levels at 80×24.
-    assert_eq!(records.len(), 8 * 3, "{records:?}");
+    // --quick: 9 scenes × 3 levels at 80×24.
+    assert_eq!(records.len(), 9 * 3, "{records:?}");
     let mut cases = std::collections::BTreeSet::new();
     for r in records {
         assert_eq!(r["surface"], "terminal");
@@ -247,6 +247,7 @@ fn bench_frames_writes_one_record_per_case_issue_26() {
         );
         assert!(first > 0.0 && first <= last && last.is_finite(), "{r}");
         assert!(r["cores"].as_u64().unwrap() >= 1);
+        assert!(r["edit"].is_string(), "{r}");
         assert!(r["load"].is_number() || r["load"].is_null(), "{r}");
         cases.insert((r["scene"].to_string(), r["level"].to_string()));
     }
