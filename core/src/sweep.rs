@@ -139,21 +139,48 @@ pub fn stick_map_into(
     eps_t: &mut [f64],
 ) -> Result<()> {
     let n = g.len();
-    let friction = contact.friction.ok_or(Error::InvalidValue {
-        field: "friction",
-        expected: "friction to be on for tangential restitution",
-    })?;
     if eps_n.len() != n || class.len() != n * n || eps_t.len() != n * n {
         return Err(Error::InvalidValue {
             field: "out",
             expected: "eps_n of length n and class, eps_t of length n²",
         });
     }
-    for i in 0..n {
+    stick_map_rows_into(contact, g, eps_n, 0, class, eps_t)
+}
+
+/// The rows `first_row..` of [`stick_map_into`]'s grid, as many as `class` holds (`class.len() /
+/// g.len()`): the same cells, so that rows may be classified apart (on several threads) and put
+/// together.
+pub fn stick_map_rows_into(
+    contact: &Contact,
+    g: &[f64],
+    eps_n: &[f64],
+    first_row: usize,
+    class: &mut [StickClass],
+    eps_t: &mut [f64],
+) -> Result<()> {
+    let n = g.len();
+    let friction = contact.friction.ok_or(Error::InvalidValue {
+        field: "friction",
+        expected: "friction to be on for tangential restitution",
+    })?;
+    let rows = class.len().checked_div(n).unwrap_or(0);
+    if eps_n.len() != n
+        || class.len() != rows * n
+        || eps_t.len() != class.len()
+        || first_row + rows > n
+    {
+        return Err(Error::InvalidValue {
+            field: "out",
+            expected: "eps_n of length n and class, eps_t of whole rows inside the grid",
+        });
+    }
+    for r in 0..rows {
+        let i = first_row + r;
         for j in 0..n {
             let t = classify(g[i], g[j], eps_n[i], eps_n[j], &friction);
-            class[i * n + j] = t.class;
-            eps_t[i * n + j] = t.eps_t;
+            class[r * n + j] = t.class;
+            eps_t[r * n + j] = t.eps_t;
         }
     }
     Ok(())

@@ -10,6 +10,7 @@ mod commands;
 mod eps_file;
 mod explore;
 mod output;
+mod parallel;
 mod progress;
 mod scene_io;
 mod spec;

@@ -197,12 +197,23 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     }
     let mut records = Vec::new();
     let mut speeds = Vec::new();
-    for e in &evaluators {
+    // Every model's ε_N at every speed and its characteristic speeds, on every core; then read in
+    // the sequential order (model by model, speeds first), so the output and the first error are
+    // the sequential ones.
+    let threads = crate::parallel::threads();
+    let n = args.g.len();
+    let results = crate::parallel::each(evaluators.len() * n, threads, 1, |k| {
+        evaluators[k / n].eps(args.g[k % n], common.accuracy)
+    });
+    let characteristic = crate::parallel::each(evaluators.len(), threads, 1, |m| {
+        evaluators[m].characteristic_speeds(common.accuracy)
+    });
+    let mut results = results.into_iter();
+    for (e, cs) in evaluators.iter().zip(characteristic) {
         let name = e.model().name();
-        for &g in &args.g {
-            let r = e
-                .eps(g, common.accuracy)
-                .map_err(|x| CliError::from(x).context(format!("{name}, g_n = {}", Number(g))))?;
+        for (&g, r) in args.g.iter().zip(results.by_ref()) {
+            let r =
+                r.map_err(|x| CliError::from(x).context(format!("{name}, g_n = {}", Number(g))))?;
             records.push(Record {
                 model: name,
                 g_n: g,
@@ -210,9 +221,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                 status: r.status.name(),
             });
         }
-        let cs = e
-            .characteristic_speeds(common.accuracy)
-            .map_err(|x| CliError::from(x).context(name))?;
+        let cs = cs.map_err(|x| CliError::from(x).context(name))?;
         for s in cs.iter() {
             speeds.push(Speed {
                 model: name,

@@ -16,13 +16,17 @@ pub fn log_space(from: f64, to: f64, n: usize) -> Vec<f64> {
 /// explorer's status line and the page show) go to standard error, one `warning: ` line each.
 pub fn run(common: &Common, from: f64, to: f64, n: usize) -> CliResult<String> {
     let contact = args::contact(common)?;
-    let mut records = Vec::with_capacity(n);
-    let mut statuses = Vec::with_capacity(n);
-    for g in log_space(from, to, n) {
-        let normal = contact.normal(g, common.accuracy)?;
-        statuses.push(Some(normal.status));
-        records.push(EpsRecord::new(g, &normal));
-    }
+    let g = log_space(from, to, n);
+    // The speeds on every core, in order: the output is the sequential one, byte for byte.
+    let normals = crate::parallel::map(g.len(), crate::parallel::threads(), |i| {
+        contact.normal(g[i], common.accuracy)
+    })?;
+    let statuses: Vec<_> = normals.iter().map(|r| Some(r.status)).collect();
+    let records: Vec<EpsRecord> = g
+        .iter()
+        .zip(&normals)
+        .map(|(&g, r)| EpsRecord::new(g, r))
+        .collect();
     let warnings =
         rime_core::explorer::warning::warnings(&common.scene, statuses, Some(contact.damping_time));
     for w in warnings {

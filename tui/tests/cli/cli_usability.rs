@@ -544,3 +544,78 @@ fn map_and_collision_json_are_pretty_like_eps_and_list_fits_80_columns_issue_22(
         assert!(list.contains(m), "{m} missing\n{list}");
     }
 }
+
+/// Issue 26: `rime curve`, `map` and `compare` use every core, and their output (stdout and
+/// stderr) is the output of the same command pinned to one core (`taskset -c 0`, where the
+/// command runs sequentially), byte for byte.
+#[test]
+fn subcommands_on_every_core_print_what_one_core_prints_issue_26() {
+    let runs: [&[&str]; 4] = [
+        &[
+            "curve",
+            "--from",
+            "1e-6",
+            "--to",
+            "1",
+            "--points",
+            "400",
+            "--preset",
+            "ice-frost",
+            "--format",
+            "csv",
+        ],
+        &[
+            "curve",
+            "--from",
+            "1e-5",
+            "--to",
+            "1",
+            "--points",
+            "150",
+            "--preset",
+            "ice-sticky",
+            "--accuracy",
+            "integrated",
+            "--format",
+            "json",
+        ],
+        &[
+            "map",
+            "--max",
+            "0.05",
+            "--n",
+            "120",
+            "--preset",
+            "ice-frost",
+            "--format",
+            "json",
+        ],
+        &[
+            "compare",
+            "--g",
+            "1e-4,1e-3,0.01,0.1",
+            "--preset",
+            "ice-sticky",
+            "--format",
+            "json",
+        ],
+    ];
+    let run = |pinned: bool, args: &[&str]| {
+        let mut c = if pinned {
+            let mut c = Command::new("taskset");
+            c.args(["-c", "0"]).arg(rime_binary());
+            c
+        } else {
+            Command::new(rime_binary())
+        };
+        let out = c.args(args).output().expect("taskset (util-linux) runs");
+        assert!(out.status.success(), "{args:?} pinned={pinned}: {out:?}");
+        (out.stdout, out.stderr)
+    };
+    for args in runs {
+        let every = run(false, args);
+        let one = run(true, args);
+        assert!(every.0.len() > 1000, "{args:?}");
+        assert!(every == one, "{args:?}: the outputs differ");
+    }
+}
