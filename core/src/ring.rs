@@ -254,6 +254,91 @@ pub fn scaled_damping_time(a: f64, r: f64, r_new: f64) -> Result<f64> {
     Ok(a * (r_new / r))
 }
 
+/// A ring patch of one grain size: the scene with both grains of `radius` (the scene's when
+/// `None`) and the input of [`equilibrium`]. The damping time A is kept (a material constant, so
+/// ε_N(g) changes with the size) unless `scale_damping` asks for `A′ = A·R/R_set`
+/// ([`scaled_damping_time`]: the set grains' ε_N(g), a different material).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RingPatch {
+    /// The patch's scene.
+    pub scene: Scene,
+    /// The input of [`equilibrium`].
+    pub input: RingInput,
+    /// The radius the scene's A was set for \[m\] (the scene's grain radius).
+    pub set_for: f64,
+    /// Whether A was scaled.
+    pub scaled: bool,
+}
+
+impl RingPatch {
+    /// The patch of `scene`'s grains at `radius` (fails, naming `scale_damping`, when A is to be
+    /// scaled to the radius it was set for).
+    pub fn new(
+        scene: &Scene,
+        tau: f64,
+        orbit: Orbit,
+        radius: Option<f64>,
+        scale_damping: bool,
+    ) -> Result<RingPatch> {
+        let mut scene = *scene;
+        let set_for = scene.grains.radius_1;
+        if let Some(r) = radius {
+            scene.grains.radius_1 = r;
+            scene.grains.radius_2 = r;
+        }
+        let r = scene.grains.radius_1;
+        if scale_damping {
+            if r == set_for {
+                return Err(Error::InvalidValue {
+                    field: "scale_damping",
+                    expected: "a radius other than the scene's (A is scaled to a new grain size)",
+                });
+            }
+            let a = scaled_damping_time(scene.damping_time(), set_for, r)?;
+            scene.bulk.damping = crate::scene::Damping::Time(a);
+        }
+        Ok(RingPatch {
+            scene,
+            input: RingInput {
+                tau,
+                orbit,
+                damping_set_for_radius: (r != set_for && !scale_damping).then_some(set_for),
+            },
+            set_for,
+            scaled: scale_damping,
+        })
+    }
+
+    /// What A describes in the patch `rec` was computed for, when the grains are not the ones A
+    /// was set for; `flag` names the surface's switch that scales A (`--scale-damping`,
+    /// `scale_damping=True`).
+    #[cfg(feature = "alloc")]
+    pub fn damping_note(&self, rec: &RingRecord, flag: &str) -> Option<alloc::string::String> {
+        use crate::explorer::format::shortest as num;
+        if self.scaled {
+            Some(alloc::format!(
+                "A scaled to {} s = A·R/R_set for R = {} m (A was set for {} m grains): this keeps \
+                 ε_N(g) of the {} m grains and describes a different material",
+                num(rec.damping_time),
+                num(rec.radius),
+                num(self.set_for),
+                num(self.set_for)
+            ))
+        } else {
+            rec.scaled_damping_time.map(|a2| {
+                alloc::format!(
+                    "the scene's A = {} s was set for {} m grains; grains of {} m keep that ε_N(g) \
+                     with A' = {} s ({flag}), a different material",
+                    num(rec.damping_time),
+                    num(self.set_for),
+                    num(rec.radius),
+                    num(a2)
+                )
+            })
+        }
+    }
+}
+
 /// The vertical to 1-D dispersion ratio of the closure at the balance, `c_z²/c² = 1 − ζ/ν =
 /// 1 − (3/2)/(ν̂² + 11/2)` with `ν̂ = b(ε_cr) ω̂`.
 fn vertical_fraction(w: f64) -> f64 {
@@ -488,6 +573,39 @@ pub fn equilibrium(scene: &Scene, input: &RingInput) -> Result<RingRecord> {
 mod tests {
     use super::*;
     use crate::scene::{Damping, Preset};
+
+    /// The patch both surfaces build (`rime ring`, `rime_grains.ring`): A kept or scaled by R/R_set
+    /// (closed form), and the refusal to scale A to the radius it was set for.
+    #[test]
+    fn a_patch_keeps_or_scales_a_and_says_which() {
+        let ice = Preset::Ice.scene();
+        let orbit = Orbit::Omega(1.3e-4);
+        let kept = RingPatch::new(&ice, 0.5, orbit, Some(1.0), false).unwrap();
+        assert_eq!(kept.scene.damping_time(), ice.damping_time());
+        assert_eq!(kept.input.damping_set_for_radius, Some(0.02));
+        let scaled = RingPatch::new(&ice, 0.5, orbit, Some(1.0), true).unwrap();
+        let a = scaled.scene.damping_time();
+        assert!((a / ice.damping_time() - 1.0 / 0.02).abs() < 1e-12, "{a}");
+        assert_eq!(scaled.input.damping_set_for_radius, None);
+        let e = RingPatch::new(&ice, 0.5, orbit, None, true).unwrap_err();
+        assert!(alloc::format!("{e}").starts_with("scale_damping:"), "{e}");
+        let rec = equilibrium(&kept.scene, &kept.input).unwrap();
+        let note = kept.damping_note(&rec, "--flag").unwrap();
+        assert!(
+            note.contains("(--flag)") && note.contains("different material"),
+            "{note}"
+        );
+        let rec = equilibrium(&scaled.scene, &scaled.input).unwrap();
+        assert!(
+            scaled
+                .damping_note(&rec, "--flag")
+                .unwrap()
+                .starts_with("A scaled to 0.005 s")
+        );
+        let same = RingPatch::new(&ice, 0.5, orbit, None, false).unwrap();
+        let rec = equilibrium(&same.scene, &same.input).unwrap();
+        assert_eq!(same.damping_note(&rec, "--flag"), None);
+    }
 
     const SATURN_A_RING_OMEGA: f64 = 1.3143527e-4;
 

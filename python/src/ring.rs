@@ -3,8 +3,7 @@
 use crate::{PyScene, core_error, value_error};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use rime_core::ring::{Orbit, RingInput, equilibrium, scaled_damping_time};
-use rime_core::scene::Damping;
+use rime_core::ring::{Orbit, RingPatch, equilibrium};
 
 /// The ring's equilibrium: the same fields as `rime ring --format json`.
 #[pyfunction]
@@ -43,44 +42,13 @@ pub(crate) fn ring_equilibrium<'py>(
             ));
         }
     };
-    let mut s = scene.scene;
-    let set_for = s.grains.radius_1;
-    if let Some(r) = radius {
-        s.grains.radius_1 = r;
-        s.grains.radius_2 = r;
-    }
-    let r = s.grains.radius_1;
-    if scale_damping {
-        if r == set_for {
-            return Err(value_error(
-                "scale_damping",
-                "only with a radius other than the scene's",
-            ));
-        }
-        s.bulk.damping =
-            Damping::Time(scaled_damping_time(s.damping_time(), set_for, r).map_err(core_error)?);
-    }
-    let input = RingInput {
-        tau,
-        orbit,
-        damping_set_for_radius: (r != set_for && !scale_damping).then_some(set_for),
-    };
-    let rec = py.detach(|| equilibrium(&s, &input)).map_err(core_error)?;
-    let note = if scale_damping {
-        Some(format!(
-            "A scaled to {} s = A·R/R_set for R = {} m (A was set for {} m grains): this keeps \
-             ε_N(g) of the {} m grains and describes a different material",
-            rec.damping_time, r, set_for, set_for
-        ))
-    } else {
-        rec.scaled_damping_time.map(|a2| {
-            format!(
-                "the scene's A = {} s was set for {} m grains; grains of {} m keep that ε_N(g) \
-                 with A' = {} s (scale_damping=True), a different material",
-                rec.damping_time, set_for, r, a2
-            )
-        })
-    };
+    // core_error names the field (`scale_damping: expected a radius other than the scene's …`).
+    let patch =
+        RingPatch::new(&scene.scene, tau, orbit, radius, scale_damping).map_err(core_error)?;
+    let rec = py
+        .detach(|| equilibrium(&patch.scene, &patch.input))
+        .map_err(core_error)?;
+    let note = patch.damping_note(&rec, "scale_damping=True");
     // The fields of the core's record, as `rime ring --format json` writes them: the flat ones
     // at the top, `smooth.*` and `rough.*` in their own dicts.
     let out = rime_core::explorer::records::RingOutput::new(&rec, note);

@@ -4,8 +4,7 @@
 use crate::args::{Common, Format};
 use crate::output;
 use crate::scene_io::{CliError, CliResult, err};
-use rime_core::ring::{Orbit, Prediction, RingInput, equilibrium};
-use rime_core::scene::Damping;
+use rime_core::ring::{Orbit, Prediction, RingPatch, equilibrium};
 
 /// Parsed arguments.
 #[derive(Debug, Clone, PartialEq)]
@@ -57,49 +56,23 @@ pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
 // Long by design: one record's three outputs (JSON, CSV, table) side by side so that their fields
 // stay in step.
 pub fn run(common: &Common, args: &Args) -> CliResult<String> {
-    let mut scene = common.scene;
-    let set_for = scene.grains.radius_1;
-    if let Some(r) = args.radius {
-        scene.grains.radius_1 = r;
-        scene.grains.radius_2 = r;
-    }
-    let radius = scene.grains.radius_1;
-    let scaled = args.scale_damping && radius != set_for;
-    if args.scale_damping && !scaled {
+    if args.scale_damping
+        && args
+            .radius
+            .is_none_or(|r| r == common.scene.grains.radius_1)
+    {
         return err("--scale-damping: only with a --radius other than the scene's");
     }
-    if scaled {
-        let a = rime_core::ring::scaled_damping_time(scene.damping_time(), set_for, radius)?;
-        scene.bulk.damping = Damping::Time(a);
-    }
-    let input = RingInput {
-        tau: args.tau,
-        orbit: args.orbit,
-        damping_set_for_radius: (radius != set_for && !scaled).then_some(set_for),
-    };
-    let rec = equilibrium(&scene, &input)?;
+    let patch = RingPatch::new(
+        &common.scene,
+        args.tau,
+        args.orbit,
+        args.radius,
+        args.scale_damping,
+    )?;
+    let rec = equilibrium(&patch.scene, &patch.input)?;
     let p = rec.prediction();
-    let note = if scaled {
-        Some(format!(
-            "A scaled to {} s = A·R/R_set for R = {} m (A was set for {} m grains): this keeps \
-             ε_N(g) of the {} m grains and describes a different material",
-            output::num(rec.damping_time),
-            output::num(radius),
-            output::num(set_for),
-            output::num(set_for)
-        ))
-    } else {
-        rec.scaled_damping_time.map(|a2| {
-            format!(
-                "the scene's A = {} s was set for {} m grains; grains of {} m keep that ε_N(g) \
-                 with A' = {} s (--scale-damping), a different material",
-                output::num(rec.damping_time),
-                output::num(set_for),
-                output::num(radius),
-                output::num(a2)
-            )
-        })
-    };
+    let note = patch.damping_note(&rec, "--scale-damping");
     // The core's record of this ring (field names are a contract, docs/cli.md).
     let out = rime_core::explorer::records::RingOutput::new(&rec, note.clone());
     let (values, verdicts) = (&out.values, out.verdicts);
