@@ -189,6 +189,34 @@ impl SpeedRecord {
     }
 }
 
+/// `rime compare`'s output: every model's and law's ε_N at every speed, then their
+/// characteristic speeds (JSON `{"records": […], "characteristic_speeds": […]}`; CSV: the two
+/// tables one after the other, a blank line between).
+#[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct CompareOutput {
+    /// ε_N of each model or law at each speed, model by model.
+    pub records: alloc::vec::Vec<CompareRecord>,
+    /// The models' characteristic speeds and the laws' measured ranges.
+    pub characteristic_speeds: alloc::vec::Vec<SpeedRecord>,
+}
+
+impl CompareOutput {
+    /// Both tables as CSV, each with its header ([`COMPARE_HEADER`], [`SPEED_HEADER`]).
+    pub fn csv(&self) -> String {
+        let mut s = COMPARE_HEADER.join(",") + "\n";
+        for r in &self.records {
+            s.push_str(&(r.cells().join(",") + "\n"));
+        }
+        s.push('\n');
+        s.push_str(&(SPEED_HEADER.join(",") + "\n"));
+        for c in &self.characteristic_speeds {
+            s.push_str(&(c.cells().join(",") + "\n"));
+        }
+        s
+    }
+}
+
 /// One collision as `rime collision` writes it in JSON (field names are a contract, docs/cli.md):
 /// the trajectory's samples, phases, ending and energy ledger, and with a tangential speed the
 /// oblique impact's tangential side.

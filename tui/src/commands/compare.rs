@@ -85,7 +85,7 @@ pub fn parse_models(text: &str) -> CliResult<(Vec<Model>, Vec<&'static rime_core
 }
 
 use rime_core::explorer::records::{
-    COMPARE_HEADER, CompareRecord as Record, SPEED_HEADER, SpeedRecord as Speed,
+    COMPARE_HEADER, CompareOutput, CompareRecord as Record, SpeedRecord as Speed,
 };
 
 #[derive(Serialize)]
@@ -264,22 +264,19 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         }
     }
     Ok(match common.format {
-        Format::Json => to_json(&serde_json::json!({
-            "records": records,
-            "characteristic_speeds": speeds,
-        }))?,
-        Format::Csv => {
-            let mut s = COMPARE_HEADER.join(",") + "\n";
-            for r in &records {
-                s.push_str(&(r.cells().join(",") + "\n"));
-            }
-            s.push('\n');
-            s.push_str(&(SPEED_HEADER.join(",") + "\n"));
-            for c in &speeds {
-                s.push_str(&(c.cells().join(",") + "\n"));
-            }
-            s
+        // Through a value: the keys sorted, as this output has always printed them.
+        Format::Json => to_json(
+            &serde_json::to_value(CompareOutput {
+                records,
+                characteristic_speeds: speeds,
+            })
+            .map_err(|e| CliError::input(e.to_string()))?,
+        )?,
+        Format::Csv => CompareOutput {
+            records,
+            characteristic_speeds: speeds,
         }
+        .csv(),
         Format::Table => {
             let mut s = table(
                 &COMPARE_HEADER,
