@@ -456,6 +456,31 @@ fn integrate(
     }
 }
 
+/// The rebound energy margin `F` of the dimensionless collision and how it ended: for a pull-off,
+/// `F = ε²` (twice the energy left at the end of contact, `E(x_c) − U(b_c) = ε²/2`); for grains
+/// caught before the end, `F = 2 (E_turn − U(b_c)) < 0`, with `E_turn = U(b)` where they stop
+/// separating. Both sides are the same smooth function of `(δ, κ)`: near the sticking boundary
+/// the turning point `x_turn` moves linearly through `x_c`, and `F ≈ −2 U'(x_c) (x_c − x_turn)`
+/// on either side (the damping's share vanishes there with `v²`), so `F` crosses zero linearly
+/// where ε_N drops to 0. The tables of [`crate::models::brilliantov2007_master`] store `F`.
+/// Grains that never turn (overdamped creep onto the JKR equilibrium) give the margin at the last
+/// point followed, which is not on that smooth surface; the tables' generator rejects such cells.
+pub fn energy_margin(delta: f64, kappa: f64, end: JkrEnd, rtol: f64) -> Result<(f64, Outcome)> {
+    let sys = System::new(delta, kappa, end);
+    let mut last = (0.0, 1.0, sys.radius(0.0));
+    let (eps, _, _, outcome, _) = integrate(delta, kappa, end, rtol, true, |_, x, v, b| {
+        last = (x, v, b);
+    })?;
+    Ok(match outcome {
+        Outcome::PullOff => (eps * eps, outcome),
+        Outcome::Stuck => {
+            let (_, v, b) = last;
+            (2.0 * (0.5 * v * v + sys.potential(b) - sys.u_c), outcome)
+        }
+        Outcome::Overdamped => (0.0, outcome),
+    })
+}
+
 impl Dynamic {
     /// The constants of a scene; `work_of_adhesion` is `adhesion.surface_energy` (0 without
     /// adhesion), `end` the scene's `adhesion.jkr_end`.
@@ -537,6 +562,28 @@ impl Dynamic {
             xi_max: x_max * xi_star,
             rhs_evaluations: n,
         })
+    }
+
+    /// ε_N and how the collision ended at impact speed `g` \[m/s\]: from the tables of the
+    /// dimensionless master surface at `resolution` where they apply
+    /// ([`crate::models::brilliantov2007_master`]), else by [`Dynamic::collide`] at `rtol`.
+    pub fn eps_tabulated(
+        &self,
+        g: f64,
+        resolution: crate::master::Resolution,
+        rtol: f64,
+    ) -> Result<(f64, Outcome)> {
+        let g = Self::check_speed(g)?;
+        let (delta, kappa) = self.parameters(g);
+        use crate::models::brilliantov2007_master::{Lookup, lookup};
+        match lookup(delta, kappa, self.end, resolution) {
+            Lookup::PullOff(eps) => Ok((eps, Outcome::PullOff)),
+            Lookup::Stuck => Ok((0.0, Outcome::Stuck)),
+            Lookup::Live => {
+                let c = self.collide(g, rtol)?;
+                Ok((c.eps, c.outcome))
+            }
+        }
     }
 
     /// The critical aggregation speed: impacts slower than `g_cr` \[m/s\] stick
