@@ -213,6 +213,24 @@ impl Table {
         if !(r < 1.0 - LOW_BAND) {
             return Lookup::Live;
         }
+        let eps0 = crate::master::eps(delta, ContactEnd::ZeroOverlap, resolution);
+        // Without adhesion H ≡ 1 by definition: the surface is the master curve itself (exactly 1
+        // in the elastic limit, where the series would carry its ~1e-12 of fitting noise).
+        let h = if kappa == 0.0 {
+            1.0
+        } else {
+            self.quotient(seg, t, r, resolution)
+        };
+        let eps = eps0 * crate::math::sqrt(1.0 - r) * h;
+        if !(EPS_FLOOR..=1.0).contains(&eps) {
+            return Lookup::Live;
+        }
+        Lookup::PullOff(eps)
+    }
+
+    /// The series of `H` at δ segment `seg` (variable `t`) and `r = κ/κ_cr`.
+    #[inline]
+    fn quotient(&self, seg: usize, t: f64, r: f64, resolution: Resolution) -> f64 {
         let (ys, ty) = y_cell(r);
         let n = match resolution {
             Resolution::Fine => DEGREE,
@@ -225,13 +243,7 @@ impl Table {
             b2 = b1;
             b1 = b0;
         }
-        let h = clenshaw(&cell[0][..n], ty) + t * b1 - b2;
-        let eps0 = crate::master::eps(delta, ContactEnd::ZeroOverlap, resolution);
-        let eps = eps0 * crate::math::sqrt(1.0 - r) * h;
-        if !(EPS_FLOOR..=1.0).contains(&eps) {
-            return Lookup::Live;
-        }
-        Lookup::PullOff(eps)
+        clenshaw(&cell[0][..n], ty) + t * b1 - b2
     }
 }
 
@@ -683,6 +695,34 @@ mod tests {
                         );
                     }
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn without_adhesion_the_surface_is_the_master_curve() {
+        // κ = 0 is the paper's model with the zero-overlap end: the master curve itself, exactly 1
+        // in the elastic limit, and within 1e-10 of a live integration of the JKR model at κ = 0.
+        for end in [JkrEnd::Neck, JkrEnd::PullOffForce] {
+            assert_eq!(
+                lookup(0.0, 0.0, end, Resolution::Fine),
+                Lookup::PullOff(1.0)
+            );
+            assert_eq!(
+                lookup(1e-40, 0.0, end, Resolution::Coarse),
+                Lookup::PullOff(1.0)
+            );
+            for delta in [3e-4, 0.02, 0.5, 2.2, 9.0] {
+                let Lookup::PullOff(eps) = lookup(delta, 0.0, end, Resolution::Fine) else {
+                    panic!("δ={delta}: not a pull-off");
+                };
+                let master = crate::master::eps(delta, ContactEnd::ZeroOverlap, Resolution::Fine);
+                assert_eq!(eps, master);
+                let live = energy_margin(delta, 0.0, end, 1e-14).unwrap().0.sqrt();
+                assert!(
+                    (eps / live - 1.0).abs() < PRECISE_BOUND,
+                    "δ={delta}: {eps} vs {live}"
+                );
             }
         }
     }
