@@ -6,9 +6,9 @@
 //! 051302, as built in [`super::brilliantov2007`] (docs/physics.md#model-brilliantov2007), depends
 //! on δ and κ alone, per end of contact. The sticking boundary κ_cr(δ) splits the plane: below it
 //! the neck breaks (pull-off), above it the grains are caught. The rebound energy ε² goes through
-//! zero linearly at the boundary ([`energy_margin`]), but not smoothly: the last stretch before the
-//! end of contact, where the grains barely move, adds a loss ∝ ε³, so ε is a smooth function of
-//! `w = √(1 − r)`, `r = κ/κ_cr(δ)`, not of `r`. Near κ = 0 the surface is a series in κ^(1/3) (the
+//! zero linearly at the boundary ([its energy margin](super::brilliantov2007::energy_margin)), but
+//! not smoothly: the last stretch before the end of contact, where the grains barely move, adds a
+//! loss ∝ ε³, so ε is a smooth function of `w = √(1 − r)`, `r = κ/κ_cr(δ)`, not of `r`. Near κ = 0 the surface is a series in κ^(1/3) (the
 //! contact forms at `b = κ^(2/3)`, the hysteresis grows as κ^(10/3)). So the tables store, per end of
 //! contact,
 //!
@@ -32,6 +32,7 @@
 //! from the live integrator at relative tolerance [`GENERATION_RTOL`] (κ_cr by bisection on the
 //! live outcome).
 
+#[cfg(feature = "std")]
 use super::brilliantov2007::{Outcome, energy_margin};
 use crate::master::Resolution;
 use crate::math::{cbrt, exp, log10, powf};
