@@ -598,6 +598,43 @@ impl Dynamic {
     /// (`ε_N ∝ δ⁻⁵ ∝ 1/g`, docs/physics.md#decision-2), so when that constant rebound cannot pay
     /// the hysteresis `W`, no impact speed separates the grains (docs/physics.md#model-brilliantov2007).
     pub fn critical_speed(&self, m_eff: f64, rtol: f64) -> Result<Option<Sticking>> {
+        self.critical_speed_with(m_eff, |g| {
+            let c = self.collide(g, rtol)?;
+            Ok(match c.outcome {
+                Outcome::Stuck => Some(true),
+                Outcome::PullOff => Some(false),
+                Outcome::Overdamped => None,
+            })
+        })
+    }
+
+    /// [`Dynamic::critical_speed`] with the sticking decided by the tables' boundary κ_cr(δ)
+    /// ([`crate::models::brilliantov2007_master`]: stuck where κ > κ_cr) wherever δ lies in them,
+    /// and by a live collision at `rtol` elsewhere. The same bracket and bisection to relative 1e-10;
+    /// on the boundary's table, without integration (docs/physics.md#brilliantov2007-tables).
+    pub fn critical_speed_tabulated(&self, m_eff: f64, rtol: f64) -> Result<Option<Sticking>> {
+        let table = crate::models::brilliantov2007_master::table(self.end);
+        self.critical_speed_with(m_eff, |g| {
+            let (delta, kappa) = self.parameters(g);
+            if let Some(kappa_cr) = table.critical_kappa(delta) {
+                return Ok(Some(kappa > kappa_cr));
+            }
+            let c = self.collide(g, rtol)?;
+            Ok(match c.outcome {
+                Outcome::Stuck => Some(true),
+                Outcome::PullOff => Some(false),
+                Outcome::Overdamped => None,
+            })
+        })
+    }
+
+    /// The bracket and bisection of [`Dynamic::critical_speed`] with `stuck(g)`: whether an impact
+    /// at `g` sticks (`None`: undecided, overdamped).
+    fn critical_speed_with(
+        &self,
+        m_eff: f64,
+        stuck: impl Fn(f64) -> Result<Option<bool>>,
+    ) -> Result<Option<Sticking>> {
         if self.work_of_adhesion == 0.0 {
             return Ok(None);
         }
@@ -609,14 +646,6 @@ impl Dynamic {
         if !(estimate < MAX_SPEED) {
             return Ok(Some(Sticking::Always));
         }
-        let stuck = |g: f64| -> Result<Option<bool>> {
-            let c = self.collide(g, rtol)?;
-            Ok(match c.outcome {
-                Outcome::Stuck => Some(true),
-                Outcome::PullOff => Some(false),
-                Outcome::Overdamped => None,
-            })
-        };
         let (mut lo, mut hi) = (estimate, estimate);
         loop {
             match stuck(hi)? {

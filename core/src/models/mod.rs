@@ -359,7 +359,15 @@ impl Evaluator {
             }
             Model::Brilliantov2007 => {
                 let d = self.dynamic.ok_or(Error::UnknownParameter)?;
-                match d.critical_speed(self.contact.m_eff, accuracy.integrator_rtol())? {
+                let (m_eff, rtol) = (self.contact.m_eff, accuracy.integrator_rtol());
+                // fast and precise find g_cr on the tables' sticking boundary (where they reach).
+                let sticking = match accuracy {
+                    Accuracy::Fast | Accuracy::Precise => {
+                        d.critical_speed_tabulated(m_eff, rtol)?
+                    }
+                    Accuracy::Balanced | Accuracy::Tolerance(_) => d.critical_speed(m_eff, rtol)?,
+                };
+                match sticking {
                     Some(brilliantov2007::Sticking::Below(g)) => out.push("g_cr", g),
                     Some(brilliantov2007::Sticking::Always) => {
                         out.push_status("g_cr", f64::INFINITY, SpeedStatus::AlwaysSticks);
