@@ -459,12 +459,12 @@ fn integrate(
 /// The rebound energy margin `F` of the dimensionless collision and how it ended: for a pull-off,
 /// `F = ε²` (twice the energy left at the end of contact, `E(x_c) − U(b_c) = ε²/2`); for grains
 /// caught before the end, `F = 2 (E_turn − U(b_c)) < 0`, with `E_turn = U(b)` where they stop
-/// separating. Both sides are the same smooth function of `(δ, κ)`: near the sticking boundary
-/// the turning point `x_turn` moves linearly through `x_c`, and `F ≈ −2 U'(x_c) (x_c − x_turn)`
-/// on either side (the damping's share vanishes there with `v²`), so `F` crosses zero linearly
-/// where ε_N drops to 0. The tables of [`crate::models::brilliantov2007_master`] store `F`.
-/// Grains that never turn (overdamped creep onto the JKR equilibrium) give the margin at the last
-/// point followed, which is not on that smooth surface; the tables' generator rejects such cells.
+/// separating. Near the sticking boundary the turning point `x_turn` moves linearly through `x_c`
+/// and `F ≈ −2 U'(x_c) (x_c − x_turn)` on either side, so `F` crosses zero linearly where ε_N drops
+/// to 0; it is not smooth there (with damping the last stretch before the end adds a loss ∝ ε³), and
+/// grains that never turn (overdamped creep onto the JKR equilibrium) give the margin at the last
+/// point followed. The tables of [`crate::models::brilliantov2007_master`] use the pull-off side
+/// (`ε = √F`) and the outcome (for κ_cr), docs/physics.md#brilliantov2007-tables.
 pub fn energy_margin(delta: f64, kappa: f64, end: JkrEnd, rtol: f64) -> Result<(f64, Outcome)> {
     let sys = System::new(delta, kappa, end);
     let mut last = (0.0, 1.0, sys.radius(0.0));
