@@ -10,13 +10,15 @@ use crate::error::{Error, Result};
 /// (issue 12: the old default integrated every contact, 100× slower at a 1e4 times looser bound).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum Accuracy {
-    /// `fast`: the coarse table of the master curve ([`crate::master`]): relative error ≤ 1e-6.
+    /// `fast`: the coarse table of the master curve ([`crate::master`]; brilliantov2007: of its own
+    /// master surface, [`crate::models::brilliantov2007_master`]): relative error ≤ 1e-6.
     Fast,
     /// `integrated` (formerly `balanced`, still accepted): integrates every contact with adaptive
     /// Dormand–Prince at a moderate tolerance, relative error ≤ 1e-6. The slowest level; it checks
     /// the tables and serves contacts they do not cover.
     Balanced,
-    /// `precise`: the fine table of the master curve, relative error ≤ 1e-10 (the default).
+    /// `precise`: the fine table of the master curve (brilliantov2007: of its own master surface),
+    /// relative error ≤ 1e-10 (the default).
     #[default]
     Precise,
     /// Adaptive Dormand–Prince with this relative tolerance (parsed from `[1e-11, 1e-2]`: tighter

@@ -1136,3 +1136,134 @@ fn issue_25_paper_model_g_cr_always_sticks_on_micron_grains() {
     assert_eq!(below.eps, 0.0);
     assert!(above.eps > 0.0, "{above:?}");
 }
+
+/// Issue 26: brilliantov2007 at `fast` and `precise` reads the tables of its dimensionless master
+/// surface; over every preset (as it is, and with ice-sticky's adhesion at each JKR end), A 1e-9…1e-2 s
+/// and g 1e-12…1e6 m/s it gives the status of live integration at the tightest tolerance
+/// (`Tolerance(1e-11)`, integrator rtol 1e-14: an independent path) and ε_N within the documented
+/// bounds where ε_N ≥ 1e-6 (`ERROR_BOUND_DOMAIN`; docs/physics.md#brilliantov2007-tables), and
+/// within the tables' measured bound below it at `precise`.
+#[test]
+fn issue_26_brilliantov2007_tables_agree_with_live_integration() {
+    use rime_core::JkrEnd;
+    use rime_core::accuracy::ERROR_BOUND_DOMAIN;
+    use rime_core::models::brilliantov2007_master::{
+        FAST_BOUND, PRECISE_BOUND, PRECISE_BOUND_TINY,
+    };
+    use rime_core::models::{Evaluator, Model};
+    let times = [1e-9, 1e-6, 1e-4, 1e-3, 1e-2];
+    let speeds = [1e-12, 1e-9, 1e-6, 1e-4, 1e-2, 1.0, 1e2, 1e4, 1e6];
+    let sticky = Preset::IceSticky.scene().adhesion;
+    let variants = [
+        None,
+        sticky.map(|a| rime_core::Adhesion {
+            jkr_end: JkrEnd::Neck,
+            ..a
+        }),
+        sticky.map(|a| rime_core::Adhesion {
+            jkr_end: JkrEnd::PullOffForce,
+            ..a
+        }),
+    ];
+    for (adhesion, a) in variants
+        .into_iter()
+        .flat_map(|v| times.into_iter().map(move |a| (v, a)))
+    {
+        let mut scene = Preset::Ice.scene();
+        scene.adhesion = adhesion;
+        scene.bulk.damping = Damping::Time(a);
+        let ev = Evaluator::new(Model::Brilliantov2007, &scene).unwrap();
+        for g in speeds {
+            let live = ev.eps(g, Accuracy::Tolerance(1e-11)).unwrap();
+            for (level, bound) in [
+                (Accuracy::Precise, PRECISE_BOUND),
+                (Accuracy::Fast, FAST_BOUND),
+            ] {
+                let r = ev.eps(g, level).unwrap();
+                let what = format!("{adhesion:?} A={a} g={g} {}", level.name());
+                assert_eq!(r.status, live.status, "{what}");
+                if live.eps >= ERROR_BOUND_DOMAIN {
+                    let error = rel(r.eps, live.eps);
+                    assert!(error <= bound, "{what}: {} vs {}", r.eps, live.eps);
+                } else if live.eps > 0.0 && level == Accuracy::Precise {
+                    // Below 1e-6 no level claims a bound; the tables' measured one is checked.
+                    let error = rel(r.eps, live.eps);
+                    assert!(
+                        error <= PRECISE_BOUND_TINY,
+                        "{what}: {} vs {}",
+                        r.eps,
+                        live.eps
+                    );
+                } else if live.eps == 0.0 {
+                    assert_eq!(r.eps, 0.0, "{what}");
+                }
+            }
+        }
+    }
+}
+
+/// Issue 26: the tables' sticking boundary κ_cr(δ) is where the live bisection in speed puts g_cr
+/// (`Dynamic::critical_speed`, an independent path: bisection in g on live collisions, relative
+/// 1e-10, i.e. 6e-11 in κ ∝ g^(−3/5)): at g_cr the scene's κ/κ_cr(δ) is 1 to 1e-9 (measured
+/// ≤ 2.4e-11), for both JKR ends and several damping times.
+#[test]
+fn issue_26_brilliantov2007_table_boundary_is_the_live_g_cr() {
+    use rime_core::JkrEnd;
+    use rime_core::models::brilliantov2007::{Dynamic, Sticking};
+    use rime_core::models::brilliantov2007_master::table;
+    for end in [JkrEnd::Neck, JkrEnd::PullOffForce] {
+        for a in [0.0, 1e-9, 1e-6, 1e-5, 1e-4, 2e-4] {
+            let mut scene = Preset::IceSticky.scene();
+            scene.bulk.damping = Damping::Time(a);
+            let c = Contact::new(&scene).unwrap();
+            let d = Dynamic::new(&c, scene.adhesion.unwrap().surface_energy, end).unwrap();
+            let Some(Sticking::Below(g_cr)) = d.critical_speed(c.m_eff, 1e-13).unwrap() else {
+                panic!("{end:?} A={a}: no finite g_cr");
+            };
+            let (delta, kappa) = d.parameters(g_cr);
+            let kappa_cr = table(end).critical_kappa(delta).unwrap();
+            assert!(
+                (kappa / kappa_cr - 1.0).abs() < 1e-9,
+                "{end:?} A={a}: g_cr = {g_cr}, δ = {delta}, κ/κ_cr = {}",
+                kappa / kappa_cr
+            );
+        }
+    }
+}
+
+/// Issue 26: at `fast` and `precise` brilliantov2007's g_cr is found on the tables' sticking boundary
+/// (same bracket and bisection, no integration where δ lies in the tables); it agrees with the live
+/// bisection at the tightest tolerance (`Tolerance(1e-11)`, integrator rtol 1e-14) to 1e-9, or in
+/// the status "always sticks", for both JKR ends and damping times across both answers.
+#[test]
+fn issue_26_brilliantov2007_g_cr_from_the_tables_matches_the_live_bisection() {
+    use rime_core::JkrEnd;
+    use rime_core::models::{Evaluator, Model};
+    for end in [JkrEnd::Neck, JkrEnd::PullOffForce] {
+        for a in [0.0, 1e-9, 1e-6, 1e-5, 1e-4, 2e-4, 2.1e-4, 1e-3] {
+            let mut scene = Preset::IceSticky.scene();
+            scene.bulk.damping = Damping::Time(a);
+            scene.adhesion = scene
+                .adhesion
+                .map(|ad| rime_core::Adhesion { jkr_end: end, ..ad });
+            let ev = Evaluator::new(Model::Brilliantov2007, &scene).unwrap();
+            let g_cr = |level| {
+                ev.characteristic_speeds(level)
+                    .unwrap()
+                    .find("g_cr")
+                    .unwrap()
+            };
+            let live = g_cr(Accuracy::Tolerance(1e-11));
+            for level in [Accuracy::Fast, Accuracy::Precise] {
+                let tabulated = g_cr(level);
+                let what = format!("{end:?} A={a} {}: {tabulated:?} vs {live:?}", level.name());
+                assert_eq!(tabulated.status, live.status, "{what}");
+                if live.value.is_finite() {
+                    assert!(rel(tabulated.value, live.value) <= 1e-9, "{what}");
+                } else {
+                    assert_eq!(tabulated.value, live.value, "{what}");
+                }
+            }
+        }
+    }
+}

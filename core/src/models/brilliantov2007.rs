@@ -456,6 +456,31 @@ fn integrate(
     }
 }
 
+/// The rebound energy margin `F` of the dimensionless collision and how it ended: for a pull-off,
+/// `F = ε²` (twice the energy left at the end of contact, `E(x_c) − U(b_c) = ε²/2`); for grains
+/// caught before the end, `F = 2 (E_turn − U(b_c)) < 0`, with `E_turn = U(b)` where they stop
+/// separating. Near the sticking boundary the turning point `x_turn` moves linearly through `x_c`
+/// and `F ≈ −2 U'(x_c) (x_c − x_turn)` on either side, so `F` crosses zero linearly where ε_N drops
+/// to 0; it is not smooth there (with damping the last stretch before the end adds a loss ∝ ε³), and
+/// grains that never turn (overdamped creep onto the JKR equilibrium) give the margin at the last
+/// point followed. The tables of [`crate::models::brilliantov2007_master`] use the pull-off side
+/// (`ε = √F`) and the outcome (for κ_cr), docs/physics.md#brilliantov2007-tables.
+pub fn energy_margin(delta: f64, kappa: f64, end: JkrEnd, rtol: f64) -> Result<(f64, Outcome)> {
+    let sys = System::new(delta, kappa, end);
+    let mut last = (0.0, 1.0, sys.radius(0.0));
+    let (eps, _, _, outcome, _) = integrate(delta, kappa, end, rtol, true, |_, x, v, b| {
+        last = (x, v, b);
+    })?;
+    Ok(match outcome {
+        Outcome::PullOff => (eps * eps, outcome),
+        Outcome::Stuck => {
+            let (_, v, b) = last;
+            (2.0 * (0.5 * v * v + sys.potential(b) - sys.u_c), outcome)
+        }
+        Outcome::Overdamped => (0.0, outcome),
+    })
+}
+
 impl Dynamic {
     /// The constants of a scene; `work_of_adhesion` is `adhesion.surface_energy` (0 without
     /// adhesion), `end` the scene's `adhesion.jkr_end`.
@@ -539,6 +564,28 @@ impl Dynamic {
         })
     }
 
+    /// ε_N and how the collision ended at impact speed `g` \[m/s\]: from the tables of the
+    /// dimensionless master surface at `resolution` where they apply
+    /// ([`crate::models::brilliantov2007_master`]), else by [`Dynamic::collide`] at `rtol`.
+    pub fn eps_tabulated(
+        &self,
+        g: f64,
+        resolution: crate::master::Resolution,
+        rtol: f64,
+    ) -> Result<(f64, Outcome)> {
+        let g = Self::check_speed(g)?;
+        let (delta, kappa) = self.parameters(g);
+        use crate::models::brilliantov2007_master::{Lookup, lookup};
+        match lookup(delta, kappa, self.end, resolution) {
+            Lookup::PullOff(eps) => Ok((eps, Outcome::PullOff)),
+            Lookup::Stuck => Ok((0.0, Outcome::Stuck)),
+            Lookup::Live => {
+                let c = self.collide(g, rtol)?;
+                Ok((c.eps, c.outcome))
+            }
+        }
+    }
+
     /// The critical aggregation speed: impacts slower than `g_cr` \[m/s\] stick
     /// ([`Sticking::Below`]), or the grains stick at every speed the model accepts, up to
     /// [`MAX_SPEED`] ([`Sticking::Always`]). `None` without adhesion, or where the search meets a
@@ -551,6 +598,43 @@ impl Dynamic {
     /// (`ε_N ∝ δ⁻⁵ ∝ 1/g`, docs/physics.md#decision-2), so when that constant rebound cannot pay
     /// the hysteresis `W`, no impact speed separates the grains (docs/physics.md#model-brilliantov2007).
     pub fn critical_speed(&self, m_eff: f64, rtol: f64) -> Result<Option<Sticking>> {
+        self.critical_speed_with(m_eff, |g| {
+            let c = self.collide(g, rtol)?;
+            Ok(match c.outcome {
+                Outcome::Stuck => Some(true),
+                Outcome::PullOff => Some(false),
+                Outcome::Overdamped => None,
+            })
+        })
+    }
+
+    /// [`Dynamic::critical_speed`] with the sticking decided by the tables' boundary κ_cr(δ)
+    /// ([`crate::models::brilliantov2007_master`]: stuck where κ > κ_cr) wherever δ lies in them,
+    /// and by a live collision at `rtol` elsewhere. The same bracket and bisection to relative 1e-10;
+    /// on the boundary's table, without integration (docs/physics.md#brilliantov2007-tables).
+    pub fn critical_speed_tabulated(&self, m_eff: f64, rtol: f64) -> Result<Option<Sticking>> {
+        let table = crate::models::brilliantov2007_master::table(self.end);
+        self.critical_speed_with(m_eff, |g| {
+            let (delta, kappa) = self.parameters(g);
+            if let Some(kappa_cr) = table.critical_kappa(delta) {
+                return Ok(Some(kappa > kappa_cr));
+            }
+            let c = self.collide(g, rtol)?;
+            Ok(match c.outcome {
+                Outcome::Stuck => Some(true),
+                Outcome::PullOff => Some(false),
+                Outcome::Overdamped => None,
+            })
+        })
+    }
+
+    /// The bracket and bisection of [`Dynamic::critical_speed`] with `stuck(g)`: whether an impact
+    /// at `g` sticks (`None`: undecided, overdamped).
+    fn critical_speed_with(
+        &self,
+        m_eff: f64,
+        stuck: impl Fn(f64) -> Result<Option<bool>>,
+    ) -> Result<Option<Sticking>> {
         if self.work_of_adhesion == 0.0 {
             return Ok(None);
         }
@@ -562,14 +646,6 @@ impl Dynamic {
         if !(estimate < MAX_SPEED) {
             return Ok(Some(Sticking::Always));
         }
-        let stuck = |g: f64| -> Result<Option<bool>> {
-            let c = self.collide(g, rtol)?;
-            Ok(match c.outcome {
-                Outcome::Stuck => Some(true),
-                Outcome::PullOff => Some(false),
-                Outcome::Overdamped => None,
-            })
-        };
         let (mut lo, mut hi) = (estimate, estimate);
         loop {
             match stuck(hi)? {

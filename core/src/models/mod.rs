@@ -6,11 +6,17 @@
 
 pub mod approximants;
 pub mod brilliantov2007;
+pub mod brilliantov2007_master;
+// Generated (`generate_brilliantov_table`): long literals, no docs of its own.
+#[allow(clippy::all, missing_docs)]
+#[rustfmt::skip]
+mod brilliantov2007_table;
 pub mod thornton1997;
 
 use crate::accuracy::Accuracy;
 use crate::contact::Contact;
 use crate::error::{Error, Result};
+use crate::master::Resolution;
 use crate::normal::Status;
 use crate::scene::Scene;
 
@@ -278,9 +284,20 @@ impl Evaluator {
             }
             Model::Brilliantov2007 => {
                 let d = self.dynamic.ok_or(Error::UnknownParameter)?;
-                let c = d.collide(g, accuracy.integrator_rtol())?;
-                match c.outcome {
-                    brilliantov2007::Outcome::PullOff => rebound(c.eps),
+                // fast and precise read the tables of the dimensionless master surface (where
+                // they apply); integrated and explicit tolerances integrate every collision (they
+                // are the check on the tables).
+                let rtol = accuracy.integrator_rtol();
+                let (eps, outcome) = match accuracy {
+                    Accuracy::Fast => d.eps_tabulated(g, Resolution::Coarse, rtol)?,
+                    Accuracy::Precise => d.eps_tabulated(g, Resolution::Fine, rtol)?,
+                    Accuracy::Balanced | Accuracy::Tolerance(_) => {
+                        let c = d.collide(g, rtol)?;
+                        (c.eps, c.outcome)
+                    }
+                };
+                match outcome {
+                    brilliantov2007::Outcome::PullOff => rebound(eps),
                     brilliantov2007::Outcome::Stuck => ModelResult {
                         eps: 0.0,
                         status: ModelStatus::StuckByAdhesion,
@@ -342,7 +359,15 @@ impl Evaluator {
             }
             Model::Brilliantov2007 => {
                 let d = self.dynamic.ok_or(Error::UnknownParameter)?;
-                match d.critical_speed(self.contact.m_eff, accuracy.integrator_rtol())? {
+                let (m_eff, rtol) = (self.contact.m_eff, accuracy.integrator_rtol());
+                // fast and precise find g_cr on the tables' sticking boundary (where they reach).
+                let sticking = match accuracy {
+                    Accuracy::Fast | Accuracy::Precise => {
+                        d.critical_speed_tabulated(m_eff, rtol)?
+                    }
+                    Accuracy::Balanced | Accuracy::Tolerance(_) => d.critical_speed(m_eff, rtol)?,
+                };
+                match sticking {
                     Some(brilliantov2007::Sticking::Below(g)) => out.push("g_cr", g),
                     Some(brilliantov2007::Sticking::Always) => {
                         out.push_status("g_cr", f64::INFINITY, SpeedStatus::AlwaysSticks);
