@@ -23,6 +23,15 @@ pub trait OdeSystem<const N: usize, const M: usize> {
         let _ = which;
         Direction::Either
     }
+    /// The scale against which the local error of component `i` is measured on a step from `y` to
+    /// `y_new` (the step is accepted where the RMS over the components of error/scale is ≤ 1).
+    /// The default is the usual mixed scale `atol[i] + rtol·max(|y[i]|, |y_new[i]|)` (\[2\]
+    /// §II.4); a system overrides it for a component whose needed accuracy is not relative to its
+    /// own size (the viscoelastic contact's decaying total force).
+    #[inline]
+    fn error_scale(&self, i: usize, y: &[f64; N], y_new: &[f64; N], tol: &Tolerances<N>) -> f64 {
+        tol.atol[i] + tol.rtol * y[i].abs().max(y_new[i].abs())
+    }
 }
 
 /// Sign-change direction of an event function.
@@ -277,7 +286,7 @@ impl<const N: usize, const M: usize> Dopri5<N, M> {
         // h = 0.01 ‖y‖/‖f‖ ([2] §II.4), never larger than the current step.
         let (mut d0, mut d1) = (0.0, 0.0);
         for i in 0..N {
-            let sc = self.tol.atol[i] + self.tol.rtol * y[i].abs();
+            let sc = sys.error_scale(i, &y, &y, &self.tol);
             d0 += (y[i] / sc) * (y[i] / sc);
             d1 += (self.f[i] / sc) * (self.f[i] / sc);
         }
@@ -391,7 +400,7 @@ impl<const N: usize, const M: usize> Dopri5<N, M> {
             for i in 0..N {
                 let e = h
                     * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i]);
-                let sc = self.tol.atol[i] + self.tol.rtol * y[i].abs().max(y_new[i].abs());
+                let sc = sys.error_scale(i, y, &y_new, &self.tol);
                 let r = e / sc;
                 sum += r * r;
                 finite &= y_new[i].is_finite();
