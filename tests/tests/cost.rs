@@ -92,7 +92,7 @@ fn a_stick_map_evaluates_the_normal_law_once_per_grid_speed() {
 /// ~(10/3) ln δ e-foldings before it vanishes, and measuring its error against the accuracy the
 /// end of contact needs (not relative to itself all the way down) keeps a contact to a few
 /// thousand evaluations up to δ = 1e12 (it was 9 067 at δ = 1e6 and 10 063 at 1e7, at rtol 1e-11,
-/// and from δ ≈ 1e8 on no budget sufficed). Counted, not timed; the accuracy is checked against
+/// and from δ ≈ 1e9 on no budget sufficed). Counted, not timed; the accuracy is checked against
 /// the references by `integrated_level_resolves_strong_damping_issue_26`.
 #[test]
 fn overdamped_contacts_cost_a_few_thousand_evaluations_issue_26() {

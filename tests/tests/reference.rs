@@ -278,7 +278,7 @@ fn force_zero_duration_grows_with_ln_delta_up_to_1e12_issue_22() {
 /// and x_max meet the level's bound, 1e-6, even where ε_N < 1e-6 (where only the magnitude is
 /// promised); so does the preset `ice-paper-viscosities` itself at speeds where its δ is a
 /// reference row. Until issue 26 this regime cost 9 000 evaluations per contact at δ = 1e6 (rtol
-/// 1e-11), s_c was off by 1.7e-3 at δ = 1e7, and from δ ≈ 1e8 on the integration ran out of steps.
+/// 1e-11), s_c was off by 3.9e-6 at δ = 1e7, and from δ ≈ 1e9 on the integration ran out of steps.
 #[test]
 fn integrated_level_resolves_strong_damping_issue_26() {
     let rtol = Accuracy::Balanced.integrator_rtol();
