@@ -617,6 +617,58 @@ mod tests {
         assert!((s.y()[1] + libm::sin(10.0)).abs() < 1e-10);
     }
 
+    /// The oscillator with every component's error measured against `factor` times the usual scale.
+    struct Scaled(f64);
+    impl OdeSystem<2, 1> for Scaled {
+        fn rhs(&self, t: f64, y: &[f64; 2], dydt: &mut [f64; 2]) {
+            Oscillator.rhs(t, y, dydt);
+        }
+        fn events(&self, t: f64, y: &[f64; 2], out: &mut [f64; 1]) {
+            Oscillator.events(t, y, out);
+        }
+        fn error_scale(
+            &self,
+            i: usize,
+            y: &[f64; 2],
+            y_new: &[f64; 2],
+            tol: &Tolerances<2>,
+        ) -> f64 {
+            self.0 * (tol.atol[i] + tol.rtol * y[i].abs().max(y_new[i].abs()))
+        }
+    }
+
+    #[test]
+    fn the_controller_measures_errors_against_the_systems_error_scale() {
+        let tol = Tolerances {
+            rtol: 1e-12,
+            atol: [1e-14; 2],
+            max_steps: 100_000,
+        };
+        // Error at t = 10 (against cos, −sin) and evaluations spent.
+        let run = |factor: f64| {
+            let sys = Scaled(factor);
+            let mut s = Dopri5::new(&sys, 0.0, [1.0, 0.0], 10.0, 1e-3, tol, "test");
+            while s.step(&sys).unwrap() != StepOutcome::Done {}
+            let err = (s.y()[0] - libm::cos(10.0)).abs() + (s.y()[1] + libm::sin(10.0)).abs();
+            (err, s.rhs_evaluations())
+        };
+        let (err_usual, evals_usual) = run(1.0);
+        // The default scale is the usual mixed one: the same steps as the plain oscillator.
+        let mut plain = Dopri5::new(&Oscillator, 0.0, [1.0, 0.0], 10.0, 1e-3, tol, "test");
+        while plain.step(&Oscillator).unwrap() != StepOutcome::Done {}
+        assert_eq!(plain.rhs_evaluations(), evals_usual);
+        // A scale 1e6 times looser is 1e6^(1/5) ≈ 16 times fewer steps and a larger error.
+        let (err_loose, evals_loose) = run(1e6);
+        assert!(
+            evals_loose * 8 < evals_usual,
+            "{evals_loose} vs {evals_usual}"
+        );
+        assert!(
+            err_loose > 100.0 * err_usual && err_loose < 1e-4,
+            "{err_loose} vs {err_usual}"
+        );
+    }
+
     #[test]
     fn rk4_is_fourth_order() {
         let err = |n: usize| {
