@@ -97,8 +97,8 @@ struct Viscoelastic {
 ///   r/(1.5 δ √x) in s, a relative error of about r/(3 ln δ) in s_c: r = [`FORCE_TAIL_RTOL_FACTOR`]
 ///   · rtol keeps s_c within about the level's bound.
 ///
-/// The scale is the tighter of the two (both hold), and never below a tenth of that relative
-/// tolerance of the slow manifold's |h| (nor the usual absolute floor, whichever is smaller).
+/// The scale is the tighter of the two (both hold), floored at the smaller of the usual absolute
+/// tolerance and a tenth of r times the slow manifold's |h|.
 /// Measured against the independent references (`tests/data/viscoelastic.csv`,
 /// `tests/data/strong_damping.csv`) by test `integrated_level_resolves_strong_damping_issue_26`.
 #[derive(Debug, Clone, Copy)]
