@@ -23,6 +23,15 @@ pub trait OdeSystem<const N: usize, const M: usize> {
         let _ = which;
         Direction::Either
     }
+    /// The scale against which the local error of component `i` is measured on a step from `y` to
+    /// `y_new` (the step is accepted where the RMS over the components of error/scale is ≤ 1).
+    /// The default is the usual mixed scale `atol[i] + rtol·max(|y[i]|, |y_new[i]|)` (\[2\]
+    /// §II.4); a system overrides it for a component whose needed accuracy is not relative to its
+    /// own size (the viscoelastic contact's decaying total force).
+    #[inline]
+    fn error_scale(&self, i: usize, y: &[f64; N], y_new: &[f64; N], tol: &Tolerances<N>) -> f64 {
+        tol.atol[i] + tol.rtol * y[i].abs().max(y_new[i].abs())
+    }
 }
 
 /// Sign-change direction of an event function.
@@ -277,7 +286,7 @@ impl<const N: usize, const M: usize> Dopri5<N, M> {
         // h = 0.01 ‖y‖/‖f‖ ([2] §II.4), never larger than the current step.
         let (mut d0, mut d1) = (0.0, 0.0);
         for i in 0..N {
-            let sc = self.tol.atol[i] + self.tol.rtol * y[i].abs();
+            let sc = sys.error_scale(i, &y, &y, &self.tol);
             d0 += (y[i] / sc) * (y[i] / sc);
             d1 += (self.f[i] / sc) * (self.f[i] / sc);
         }
@@ -391,7 +400,7 @@ impl<const N: usize, const M: usize> Dopri5<N, M> {
             for i in 0..N {
                 let e = h
                     * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i]);
-                let sc = self.tol.atol[i] + self.tol.rtol * y[i].abs().max(y_new[i].abs());
+                let sc = sys.error_scale(i, y, &y_new, &self.tol);
                 let r = e / sc;
                 sum += r * r;
                 finite &= y_new[i].is_finite();
@@ -606,6 +615,58 @@ mod tests {
         assert!((y[1] + 1.0).abs() < 1e-10);
         assert!((s.y()[0] - libm::cos(10.0)).abs() < 1e-10);
         assert!((s.y()[1] + libm::sin(10.0)).abs() < 1e-10);
+    }
+
+    /// The oscillator with every component's error measured against `factor` times the usual scale.
+    struct Scaled(f64);
+    impl OdeSystem<2, 1> for Scaled {
+        fn rhs(&self, t: f64, y: &[f64; 2], dydt: &mut [f64; 2]) {
+            Oscillator.rhs(t, y, dydt);
+        }
+        fn events(&self, t: f64, y: &[f64; 2], out: &mut [f64; 1]) {
+            Oscillator.events(t, y, out);
+        }
+        fn error_scale(
+            &self,
+            i: usize,
+            y: &[f64; 2],
+            y_new: &[f64; 2],
+            tol: &Tolerances<2>,
+        ) -> f64 {
+            self.0 * (tol.atol[i] + tol.rtol * y[i].abs().max(y_new[i].abs()))
+        }
+    }
+
+    #[test]
+    fn the_controller_measures_errors_against_the_systems_error_scale() {
+        let tol = Tolerances {
+            rtol: 1e-12,
+            atol: [1e-14; 2],
+            max_steps: 100_000,
+        };
+        // Error at t = 10 (against cos, −sin) and evaluations spent.
+        let run = |factor: f64| {
+            let sys = Scaled(factor);
+            let mut s = Dopri5::new(&sys, 0.0, [1.0, 0.0], 10.0, 1e-3, tol, "test");
+            while s.step(&sys).unwrap() != StepOutcome::Done {}
+            let err = (s.y()[0] - libm::cos(10.0)).abs() + (s.y()[1] + libm::sin(10.0)).abs();
+            (err, s.rhs_evaluations())
+        };
+        let (err_usual, evals_usual) = run(1.0);
+        // The default scale is the usual mixed one: the same steps as the plain oscillator.
+        let mut plain = Dopri5::new(&Oscillator, 0.0, [1.0, 0.0], 10.0, 1e-3, tol, "test");
+        while plain.step(&Oscillator).unwrap() != StepOutcome::Done {}
+        assert_eq!(plain.rhs_evaluations(), evals_usual);
+        // A scale 1e6 times looser is 1e6^(1/5) ≈ 16 times fewer steps and a larger error.
+        let (err_loose, evals_loose) = run(1e6);
+        assert!(
+            evals_loose * 8 < evals_usual,
+            "{evals_loose} vs {evals_usual}"
+        );
+        assert!(
+            err_loose > 100.0 * err_usual && err_loose < 1e-4,
+            "{err_loose} vs {err_usual}"
+        );
     }
 
     #[test]

@@ -125,7 +125,8 @@ def richardson(a_h, a_h2, a_h4):
 
 
 def main():
-    exponents = [3, 4, 5, 6, 7, '7.5', 8, 9, 10, 11, 12]
+    # 5.5 … 6.75 (issue 26): the range of the paper's viscosities, which `integrated` integrates live.
+    exponents = [3, 4, 5, '5.5', 6, '6.25', '6.5', '6.75', 7, '7.5', 8, 9, 10, 11, 12]
     h = mpf('0.02')
     rows = []
     worst = 0

@@ -87,3 +87,28 @@ fn a_stick_map_evaluates_the_normal_law_once_per_grid_speed() {
     assert_eq!(map.rhs_evaluations, per_speed);
     assert_eq!(map.class.len(), n * n);
 }
+
+/// The integrated level on strongly damped contacts (issue 26): the force falls through
+/// ~(10/3) ln δ e-foldings before it vanishes, and measuring its error against the accuracy the
+/// end of contact needs (not relative to itself all the way down) keeps a contact to a few
+/// thousand evaluations up to δ = 1e12 (it was 9 067 at δ = 1e6 and 10 063 at 1e7, at rtol 1e-11,
+/// and from δ ≈ 1e9 on no budget sufficed). Counted, not timed; the accuracy is checked against
+/// the references by `integrated_level_resolves_strong_damping_issue_26`.
+#[test]
+fn overdamped_contacts_cost_a_few_thousand_evaluations_issue_26() {
+    let rtol = Accuracy::Balanced.integrator_rtol();
+    for k in 3..=12 {
+        let delta = 10f64.powi(k);
+        let r = rime_core::normal::viscoelastic::dimensionless(
+            delta,
+            rime_core::ContactEnd::ForceZero,
+            rtol,
+        )
+        .unwrap();
+        assert!(
+            r.rhs_evaluations <= 4_000,
+            "δ = {delta:e}: {} evaluations",
+            r.rhs_evaluations
+        );
+    }
+}

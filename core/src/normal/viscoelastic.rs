@@ -47,6 +47,11 @@ pub fn creep_eps(delta: f64) -> f64 {
     ZERO_OVERLAP_CREEP_COEFFICIENT / (d2 * d2 * delta)
 }
 
+/// The relative tolerance on the decayed total force, as a multiple of the integrator's rtol: the
+/// safety factor between a level's bound and its rtol ([`crate::Accuracy::integrator_rtol`]), so
+/// the contact's duration comes out to about the level's bound (see [`ForceTail`]).
+const FORCE_TAIL_RTOL_FACTOR: f64 = 1e3;
+
 /// Result of one dimensionless viscoelastic collision.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Dimensionless {
@@ -73,6 +78,35 @@ struct Viscoelastic {
     force_form: bool,
     /// Separation speed below which a creeping zero-overlap contact is abandoned (0: never).
     creep_floor: f64,
+    /// The error scale of h on its way to the force-zero end (`None`: the usual mixed scale).
+    force_tail: Option<ForceTail>,
+}
+
+/// How the error of the total force h is measured in the force form until the force vanishes
+/// (docs/physics.md#accuracy, "strong damping").
+///
+/// For strong damping h falls from 1.5 δ at the impact through ~(10/3) ln δ e-foldings to its zero
+/// (docs/physics.md#decision-2) while x stays nearly at x_max. Measured relative to itself all the
+/// way down (the usual scale), each e-folding costs ~40 steps at rtol 1e-11. What h's error does:
+/// * to x, hence ε_N = x/(1.5 δ): an error e in h is an error e/(1.5 δ) in x', which the overdamped
+///   motion forgets at the rate 1.5 δ √x; x is kept to rtol when e ≤ rtol · max(|h|, 1.5 δ/10),
+///   i.e. relative to h while it is large (the loading) and absolute once it has fallen below a
+///   tenth of its start;
+/// * to the end of contact: h crosses zero where its decaying transient meets the slow manifold's
+///   level |h| ≈ √x/(1.5 δ)², so a relative error r of the transient moves the event by
+///   r/(1.5 δ √x) in s, a relative error of about r/(3 ln δ) in s_c: r = [`FORCE_TAIL_RTOL_FACTOR`]
+///   · rtol keeps s_c within about the level's bound.
+///
+/// The scale is the tighter of the two (both hold), floored at the smaller of the usual absolute
+/// tolerance and a tenth of r times the slow manifold's |h|.
+/// Measured against the independent references (`tests/data/viscoelastic.csv`,
+/// `tests/data/strong_damping.csv`) by test `integrated_level_resolves_strong_damping_issue_26`.
+#[derive(Debug, Clone, Copy)]
+struct ForceTail {
+    /// Relative tolerance on h once it has fallen below a tenth of its start.
+    rtol: f64,
+    /// Smallest scale: at the end of contact h is of order √x/(1.5 δ)².
+    floor: f64,
 }
 
 impl Viscoelastic {
@@ -81,6 +115,7 @@ impl Viscoelastic {
             k: 1.5 * delta,
             force_form: delta > 1.0,
             creep_floor: CREEP_FLOOR,
+            force_tail: None,
         }
     }
 
@@ -137,6 +172,19 @@ impl OdeSystem<2, 4> for Viscoelastic {
         out[FORCE_ZERO] = self.force(y);
         out[OVERLAP_ZERO] = y[0];
         out[CREEP] = v + self.creep_floor;
+    }
+
+    #[inline]
+    fn error_scale(&self, i: usize, y: &[f64; 2], y_new: &[f64; 2], tol: &Tolerances<2>) -> f64 {
+        match self.force_tail {
+            Some(tail) if i == 1 => {
+                let h = y[1].abs().max(y_new[1].abs());
+                (tol.rtol * h.max(0.1 * self.k))
+                    .min(tail.rtol * h)
+                    .max(tail.floor)
+            }
+            _ => tol.atol[i] + tol.rtol * y[i].abs().max(y_new[i].abs()),
+        }
     }
 
     fn direction(&self, which: usize) -> Direction {
@@ -228,14 +276,10 @@ fn integrate(
             expected: "must be a finite number >= 0",
         });
     }
-    let sys = Viscoelastic {
+    let mut sys = Viscoelastic {
         creep_floor,
         ..Viscoelastic::new(delta)
     };
-    // Far in the overdamped regime loose tolerances let the step-size controller wander over the
-    // long, nearly force-free tail; a tighter tolerance costs little there (measured: δ = 1e9 at
-    // rtol 1e-8 exhausts any budget, at 1e-12 it takes 19k evaluations).
-    let rtol = if delta > 1e6 { rtol.min(1e-11) } else { rtol };
     // Natural σ scale: 1 when elastic forces dominate, δ^(-1/3) when damping does.
     let sigma_scale = if delta > 1.0 {
         powf(delta, -1.0 / 3.0)
@@ -254,6 +298,16 @@ fn integrate(
         atol: [rtol * 1e-3 * x_scale, w_atol],
         max_steps,
     };
+    // Only where the force-zero event ends the contact: a creeping zero-overlap contact's end
+    // ε = −x' = h/(1.5 δ) at x = 0 needs h to rtol relative to itself, as the usual scale has it.
+    let ends_at_force_zero = end == ContactEnd::ForceZero || delta > creep_delta_limit;
+    if sys.force_form && ends_at_force_zero {
+        let tail_rtol = FORCE_TAIL_RTOL_FACTOR * rtol;
+        sys.force_tail = Some(ForceTail {
+            rtol: tail_rtol,
+            floor: w_atol.min(0.1 * tail_rtol * sqrt(x_scale) / (sys.k * sys.k)),
+        });
+    }
     // A zero-overlap contact can creep for a dimensionless time of order δ.
     let sigma_end = 1e3 * (1.0 + sqrt(delta));
     let mut stepper = Dopri5::new(
