@@ -462,10 +462,11 @@ impl Contact {
         let r = viscoelastic::dimensionless_recorded(delta, self.contact_end, rtol, &mut collector);
         let r = match r {
             // Past the tables' end every level takes ε_N, t_c and ξ_max from the strong-damping
-            // asymptotes (docs/physics.md#decision-2), and the live integration of the long,
-            // nearly force-free hold before the force vanishes runs out of steps (δ ≳ 1e9): the
-            // trajectory keeps what was integrated (the loading phase, the hold's start) and is
-            // reported unresolved.
+            // asymptotes (docs/physics.md#decision-2). The live integration of the long, nearly
+            // force-free hold before the force vanishes reaches its end since the force tail's
+            // error scale (issue 26; tried up to δ = 1e100), but should it ever run out of steps
+            // the trajectory keeps what was integrated (the loading phase, the hold's start) and
+            // is reported unresolved.
             Err(Error::StepBudgetExceeded { .. } | Error::StepSizeUnderflow { .. })
                 if delta > crate::normal::DELTA_ASYMPTOTIC =>
             {
