@@ -3,11 +3,18 @@
 // opens the page on that scene and view, moves a slider (an `input` event) `RUNS` times and times,
 // inside the page, input → the preview painted (first) and input → the requested level painted
 // (final): the first animation frame after the page drew each, and counts the main thread's long
-// tasks over 50 ms meanwhile. Writes target/bench/frames-page.json: one record per case in the
-// shape of `rime bench --frames` (`surface: "page"`), plus `profile`, `long_tasks` and `max_task_ms`.
+// tasks over 50 ms meanwhile, and the main thread's busy time per frame drawn (Chromium's
+// TaskDuration metric over the edits, divided by the previews and refined frames drawn: input
+// handling, drawing, style, layout and paint of the page's thread). Writes
+// target/bench/frames-page.json (or the file of `--out`): one record per case in the shape of
+// `rime bench --frames` (`surface: "page"`), plus `profile`, `long_tasks`, `max_task_ms`,
+// `main_ms_per_frame` and `paint` (where the chart is drawn: `worker` or `main`).
 //
-// Usage: scripts/build-www.sh && scripts/setup-npm.sh && node scripts/bench-page-frames.mjs [--quick]
+// Usage: scripts/build-www.sh && scripts/setup-npm.sh && node scripts/bench-page-frames.mjs
+//   [--quick] [--profile desktop|phone] [--paint main] [--out FILE] [--runs N]
 // (serves www/ itself on a free local port; needs target/release/rime for the scenes' JSON).
+// `--paint main` forces the page's fallback (the chart drawn on the page's thread, as where a
+// browser has no OffscreenCanvas).
 import { spawn, execFileSync } from 'node:child_process';
 import { createRequire } from 'node:module';
 import fs from 'node:fs';
@@ -19,8 +26,13 @@ import { fileURLToPath } from 'node:url';
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const { chromium } = createRequire(path.join(root, 'tests', 'e2e', 'package.json'))('playwright-core');
 const rime = process.env.RIME_BIN || path.join(root, 'target', 'release', 'rime');
-const quick = process.argv.includes('--quick');
-const RUNS = quick ? 3 : 9;
+const argv = process.argv.slice(2);
+const opt = (name) => { const k = argv.indexOf(name); return k >= 0 ? argv[k + 1] : undefined; };
+const quick = argv.includes('--quick');
+const RUNS = Number(opt('--runs') || (quick ? 3 : 9));
+const paintMain = opt('--paint') === 'main';
+const onlyProfile = opt('--profile');
+const outFile = opt('--out') || path.join(root, 'target', 'bench', 'frames-page.json');
 // Hang guard per wait (the slowest frame, the literal reading at precise on the phone profile, takes
 // about 1 s): never a speed check.
 const GUARD_MS = 120000;
@@ -33,21 +45,23 @@ const SCENES = [
   { name: 'ice-sticky', scene: sceneJson(['--preset', 'ice-sticky']), overlays: [] },
   { name: 'ice, compare other models', scene: sceneJson(['--preset', 'ice']), overlays: ['model:brilliantov2007', 'model:muller_poschel2011'] },
   { name: 'ice, compare measured ice', scene: sceneJson(['--preset', 'ice']), overlays: ['atlas:bridges1984', 'atlas:hatzes1988_frost', 'atlas:supulver1995', 'atlas:heisselmann2010', 'atlas:hill2015'] },
+  // As `rime bench --frames`: a family swept over the grain radius (the page's family follows the
+  // core's default sweep; the bench picks this one through a test hook) and the paper's viscosities.
+  { name: 'ice-frost, family over R₁=R₂', scene: sceneJson(['--preset', 'ice-frost']), overlays: [], sweep: 'grains.radius' },
+  { name: "ice, the paper's viscosities", scene: sceneJson(['--preset', 'ice-paper-viscosities']), overlays: [] },
 ];
 const LEVELS = ['fast', 'precise', 'integrated'];
-const PROFILES = quick
-  ? [{ name: 'desktop', viewport: { width: 1280, height: 800 }, slowdown: 1 }]
-  : [
-      { name: 'desktop', viewport: { width: 1280, height: 800 }, slowdown: 1 },
-      { name: 'phone', viewport: { width: 375, height: 812 }, slowdown: 4, mobile: true },
-    ];
+const PROFILES = [
+  { name: 'desktop', viewport: { width: 1280, height: 800 }, slowdown: 1 },
+  { name: 'phone', viewport: { width: 375, height: 812 }, slowdown: 4, mobile: true },
+].filter((p) => (onlyProfile ? p.name === onlyProfile : !quick || p.name === 'desktop'));
 
 const freePort = () => new Promise((resolve) => {
   const s = net.createServer();
   s.listen(0, '127.0.0.1', () => { const { port } = s.address(); s.close(() => resolve(port)); });
 });
 const port = await freePort();
-const server = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', path.join(root, 'www')], { stdio: 'ignore' });
+const server = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', process.env.RIME_WWW || path.join(root, 'www')], { stdio: 'ignore' });
 process.on('exit', () => server.kill());
 await new Promise((r) => setTimeout(r, 500));
 const url = `http://127.0.0.1:${port}/`;
@@ -73,14 +87,19 @@ for (const profile of PROFILES) {
       // A fresh page per case: nothing of the previous case (its worker, its state) carries over.
       const page = await context.newPage();
       await page.setViewportSize(profile.viewport);
-      if (profile.slowdown > 1) {
-        const cdp = await context.newCDPSession(page);
-        await cdp.send('Emulation.setCPUThrottlingRate', { rate: profile.slowdown });
-      }
+      const cdp = await context.newCDPSession(page);
+      if (profile.slowdown > 1) await cdp.send('Emulation.setCPUThrottlingRate', { rate: profile.slowdown });
+      await cdp.send('Performance.enable');
       const view = { accuracy: level, overlays: sc.overlays };
-      await page.goto(`${url}#s=${encodeURIComponent(sc.scene)}&v=${encodeURIComponent(JSON.stringify(view))}`);
+      await page.goto(`${url}${paintMain ? '?paint=main' : ''}#s=${encodeURIComponent(sc.scene)}&v=${encodeURIComponent(JSON.stringify(view))}`);
       await page.waitForFunction(() => window.rimeState && window.rimeState.ready, null, { timeout: GUARD_MS });
+      if (sc.sweep) {
+        // The swept family: asked for by every edit from here on (the first one included).
+        await page.evaluate((sweep) => { window.rimeTest.sweep = sweep; }, sc.sweep);
+      }
       const loadAvg = load();
+      const taskSeconds = async () => (await cdp.send('Performance.getMetrics')).metrics.find((m) => m.name === 'TaskDuration').value;
+      const busy0 = await taskSeconds();
       const runs = [];
       for (let i = 0; i < RUNS; i++) {
         // One slider step, timed inside the page: input → the animation frame after each draw.
@@ -110,6 +129,9 @@ for (const profile of PROFILES) {
           requestAnimationFrame(tick);
         }), { guard: GUARD_MS, step: i % 2 ? -7 : 7 }));
       }
+      const busyMs = (await taskSeconds() - busy0) * 1e3;
+      const framesDrawn = runs.reduce((n, r) => n + r.previews + 1, 0);
+      const paint = await page.evaluate(() => window.rimeState.paint || 'main');
       const tasks = runs.flatMap((r) => r.tasks);
       const rec = {
         surface: 'page', scene: sc.name, level, size: `${profile.viewport.width}x${profile.viewport.height}`,
@@ -117,17 +139,17 @@ for (const profile of PROFILES) {
         first_ms: median(runs.map((r) => r.first)), final_ms: median(runs.map((r) => r.final)),
         first_each_ms: runs.map((r) => r.first), final_each_ms: runs.map((r) => r.final), previews: runs.map((r) => r.previews),
         long_tasks: tasks.filter((d) => d > 50).length, max_task_ms: tasks.length ? Math.max(...tasks) : 0,
+        main_ms_per_frame: busyMs / framesDrawn, paint,
         runs: RUNS, cores, load: loadAvg,
       };
       records.push(rec);
-      console.log(`${profile.name.padEnd(8)} ${sc.name.padEnd(34)} ${level.padEnd(10)} first ${rec.first_ms.toFixed(1).padStart(7)} ms  final ${rec.final_ms.toFixed(1).padStart(7)} ms  long tasks ${rec.long_tasks} (max ${rec.max_task_ms.toFixed(0)} ms)`);
+      console.log(`${profile.name.padEnd(8)} ${sc.name.padEnd(34)} ${level.padEnd(10)} first ${rec.first_ms.toFixed(1).padStart(7)} ms  final ${rec.final_ms.toFixed(1).padStart(7)} ms  main ${rec.main_ms_per_frame.toFixed(1).padStart(5)} ms/frame  long tasks ${rec.long_tasks} (max ${rec.max_task_ms.toFixed(0)} ms)`);
       await page.close();
     }
   }
 }
 await context.close();
-const out = path.join(root, 'target', 'bench');
-fs.mkdirSync(out, { recursive: true });
-fs.writeFileSync(path.join(out, 'frames-page.json'), JSON.stringify(records, null, 2) + '\n');
-console.log(`${cores} cores, load average ${load().toFixed(2)} at the end; wrote target/bench/frames-page.json`);
+fs.mkdirSync(path.dirname(outFile), { recursive: true });
+fs.writeFileSync(outFile, JSON.stringify(records, null, 2) + '\n');
+console.log(`${cores} cores, load average ${load().toFixed(2)} at the end; wrote ${path.relative(root, outFile)}`);
 server.kill();

@@ -4,7 +4,8 @@
 // a note in its place, the banner names the cause and the console gets the error; controls and
 // the link always show the scene actually drawn. No physics, palette, formatting or ranges here.
 import { Explorer, calls, counted, qty, speed, start } from './core.js';
-import { CollisionComputer, Computer } from './compute.js';
+import { CollisionComputer, Computer, poolSize } from './compute.js';
+import { Painter, canPaintInWorker } from './painter.js';
 import { CollisionView } from './collision.js';
 import { $, errText, linkify, median } from './dom.js';
 import { START_PRESET, app, historySize } from './state.js';
@@ -12,7 +13,7 @@ import { buildControls, edit, reflectScene, syncControls, wireToolbar, wireView 
 import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, restorePin, wireChart } from './chart.js';
 import { drawLegend, drawMapCanvas, wireMap } from './map.js';
 import { buildTidal, showTidal } from './tidal.js';
-import { buildRing, ringOverlay, showRing } from './ring.js';
+import { buildRing, ringInputs, ringOverlay, showRing } from './ring.js';
 import { buildCompare } from './compare.js';
 import { intro, showBanner, showNotice, showPartNotes, showWarnings, wireBanner } from './messages.js';
 import { loadHash, writeHash } from './url.js';
@@ -21,17 +22,32 @@ import { chartSvg, curvesCsv, familyCsv, mapCsv, mapSvg, setVersion, wireDownloa
 // Exposed for tests and curious users.
 window.rimeState = { ready: false, errors: [] };
 // Test hooks: parts of the frame to fail on purpose (see the view's `fail` in wasm/src/frame.rs),
-// a slow computation (`delayMs`), a slow refinement after the preview (`refineDelayMs`) and an
-// input landing just before a frame is drawn (`beforeFrame`).
-window.rimeTest = { fail: [], delayMs: 0, refineDelayMs: 0, beforeFrame: null };
+// a slow computation (`delayMs`), a slow refinement after the preview (`refineDelayMs`), an
+// input landing just before a frame is drawn (`beforeFrame`) and the family's swept parameter
+// (`sweep`, a path of the core's sweeps; the page offers no choice of it: the frame benchmark's
+// swept family).
+window.rimeTest = { fail: [], delayMs: 0, refineDelayMs: 0, beforeFrame: null, sweep: null };
 
 let pending = false;
 
+/** Asks for a frame once the current event is handled: the edits of one event (a preset sets many
+ *  fields) make one request, and the request leaves at once, not at the next animation frame
+ *  (issue 26: input → first frame within 16 ms). A dragged slider never queues stale work: each
+ *  worker keeps only the newest request waiting (compute.js). */
 function schedule() {
   if (pending) return;
   pending = true;
-  requestAnimationFrame(() => { pending = false; request(); });
+  queueMicrotask(() => { pending = false; request(); });
 }
+
+/** The preview's curve points and map side (issue 26): every other point and cell of the default
+ *  view's (Request::POINTS = 241, Request::MAP_N = 81), so the preview's samples are samples of the
+ *  refined frame, and a quarter of the map's cells. */
+const PREVIEW = { points: 121, mapN: 41 };
+/** A frame asked at `fast` gets a preview too when the last one took longer than this in the
+ *  worker [ms] (the literal layer reading, other models compared). */
+const PREVIEW_FAST_AFTER_MS = 8;
+let lastFastMs = 0;
 
 /** Asks the worker for the pinned curve of the link (its scene at its level and speeds), before
  *  the frame of the page: the answer becomes the pin, then the page's frame is asked for. */
@@ -57,11 +73,38 @@ function request() {
   if (window.rimeTest.fail.length) view.fail = [...window.rimeTest.fail];
   if (window.rimeTest.delayMs > 0) view.testDelayMs = window.rimeTest.delayMs;
   if (window.rimeTest.refineDelayMs > 0) view.testRefineDelayMs = window.rimeTest.refineDelayMs;
+  if (window.rimeTest.sweep) view.sweep = window.rimeTest.sweep;
   // Main-thread calls across the wasm boundary made for this request (edits since the last one).
   const page = { view: { ...v, overlays: [...v.overlays] }, tidal: app.tidalIn, t0: performance.now(), calls: calls.compute, format: calls.format };
   calls.compute = 0;
   calls.format = 0;
-  app.computer.request(app.wantScene, view, page, true);
+  const preview = v.accuracy !== 'fast' || lastFastMs > PREVIEW_FAST_AFTER_MS
+    ? { ...view, accuracy: 'fast', ...PREVIEW } : null;
+  app.computer.request(app.wantScene, view, page, preview, ringInputs());
+}
+
+/** Keeps the hover cursor and the map's chosen row on the same speeds when the next frame has
+ *  another number of samples (a preview has every other one). */
+function keepCursor(old, res) {
+  if (!old) return;
+  const i = app.hover.chart;
+  if (i !== null && i < old.g.length && old.g.length !== res.g.length) {
+    const g = old.g[i];
+    let best = 0;
+    for (let k = 1; k < res.g.length; k++) if (Math.abs(Math.log(res.g[k] / g)) < Math.abs(Math.log(res.g[best] / g))) best = k;
+    app.hover.chart = best;
+  }
+  if (old.map && res.map && old.map.n !== res.map.n) {
+    const scale = (k) => Math.round((k * (res.map.n - 1)) / (old.map.n - 1));
+    if (app.hover.map) app.hover.map = { i: scale(app.hover.map.i), j: scale(app.hover.map.j) };
+    if (app.mapRow !== null) app.mapRow = scale(app.mapRow);
+  }
+}
+
+/** Runs `fn` once the chart drawn so far is on its canvas (at once where the page draws it). */
+function afterPaint(fn) {
+  if (app.painter) app.painter.after(fn);
+  else fn();
 }
 
 /** The frame's parts as typed-array views into its two flat arrays. */
@@ -128,19 +171,22 @@ function onFrame(msg, req) {
     // the downloads.
     const res = { ...decode(msg, req.page), accuracy: 'fast' };
     const sceneChanged = !app.drawn || app.drawn.scene !== req.scene;
+    keepCursor(app.res, res);
     app.res = res;
     app.preview = true;
     app.drawn = { scene: req.scene, view: req.page.view, tidal: req.page.tidal };
     if (sceneChanged) app.mapRow = null;
-    ringOverlay(res, req.scene);
+    ringOverlay(res, msg.ring);
     draw();
     const t2 = performance.now();
     $('timing').textContent = `preview: ${qty(msg.ms / 1e3, 's', 3)} in the worker at fast, on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)} — refining to ${req.page.view.accuracy}…`;
     $('timing').classList.add('busy');
-    const s = window.rimeState;
-    s.previews = (s.previews || 0) + 1;
-    s.previewMs = t2 - req.page.t0;
-    document.body.dataset.previews = String(s.previews);
+    afterPaint(() => {
+      const s = window.rimeState;
+      s.previews = (s.previews || 0) + 1;
+      s.previewMs = performance.now() - req.page.t0;
+      document.body.dataset.previews = String(s.previews);
+    });
     return;
   }
   app.preview = false;
@@ -148,11 +194,13 @@ function onFrame(msg, req) {
   const racing = window.rimeTest.beforeFrame;
   if (racing) { window.rimeTest.beforeFrame = null; racing(); }
   const res = decode(msg, req.page);
+  if (req.page.view.accuracy === 'fast') lastFastMs = msg.ms;
   const sceneChanged = !app.drawn || app.drawn.scene !== req.scene;
+  keepCursor(app.res, res);
   app.res = res;
   app.drawn = { scene: req.scene, view: req.page.view, tidal: req.page.tidal };
   if (sceneChanged) app.mapRow = null;
-  ringOverlay(res, req.scene);
+  ringOverlay(res, msg.ring);
   const tm = [performance.now()];
   draw();
   tm.push(performance.now());
@@ -177,6 +225,11 @@ function onFrame(msg, req) {
   $('timing').textContent = `last frame: ${qty(msg.ms / 1e3, 's', 3)} in the worker (median ${qty(median(app.timings) / 1e3, 's', 3)}), on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)}, accuracy ${res.accuracy}`;
   $('timing').classList.remove('busy');
   $('busy').hidden = true;
+  afterPaint(() => publish(req, res));
+}
+
+/** The drawn frame in `window.rimeState` (tests and curious users), once it is on screen. */
+function publish(req, res) {
   const s = window.rimeState;
   const fig = res.figures[0];
   const bridges = fig.series.find((x) => /^Bridges/.test(x.name));
@@ -352,7 +405,15 @@ async function main() {
     reflectScene();
     schedule();
   });
+  if (canPaintInWorker()) {
+    app.painter = new Painter(module, $('chart'), $('chart-fg'), (e) => {
+      console.error(`rime: ${e}`);
+      window.rimeState.errors.push(e);
+    });
+  }
+  window.rimeState.paint = app.painter ? 'worker' : 'main';
   app.computer = new Computer(module, onFrame, onBusy);
+  window.rimeState.workers = poolSize();
   app.collider = new CollisionComputer(module, onCollision);
   app.wantScene = app.ex.toJson();
   showNotice(loadHash(validateTidal));
@@ -367,6 +428,14 @@ window.rimeExports = {
   chartSvg, mapSvg, curvesCsv: () => curvesCsv(), familyCsv: () => familyCsv(), mapCsv: () => mapCsv(),
   probe: (g) => probe(g, app.drawn.view.accuracy),
   speed: (v) => speed(v), qty: (v, u) => qty(v, u),
+};
+
+/** Test hook: the pixels of a canvas and of its data layer (`${id}-fg`, when it has one), as
+ *  [{width, height, data}], wherever they are drawn. */
+window.rimeTest.layers = async (id) => {
+  if (id === 'chart' && app.painter) return app.painter.pixels();
+  return [id, `${id}-fg`].map((k) => document.getElementById(k)).filter(Boolean)
+    .map((c) => ({ width: c.width, height: c.height, data: c.getContext('2d').getImageData(0, 0, c.width, c.height).data }));
 };
 
 main().catch((e) => {

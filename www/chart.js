@@ -4,13 +4,15 @@
 // lin/log y axis; zoom and pan of the speed range; a text alternative.
 import { HELP, PALETTE, qty, sig, speed } from './core.js';
 import { $, el } from './dom.js';
-import { CanvasPainter, chartGeometry, chartLegendHeight, drawChartBack, drawChartFront } from './plot.js';
+import { CanvasPainter, chartGeometry, chartLegendHeight, drawChartBack, drawChartFront, sizeElement } from './plot.js';
 import { app } from './state.js';
 
 let geom = null;
 let backKey = null;
 let backDraws = 0;
 let frontDraws = 0;
+// What the painter worker last drew (a hover alone then posts only the cursor).
+let posted = { res: null, key: null };
 
 /** What the background layer shows: size, axes, labels and the legend's entries. */
 function backgroundKey(spec, w, h) {
@@ -68,14 +70,27 @@ export function drawChartCanvas(width) {
   // slider step or a hover redraws the data layer alone (issue 26: the redraw was the main
   // thread's cost per frame).
   const back = backgroundKey(spec, w, total);
-  const front = new CanvasPainter($('chart-fg'), w, total);
-  const g = chartGeometry(front, spec);
-  if (back !== backKey) {
-    drawChartBack(new CanvasPainter(canvas, w, total), spec, g);
+  const backChanged = back !== backKey;
+  if (app.painter) {
+    // Drawn in the painter worker (issue 26): here only the layout and what to draw.
+    for (const c of [canvas, $('chart-fg')]) sizeElement(c, w, total);
+    const g = chartGeometry({ width: w, height: total }, spec);
+    const same = posted.res === res && posted.key === back && !backChanged;
+    if (same) app.painter.hover(hover);
+    else app.painter.chart(spec, w, total, backChanged);
+    posted = { res, key: back };
+    const { box, X, Y, inv, H, entries, legend } = g;
+    geom = { box, X, Y, inv, bottom: H + (entries.length ? legend.height + 6 : 0) };
+  } else {
+    const front = new CanvasPainter($('chart-fg'), w, total);
+    const g = chartGeometry(front, spec);
+    if (backChanged) drawChartBack(new CanvasPainter(canvas, w, total), spec, g);
+    geom = drawChartFront(front, spec, g);
+  }
+  if (backChanged) {
     backKey = back;
     backDraws++;
   }
-  geom = drawChartFront(front, spec, g);
   window.rimeState.chartLayers = { backDraws, frontDraws: ++frontDraws };
   window.rimeState.chartPlot = { ...geom.box, legendBottom: geom.bottom };
   describe(res);

@@ -22,15 +22,21 @@ export function niceTicks(lo, hi, count) {
   return out;
 }
 
+/** Sets a canvas element's CSS size (only when it changes: a write invalidates the layout). */
+export function sizeElement(canvas, width, height) {
+  if (canvas.style.height !== `${height}px`) canvas.style.height = `${height}px`;
+  if (canvas.style.width !== `${width}px`) canvas.style.width = `${width}px`;
+}
+
 export class CanvasPainter {
   /** `scale`: device pixels per CSS pixel (the screen's by default; 2 for PNG exports). */
-  constructor(canvas, width, height, scale = window.devicePixelRatio || 1) {
+  constructor(canvas, width, height, scale = globalThis.devicePixelRatio || 1) {
     // Resizing a canvas reallocates it: only when the size changes.
     const cw = Math.round(width * scale), ch = Math.round(height * scale);
     if (canvas.width !== cw) canvas.width = cw;
     if (canvas.height !== ch) canvas.height = ch;
-    if (canvas.style.height !== `${height}px`) canvas.style.height = `${height}px`;
-    if (canvas.style.width !== `${width}px`) canvas.style.width = `${width}px`;
+    // An OffscreenCanvas (drawn in a worker) has no style: the page sizes its element.
+    if (canvas.style) sizeElement(canvas, width, height);
     this.canvas = canvas;
     this.ctx = canvas.getContext('2d');
     this.ctx.setTransform(scale, 0, 0, scale, 0, 0);

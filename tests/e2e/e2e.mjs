@@ -90,11 +90,11 @@ async function waitUpdate(page, before) {
   notedWait('a frame after an edit', t0);
 }
 /** Number of non-white pixels of a canvas (is anything drawn?); the chart counts both its layers
- *  (background and data canvas, as they are seen on top of each other). */
+ *  (background and data canvas, as they are seen on top of each other), read through the page's
+ *  test hook wherever they are drawn (the chart's painter worker, or the page's thread). */
 async function inked(page, id) {
-  return page.evaluate((cid) => {
-    const layers = [cid, `${cid}-fg`].map((k) => document.getElementById(k)).filter(Boolean)
-      .map((c) => c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
+  return page.evaluate(async (cid) => {
+    const layers = (await window.rimeTest.layers(cid)).map((l) => l.data);
     const ink = (d, i) => d[i + 3] > 0 && (d[i] < 240 || d[i + 1] < 240 || d[i + 2] < 240);
     let n = 0;
     for (let i = 0; i < layers[0].length; i += 4) if (layers.some((d) => d.length === layers[0].length && ink(d, i))) n++;
@@ -114,13 +114,15 @@ try {
     await page.goto(url, { waitUntil: 'load' });
     await ready(page);
     // Both canvases are painted after the first frame arrives: wait for ink, not for a fixed time.
-    await page.waitForFunction(() => ['chart', 'map'].every((id) => {
-      const c = document.getElementById(id);
-      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-      let n = 0;
-      for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 0 && (d[i] < 240 || d[i + 1] < 240 || d[i + 2] < 240)) n++;
-      return n > 2000;
-    }), null, { timeout: GUARD_MS }).catch(() => {}); // the asserts below say what is missing
+    await page.waitForFunction(async () => {
+      for (const id of ['chart', 'map']) {
+        const d = (await window.rimeTest.layers(id))[0].data;
+        let n = 0;
+        for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 0 && (d[i] < 240 || d[i + 1] < 240 || d[i + 2] < 240)) n++;
+        if (n <= 2000) return false;
+      }
+      return true;
+    }, null, { timeout: GUARD_MS }).catch(() => {}); // the asserts below say what is missing
     const s = await page.evaluate(() => window.rimeState);
     assert(s.errors.length === 0, `app errors: ${s.errors.join('; ')}`);
     assert(s.eps.length > 10 && s.eps.every((v) => Number.isFinite(v)), 'curve values missing');
@@ -1225,11 +1227,13 @@ try {
       await q.goto(viewLink({ accuracy: 'fast', overlays: ALL_OVERLAYS }), { waitUntil: 'load' });
       await ready(q);
       await q.waitForFunction((n) => (window.rimeState.overlays || []).length === n, ALL_OVERLAYS.length, { timeout: GUARD_MS });
-      const r = await q.evaluate(() => {
+      const r = await q.evaluate(async () => {
         const c = document.getElementById('chart');
         const box = window.rimeState.chartPlot;
-        const k = c.width / c.clientWidth;
-        const px = c.getContext('2d').getImageData(Math.round((box.l + 3) * k), Math.round((box.t + 3) * k), 1, 1).data;
+        const [back] = await window.rimeTest.layers('chart');
+        const k = back.width / c.clientWidth;
+        const at = (Math.round((box.t + 3) * k) * back.width + Math.round((box.l + 3) * k)) * 4;
+        const px = back.data.subarray(at, at + 4);
         return { bg: [px[0], px[1], px[2]], styles: window.rimeState.figure.styles, names: window.rimeState.figure.series };
       });
       const palette = await q.evaluate(async () => (await import('./core.js')).PALETTE.series);
