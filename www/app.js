@@ -233,24 +233,31 @@ function publish(req, res) {
   const s = window.rimeState;
   const fig = res.figures[0];
   const bridges = fig.series.find((x) => /^Bridges/.test(x.name));
+  // The frame's arrays as plain arrays when first read (copying them for every frame was a
+  // sizeable part of a frame's time on the page's thread, for tests alone).
+  const lazy = (name, fn) => Object.defineProperty(s, name, {
+    enumerable: true,
+    configurable: true,
+    get() { const v = fn(); Object.defineProperty(s, name, { value: v, enumerable: true, configurable: true, writable: true }); return v; },
+  });
+  lazy('g', () => Array.from(res.g));
+  lazy('eps', () => (res.eps ? Array.from(res.eps) : []));
+  lazy('status', () => (res.status ? Array.from(res.status, (c) => app.statusNames[c] ?? 'failed') : []));
+  lazy('family', () => res.family && { path: res.family.path, values: res.family.values, isScene: res.family.isScene, curves: res.family.curves.map((c) => c && Array.from(c)) });
+  lazy('mapClasses', () => (res.map ? Array.from(res.map.codes) : null));
+  lazy('experiments', () => (bridges || fig.bands.length
+    ? { bridges: bridges ? { name: bridges.name, g: Array.from(bridges.x), eps: Array.from(bridges.y) } : null, bands: fig.bands } : null));
+  lazy('overlays', () => res.overlays.map((o) => ({ key: o.key, label: o.label, band: o.band, score: o.score, g: Array.from(o.g), eps: Array.from(o.eps), speeds: o.speeds })));
   Object.assign(s, {
     ready: true,
     sceneJson: req.scene,
     view: { ...req.page.view },
-    g: Array.from(res.g),
-    eps: res.eps ? Array.from(res.eps) : [],
-    status: res.status ? Array.from(res.status, (c) => app.statusNames[c] ?? 'failed') : [],
-    family: res.family && { path: res.family.path, values: res.family.values, isScene: res.family.isScene, curves: res.family.curves.map((c) => c && Array.from(c)) },
     critical: res.crit,
     warnings: res.warnings,
     warningDetails: res.warningDetails,
-    mapClasses: res.map ? Array.from(res.map.codes) : null,
     mapMax: res.map ? res.map.max : null,
     mapNote: res.mapNote,
-    experiments: bridges || fig.bands.length
-      ? { bridges: bridges ? { name: bridges.name, g: Array.from(bridges.x), eps: Array.from(bridges.y) } : null, bands: fig.bands } : null,
     figure: { y: fig.y, x: fig.x, series: fig.series.map((x) => x.name), styles: fig.series.map((x) => `${x.color}/${x.stroke}`), bands: fig.bands.map((b) => b.label), markers: fig.markers.map((m) => m.label), caption: fig.caption },
-    overlays: res.overlays.map((o) => ({ key: o.key, label: o.label, band: o.band, score: o.score, g: Array.from(o.g), eps: Array.from(o.eps), speeds: o.speeds })),
     tidal: res.tidal,
     tidalIn: app.tidalIn,
     frameErrors: res.errors,
@@ -282,17 +289,45 @@ function onBusy(busy) {
 
 function draw() {
   if (!app.res) return;
-  // Read the layout once, before this frame writes to the DOM (each read after a write forces a
-  // synchronous layout of the whole page).
-  const widths = {
-    chart: $('chart').parentElement.clientWidth, map: $('map').parentElement.clientWidth, epsT: $('eps-t').parentElement.clientWidth,
-  };
+  const t00 = performance.now();
+  // The figures' widths as last laid out (a ResizeObserver keeps them): reading them here, after
+  // this frame's writes to the page, would force a synchronous layout of the whole page, the
+  // biggest part of a redraw's time on the page's thread (issue 26).
+  const widths = figureWidths();
+  const t = [performance.now()];
   pinLabel();
   drawChartCanvas(widths.chart);
+  t.push(performance.now());
   familyNote(app.res);
   drawLegend(app.res);
+  t.push(performance.now());
   drawMapCanvas(widths);
+  t.push(performance.now());
   showPartNotes(app.res);
+  t.push(performance.now());
+  // Where a redraw's time goes on the page's thread [ms] (the frame benchmark reads it).
+  window.rimeState.drawParts = { layout: t[0] - t00, chart: t[1] - t[0], legend: t[2] - t[1], map: t[3] - t[2], notes: t[4] - t[3] };
+}
+
+const widthsSeen = { chart: null, map: null, epsT: null };
+let widthsObserver = null;
+/** The widths of the figures' boxes [CSS px], read once and then kept by a ResizeObserver. */
+function figureWidths() {
+  const boxes = { chart: $('chart').parentElement, map: $('map').parentElement, epsT: $('eps-t').parentElement };
+  if (!widthsObserver) {
+    for (const [k, e] of Object.entries(boxes)) widthsSeen[k] = e.clientWidth;
+    widthsObserver = new ResizeObserver((entries) => {
+      let changed = false;
+      for (const en of entries) {
+        const k = Object.keys(boxes).find((x) => boxes[x] === en.target);
+        const w = en.target.clientWidth;
+        if (k && widthsSeen[k] !== w) { widthsSeen[k] = w; changed = true; }
+      }
+      if (changed) requestAnimationFrame(draw);
+    });
+    for (const e of Object.values(boxes)) widthsObserver.observe(e);
+  }
+  return { ...widthsSeen };
 }
 
 /** The normal result at `g` for the drawn scene (main thread; tests). */
@@ -406,7 +441,8 @@ async function main() {
     schedule();
   });
   if (canPaintInWorker()) {
-    app.painter = new Painter(module, $('chart'), $('chart-fg'), (e) => {
+    const elements = Object.fromEntries(['chart', 'chart-fg', 'map', 'eps-t'].map((id) => [id, $(id)]));
+    app.painter = new Painter(module, elements, (e) => {
       console.error(`rime: ${e}`);
       window.rimeState.errors.push(e);
     });
@@ -433,7 +469,7 @@ window.rimeExports = {
 /** Test hook: the pixels of a canvas and of its data layer (`${id}-fg`, when it has one), as
  *  [{width, height, data}], wherever they are drawn. */
 window.rimeTest.layers = async (id) => {
-  if (id === 'chart' && app.painter) return app.painter.pixels();
+  if (app.painter && ['chart', 'map', 'eps-t'].includes(id)) return app.painter.pixels(id === 'chart' ? ['chart', 'chart-fg'] : [id]);
   return [id, `${id}-fg`].map((k) => document.getElementById(k)).filter(Boolean)
     .map((c) => ({ width: c.width, height: c.height, data: c.getContext('2d').getImageData(0, 0, c.width, c.height).data }));
 };

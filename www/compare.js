@@ -57,10 +57,15 @@ function fitToEntry() {
 }
 
 /** The score of the scene against each measured overlay, and what failed among them. */
+let scoresKey = null;
 export function showOverlayScores(res) {
-  const items = (res.overlays || []).filter((o) => o.score !== null && o.score !== undefined)
-    .map((o) => el('li', {}, `rms ε_N difference against ${o.label}: ${sig(o.score, 3)}`));
-  for (const e of res.errors) if (/^(atlas|model):/.test(e.part)) items.push(el('li', { class: 'err' }, `${e.part}: ${e.message}`));
-  $('overlay-scores').replaceChildren(...items);
+  const lines = (res.overlays || []).filter((o) => o.score !== null && o.score !== undefined)
+    .map((o) => ['', `rms ε_N difference against ${o.label}: ${sig(o.score, 3)}`]);
+  for (const e of res.errors) if (/^(atlas|model):/.test(e.part)) lines.push(['err', `${e.part}: ${e.message}`]);
+  // Rebuilt only when it changes (issue 26).
+  const key = JSON.stringify(lines);
+  if (key === scoresKey) return;
+  scoresKey = key;
+  $('overlay-scores').replaceChildren(...lines.map(([cls, text]) => el('li', { class: cls || null }, text)));
 }
 

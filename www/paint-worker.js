@@ -1,19 +1,20 @@
-// The chart's painter (issue 26): a module worker that draws the ε_N chart's two layers into the
-// OffscreenCanvases the page handed over (`transferControlToOffscreen`), so that a frame's redraw
-// costs the page's thread only the posting of its drawing description. The same painters and
-// layout as on the page's thread (plot.js); the formatters are the core's (its own wasm instance).
+// The page's painter (issue 26): a module worker that draws the ε_N chart's two layers, the stick
+// map and ε_T along its row into the OffscreenCanvases the page handed over
+// (`transferControlToOffscreen`), so that a frame's redraw costs the page's thread only the posting
+// of what to draw. The same painters and layout as on the page's thread (plot.js); the formatters
+// are the core's (its own wasm instance).
 import { start } from './core.js';
-import { CanvasPainter, chartGeometry, drawChartBack, drawChartFront } from './plot.js';
+import { CanvasPainter, chartGeometry, drawChartBack, drawChartFront, drawLines, drawMap, drawNote } from './plot.js';
 
 let ready = null;
-let canvases = null; // {back, front}: the chart's layers
+let canvases = null; // {chart, 'chart-fg', map, 'eps-t'}
 let last = null; // the last drawing: {spec, w, h, dpr}
 
 function draw(back) {
   const { spec, w, h, dpr } = last;
-  const front = new CanvasPainter(canvases.front, w, h, dpr);
+  const front = new CanvasPainter(canvases['chart-fg'], w, h, dpr);
   const g = chartGeometry(front, spec);
-  if (back) drawChartBack(new CanvasPainter(canvases.back, w, h, dpr), spec, g);
+  if (back) drawChartBack(new CanvasPainter(canvases.chart, w, h, dpr), spec, g);
   drawChartFront(front, spec, g);
 }
 
@@ -33,9 +34,17 @@ self.onmessage = async (ev) => {
     } else if (msg.type === 'hover' && last) {
       last.spec.hover = msg.hover;
       draw(false);
+    } else if (msg.type === 'map') {
+      const { map, dpr } = msg;
+      const p = new CanvasPainter(canvases.map, map.w, map.h, dpr);
+      if (map.note) drawNote(p, map.note);
+      else {
+        drawMap(p, map.spec);
+        drawLines(new CanvasPainter(canvases['eps-t'], map.lines.w, map.lines.h, dpr), map.lines.spec);
+      }
     } else if (msg.type === 'pixels') {
-      // Test hook: the layers' pixels (the page cannot read a canvas it handed over).
-      const layers = [canvases.back, canvases.front].map((c) => {
+      // Test hook: the canvases' pixels (the page cannot read a canvas it handed over).
+      const layers = msg.ids.map((id) => canvases[id]).map((c) => {
         const d = c.getContext('2d').getImageData(0, 0, c.width, c.height);
         return { width: c.width, height: c.height, data: d.data };
       });

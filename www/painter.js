@@ -12,18 +12,19 @@ export function canPaintInWorker() {
 }
 
 export class Painter {
-  /** Takes over the canvases `back` and `front` (elements); `onError` gets a painter's error. */
-  constructor(module, back, front, onError) {
+  /** Takes over the canvas elements {chart, 'chart-fg', map, 'eps-t'} (the chart's background
+   *  and data layers, the stick map, ε_T along a row); `onError` gets a painter's error. */
+  constructor(module, elements, onError) {
     this.seq = 0;
     this.done = 0; // the last drawing acknowledged
     this.waiting = []; // [{seq, fn}]
     this.pixelWaits = new Map();
     this.onError = onError;
-    const canvases = { back: back.transferControlToOffscreen(), front: front.transferControlToOffscreen() };
+    const canvases = Object.fromEntries(Object.entries(elements).map(([id, c]) => [id, c.transferControlToOffscreen()]));
     this.worker = new Worker(new URL('./paint-worker.js', import.meta.url), { type: 'module' });
     this.worker.onmessage = (ev) => this.answer(ev.data);
     this.worker.onerror = (ev) => { ev.preventDefault(); onError(`painter: ${ev.message || 'crashed'}`); };
-    this.worker.postMessage({ type: 'init', module, canvases }, [canvases.back, canvases.front]);
+    this.worker.postMessage({ type: 'init', module, canvases }, Object.values(canvases));
   }
 
   /** Draws the chart described by `spec` at `w`×`h` CSS px (the background layer too with `back`). */
@@ -38,6 +39,14 @@ export class Painter {
     this.worker.postMessage({ type: 'chart', seq: ++this.seq, spec: sent, w, h, dpr: window.devicePixelRatio || 1, back });
   }
 
+  /** Draws the stick map and ε_T along its row ({w, h, spec, lines: {w, h, spec}}), or a note in
+   *  its place ({w, h, note}). */
+  map(map) {
+    const own = (a) => (ArrayBuffer.isView(a) ? a.slice() : a);
+    const sent = map.spec ? { ...map, spec: { ...map.spec, codes: own(map.spec.codes) }, lines: { ...map.lines, spec: { ...map.lines.spec, x: own(map.lines.spec.x) } } } : map;
+    this.worker.postMessage({ type: 'map', seq: ++this.seq, map: sent, dpr: window.devicePixelRatio || 1 });
+  }
+
   /** Moves the hover cursor of the last chart drawn. */
   hover(hover) {
     this.worker.postMessage({ type: 'hover', seq: ++this.seq, hover });
@@ -49,10 +58,10 @@ export class Painter {
     else this.waiting.push({ seq: this.seq, fn });
   }
 
-  /** The layers' pixels (the end-to-end test reads them): [{width, height, data}] back, front. */
-  pixels() {
+  /** The pixels of the canvases `ids` (the end-to-end test reads them): [{width, height, data}]. */
+  pixels(ids) {
     const seq = ++this.seq;
-    return new Promise((resolve) => { this.pixelWaits.set(seq, resolve); this.worker.postMessage({ type: 'pixels', seq }); });
+    return new Promise((resolve) => { this.pixelWaits.set(seq, resolve); this.worker.postMessage({ type: 'pixels', seq, ids }); });
   }
 
   answer(msg) {

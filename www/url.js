@@ -7,9 +7,10 @@ import { TIDAL_FIELDS } from './tidal.js';
 
 let timer = null;
 
-/** Writes the link of the drawn frame (coalesced: browsers throttle replaceState at slider rates). */
+/** Writes the link of the drawn frame 150 ms after the last change (browsers throttle
+ *  replaceState at slider rates, and each one costs the page's thread a few ms: issue 26). */
 export function writeHash() {
-  if (timer !== null) return;
+  clearTimeout(timer);
   timer = setTimeout(() => { timer = null; writeHashNow(); }, 150);
 }
 
