@@ -184,7 +184,8 @@ function onFrame(msg, req) {
     afterPaint(() => {
       const s = window.rimeState;
       s.previews = (s.previews || 0) + 1;
-      s.previewMs = performance.now() - req.page.t0;
+      s.previewDrawnAt = performance.now();
+      s.previewMs = s.previewDrawnAt - req.page.t0;
       document.body.dataset.previews = String(s.previews);
     });
     return;
@@ -269,6 +270,7 @@ function publish(req, res) {
     history: historySize(),
     pinned: app.pinned ? { g: app.pinned.g, eps: app.pinned.eps, label: app.pinned.label } : null,
     updates: (s.updates || 0) + 1,
+    drawnAt: performance.now(),
   });
   document.body.dataset.updates = String(s.updates);
 }

@@ -1097,6 +1097,69 @@ try {
     return 'screenshots target/www-preview-26.png and target/www-refined-26.png';
   });
 
+  await check('issue 26: the chart and map drawn by the painter worker, and on the page\'s thread where that is forced (?paint=main, the fallback where a browser has no OffscreenCanvas): same pixels, the preview swaps to the refined frame without flicker, and the hover readout reads the frame on screen', async () => {
+    const out = {};
+    for (const mode of ['worker', 'main']) {
+      const q = watch(await context.newPage(), `paint-${mode}`);
+      try {
+        await q.setViewportSize({ width: 1280, height: 800 });
+        await q.goto(mode === 'main' ? `${url}?paint=main` : url, { waitUntil: 'load' });
+        await ready(q);
+        const info = await q.evaluate(() => ({ paint: window.rimeState.paint, workers: window.rimeState.workers, cores: navigator.hardwareConcurrency, accuracy: window.rimeState.view.accuracy }));
+        assert(info.paint === mode, `painted by ${info.paint}, expected ${mode}`);
+        assert(info.workers === (info.cores > 1 ? 2 : 1), `${info.workers} frame workers on ${info.cores} cores`);
+        assert(info.accuracy === 'precise', `opens at ${info.accuracy}`);
+        // The readout under the cursor: the drawn frame's own sample (its speed and ε_N).
+        const box = await q.locator('#chart').boundingBox();
+        await q.mouse.move(box.x + box.width * 0.55, box.y + box.height * 0.4);
+        const readout = () => q.evaluate(() => document.getElementById('chart-readout').textContent);
+        const agrees = async (text, level) => {
+          assert(text.endsWith(`at ${level}`), `readout "${text}" (expected at ${level})`);
+          if (level === 'fast') return;
+          // The refined frame is in rimeState: its sample at the readout's speed has the readout's ε_N.
+          const ok = await q.evaluate((t) => {
+            const s = window.rimeState;
+            const k = s.g.findIndex((g) => t.startsWith(`g_N = ${window.rimeExports.qty(g, 'm/s', 4)} ·`));
+            if (k < 0) return `no sample at the readout's speed: ${t}`;
+            const eps = Number(t.split('ε_N = ')[1].split(' ')[0]);
+            return Math.abs(eps - s.eps[k]) <= 1e-5 * Math.abs(s.eps[k]) ? true : `readout ε_N ${eps} vs the frame's ${s.eps[k]}`;
+          }, text);
+          assert(ok === true, ok);
+        };
+        await q.waitForFunction(() => /^g_N = /.test(document.getElementById('chart-readout').textContent), null, { timeout: GUARD_MS });
+        await agrees(await readout(), 'precise');
+        const inkBefore = await inked(q, 'chart');
+        // A held-up refinement keeps the preview on screen.
+        await q.evaluate(() => { window.rimeTest.refineDelayMs = 2000; });
+        const u = await updates(q);
+        const p0 = await q.evaluate(() => window.rimeState.previews || 0);
+        await q.evaluate(() => { const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]'); e.value = String(Number(e.value) + 5); e.dispatchEvent(new Event('input', { bubbles: true })); });
+        await q.waitForFunction((p) => (window.rimeState.previews || 0) > p, p0, { timeout: GUARD_MS });
+        assert((await updates(q)) === u, 'the refined frame came before the preview was looked at');
+        await agrees(await readout(), 'fast');
+        const inkPreview = await inked(q, 'chart');
+        const mapPreview = await inked(q, 'map');
+        await q.locator('#chart').screenshot({ path: path.join(outDir, `www-preview-26-${mode}.png`) });
+        await waitUpdate(q, u);
+        await q.evaluate(() => { window.rimeTest.refineDelayMs = 0; });
+        await agrees(await readout(), 'precise');
+        const inkRefined = await inked(q, 'chart');
+        const mapRefined = await inked(q, 'map');
+        await q.locator('#chart').screenshot({ path: path.join(outDir, `www-refined-26-${mode}.png`) });
+        // No flicker: the preview is drawn in full (axes, legend, curves), as the refined frame is.
+        assert(inkPreview > 2000 && Math.abs(inkPreview - inkRefined) < 0.02 * inkRefined, `chart: preview ${inkPreview} vs refined ${inkRefined} inked pixels`);
+        assert(mapPreview > 2000 && Math.abs(mapPreview - mapRefined) < 0.05 * mapRefined, `map: preview ${mapPreview} vs refined ${mapRefined} inked pixels`);
+        out[mode] = { inkBefore, inkRefined, mapRefined };
+      } finally {
+        await q.close();
+      }
+    }
+    // One drawing code on both paths: the same scene draws the same ink (the fonts' antialiasing may differ by a few pixels).
+    const d = Math.abs(out.worker.inkBefore - out.main.inkBefore);
+    assert(d <= 0.01 * out.main.inkBefore, `chart ink: worker ${out.worker.inkBefore}, page thread ${out.main.inkBefore}`);
+    return `chart ink worker ${out.worker.inkBefore} / page thread ${out.main.inkBefore}; screenshots target/www-{preview,refined}-26-{worker,main}.png`;
+  });
+
   await check('40 slider inputs at fast each give a recomputed, redrawn frame (timings reported)', async () => {
     if ((await page.evaluate(() => window.rimeState.view.accuracy)) !== 'fast') {
       await page.selectOption('#accuracy', 'fast');
