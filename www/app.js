@@ -42,12 +42,14 @@ function schedule() {
 
 /** The preview's curve points and map side (issue 26): every other point and cell of the default
  *  view's (Request::POINTS = 241, Request::MAP_N = 81), so the preview's samples are samples of the
- *  refined frame, and a quarter of the map's cells. */
-const PREVIEW = { points: 121, mapN: 41 };
+ *  refined frame, and a quarter of the map's cells; every fourth when the last preview took longer
+ *  than SLOW_MS in the worker (the literal layer reading, other models compared). */
+const PREVIEWS = [{ points: 121, mapN: 41 }, { points: 61, mapN: 21 }];
 /** A frame asked at `fast` gets a preview too when the last one took longer than this in the
- *  worker [ms] (the literal layer reading, other models compared). */
-const PREVIEW_FAST_AFTER_MS = 8;
+ *  worker, and a preview is coarser when the last one did [ms]. */
+const SLOW_MS = 8;
 let lastFastMs = 0;
+let coarsePreview = false;
 
 /** Asks the worker for the pinned curve of the link (its scene at its level and speeds), before
  *  the frame of the page: the answer becomes the pin, then the page's frame is asked for. */
@@ -78,8 +80,8 @@ function request() {
   const page = { view: { ...v, overlays: [...v.overlays] }, tidal: app.tidalIn, t0: performance.now(), calls: calls.compute, format: calls.format };
   calls.compute = 0;
   calls.format = 0;
-  const preview = v.accuracy !== 'fast' || lastFastMs > PREVIEW_FAST_AFTER_MS
-    ? { ...view, accuracy: 'fast', ...PREVIEW } : null;
+  const preview = v.accuracy !== 'fast' || lastFastMs > SLOW_MS
+    ? { ...view, accuracy: 'fast', ...PREVIEWS[coarsePreview ? 1 : 0] } : null;
   app.computer.request(app.wantScene, view, page, preview, ringInputs());
 }
 
@@ -170,6 +172,9 @@ function onFrame(msg, req) {
     // controls, link, collision card, the test's state) waits for the requested level, and so do
     // the downloads.
     const res = { ...decode(msg, req.page), accuracy: 'fast' };
+    // Coarser after a slow preview; finer again once a coarse one is quick (about a quarter of the
+    // work: half the points, a quarter of the cells).
+    coarsePreview = coarsePreview ? msg.ms > SLOW_MS / 4 : msg.ms > SLOW_MS;
     const sceneChanged = !app.drawn || app.drawn.scene !== req.scene;
     keepCursor(app.res, res);
     app.res = res;
