@@ -43,10 +43,12 @@ function schedule() {
 /** The preview's curve points and map side (issue 26): every other point and cell of the default
  *  view's (Request::POINTS = 241, Request::MAP_N = 81), so the preview's samples are samples of the
  *  refined frame, and a quarter of the map's cells; every fourth when the last preview took longer
- *  than SLOW_MS in the worker (the literal layer reading, other models compared). */
+ *  than a frame's time (16 ms) in the worker (other models compared: their points dominate; the
+ *  corners of a 61-point curve show, so only then). */
 const PREVIEWS = [{ points: 121, mapN: 41 }, { points: 61, mapN: 21 }];
+const FRAME_MS = 16;
 /** A frame asked at `fast` gets a preview too when the last one took longer than this in the
- *  worker, and a preview is coarser when the last one did [ms]. */
+ *  worker [ms] (the literal layer reading, other models compared). */
 const SLOW_MS = 8;
 let lastFastMs = 0;
 let coarsePreview = false;
@@ -172,9 +174,9 @@ function onFrame(msg, req) {
     // controls, link, collision card, the test's state) waits for the requested level, and so do
     // the downloads.
     const res = { ...decode(msg, req.page), accuracy: 'fast' };
-    // Coarser after a slow preview; finer again once a coarse one is quick (about a quarter of the
-    // work: half the points, a quarter of the cells).
-    coarsePreview = coarsePreview ? msg.ms > SLOW_MS / 4 : msg.ms > SLOW_MS;
+    // Coarser after a slow preview; finer again once a coarse one is quick (it is about half the
+    // work, or less).
+    coarsePreview = coarsePreview ? msg.ms > FRAME_MS / 4 : msg.ms > FRAME_MS;
     const sceneChanged = !app.drawn || app.drawn.scene !== req.scene;
     keepCursor(app.res, res);
     app.res = res;
