@@ -117,7 +117,7 @@ function decode(msg, page) {
   const F = (r) => msg.numbers.subarray(r.at, r.at + r.len);
   const U = (r) => msg.codes.subarray(r.at, r.at + r.len);
   const m = j.map;
-  return {
+  const res = {
     accuracy: page.view.accuracy,
     values: j.values,
     g: F(j.g),
@@ -136,9 +136,15 @@ function decode(msg, page) {
     tidal: j.tidal.error ? null : j.tidal,
     overlays: (j.overlays || []).map((o) => ({ ...o, g: F(o.g), eps: F(o.eps) })),
     figures: j.figures.map((f) => ({ ...f, series: f.series.map((s) => ({ ...s, x: F(s.x), y: F(s.y) })) })),
-    records: j.records,
     errors: j.errors,
   };
+  // The records (UTF-8 JSON from the worker) are read when a download first asks for them.
+  let records = null;
+  Object.defineProperty(res, 'records', {
+    enumerable: true,
+    get() { records ||= JSON.parse(new TextDecoder().decode(msg.records)); return records; },
+  });
+  return res;
 }
 
 /** The worker's answer to the newest request: draw what succeeded, report what failed. */
@@ -173,7 +179,8 @@ function onFrame(msg, req) {
     // The fast preview (issue 26): the chart and map drawn now, the rest of the page (warnings,
     // controls, link, collision card, the test's state) waits for the requested level, and so do
     // the downloads.
-    const res = { ...decode(msg, req.page), accuracy: 'fast' };
+    const res = decode(msg, req.page);
+    res.accuracy = 'fast';
     // Coarser after a slow preview; finer again once a coarse one is quick (it is about half the
     // work, or less).
     coarsePreview = coarsePreview ? msg.ms > FRAME_MS / 4 : msg.ms > FRAME_MS;

@@ -10,12 +10,13 @@ import init, { Explorer, computeFrame, ringCard } from './pkg/rime_wasm.js';
 let ready = null;
 let explorer = null; // the collision card's scene (one per worker)
 const ringMemo = { key: '', out: null };
+const encoder = new TextEncoder();
 
 const busyWait = (ms) => { const until = performance.now() + ms; while (performance.now() < until) { /* busy */ } };
 
 /** The ring card of `scene` for the inputs `r` over the frame's speed range (memoised). */
-function ring(scene, r, json) {
-  const j = JSON.parse(json);
+function ring(scene, r, whole) {
+  const j = JSON.parse(whole);
   const fig = j.figures[0];
   const input = { tau: r.tau, chart: [fig.x.min, fig.x.max] };
   const t = j.tidal && !j.tidal.error ? j.tidal.input : null;
@@ -72,14 +73,21 @@ self.onmessage = async (ev) => {
       if (testRefineDelayMs > 0 && !preview) busyWait(testRefineDelayMs);
       const t1 = performance.now();
       const f = computeFrame(msg.scene, JSON.stringify(view));
-      const json = f.json();
+      const whole = f.json();
       const numbers = f.numbers();
       const codes = f.codes();
       f.free();
       const ms = performance.now() - t1;
       // The ring card with the requested frame; with a preview only when it is drawn on the chart.
-      const r = msg.ring && (!preview || msg.ring.onChart) ? ring(msg.scene, msg.ring, json) : null;
-      self.postMessage({ type: 'frame', gen: msg.gen, preview, last, json, numbers, codes, ring: r, ms, calls: preview ? 0 : 5 }, [numbers.buffer, codes.buffer]);
+      const r = msg.ring && (!preview || msg.ring.onChart) ? ring(msg.scene, msg.ring, whole) : null;
+      // The records (the CSV of the downloads, most of the JSON) go as UTF-8 bytes, handed over
+      // without a copy and read only when a download asks for them: copying and parsing them for
+      // every frame was work on the page's thread (issue 26).
+      const j = JSON.parse(whole);
+      const records = encoder.encode(JSON.stringify(j.records));
+      delete j.records;
+      const json = JSON.stringify(j);
+      self.postMessage({ type: 'frame', gen: msg.gen, preview, last, json, records, numbers, codes, ring: r, ms, calls: preview ? 0 : 5 }, [numbers.buffer, codes.buffer, records.buffer]);
     } catch (e) {
       // A refused preview is dropped by the page (the requested frame, refused alike, says why).
       self.postMessage({ type: 'frame', gen: msg.gen, preview, last, error: String(e && e.message ? e.message : e), ms: performance.now() - t0, calls: 1 });
