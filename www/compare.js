@@ -1,7 +1,7 @@
 // "Compare": measured ice laws and other models over the ε_N chart (the core's list and scores),
 // and "fit A to the first checked measured law" (the core's fit).
 import { qty, sig, speed } from './core.js';
-import { $, el } from './dom.js';
+import { $, el, setText } from './dom.js';
 import { app } from './state.js';
 
 let hooks = { schedule: () => {}, edit: () => false };
@@ -31,8 +31,10 @@ export function syncCompare(scene) {
   for (const hint of document.querySelectorAll('#overlay-list .needs')) {
     const box = hint.parentElement.querySelector('input');
     const lacking = !(scene && scene[hint.dataset.needs]);
-    box.disabled = lacking && !box.checked;
-    hint.textContent = lacking ? ` — needs a ${hint.dataset.needs} section (a yield pressure): not in this scene` : '';
+    // Written only when it changes (issue 26: this runs on every slider step).
+    const off = lacking && !box.checked;
+    if (box.disabled !== off) box.disabled = off;
+    setText(hint, lacking ? ` — needs a ${hint.dataset.needs} section (a yield pressure): not in this scene` : '');
   }
 }
 

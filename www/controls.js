@@ -71,7 +71,7 @@ export function reflectScene() {
   const first = $('preset').options[0];
   if (!first) return;
   const match = presetList.find((p) => scene && sameJson(p.scene, scene));
-  first.textContent = match ? `${match.name} (this scene) — load a preset` : 'an edited scene — load a preset';
+  setText(first, match ? `${match.name} (this scene) — load a preset` : 'an edited scene — load a preset');
 }
 
 /** Applies one edit (`fn` on app.ex) of `key` through the core; records it for undo. A value the
