@@ -12,10 +12,11 @@
 // `main_ms_per_frame` and `paint` (where the chart is drawn: `worker` or `main`).
 //
 // Usage: scripts/build-www.sh && scripts/setup-npm.sh && node scripts/bench-page-frames.mjs
-//   [--quick] [--profile desktop|phone] [--paint main] [--out FILE] [--runs N]
+//   [--quick] [--profile desktop|phone] [--paint main] [--workers 1|2] [--out FILE] [--runs N]
 // (serves www/ itself on a free local port; needs target/release/rime for the scenes' JSON).
 // `--paint main` forces the page's fallback (the chart drawn on the page's thread, as where a
-// browser has no OffscreenCanvas).
+// browser has no OffscreenCanvas); `--workers 1` a pool of one frame worker (as on a one-core
+// browser), to compare with the pool of two.
 import { spawn, execFileSync } from 'node:child_process';
 import { createRequire } from 'node:module';
 import fs from 'node:fs';
@@ -32,6 +33,7 @@ const opt = (name) => { const k = argv.indexOf(name); return k >= 0 ? argv[k + 1
 const quick = argv.includes('--quick');
 const RUNS = Number(opt('--runs') || (quick ? 3 : 9));
 const paintMain = opt('--paint') === 'main';
+const workers = opt('--workers');
 const onlyProfile = opt('--profile');
 const outFile = opt('--out') || path.join(root, 'target', 'bench', 'frames-page.json');
 // Hang guard per wait (the slowest frame, the literal reading at precise on the phone profile, takes
@@ -92,7 +94,8 @@ for (const profile of PROFILES) {
       if (profile.slowdown > 1) await cdp.send('Emulation.setCPUThrottlingRate', { rate: profile.slowdown });
       await cdp.send('Performance.enable');
       const view = { accuracy: level, overlays: sc.overlays };
-      await page.goto(`${url}${paintMain ? '?paint=main' : ''}#s=${encodeURIComponent(sc.scene)}&v=${encodeURIComponent(JSON.stringify(view))}`);
+      const query = [paintMain ? 'paint=main' : '', workers ? `workers=${workers}` : ''].filter(Boolean).join('&');
+      await page.goto(`${url}${query ? `?${query}` : ''}#s=${encodeURIComponent(sc.scene)}&v=${encodeURIComponent(JSON.stringify(view))}`);
       await page.waitForFunction(() => window.rimeState && window.rimeState.ready, null, { timeout: GUARD_MS });
       if (sc.sweep) {
         // The swept family: asked for by every edit from here on (the first one included).
@@ -172,6 +175,7 @@ for (const profile of PROFILES) {
         first_each_ms: runs.map((r) => r.first), final_each_ms: runs.map((r) => r.final), previews: runs.map((r) => r.previews),
         long_tasks: tasks.filter((d) => d > 50).length, max_task_ms: tasks.length ? Math.max(...tasks) : 0,
         main_ms_per_frame: busyMs / framesDrawn, main_cpu_ms_per_frame: cpuMs / framesDrawn, paint,
+        workers: await page.evaluate(() => window.rimeState.workers || 1),
         runs: RUNS, cores, load: loadAvg,
       };
       records.push(rec);

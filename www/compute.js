@@ -76,6 +76,9 @@ class Lane {
  *  preview never waits behind a stale refinement and restarting one never delays the next preview
  *  (issue 26; splitting one frame's units over workers did not pay: see ARCHITECTURE.md). */
 export function poolSize() {
+  // `?workers=1` in the address: the pool of one (the frame benchmark compares the two).
+  const asked = Number(new URLSearchParams(location.search).get('workers'));
+  if (asked === 1 || asked === 2) return asked;
   return (navigator.hardwareConcurrency || 1) > 1 ? 2 : 1;
 }
 
