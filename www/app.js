@@ -52,6 +52,7 @@ const FRAME_MS = 16;
 const SLOW_MS = 8;
 let lastFastMs = 0;
 let coarsePreview = false;
+let slowPreviews = 0; // previews in a row slower than FRAME_MS
 
 /** Asks the worker for the pinned curve of the link (its scene at its level and speeds), before
  *  the frame of the page: the answer becomes the pin, then the page's frame is asked for. */
@@ -181,9 +182,11 @@ function onFrame(msg, req) {
     // the downloads.
     const res = decode(msg, req.page);
     res.accuracy = 'fast';
-    // Coarser after a slow preview; finer again once a coarse one is quick (it is about half the
-    // work, or less).
-    coarsePreview = coarsePreview ? msg.ms > FRAME_MS / 4 : msg.ms > FRAME_MS;
+    // Coarser after two slow previews in a row (a worker's first frame is slow while its wasm
+    // warms up: one alone says nothing of the scene); finer again once a coarse one is quick (it is
+    // about half the work, or less).
+    slowPreviews = msg.ms > FRAME_MS ? slowPreviews + 1 : 0;
+    coarsePreview = coarsePreview ? msg.ms > FRAME_MS / 4 : slowPreviews >= 2;
     const sceneChanged = !app.drawn || app.drawn.scene !== req.scene;
     keepCursor(app.res, res);
     app.res = res;
