@@ -95,6 +95,7 @@ export class Computer {
     this.onBusy = onBusy;
     this.gen = 0;
     this.answered = 0; // the newest generation whose requested frame was passed on
+    this.shown = 0; // the newest generation whose preview or frame was passed on
     // A crashed worker answers its request's frame with the error (a lost preview is no error).
     const crash = (req, error) => {
       if (req.frames.some((f) => !f.preview)) this.deliver({ type: 'frame', gen: req.gen, error, ms: 0, calls: 0, last: true }, req);
@@ -138,14 +139,21 @@ export class Computer {
       this.onFrame({ gen: this.gen, error: msg.message, ms: 0, calls: 0 }, null);
       return;
     }
-    // A stale answer (a newer request exists) is dropped, and so is a preview that comes after
-    // its request's frame.
-    if (!req || msg.gen !== this.gen) return;
+    if (!req) return;
     if (msg.preview) {
-      if (this.answered !== msg.gen && !msg.error) this.onFrame(msg, req);
+      // A preview newer than anything on screen is drawn even when a newer request waits: while a
+      // slider is dragged faster than previews come, the screen follows it (a stale frame is only
+      // ever a preview; downloads wait for the newest request's frame).
+      if (msg.gen > this.shown && !msg.error) {
+        this.shown = msg.gen;
+        this.onFrame(msg, req);
+      }
       return;
     }
+    // A stale frame (a newer request exists) is dropped.
+    if (msg.gen !== this.gen) return;
     this.answered = msg.gen;
+    this.shown = msg.gen;
     this.onFrame(msg, req);
     this.onBusy(false);
   }
