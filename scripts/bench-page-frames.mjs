@@ -3,11 +3,20 @@
 // opens the page on that scene and view, moves a slider (an `input` event) `RUNS` times and times,
 // inside the page, input → the preview painted (first) and input → the requested level painted
 // (final): the first animation frame after the page drew each, and counts the main thread's long
-// tasks over 50 ms meanwhile. Writes target/bench/frames-page.json: one record per case in the
-// shape of `rime bench --frames` (`surface: "page"`), plus `profile`, `long_tasks` and `max_task_ms`.
+// tasks over 50 ms meanwhile, and the main thread's busy time per frame drawn (Chromium's
+// TaskDuration metric over the edits, divided by the previews and refined frames drawn: input
+// handling, drawing, style, layout and paint of the page's thread; `main_cpu_ms_per_frame` the
+// same as thread time from a trace, less inflated by a loaded machine). Writes
+// target/bench/frames-page.json (or the file of `--out`): one record per case in the shape of
+// `rime bench --frames` (`surface: "page"`), plus `profile`, `long_tasks`, `max_task_ms`,
+// `main_ms_per_frame` and `paint` (where the chart is drawn: `worker` or `main`).
 //
-// Usage: scripts/build-www.sh && scripts/setup-npm.sh && node scripts/bench-page-frames.mjs [--quick]
+// Usage: scripts/build-www.sh && scripts/setup-npm.sh && node scripts/bench-page-frames.mjs
+//   [--quick] [--profile desktop|phone] [--paint main] [--workers 1|2] [--out FILE] [--runs N]
 // (serves www/ itself on a free local port; needs target/release/rime for the scenes' JSON).
+// `--paint main` forces the page's fallback (the chart drawn on the page's thread, as where a
+// browser has no OffscreenCanvas); `--workers 1` a pool of one frame worker (as on a one-core
+// browser), to compare with the pool of two.
 import { spawn, execFileSync } from 'node:child_process';
 import { createRequire } from 'node:module';
 import fs from 'node:fs';
@@ -19,8 +28,14 @@ import { fileURLToPath } from 'node:url';
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const { chromium } = createRequire(path.join(root, 'tests', 'e2e', 'package.json'))('playwright-core');
 const rime = process.env.RIME_BIN || path.join(root, 'target', 'release', 'rime');
-const quick = process.argv.includes('--quick');
-const RUNS = quick ? 3 : 9;
+const argv = process.argv.slice(2);
+const opt = (name) => { const k = argv.indexOf(name); return k >= 0 ? argv[k + 1] : undefined; };
+const quick = argv.includes('--quick');
+const RUNS = Number(opt('--runs') || (quick ? 3 : 9));
+const paintMain = opt('--paint') === 'main';
+const workers = opt('--workers');
+const onlyProfile = opt('--profile');
+const outFile = opt('--out') || path.join(root, 'target', 'bench', 'frames-page.json');
 // Hang guard per wait (the slowest frame, the literal reading at precise on the phone profile, takes
 // about 1 s): never a speed check.
 const GUARD_MS = 120000;
@@ -33,21 +48,23 @@ const SCENES = [
   { name: 'ice-sticky', scene: sceneJson(['--preset', 'ice-sticky']), overlays: [] },
   { name: 'ice, compare other models', scene: sceneJson(['--preset', 'ice']), overlays: ['model:brilliantov2007', 'model:muller_poschel2011'] },
   { name: 'ice, compare measured ice', scene: sceneJson(['--preset', 'ice']), overlays: ['atlas:bridges1984', 'atlas:hatzes1988_frost', 'atlas:supulver1995', 'atlas:heisselmann2010', 'atlas:hill2015'] },
+  // As `rime bench --frames`: a family swept over the grain radius (the page's family follows the
+  // core's default sweep; the bench picks this one through a test hook) and the paper's viscosities.
+  { name: 'ice-frost, family over R₁=R₂', scene: sceneJson(['--preset', 'ice-frost']), overlays: [], sweep: 'grains.radius' },
+  { name: "ice, the paper's viscosities", scene: sceneJson(['--preset', 'ice-paper-viscosities']), overlays: [] },
 ];
 const LEVELS = ['fast', 'precise', 'integrated'];
-const PROFILES = quick
-  ? [{ name: 'desktop', viewport: { width: 1280, height: 800 }, slowdown: 1 }]
-  : [
-      { name: 'desktop', viewport: { width: 1280, height: 800 }, slowdown: 1 },
-      { name: 'phone', viewport: { width: 375, height: 812 }, slowdown: 4, mobile: true },
-    ];
+const PROFILES = [
+  { name: 'desktop', viewport: { width: 1280, height: 800 }, slowdown: 1 },
+  { name: 'phone', viewport: { width: 375, height: 812 }, slowdown: 4, mobile: true },
+].filter((p) => (onlyProfile ? p.name === onlyProfile : !quick || p.name === 'desktop'));
 
 const freePort = () => new Promise((resolve) => {
   const s = net.createServer();
   s.listen(0, '127.0.0.1', () => { const { port } = s.address(); s.close(() => resolve(port)); });
 });
 const port = await freePort();
-const server = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', path.join(root, 'www')], { stdio: 'ignore' });
+const server = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', process.env.RIME_WWW || path.join(root, 'www')], { stdio: 'ignore' });
 process.on('exit', () => server.kill());
 await new Promise((r) => setTimeout(r, 500));
 const url = `http://127.0.0.1:${port}/`;
@@ -73,14 +90,26 @@ for (const profile of PROFILES) {
       // A fresh page per case: nothing of the previous case (its worker, its state) carries over.
       const page = await context.newPage();
       await page.setViewportSize(profile.viewport);
-      if (profile.slowdown > 1) {
-        const cdp = await context.newCDPSession(page);
-        await cdp.send('Emulation.setCPUThrottlingRate', { rate: profile.slowdown });
-      }
+      const cdp = await context.newCDPSession(page);
+      if (profile.slowdown > 1) await cdp.send('Emulation.setCPUThrottlingRate', { rate: profile.slowdown });
+      await cdp.send('Performance.enable');
       const view = { accuracy: level, overlays: sc.overlays };
-      await page.goto(`${url}#s=${encodeURIComponent(sc.scene)}&v=${encodeURIComponent(JSON.stringify(view))}`);
+      const query = [paintMain ? 'paint=main' : '', workers ? `workers=${workers}` : ''].filter(Boolean).join('&');
+      await page.goto(`${url}${query ? `?${query}` : ''}#s=${encodeURIComponent(sc.scene)}&v=${encodeURIComponent(JSON.stringify(view))}`);
       await page.waitForFunction(() => window.rimeState && window.rimeState.ready, null, { timeout: GUARD_MS });
+      if (sc.sweep) {
+        // The swept family: asked for by every edit from here on (the first one included).
+        await page.evaluate((sweep) => { window.rimeTest.sweep = sweep; }, sc.sweep);
+      }
       const loadAvg = load();
+      const taskSeconds = async () => (await cdp.send('Performance.getMetrics')).metrics.find((m) => m.name === 'TaskDuration').value;
+      const busy0 = await taskSeconds();
+      // The main thread's own time in its tasks (thread time, which a loaded machine inflates far
+      // less than the wall time of TaskDuration): Chromium's top-level task events.
+      const traced = [];
+      const onData = (d) => traced.push(...d.value);
+      cdp.on('Tracing.dataCollected', onData);
+      await cdp.send('Tracing.start', { categories: 'toplevel', transferMode: 'ReportEvents' });
       const runs = [];
       for (let i = 0; i < RUNS; i++) {
         // One slider step, timed inside the page: input → the animation frame after each draw.
@@ -94,40 +123,69 @@ for (const profile of PROFILES) {
           obs.observe({ type: 'longtask' });
           let first = null;
           const t0 = performance.now();
+          // No polling loop (it would cost the page's thread a task every frame, counted in its busy
+          // time): the page marks each drawn preview and frame on <body> (data-previews,
+          // data-updates) once it is on its canvas, and the animation frame after that mark is
+          // when it is painted.
+          const done = (fn) => { obs.disconnect(); mo.disconnect(); clearTimeout(timer); fn(); };
+          const timer = setTimeout(() => done(() => reject(new Error('no frame within the guard'))), guard);
+          const mo = new MutationObserver(() => {
+            const [u, p] = [s.updates || 0, s.previews || 0];
+            if (first === null && (p > p0 || u > u0)) {
+              const mark = first = -1;
+              requestAnimationFrame(() => { if (first === mark) first = performance.now() - t0; });
+            }
+            if (u > u0) {
+              requestAnimationFrame(() => {
+                const final = performance.now() - t0;
+                if (first === -1) first = final;
+                // Let the observer deliver the tasks of this edit before reporting.
+                const drawnFirst = ((s.previews || 0) > p0 ? Math.min(s.previewDrawnAt, s.drawnAt) : s.drawnAt) - t0;
+                setTimeout(() => done(() => resolve({ first, final, drawnFirst, drawnFinal: s.drawnAt - t0, tasks, previews: (s.previews || 0) - p0 })), 0);
+              });
+            }
+          });
+          mo.observe(document.body, { attributes: true, attributeFilter: ['data-updates', 'data-previews'] });
           slider.value = String(Number(slider.value) + step);
           slider.dispatchEvent(new Event('input', { bubbles: true }));
-          const tick = () => {
-            const now = performance.now();
-            if (now - t0 > guard) { obs.disconnect(); reject(new Error('no frame within the guard')); return; }
-            if (first === null && ((s.previews || 0) > p0 || (s.updates || 0) > u0)) first = now - t0;
-            if ((s.updates || 0) > u0) {
-              // Let the observer deliver the tasks of this edit before reporting.
-              setTimeout(() => { obs.disconnect(); resolve({ first, final: now - t0, tasks, previews: (s.previews || 0) - p0 }); }, 0);
-              return;
-            }
-            requestAnimationFrame(tick);
-          };
-          requestAnimationFrame(tick);
         }), { guard: GUARD_MS, step: i % 2 ? -7 : 7 }));
       }
+      const busyMs = (await taskSeconds() - busy0) * 1e3;
+      const traceDone = new Promise((r) => cdp.once('Tracing.tracingComplete', r));
+      await cdp.send('Tracing.end');
+      await traceDone;
+      cdp.off('Tracing.dataCollected', onData);
+      const mains = new Set(traced.filter((e) => e.name === 'thread_name' && e.args && e.args.name === 'CrRendererMain').map((e) => `${e.pid}:${e.tid}`));
+      const cpuBy = new Map();
+      for (const e of traced) {
+        const k = `${e.pid}:${e.tid}`;
+        if (e.ph === 'X' && mains.has(k) && /RunTask$/.test(e.name)) cpuBy.set(k, (cpuBy.get(k) || 0) + (e.tdur || 0) / 1e3);
+      }
+      // The page's renderer: the busiest main thread (a closed page's renderer is idle).
+      const cpuMs = Math.max(0, ...cpuBy.values());
+      const framesDrawn = runs.reduce((n, r) => n + r.previews + 1, 0);
+      const paint = await page.evaluate(() => window.rimeState.paint || 'main');
       const tasks = runs.flatMap((r) => r.tasks);
       const rec = {
         surface: 'page', scene: sc.name, level, size: `${profile.viewport.width}x${profile.viewport.height}`,
         profile: profile.name, cpu_slowdown: profile.slowdown,
         first_ms: median(runs.map((r) => r.first)), final_ms: median(runs.map((r) => r.final)),
+        // Input → on its canvas (before the animation frame that paints it).
+        first_drawn_ms: median(runs.map((r) => r.drawnFirst)), final_drawn_ms: median(runs.map((r) => r.drawnFinal)),
         first_each_ms: runs.map((r) => r.first), final_each_ms: runs.map((r) => r.final), previews: runs.map((r) => r.previews),
         long_tasks: tasks.filter((d) => d > 50).length, max_task_ms: tasks.length ? Math.max(...tasks) : 0,
+        main_ms_per_frame: busyMs / framesDrawn, main_cpu_ms_per_frame: cpuMs / framesDrawn, paint,
+        workers: await page.evaluate(() => window.rimeState.workers || 1),
         runs: RUNS, cores, load: loadAvg,
       };
       records.push(rec);
-      console.log(`${profile.name.padEnd(8)} ${sc.name.padEnd(34)} ${level.padEnd(10)} first ${rec.first_ms.toFixed(1).padStart(7)} ms  final ${rec.final_ms.toFixed(1).padStart(7)} ms  long tasks ${rec.long_tasks} (max ${rec.max_task_ms.toFixed(0)} ms)`);
+      console.log(`${profile.name.padEnd(8)} ${sc.name.padEnd(34)} ${level.padEnd(10)} first ${rec.first_ms.toFixed(1).padStart(7)} ms (drawn ${rec.first_drawn_ms.toFixed(1).padStart(6)})  final ${rec.final_ms.toFixed(1).padStart(7)} ms  main ${rec.main_ms_per_frame.toFixed(1).padStart(5)} ms/frame (cpu ${rec.main_cpu_ms_per_frame.toFixed(1).padStart(5)})  long tasks ${rec.long_tasks} (max ${rec.max_task_ms.toFixed(0)} ms)`);
       await page.close();
     }
   }
 }
 await context.close();
-const out = path.join(root, 'target', 'bench');
-fs.mkdirSync(out, { recursive: true });
-fs.writeFileSync(path.join(out, 'frames-page.json'), JSON.stringify(records, null, 2) + '\n');
-console.log(`${cores} cores, load average ${load().toFixed(2)} at the end; wrote target/bench/frames-page.json`);
+fs.mkdirSync(path.dirname(outFile), { recursive: true });
+fs.writeFileSync(outFile, JSON.stringify(records, null, 2) + '\n');
+console.log(`${cores} cores, load average ${load().toFixed(2)} at the end; wrote ${path.relative(root, outFile)}`);
 server.kill();

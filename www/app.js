@@ -4,7 +4,8 @@
 // a note in its place, the banner names the cause and the console gets the error; controls and
 // the link always show the scene actually drawn. No physics, palette, formatting or ranges here.
 import { Explorer, calls, counted, qty, speed, start } from './core.js';
-import { CollisionComputer, Computer } from './compute.js';
+import { CollisionComputer, Computer, poolSize } from './compute.js';
+import { Painter, canPaintInWorker } from './painter.js';
 import { CollisionView } from './collision.js';
 import { $, errText, linkify, median } from './dom.js';
 import { START_PRESET, app, historySize } from './state.js';
@@ -12,7 +13,7 @@ import { buildControls, edit, reflectScene, syncControls, wireToolbar, wireView 
 import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, restorePin, wireChart } from './chart.js';
 import { drawLegend, drawMapCanvas, wireMap } from './map.js';
 import { buildTidal, showTidal } from './tidal.js';
-import { buildRing, ringOverlay, showRing } from './ring.js';
+import { buildRing, ringInputs, ringOverlay, showRing } from './ring.js';
 import { buildCompare } from './compare.js';
 import { intro, showBanner, showNotice, showPartNotes, showWarnings, wireBanner } from './messages.js';
 import { loadHash, writeHash } from './url.js';
@@ -21,17 +22,37 @@ import { chartSvg, curvesCsv, familyCsv, mapCsv, mapSvg, setVersion, wireDownloa
 // Exposed for tests and curious users.
 window.rimeState = { ready: false, errors: [] };
 // Test hooks: parts of the frame to fail on purpose (see the view's `fail` in wasm/src/frame.rs),
-// a slow computation (`delayMs`), a slow refinement after the preview (`refineDelayMs`) and an
-// input landing just before a frame is drawn (`beforeFrame`).
-window.rimeTest = { fail: [], delayMs: 0, refineDelayMs: 0, beforeFrame: null };
+// a slow computation (`delayMs`), a slow refinement after the preview (`refineDelayMs`), an
+// input landing just before a frame is drawn (`beforeFrame`) and the family's swept parameter
+// (`sweep`, a path of the core's sweeps; the page offers no choice of it: the frame benchmark's
+// swept family).
+window.rimeTest = { fail: [], delayMs: 0, refineDelayMs: 0, beforeFrame: null, sweep: null };
 
 let pending = false;
 
+/** Asks for a frame once the current event is handled: the edits of one event (a preset sets many
+ *  fields) make one request, and the request leaves at once, not at the next animation frame
+ *  (issue 26: input → first frame within 16 ms). A dragged slider never queues stale work: each
+ *  worker keeps only the newest request waiting (compute.js). */
 function schedule() {
   if (pending) return;
   pending = true;
-  requestAnimationFrame(() => { pending = false; request(); });
+  queueMicrotask(() => { pending = false; request(); });
 }
+
+/** The preview's curve points and map side (issue 26): every other point and cell of the default
+ *  view's (Request::POINTS = 241, Request::MAP_N = 81), so the preview's samples are samples of the
+ *  refined frame, and a quarter of the map's cells; every fourth when the last preview took longer
+ *  than a frame's time (16 ms) in the worker (other models compared: their points dominate; the
+ *  corners of a 61-point curve show, so only then). */
+const PREVIEWS = [{ points: 121, mapN: 41 }, { points: 61, mapN: 21 }];
+const FRAME_MS = 16;
+/** A frame asked at `fast` gets a preview too when the last one took longer than this in the
+ *  worker [ms] (the literal layer reading, other models compared). */
+const SLOW_MS = 8;
+let lastFastMs = 0;
+let coarsePreview = false;
+let slowPreviews = 0; // previews in a row slower than FRAME_MS
 
 /** Asks the worker for the pinned curve of the link (its scene at its level and speeds), before
  *  the frame of the page: the answer becomes the pin, then the page's frame is asked for. */
@@ -57,11 +78,38 @@ function request() {
   if (window.rimeTest.fail.length) view.fail = [...window.rimeTest.fail];
   if (window.rimeTest.delayMs > 0) view.testDelayMs = window.rimeTest.delayMs;
   if (window.rimeTest.refineDelayMs > 0) view.testRefineDelayMs = window.rimeTest.refineDelayMs;
+  if (window.rimeTest.sweep) view.sweep = window.rimeTest.sweep;
   // Main-thread calls across the wasm boundary made for this request (edits since the last one).
   const page = { view: { ...v, overlays: [...v.overlays] }, tidal: app.tidalIn, t0: performance.now(), calls: calls.compute, format: calls.format };
   calls.compute = 0;
   calls.format = 0;
-  app.computer.request(app.wantScene, view, page, true);
+  const preview = v.accuracy !== 'fast' || lastFastMs > SLOW_MS
+    ? { ...view, accuracy: 'fast', ...PREVIEWS[coarsePreview ? 1 : 0] } : null;
+  app.computer.request(app.wantScene, view, page, preview, ringInputs());
+}
+
+/** Keeps the hover cursor and the map's chosen row on the same speeds when the next frame has
+ *  another number of samples (a preview has every other one). */
+function keepCursor(old, res) {
+  if (!old) return;
+  const i = app.hover.chart;
+  if (i !== null && i < old.g.length && old.g.length !== res.g.length) {
+    const g = old.g[i];
+    let best = 0;
+    for (let k = 1; k < res.g.length; k++) if (Math.abs(Math.log(res.g[k] / g)) < Math.abs(Math.log(res.g[best] / g))) best = k;
+    app.hover.chart = best;
+  }
+  if (old.map && res.map && old.map.n !== res.map.n) {
+    const scale = (k) => Math.round((k * (res.map.n - 1)) / (old.map.n - 1));
+    if (app.hover.map) app.hover.map = { i: scale(app.hover.map.i), j: scale(app.hover.map.j) };
+    if (app.mapRow !== null) app.mapRow = scale(app.mapRow);
+  }
+}
+
+/** Runs `fn` once the chart drawn so far is on its canvas (at once where the page draws it). */
+function afterPaint(fn) {
+  if (app.painter) app.painter.after(fn);
+  else fn();
 }
 
 /** The frame's parts as typed-array views into its two flat arrays. */
@@ -70,7 +118,7 @@ function decode(msg, page) {
   const F = (r) => msg.numbers.subarray(r.at, r.at + r.len);
   const U = (r) => msg.codes.subarray(r.at, r.at + r.len);
   const m = j.map;
-  return {
+  const res = {
     accuracy: page.view.accuracy,
     values: j.values,
     g: F(j.g),
@@ -89,9 +137,15 @@ function decode(msg, page) {
     tidal: j.tidal.error ? null : j.tidal,
     overlays: (j.overlays || []).map((o) => ({ ...o, g: F(o.g), eps: F(o.eps) })),
     figures: j.figures.map((f) => ({ ...f, series: f.series.map((s) => ({ ...s, x: F(s.x), y: F(s.y) })) })),
-    records: j.records,
     errors: j.errors,
   };
+  // The records (UTF-8 JSON from the worker) are read when a download first asks for them.
+  let records = null;
+  Object.defineProperty(res, 'records', {
+    enumerable: true,
+    get() { records ||= JSON.parse(new TextDecoder().decode(msg.records)); return records; },
+  });
+  return res;
 }
 
 /** The worker's answer to the newest request: draw what succeeded, report what failed. */
@@ -126,21 +180,31 @@ function onFrame(msg, req) {
     // The fast preview (issue 26): the chart and map drawn now, the rest of the page (warnings,
     // controls, link, collision card, the test's state) waits for the requested level, and so do
     // the downloads.
-    const res = { ...decode(msg, req.page), accuracy: 'fast' };
+    const res = decode(msg, req.page);
+    res.accuracy = 'fast';
+    // Coarser after two slow previews in a row (a worker's first frame is slow while its wasm
+    // warms up: one alone says nothing of the scene); finer again once a coarse one is quick (it is
+    // about half the work, or less).
+    slowPreviews = msg.ms > FRAME_MS ? slowPreviews + 1 : 0;
+    coarsePreview = coarsePreview ? msg.ms > FRAME_MS / 4 : slowPreviews >= 2;
     const sceneChanged = !app.drawn || app.drawn.scene !== req.scene;
+    keepCursor(app.res, res);
     app.res = res;
     app.preview = true;
     app.drawn = { scene: req.scene, view: req.page.view, tidal: req.page.tidal };
     if (sceneChanged) app.mapRow = null;
-    ringOverlay(res, req.scene);
+    ringOverlay(res, msg.ring);
     draw();
     const t2 = performance.now();
     $('timing').textContent = `preview: ${qty(msg.ms / 1e3, 's', 3)} in the worker at fast, on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)} — refining to ${req.page.view.accuracy}…`;
     $('timing').classList.add('busy');
-    const s = window.rimeState;
-    s.previews = (s.previews || 0) + 1;
-    s.previewMs = t2 - req.page.t0;
-    document.body.dataset.previews = String(s.previews);
+    afterPaint(() => {
+      const s = window.rimeState;
+      s.previews = (s.previews || 0) + 1;
+      s.previewDrawnAt = performance.now();
+      s.previewMs = s.previewDrawnAt - req.page.t0;
+      document.body.dataset.previews = String(s.previews);
+    });
     return;
   }
   app.preview = false;
@@ -148,11 +212,13 @@ function onFrame(msg, req) {
   const racing = window.rimeTest.beforeFrame;
   if (racing) { window.rimeTest.beforeFrame = null; racing(); }
   const res = decode(msg, req.page);
+  if (req.page.view.accuracy === 'fast') lastFastMs = msg.ms;
   const sceneChanged = !app.drawn || app.drawn.scene !== req.scene;
+  keepCursor(app.res, res);
   app.res = res;
   app.drawn = { scene: req.scene, view: req.page.view, tidal: req.page.tidal };
   if (sceneChanged) app.mapRow = null;
-  ringOverlay(res, req.scene);
+  ringOverlay(res, msg.ring);
   const tm = [performance.now()];
   draw();
   tm.push(performance.now());
@@ -177,27 +243,39 @@ function onFrame(msg, req) {
   $('timing').textContent = `last frame: ${qty(msg.ms / 1e3, 's', 3)} in the worker (median ${qty(median(app.timings) / 1e3, 's', 3)}), on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)}, accuracy ${res.accuracy}`;
   $('timing').classList.remove('busy');
   $('busy').hidden = true;
+  afterPaint(() => publish(req, res));
+}
+
+/** The drawn frame in `window.rimeState` (tests and curious users), once it is on screen. */
+function publish(req, res) {
   const s = window.rimeState;
   const fig = res.figures[0];
   const bridges = fig.series.find((x) => /^Bridges/.test(x.name));
+  // The frame's arrays as plain arrays when first read (copying them for every frame was a
+  // sizeable part of a frame's time on the page's thread, for tests alone).
+  const lazy = (name, fn) => Object.defineProperty(s, name, {
+    enumerable: true,
+    configurable: true,
+    get() { const v = fn(); Object.defineProperty(s, name, { value: v, enumerable: true, configurable: true, writable: true }); return v; },
+  });
+  lazy('g', () => Array.from(res.g));
+  lazy('eps', () => (res.eps ? Array.from(res.eps) : []));
+  lazy('status', () => (res.status ? Array.from(res.status, (c) => app.statusNames[c] ?? 'failed') : []));
+  lazy('family', () => res.family && { path: res.family.path, values: res.family.values, isScene: res.family.isScene, curves: res.family.curves.map((c) => c && Array.from(c)) });
+  lazy('mapClasses', () => (res.map ? Array.from(res.map.codes) : null));
+  lazy('experiments', () => (bridges || fig.bands.length
+    ? { bridges: bridges ? { name: bridges.name, g: Array.from(bridges.x), eps: Array.from(bridges.y) } : null, bands: fig.bands } : null));
+  lazy('overlays', () => res.overlays.map((o) => ({ key: o.key, label: o.label, band: o.band, score: o.score, g: Array.from(o.g), eps: Array.from(o.eps), speeds: o.speeds })));
   Object.assign(s, {
     ready: true,
     sceneJson: req.scene,
     view: { ...req.page.view },
-    g: Array.from(res.g),
-    eps: res.eps ? Array.from(res.eps) : [],
-    status: res.status ? Array.from(res.status, (c) => app.statusNames[c] ?? 'failed') : [],
-    family: res.family && { path: res.family.path, values: res.family.values, isScene: res.family.isScene, curves: res.family.curves.map((c) => c && Array.from(c)) },
     critical: res.crit,
     warnings: res.warnings,
     warningDetails: res.warningDetails,
-    mapClasses: res.map ? Array.from(res.map.codes) : null,
     mapMax: res.map ? res.map.max : null,
     mapNote: res.mapNote,
-    experiments: bridges || fig.bands.length
-      ? { bridges: bridges ? { name: bridges.name, g: Array.from(bridges.x), eps: Array.from(bridges.y) } : null, bands: fig.bands } : null,
     figure: { y: fig.y, x: fig.x, series: fig.series.map((x) => x.name), styles: fig.series.map((x) => `${x.color}/${x.stroke}`), bands: fig.bands.map((b) => b.label), markers: fig.markers.map((m) => m.label), caption: fig.caption },
-    overlays: res.overlays.map((o) => ({ key: o.key, label: o.label, band: o.band, score: o.score, g: Array.from(o.g), eps: Array.from(o.eps), speeds: o.speeds })),
     tidal: res.tidal,
     tidalIn: app.tidalIn,
     frameErrors: res.errors,
@@ -209,6 +287,7 @@ function onFrame(msg, req) {
     history: historySize(),
     pinned: app.pinned ? { g: app.pinned.g, eps: app.pinned.eps, label: app.pinned.label } : null,
     updates: (s.updates || 0) + 1,
+    drawnAt: performance.now(),
   });
   document.body.dataset.updates = String(s.updates);
 }
@@ -229,17 +308,45 @@ function onBusy(busy) {
 
 function draw() {
   if (!app.res) return;
-  // Read the layout once, before this frame writes to the DOM (each read after a write forces a
-  // synchronous layout of the whole page).
-  const widths = {
-    chart: $('chart').parentElement.clientWidth, map: $('map').parentElement.clientWidth, epsT: $('eps-t').parentElement.clientWidth,
-  };
+  const t00 = performance.now();
+  // The figures' widths as last laid out (a ResizeObserver keeps them): reading them here, after
+  // this frame's writes to the page, would force a synchronous layout of the whole page, the
+  // biggest part of a redraw's time on the page's thread (issue 26).
+  const widths = figureWidths();
+  const t = [performance.now()];
   pinLabel();
   drawChartCanvas(widths.chart);
+  t.push(performance.now());
   familyNote(app.res);
   drawLegend(app.res);
+  t.push(performance.now());
   drawMapCanvas(widths);
+  t.push(performance.now());
   showPartNotes(app.res);
+  t.push(performance.now());
+  // Where a redraw's time goes on the page's thread [ms] (the frame benchmark reads it).
+  window.rimeState.drawParts = { layout: t[0] - t00, chart: t[1] - t[0], legend: t[2] - t[1], map: t[3] - t[2], notes: t[4] - t[3] };
+}
+
+const widthsSeen = { chart: null, map: null, epsT: null };
+let widthsObserver = null;
+/** The widths of the figures' boxes [CSS px], read once and then kept by a ResizeObserver. */
+function figureWidths() {
+  const boxes = { chart: $('chart').parentElement, map: $('map').parentElement, epsT: $('eps-t').parentElement };
+  if (!widthsObserver) {
+    for (const [k, e] of Object.entries(boxes)) widthsSeen[k] = e.clientWidth;
+    widthsObserver = new ResizeObserver((entries) => {
+      let changed = false;
+      for (const en of entries) {
+        const k = Object.keys(boxes).find((x) => boxes[x] === en.target);
+        const w = en.target.clientWidth;
+        if (k && widthsSeen[k] !== w) { widthsSeen[k] = w; changed = true; }
+      }
+      if (changed) requestAnimationFrame(draw);
+    });
+    for (const e of Object.values(boxes)) widthsObserver.observe(e);
+  }
+  return { ...widthsSeen };
 }
 
 /** The normal result at `g` for the drawn scene (main thread; tests). */
@@ -352,7 +459,16 @@ async function main() {
     reflectScene();
     schedule();
   });
+  if (canPaintInWorker()) {
+    const elements = Object.fromEntries(['chart', 'chart-fg', 'map', 'eps-t'].map((id) => [id, $(id)]));
+    app.painter = new Painter(module, elements, (e) => {
+      console.error(`rime: ${e}`);
+      window.rimeState.errors.push(e);
+    });
+  }
+  window.rimeState.paint = app.painter ? 'worker' : 'main';
   app.computer = new Computer(module, onFrame, onBusy);
+  window.rimeState.workers = poolSize();
   app.collider = new CollisionComputer(module, onCollision);
   app.wantScene = app.ex.toJson();
   showNotice(loadHash(validateTidal));
@@ -367,6 +483,14 @@ window.rimeExports = {
   chartSvg, mapSvg, curvesCsv: () => curvesCsv(), familyCsv: () => familyCsv(), mapCsv: () => mapCsv(),
   probe: (g) => probe(g, app.drawn.view.accuracy),
   speed: (v) => speed(v), qty: (v, u) => qty(v, u),
+};
+
+/** Test hook: the pixels of a canvas and of its data layer (`${id}-fg`, when it has one), as
+ *  [{width, height, data}], wherever they are drawn. */
+window.rimeTest.layers = async (id) => {
+  if (app.painter && ['chart', 'map', 'eps-t'].includes(id)) return app.painter.pixels(id === 'chart' ? ['chart', 'chart-fg'] : [id]);
+  return [id, `${id}-fg`].map((k) => document.getElementById(k)).filter(Boolean)
+    .map((c) => ({ width: c.width, height: c.height, data: c.getContext('2d').getImageData(0, 0, c.width, c.height).data }));
 };
 
 main().catch((e) => {

@@ -3,14 +3,16 @@
 // keyboard readouts from the frame's own samples (computed at the chosen level, never stale);
 // lin/log y axis; zoom and pan of the speed range; a text alternative.
 import { HELP, PALETTE, qty, sig, speed } from './core.js';
-import { $, el } from './dom.js';
-import { CanvasPainter, chartGeometry, chartLegendHeight, drawChartBack, drawChartFront } from './plot.js';
+import { $, el, setText } from './dom.js';
+import { CanvasPainter, chartGeometry, chartLegendHeight, drawChartBack, drawChartFront, sizeElement } from './plot.js';
 import { app } from './state.js';
 
 let geom = null;
 let backKey = null;
 let backDraws = 0;
 let frontDraws = 0;
+// What the painter worker last drew (a hover alone then posts only the cursor).
+let posted = { res: null, key: null };
 
 /** What the background layer shows: size, axes, labels and the legend's entries. */
 function backgroundKey(spec, w, h) {
@@ -68,14 +70,27 @@ export function drawChartCanvas(width) {
   // slider step or a hover redraws the data layer alone (issue 26: the redraw was the main
   // thread's cost per frame).
   const back = backgroundKey(spec, w, total);
-  const front = new CanvasPainter($('chart-fg'), w, total);
-  const g = chartGeometry(front, spec);
-  if (back !== backKey) {
-    drawChartBack(new CanvasPainter(canvas, w, total), spec, g);
+  const backChanged = back !== backKey;
+  if (app.painter) {
+    // Drawn in the painter worker (issue 26): here only the layout and what to draw.
+    for (const c of [canvas, $('chart-fg')]) sizeElement(c, w, total);
+    const g = chartGeometry({ width: w, height: total }, spec);
+    const same = posted.res === res && posted.key === back && !backChanged;
+    if (same) app.painter.hover(hover);
+    else app.painter.chart(spec, w, total, backChanged);
+    posted = { res, key: back };
+    const { box, X, Y, inv, H, entries, legend } = g;
+    geom = { box, X, Y, inv, bottom: H + (entries.length ? legend.height + 6 : 0) };
+  } else {
+    const front = new CanvasPainter($('chart-fg'), w, total);
+    const g = chartGeometry(front, spec);
+    if (backChanged) drawChartBack(new CanvasPainter(canvas, w, total), spec, g);
+    geom = drawChartFront(front, spec, g);
+  }
+  if (backChanged) {
     backKey = back;
     backDraws++;
   }
-  geom = drawChartFront(front, spec, g);
   window.rimeState.chartLayers = { backDraws, frontDraws: ++frontDraws };
   window.rimeState.chartPlot = { ...geom.box, legendBottom: geom.bottom };
   describe(res);
@@ -87,13 +102,13 @@ function readout() {
   const res = app.res;
   const i = app.hover.chart;
   const out = $('chart-readout');
-  if (!res || i === null || i >= res.g.length) { out.textContent = 'hover, tap or use ←/→ on the chart for values'; return; }
+  if (!res || i === null || i >= res.g.length) { setText(out, 'hover, tap or use ←/→ on the chart for values'); return; }
   const parts = [`g_N = ${speed(res.g[i], 4)}`];
   if (res.eps) parts.push(`ε_N = ${sig(res.eps[i], 6)} (${app.statusNames[res.status[i]] ?? 'failed'})`);
   if (res.clean) parts.push(`clean ${sig(res.clean[i], 4)}`);
   if (app.pinned && app.pinned.g[i] === res.g[i]) parts.push(`pinned ${sig(app.pinned.eps[i], 4)}`);
   parts.push(`at ${res.accuracy}`);
-  out.textContent = parts.join(' · ');
+  setText(out, parts.join(' · '));
 }
 
 /** A text alternative of the chart (for screen readers; also visible on request). */
@@ -109,7 +124,7 @@ function describe(res) {
   for (const c of res.crit) parts.push(`${c.label}: ${speed(c.value)}.`);
   if (res.family) parts.push(`Family: ${res.family.sym} varied around this scene (${res.family.values.map((x) => qty(x, res.family.unit, 3)).join(', ')}).`);
   if (app.pinned) parts.push(`A pinned curve (${app.pinned.label}) is drawn dashed.`);
-  $('chart-desc').textContent = parts.join(' ');
+  setText($('chart-desc'), parts.join(' '));
 }
 
 function nearest(g) {
@@ -243,8 +258,12 @@ export function wireChart(h) {
 }
 
 /** The family's meaning, beside the chart. */
+let familyKey = null;
 export function familyNote(res) {
   const f = res.family;
+  const key = f ? JSON.stringify([f.sym, f.values, f.unit, f.isScene]) : '';
+  if (key === familyKey) return;
+  familyKey = key;
   $('family-note').replaceChildren(...(f ? [
     el('strong', {}, 'Family: '),
     `${f.sym} varied around this scene (${f.values.map((v, i) => qty(v, f.unit, 3) + (f.isScene && f.isScene[i] ? ' = this scene' : '')).join(', ')}), every other parameter as in the scene.`,

@@ -1,7 +1,7 @@
 // "Compare": measured ice laws and other models over the ε_N chart (the core's list and scores),
 // and "fit A to the first checked measured law" (the core's fit).
 import { qty, sig, speed } from './core.js';
-import { $, el } from './dom.js';
+import { $, el, setText } from './dom.js';
 import { app } from './state.js';
 
 let hooks = { schedule: () => {}, edit: () => false };
@@ -31,8 +31,10 @@ export function syncCompare(scene) {
   for (const hint of document.querySelectorAll('#overlay-list .needs')) {
     const box = hint.parentElement.querySelector('input');
     const lacking = !(scene && scene[hint.dataset.needs]);
-    box.disabled = lacking && !box.checked;
-    hint.textContent = lacking ? ` — needs a ${hint.dataset.needs} section (a yield pressure): not in this scene` : '';
+    // Written only when it changes (issue 26: this runs on every slider step).
+    const off = lacking && !box.checked;
+    if (box.disabled !== off) box.disabled = off;
+    setText(hint, lacking ? ` — needs a ${hint.dataset.needs} section (a yield pressure): not in this scene` : '');
   }
 }
 
@@ -57,10 +59,15 @@ function fitToEntry() {
 }
 
 /** The score of the scene against each measured overlay, and what failed among them. */
+let scoresKey = null;
 export function showOverlayScores(res) {
-  const items = (res.overlays || []).filter((o) => o.score !== null && o.score !== undefined)
-    .map((o) => el('li', {}, `rms ε_N difference against ${o.label}: ${sig(o.score, 3)}`));
-  for (const e of res.errors) if (/^(atlas|model):/.test(e.part)) items.push(el('li', { class: 'err' }, `${e.part}: ${e.message}`));
-  $('overlay-scores').replaceChildren(...items);
+  const lines = (res.overlays || []).filter((o) => o.score !== null && o.score !== undefined)
+    .map((o) => ['', `rms ε_N difference against ${o.label}: ${sig(o.score, 3)}`]);
+  for (const e of res.errors) if (/^(atlas|model):/.test(e.part)) lines.push(['err', `${e.part}: ${e.message}`]);
+  // Rebuilt only when it changes (issue 26).
+  const key = JSON.stringify(lines);
+  if (key === scoresKey) return;
+  scoresKey = key;
+  $('overlay-scores').replaceChildren(...lines.map(([cls, text]) => el('li', { class: cls || null }, text)));
 }
 

@@ -1,20 +1,18 @@
-// The page's side of the worker: posts requests, drops stale answers by generation, and restarts
-// the worker when a newer request waits behind a slow one (a computation cannot be interrupted).
+// The page's side of the workers: posts requests, drops stale answers by generation, and restarts
+// a worker when a newer request waits behind a slow one (a computation cannot be interrupted).
 
-/** How long a running request may hold up a newer one before the worker is restarted [ms]. */
+/** How long a running request may hold up a newer one before its worker is restarted [ms]. */
 const RESTART_AFTER_MS = 150;
 
-export class Computer {
-  /**
-   * @param {WebAssembly.Module} module the compiled wasm module (shared with the worker)
-   * @param {(answer: object, request: object) => void} onFrame called with the newest request's answer
-   * @param {(busy: boolean) => void} onBusy called when computing starts and stops
-   */
-  constructor(module, onFrame, onBusy) {
+/** One worker and its requests: one running, the newest one queued (older queued ones are
+ *  dropped, so a dragged slider never queues stale work); a running request that a newer one has
+ *  waited behind for RESTART_AFTER_MS is dropped with its worker (a computation cannot be
+ *  interrupted) and the worker is started again. */
+class Lane {
+  constructor(module, onMessage, onCrash) {
     this.module = module;
-    this.onFrame = onFrame;
-    this.onBusy = onBusy;
-    this.gen = 0;
+    this.onMessage = onMessage;
+    this.onCrash = onCrash;
     this.running = null; // {req, since}
     this.queued = null;
     this.restarts = 0;
@@ -28,7 +26,7 @@ export class Computer {
       ev.preventDefault();
       const req = this.running && this.running.req;
       this.running = null;
-      if (req) this.onFrame({ gen: req.gen, error: `worker: ${ev.message || 'crashed'}`, ms: 0, calls: 0 }, req);
+      if (req) this.onCrash(req, `worker: ${ev.message || 'crashed'}`);
       this.restart();
     };
     this.worker.postMessage({ type: 'init', module: this.module });
@@ -41,26 +39,18 @@ export class Computer {
     this.pump();
   }
 
-  /** Asks for the frame of `scene` (JSON text) seen through `view`; `page` comes back with the
-   *  answer; with `preview`, a `fast` preview comes first (`msg.preview`). Returns the request's
-   *  generation. */
-  request(scene, view, page, preview = false) {
-    const req = { type: 'frame', gen: ++this.gen, scene, view, page, preview };
+  post(req) {
     this.queued = req;
     const run = this.running;
-    if (!run) {
-      this.pump();
-    } else {
-      // The running request is stale: if it is slow, drop it with its worker.
-      const wait = Math.max(0, RESTART_AFTER_MS - (performance.now() - run.since));
-      setTimeout(() => {
-        if (this.running === run && this.queued) {
-          this.running = null;
-          this.restart();
-        }
-      }, wait);
-    }
-    return req.gen;
+    if (!run) { this.pump(); return; }
+    // The running request is stale: if it is slow, drop it with its worker.
+    const wait = Math.max(0, RESTART_AFTER_MS - (performance.now() - run.since));
+    setTimeout(() => {
+      if (this.running === run && this.queued) {
+        this.running = null;
+        this.restart();
+      }
+    }, wait);
   }
 
   pump() {
@@ -69,32 +59,108 @@ export class Computer {
     this.queued = null;
     this.running = { req, since: performance.now() };
     this.worker.postMessage(req);
-    this.onBusy(true);
   }
 
   answer(msg) {
     if (msg.type === 'ready') return;
+    const run = this.running;
+    if (msg.type === 'fatal') { this.onMessage({ ...msg, last: true }, run ? run.req : null); return; }
+    // A request's last frame frees the worker for the queued one.
+    if (msg.last) { this.running = null; this.pump(); }
+    if (run) this.onMessage(msg, run.req);
+  }
+}
+
+/** Workers the page computes frames with: one where the browser reports one core; else two, one
+ *  for the `fast` previews (and frames asked at `fast`) and one for the refinements, so that a
+ *  preview never waits behind a stale refinement and restarting one never delays the next preview
+ *  (issue 26; splitting one frame's units over workers did not pay: see ARCHITECTURE.md). */
+export function poolSize() {
+  // `?workers=1` in the address: the pool of one (the frame benchmark compares the two).
+  const asked = Number(new URLSearchParams(location.search).get('workers'));
+  if (asked === 1 || asked === 2) return asked;
+  return (navigator.hardwareConcurrency || 1) > 1 ? 2 : 1;
+}
+
+export class Computer {
+  /**
+   * @param {WebAssembly.Module} module the compiled wasm module (shared with the workers)
+   * @param {(answer: object, request: object) => void} onFrame called with the newest request's
+   *   answers: its preview (`answer.preview`), if any and if it comes first, then its frame
+   * @param {(busy: boolean) => void} onBusy called when computing starts and stops
+   * @param {number} workers 1 or 2 (see poolSize)
+   */
+  constructor(module, onFrame, onBusy, workers = poolSize()) {
+    this.onFrame = onFrame;
+    this.onBusy = onBusy;
+    this.gen = 0;
+    this.answered = 0; // the newest generation whose requested frame was passed on
+    this.shown = 0; // the newest generation whose preview or frame was passed on
+    // A crashed worker answers its request's frame with the error (a lost preview is no error).
+    const crash = (req, error) => {
+      if (req.frames.some((f) => !f.preview)) this.deliver({ type: 'frame', gen: req.gen, error, ms: 0, calls: 0, last: true }, req);
+    };
+    this.lanes = Array.from({ length: workers }, () => new Lane(module, (m, r) => this.deliver(m, r), crash));
+  }
+
+  /** The preview lane and the refinement lane (the same worker in a pool of one). */
+  get fastLane() { return this.lanes[0]; }
+  get refineLane() { return this.lanes[this.lanes.length - 1]; }
+
+  /** Worker restarts so far (a stale computation dropped). */
+  get restarts() { return this.lanes.reduce((n, l) => n + l.restarts, 0); }
+
+  /** Asks for the frame of `scene` (JSON text) seen through `view`; `page` comes back with the
+   *  answer. With `previewView`, that view's frame comes first as a preview (`msg.preview`), drawn
+   *  until the requested one arrives. `ring` (or null): the ring card's inputs, computed with the
+   *  requested frame (and with the preview when it goes on the chart). Returns the generation. */
+  request(scene, view, page, previewView = null, ring = null) {
+    const gen = ++this.gen;
+    const req = { type: 'frame', gen, scene, page, ring };
+    const final = { view, preview: false };
+    if (previewView) {
+      const preview = { view: previewView, preview: true };
+      if (this.lanes.length === 1) {
+        this.fastLane.post({ ...req, frames: [preview, final] });
+      } else {
+        this.fastLane.post({ ...req, frames: [preview] });
+        this.refineLane.post({ ...req, frames: [final] });
+      }
+    } else {
+      // A frame at `fast` needs no preview: the fast lane computes it.
+      (view.accuracy === 'fast' ? this.fastLane : this.refineLane).post({ ...req, frames: [final] });
+    }
+    this.onBusy(true);
+    return gen;
+  }
+
+  deliver(msg, req) {
     if (msg.type === 'fatal') {
       this.onFrame({ gen: this.gen, error: msg.message, ms: 0, calls: 0 }, null);
       return;
     }
-    const run = this.running;
+    if (!req) return;
     if (msg.preview) {
-      // The request's fast preview; the worker goes on to the requested level (a newer request
-      // still restarts it after RESTART_AFTER_MS).
-      if (run && msg.gen === this.gen) this.onFrame(msg, run.req);
+      // A preview newer than anything on screen is drawn even when a newer request waits: while a
+      // slider is dragged faster than previews come, the screen follows it (a stale frame is only
+      // ever a preview; downloads wait for the newest request's frame).
+      if (msg.gen > this.shown && !msg.error) {
+        this.shown = msg.gen;
+        this.onFrame(msg, req);
+      }
       return;
     }
-    this.running = null;
-    if (run && msg.gen === this.gen) this.onFrame(msg, run.req);
-    // else: a stale answer (a newer request exists), dropped.
-    if (this.queued) this.pump();
-    else this.onBusy(false);
+    // A stale frame (a newer request exists) is dropped.
+    if (msg.gen !== this.gen) return;
+    this.answered = msg.gen;
+    this.shown = msg.gen;
+    this.onFrame(msg, req);
+    this.onBusy(false);
   }
 
-  /** Whether the newest request has not been answered yet. */
+  /** Whether the newest request's frame has not been answered yet. */
   get busy() {
-    return this.running !== null || this.queued !== null;
+    return this.answered !== this.gen;
   }
 }
 

@@ -3,7 +3,7 @@
 // undo/redo) and the view fields (speed range with units, map range, experiments). Every edit goes
 // through the core (app.ex); a value it rejects is refused at the control, naming the field.
 import { HELP, editable, parseChartSpeed, parseSpeed, qty, sig } from './core.js';
-import { $, el, errText, linked } from './dom.js';
+import { $, el, errText, linked, setText } from './dom.js';
 import { syncCompare } from './compare.js';
 import { app, canRedo, canUndo, onHistory, redo, remember, undo } from './state.js';
 
@@ -71,7 +71,7 @@ export function reflectScene() {
   const first = $('preset').options[0];
   if (!first) return;
   const match = presetList.find((p) => scene && sameJson(p.scene, scene));
-  first.textContent = match ? `${match.name} (this scene) — load a preset` : 'an edited scene — load a preset';
+  setText(first, match ? `${match.name} (this scene) — load a preset` : 'an edited scene — load a preset');
 }
 
 /** Applies one edit (`fn` on app.ex) of `key` through the core; records it for undo. A value the
@@ -186,6 +186,11 @@ export function buildControls(h) {
 
 /** Shows the drawn scene and view in every control (a field being typed in keeps its text). An
  *  inactive parameter (its effect off) is greyed and disabled, its slider at the start. */
+/** Writes a property or attribute only when it differs (issue 26: every write invalidates the
+ *  page's style, and a frame rewrote every control). */
+const put = (e, k, v) => { if (e[k] !== v) e[k] = v; };
+const attr = (e, k, v) => { if (e.getAttribute(k) !== v) e.setAttribute(k, v); };
+
 export function syncControls() {
   const values = app.res.values;
   // A frame older than the newest edit (a slider still being dragged while the worker catches up)
@@ -194,52 +199,52 @@ export function syncControls() {
   for (const [path, row] of rows) {
     const v = values[path];
     if (row.cb) {
-      row.cb.checked = v === true;
+      put(row.cb, 'checked', v === true);
     } else if (row.sel) {
       const off = v === null;
       row.root.classList.toggle('inactive', off);
-      row.sel.disabled = off;
-      if (!off) row.sel.value = v; else row.sel.selectedIndex = -1;
+      put(row.sel, 'disabled', off);
+      if (!off) put(row.sel, 'value', v); else put(row.sel, 'selectedIndex', -1);
     } else {
       const off = v === null;
       row.root.classList.toggle('inactive', off);
-      row.slider.disabled = off;
-      row.typed.disabled = off;
+      put(row.slider, 'disabled', off);
+      put(row.typed, 'disabled', off);
       const typing = document.activeElement === row.typed && row.typed.dataset.dirty === '1';
       if (off) {
-        row.typed.value = '';
-        row.typed.placeholder = 'off';
-        row.slider.value = 0;
-        row.slider.setAttribute('aria-valuetext', 'off');
+        put(row.typed, 'value', '');
+        put(row.typed, 'placeholder', 'off');
+        put(row.slider, 'value', '0');
+        attr(row.slider, 'aria-valuetext', 'off');
       } else {
-        row.typed.placeholder = '';
+        put(row.typed, 'placeholder', '');
         if (!(stale && document.activeElement === row.slider)) {
-          row.slider.value = toSlider(row.p, v);
-          row.slider.setAttribute('aria-valuetext', shown(row.p, v));
+          put(row.slider, 'value', String(toSlider(row.p, v)));
+          attr(row.slider, 'aria-valuetext', shown(row.p, v));
         }
         // A refused text stays until it is fixed (or the slider moves): the user's typo is not lost.
-        if (!typing && row.typed.dataset.refused !== '1') row.typed.value = editable(v, row.p.unit);
+        if (!typing && row.typed.dataset.refused !== '1') put(row.typed, 'value', editable(v, row.p.unit));
       }
     }
   }
-  $('damping-form').value = values['bulk.damping.time'] === null ? 'viscosities' : 'time';
+  put($('damping-form'), 'value', values['bulk.damping.time'] === null ? 'viscosities' : 'time');
   const view = app.drawn.view;
-  $('accuracy').value = view.accuracy;
+  put($('accuracy'), 'value', view.accuracy);
   showTrade();
   const keep = (id) => document.activeElement === $(id) && $(id).dataset.dirty === '1';
-  if (!keep('view-from')) $('view-from').value = editable(view.from, 'm/s');
-  if (!keep('view-to')) $('view-to').value = editable(view.to, 'm/s');
-  $('view-experiments').checked = view.experiments;
-  for (const r of document.querySelectorAll('input[name="yscale"]')) r.checked = r.value === view.yScale;
-  for (const box of document.querySelectorAll('#overlay-list input')) box.checked = view.overlays.includes(box.value);
-  $('chart-sources').hidden = !view.experiments;
-  if (!keep('view-mapmax')) $('view-mapmax').value = view.mapMax === null ? '' : editable(view.mapMax, 'm/s');
+  if (!keep('view-from')) put($('view-from'), 'value', editable(view.from, 'm/s'));
+  if (!keep('view-to')) put($('view-to'), 'value', editable(view.to, 'm/s'));
+  put($('view-experiments'), 'checked', view.experiments);
+  for (const r of document.querySelectorAll('input[name="yscale"]')) put(r, 'checked', r.value === view.yScale);
+  for (const box of document.querySelectorAll('#overlay-list input')) put(box, 'checked', view.overlays.includes(box.value));
+  put($('chart-sources'), 'hidden', !view.experiments);
+  if (!keep('view-mapmax')) put($('view-mapmax'), 'value', view.mapMax === null ? '' : editable(view.mapMax, 'm/s'));
 }
 
 /** What the chosen level trades (how ε_N is obtained, its bound, its cost), beside the menu. */
 function showTrade() {
   const l = HELP.levels.find((x) => x.name === $('accuracy').value);
-  $('accuracy-help').textContent = l ? l.trade : '';
+  setText($('accuracy-help'), l ? l.trade : '');
 }
 
 /** Goes back (or forward) in the history of scene edits. */

@@ -15,6 +15,11 @@ export function el(tag, attrs = {}, ...children) {
   return e;
 }
 
+/** Sets an element's text only when it differs (a write invalidates the page's style and layout). */
+export function setText(e, text) {
+  if (e.textContent !== text) e.textContent = text;
+}
+
 export const errText = (e) => String(e && e.message ? e.message : e);
 
 const EQ = /Eq\. \((A\.\d+|\d+)\)(?:–\((A\.\d+|\d+)\))?|decision (\d+)/g;

@@ -4,10 +4,11 @@
 // values and a text alternative.
 import { HELP, PALETTE, sig, speed } from './core.js';
 import { $, el, linked, wrapText } from './dom.js';
-import { CanvasPainter, drawLines, drawMap } from './plot.js';
+import { CanvasPainter, drawLines, drawMap, drawNote, mapGeometry, sizeElement } from './plot.js';
 import { app } from './state.js';
 
 let geom = null;
+let legendCounts = null; // the legend's share elements, one per class
 let hooks = { replay: () => {} };
 
 /** The classes' colours in code order (the core's palette). */
@@ -45,27 +46,42 @@ export function drawMapCanvas(widths = {}) {
   const canvas = $('map');
   const s = side(canvas, widths.map);
   const et = $('eps-t');
+  let map = null; // what to draw: {w, h, spec, lines: {w, h, spec}} or {w, h, note}
   if (res.map) {
     const m = res.map;
     const h = app.hover.map;
-    geom = drawMap(new CanvasPainter(canvas, s, s - 28), mapSpec(m, h));
-    drawLines(new CanvasPainter(et, Math.max(200, Math.floor((widths.epsT ?? et.parentElement.clientWidth) - 2)), 220), epsTSpec(m, h && h.i === mapRow(m) ? h.j : null));
-    et.hidden = false;
+    const lw = Math.max(200, Math.floor((widths.epsT ?? et.parentElement.clientWidth) - 2));
+    map = { w: s, h: s - 28, spec: mapSpec(m, h), lines: { w: lw, h: 220, spec: epsTSpec(m, h && h.i === mapRow(m) ? h.j : null) } };
+    geom = mapGeometry(map.w, map.h);
+    if (et.hidden) et.hidden = false;
     canvas.setAttribute('aria-label', `stick map over g_T (across) and g_N (up), 0 to ${speed(m.max)}; summary below`);
   } else {
     geom = null;
     et.hidden = true;
     const failed = res.mapFailed;
-    const p = new CanvasPainter(canvas, s, failed ? 160 : 100);
-    p.rect(0, 0, s, p.height, { fill: failed ? '#fdf3f2' : '#fafafa', stroke: failed ? '#e2a49f' : undefined });
+    const lines = [];
     if (failed) {
-      p.text(s / 2, 50, '⚠ stick map not computed', { size: 14, align: 'center', color: '#b3261e' });
+      lines.push({ y: 50, text: '⚠ stick map not computed', size: 14, color: '#b3261e' });
       wrapText(failed.error, Math.max(20, Math.floor((s - 24) / 6.6))).slice(0, 4)
-        .forEach((line, k) => p.text(s / 2, 76 + k * 17, line, { size: 12, align: 'center', color: '#444' }));
+        .forEach((line, k) => lines.push({ y: 76 + k * 17, text: line, size: 12, color: '#444' }));
       canvas.setAttribute('aria-label', `stick map not computed: ${failed.error}`);
     } else {
-      p.text(s / 2, 55, res.friction ? 'no stick map for this scene' : 'friction is off: no ε_T, no stick map', { size: 13, align: 'center', color: '#555' });
+      lines.push({ y: 55, text: res.friction ? 'no stick map for this scene' : 'friction is off: no ε_T, no stick map', size: 13, color: '#555' });
       canvas.setAttribute('aria-label', 'stick map (friction is off)');
+    }
+    map = { w: s, h: failed ? 160 : 100, note: { fill: failed ? '#fdf3f2' : '#fafafa', stroke: failed ? '#e2a49f' : undefined, lines } };
+  }
+  if (app.painter) {
+    // Drawn in the painter worker (issue 26).
+    sizeElement(canvas, map.w, map.h);
+    if (map.lines) sizeElement(et, map.lines.w, map.lines.h);
+    app.painter.map(map);
+  } else {
+    const p = new CanvasPainter(canvas, map.w, map.h);
+    if (map.note) drawNote(p, map.note);
+    else {
+      drawMap(p, map.spec);
+      drawLines(new CanvasPainter(et, map.lines.w, map.lines.h), map.lines.spec);
     }
   }
   readout();
@@ -87,21 +103,33 @@ export function drawLegend(res) {
   if (res.map) for (const c of res.map.codes) counts[c]++;
   const total = res.map ? res.map.codes.length : 0;
   const colors = classColors();
-  $('legend').replaceChildren(...app.classes.map((c, k) => el('li', { class: isArtifact(c.name) ? 'artifact' : null },
-    el('span', { class: 'sw', style: `background:${colors[k]}`, 'aria-hidden': 'true' }),
-    el('span', {}, ...linked(c.meaning),
-      ' ', el('span', { class: 'count' }, total ? `(${sig((100 * counts[k]) / total, 3)} %)` : '')))));
+  // The entries are built once; a frame writes only the shares that changed (issue 26: rebuilding
+  // the list was a third of a redraw's time on the page's thread).
+  if (!legendCounts) {
+    legendCounts = app.classes.map(() => el('span', { class: 'count' }, ''));
+    $('legend').replaceChildren(...app.classes.map((c, k) => el('li', { class: isArtifact(c.name) ? 'artifact' : null },
+      el('span', { class: 'sw', style: `background:${colors[k]}`, 'aria-hidden': 'true' }),
+      el('span', {}, ...linked(c.meaning), ' ', legendCounts[k]))));
+  }
+  legendCounts.forEach((span, k) => {
+    const text = total ? `(${sig((100 * counts[k]) / total, 3)} %)` : '';
+    if (span.textContent !== text) span.textContent = text;
+  });
   res.classCounts = counts;
   const gap = app.classes.findIndex((c) => isArtifact(c.name));
   const note = $('artifact-note');
   const shown = res.map && gap >= 0 && counts[gap] > 0;
-  note.hidden = !shown;
-  note.replaceChildren(...(shown ? linked(HELP.artifactNote) : []));
+  if (note.hidden !== !shown) {
+    note.hidden = !shown;
+    note.replaceChildren(...(shown ? linked(HELP.artifactNote) : []));
+  }
+  let desc = '';
   if (res.map) {
     const parts = app.classes.map((c, k) => [c, counts[k]]).filter(([, n]) => n > 0)
       .map(([c, n]) => `${c.label} ${sig((100 * n) / total, 3)} %`);
-    $('map-desc').textContent = `Stick map, g_T across and g_N up from 0 to ${speed(res.map.max)}: ${parts.join(', ')}.`;
-  } else $('map-desc').textContent = '';
+    desc = `Stick map, g_T across and g_N up from 0 to ${speed(res.map.max)}: ${parts.join(', ')}.`;
+  }
+  if ($('map-desc').textContent !== desc) $('map-desc').textContent = desc;
 }
 
 function cellAt(ev) {

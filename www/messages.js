@@ -2,10 +2,11 @@
 // the banner naming parts of a frame that failed, the notes in their place, the core's warnings,
 // and the notice naming fields of a link that could not be read.
 import { HELP, citation, physicsUrl } from './core.js';
-import { $, el, linked } from './dom.js';
+import { $, el, linked, setText } from './dom.js';
 import { showOverlayScores } from './compare.js';
 
 let bannerKey = '';
+let warningsKey = null;
 let bannerDismissed = '';
 
 export function wireBanner() {
@@ -29,6 +30,10 @@ export function showWarnings(res) {
   showOverlayScores(res);
   // The core's warnings, each with its help on hover (the terminal's `?` and the CLI say the same).
   const details = res.warningDetails || res.warnings.map((text) => ({ text, help: '' }));
+  // Rebuilt only when they change (issue 26: a frame's DOM writes are the page thread's cost).
+  const key = JSON.stringify(details);
+  if (key === warningsKey) return;
+  warningsKey = key;
   $('warnings').replaceChildren(...details.map((w) => el('li', { title: w.help }, ...linked(w.text))));
 }
 
@@ -43,11 +48,11 @@ export function showPartNotes(res) {
           : `${e.part}: not drawn`);
   }
   const cn = $('chart-note');
-  cn.textContent = notes.length ? `⚠ ${notes.join(' · ')} (see the message above)` : '';
-  cn.hidden = !notes.length;
+  setText(cn, notes.length ? `⚠ ${notes.join(' · ')} (see the message above)` : '');
+  if (cn.hidden !== !notes.length) cn.hidden = !notes.length;
   const rn = $('map-range-note');
-  rn.textContent = res.mapNote ? `Note: ${res.mapNote}.` : '';
-  rn.hidden = !res.mapNote;
+  setText(rn, res.mapNote ? `Note: ${res.mapNote}.` : '');
+  if (rn.hidden !== !res.mapNote) rn.hidden = !res.mapNote;
 }
 
 export function showNotice(problems) {

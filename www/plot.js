@@ -22,15 +22,21 @@ export function niceTicks(lo, hi, count) {
   return out;
 }
 
+/** Sets a canvas element's CSS size (only when it changes: a write invalidates the layout). */
+export function sizeElement(canvas, width, height) {
+  if (canvas.style.height !== `${height}px`) canvas.style.height = `${height}px`;
+  if (canvas.style.width !== `${width}px`) canvas.style.width = `${width}px`;
+}
+
 export class CanvasPainter {
   /** `scale`: device pixels per CSS pixel (the screen's by default; 2 for PNG exports). */
-  constructor(canvas, width, height, scale = window.devicePixelRatio || 1) {
+  constructor(canvas, width, height, scale = globalThis.devicePixelRatio || 1) {
     // Resizing a canvas reallocates it: only when the size changes.
     const cw = Math.round(width * scale), ch = Math.round(height * scale);
     if (canvas.width !== cw) canvas.width = cw;
     if (canvas.height !== ch) canvas.height = ch;
-    if (canvas.style.height !== `${height}px`) canvas.style.height = `${height}px`;
-    if (canvas.style.width !== `${width}px`) canvas.style.width = `${width}px`;
+    // An OffscreenCanvas (drawn in a worker) has no style: the page sizes its element.
+    if (canvas.style) sizeElement(canvas, width, height);
     this.canvas = canvas;
     this.ctx = canvas.getContext('2d');
     this.ctx.setTransform(scale, 0, 0, scale, 0, 0);
@@ -79,7 +85,8 @@ export class CanvasPainter {
   }
   /** The stick-map grid: n×n class codes (index i·n + j), code i (g_N) up, j (g_T) across. */
   grid(x, y, w, h, n, codes, colors) {
-    const off = document.createElement('canvas');
+    // In the painter worker there is no document: an OffscreenCanvas there.
+    const off = typeof document === 'undefined' ? new OffscreenCanvas(n, n) : document.createElement('canvas');
     off.width = n; off.height = n;
     const octx = off.getContext('2d');
     const img = octx.createImageData(n, n);
@@ -359,6 +366,18 @@ export function drawChart(p, spec) {
   return drawChartFront(p, spec, g);
 }
 
+/** Where the stick map's cells go on a W×H figure (the page reads it for hover). */
+export function mapGeometry(W, H) {
+  const size = Math.max(60, Math.min(W - 84, H - 50));
+  return { size, box: { l: 70, t: 10, r: 70 + size, b: 10 + size }, bottom: 10 + size + 44 };
+}
+
+/** A note in place of a figure: a filled box and centred lines ({y, text, size, color}). */
+export function drawNote(p, spec) {
+  p.rect(0, 0, p.width, p.height, { fill: spec.fill, stroke: spec.stroke });
+  for (const l of spec.lines) p.text(p.width / 2, l.y, l.text, { size: l.size, align: 'center', color: l.color });
+}
+
 /**
  * The stick map as Fig. 4 of the paper: g_T across, g_N up, both from 0 to `max` (linear).
  * spec: {n, codes (index i·n + j: g_N index i, g_T index j), max, colors (by code), hover: {i, j} | null,
@@ -366,8 +385,7 @@ export function drawChart(p, spec) {
  */
 export function drawMap(p, spec) {
   const { width: W, height: H } = p;
-  const size = Math.max(60, Math.min(W - 84, H - 50));
-  const box = { l: 70, t: 10, r: 70 + size, b: 10 + size };
+  const { size, box } = mapGeometry(W, H);
   const n = spec.n;
   p.rect(0, 0, W, H, { fill: '#fff' });
   p.grid(box.l, box.t, size, size, n, spec.codes, spec.colors);

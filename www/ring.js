@@ -12,7 +12,6 @@ import { app } from './state.js';
 /** The card's inputs and its last result (not in the link). */
 export const ring = { tau: 0.5, omega: 1.3143527e-4, planet: false, onChart: false, card: null, error: null };
 
-const memo = { key: '', card: null, error: null };
 let hooks = { schedule: () => {} };
 
 /** The request for the core's card with the inputs `r` over the chart's speed range. */
@@ -38,19 +37,20 @@ function card(scene, text) {
   }
 }
 
-/** The core's card for the drawn scene over the chart's speed range (memoised). */
-function compute(scene, chart) {
-  const text = request(ring, chart);
-  const key = `${scene}|${text}`;
-  if (key !== memo.key) Object.assign(memo, { key }, card(scene, text));
-  ring.card = memo.card;
-  ring.error = memo.error;
+/** The ring card's inputs for a frame request (the worker computes the card with the frame). */
+export function ringInputs() {
+  return { tau: ring.tau, omega: ring.omega, planet: ring.planet, onChart: ring.onChart };
 }
 
-/** Before the chart is drawn: computes the card and, when asked, adds it to the ε_N figure. */
-export function ringOverlay(res, scene) {
+/** Before the chart is drawn: takes the card the worker computed with the frame (`out`: {json} or
+ *  {error}; null: a preview without it, the card on screen stays) and, when asked, adds it to the
+ *  ε_N figure. */
+export function ringOverlay(res, out) {
+  if (out) {
+    if (out.error) Object.assign(ring, { card: null, error: out.error });
+    else Object.assign(ring, { card: JSON.parse(out.json), error: null });
+  }
   const fig = res.figures[0];
-  compute(scene, [fig.x.min, fig.x.max]);
   const c = ring.card;
   if (!c || !ring.onChart) return;
   const line = c.eps_cr_line;

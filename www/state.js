@@ -16,6 +16,7 @@ export const app = {
   res: null, // the decoded frame on screen
   preview: false, // whether it is the fast preview of the newest request (never downloaded)
   computer: null,
+  painter: null, // the chart's painter worker (painter.js); null: the chart is drawn on this thread
   probeEx: null, // the drawn scene, for probes and collisions
   probeScene: null,
   pinRequest: null, // {scene, accuracy, from, to}: a pinned curve of the link, computed before the first frame

@@ -65,10 +65,15 @@ export function buildTidal(h) {
   });
 }
 
+let shownKey = null;
 export function showTidal(res) {
   const t = res.tidal;
   const note = $('tidal-note');
   const failed = res.errors.find((e) => e.part === 'tidal');
+  // Rebuilt only when it changes (issue 26: most edits leave the appendix as it is).
+  const key = JSON.stringify([t, failed, app.tidalIn]);
+  if (key === shownKey) return;
+  shownKey = key;
   note.hidden = !failed;
   note.textContent = failed ? `⚠ not computed: ${failed.message}` : '';
   $('tidal').hidden = !t;

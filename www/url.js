@@ -7,10 +7,17 @@ import { TIDAL_FIELDS } from './tidal.js';
 
 let timer = null;
 
-/** Writes the link of the drawn frame (coalesced: browsers throttle replaceState at slider rates). */
+/** Writes the link of the drawn frame once the edits have stopped for a second, when the page is
+ *  idle: browsers throttle replaceState at slider rates, and each write was followed by a layout
+ *  of the page, 8–12 ms of the page's thread (issue 26: a long task on a phone while a slider was
+ *  dragged). */
 export function writeHash() {
-  if (timer !== null) return;
-  timer = setTimeout(() => { timer = null; writeHashNow(); }, 150);
+  clearTimeout(timer);
+  timer = setTimeout(() => {
+    timer = null;
+    if ('requestIdleCallback' in window) requestIdleCallback(() => writeHashNow(), { timeout: 1000 });
+    else writeHashNow();
+  }, 1000);
 }
 
 export function writeHashNow() {

@@ -1,11 +1,40 @@
 // The computing half of the page: a module worker holding the wasm module. It answers each request
-// {gen, scene, view} with one whole frame (one computeFrame call, then its three arrays) or with the
-// request's error, so that no level of accuracy ever blocks the page's input. With `preview` it
-// first sends the frame at `fast`, marked `preview: true` (issue 26).
-import init, { Explorer, computeFrame } from './pkg/rime_wasm.js';
+// {gen, scene, frames: [{view, preview}], ring} with one message per frame, in order (one
+// computeFrame call, then its three arrays; the last one marked `last`), or with the request's
+// error, so that no level of accuracy ever blocks the page's input. A preview (issue 26) is a
+// frame the page draws until the requested one arrives. The ring card (issue 24) is computed here
+// too, beside the requested frame: on the literal layer reading it takes longer than a frame, and
+// on the page's thread it was a long task.
+import init, { Explorer, computeFrame, ringCard } from './pkg/rime_wasm.js';
 
 let ready = null;
 let explorer = null; // the collision card's scene (one per worker)
+const ringMemo = { key: '', out: null };
+const encoder = new TextEncoder();
+
+const busyWait = (ms) => { const until = performance.now() + ms; while (performance.now() < until) { /* busy */ } };
+
+/** The ring card of `scene` for the inputs `r` over the frame's speed range (memoised). */
+function ring(scene, r, whole) {
+  const j = JSON.parse(whole);
+  const fig = j.figures[0];
+  const input = { tau: r.tau, chart: [fig.x.min, fig.x.max] };
+  const t = j.tidal && !j.tidal.error ? j.tidal.input : null;
+  if (r.planet && t) {
+    input.planet_mass = t.planet_mass;
+    input.distance = t.distance;
+  } else {
+    input.omega = r.omega;
+  }
+  const text = JSON.stringify(input);
+  const key = `${scene}|${text}`;
+  if (key !== ringMemo.key) {
+    let out;
+    try { out = { json: ringCard(scene, text) }; } catch (e) { out = { error: String(e && e.message ? e.message : e) }; }
+    Object.assign(ringMemo, { key, out });
+  }
+  return ringMemo.out;
+}
 
 self.onmessage = async (ev) => {
   const msg = ev.data;
@@ -31,33 +60,37 @@ self.onmessage = async (ev) => {
   }
   if (msg.type !== 'frame') return;
   await ready;
-  const t0 = performance.now();
-  let calls = 0;
-  try {
-    // The end-to-end test's stand-in for a slow computation: the worker is busy, the page is not.
-    const { testDelayMs, testRefineDelayMs, ...view } = msg.view;
-    if (testDelayMs > 0) { const until = performance.now() + testDelayMs; while (performance.now() < until) { /* busy */ } }
-    // A preview first (issue 26): the same view at `fast`, drawn while the requested level computes.
-    if (msg.preview && view.accuracy !== 'fast') {
-      const p = computeFrame(msg.scene, JSON.stringify({ ...view, accuracy: 'fast' }));
-      const [pjson, pnumbers, pcodes] = [p.json(), p.numbers(), p.codes()];
-      p.free();
-      calls += 5;
-      self.postMessage({ type: 'frame', gen: msg.gen, preview: true, json: pjson, numbers: pnumbers, codes: pcodes, ms: performance.now() - t0, calls: 0 }, [pnumbers.buffer, pcodes.buffer]);
-      // The end-to-end test's stand-in for a slow refinement (the preview stays on screen).
-      if (testRefineDelayMs > 0) { const until = performance.now() + testRefineDelayMs; while (performance.now() < until) { /* busy */ } }
+  const n = msg.frames.length;
+  for (let k = 0; k < n; k++) {
+    const { view: full, preview } = msg.frames[k];
+    const last = k === n - 1;
+    const t0 = performance.now();
+    try {
+      // The end-to-end test's stand-ins: a slow computation (the worker is busy, the page is
+      // not) and a slow refinement (the preview stays on screen).
+      const { testDelayMs, testRefineDelayMs, ...view } = full;
+      if (testDelayMs > 0 && (k === 0 || !preview)) busyWait(testDelayMs);
+      if (testRefineDelayMs > 0 && !preview) busyWait(testRefineDelayMs);
+      const t1 = performance.now();
+      const f = computeFrame(msg.scene, JSON.stringify(view));
+      const whole = f.json();
+      const numbers = f.numbers();
+      const codes = f.codes();
+      f.free();
+      const ms = performance.now() - t1;
+      // The ring card with the requested frame; with a preview only when it is drawn on the chart.
+      const r = msg.ring && (!preview || msg.ring.onChart) ? ring(msg.scene, msg.ring, whole) : null;
+      // The records (the CSV of the downloads, most of the JSON) go as UTF-8 bytes, handed over
+      // without a copy and read only when a download asks for them: copying and parsing them for
+      // every frame was work on the page's thread (issue 26).
+      const j = JSON.parse(whole);
+      const records = encoder.encode(JSON.stringify(j.records));
+      delete j.records;
+      const json = JSON.stringify(j);
+      self.postMessage({ type: 'frame', gen: msg.gen, preview, last, json, records, numbers, codes, ring: r, ms, calls: preview ? 0 : 5 }, [numbers.buffer, codes.buffer, records.buffer]);
+    } catch (e) {
+      // A refused preview is dropped by the page (the requested frame, refused alike, says why).
+      self.postMessage({ type: 'frame', gen: msg.gen, preview, last, error: String(e && e.message ? e.message : e), ms: performance.now() - t0, calls: 1 });
     }
-    const t1 = performance.now();
-    const f = computeFrame(msg.scene, JSON.stringify(view));
-    const json = f.json();
-    const numbers = f.numbers();
-    const codes = f.codes();
-    f.free();
-    calls += 5;
-    const ms = performance.now() - t1;
-    self.postMessage({ type: 'frame', gen: msg.gen, json, numbers, codes, ms, calls }, [numbers.buffer, codes.buffer]);
-  } catch (e) {
-    calls += 1;
-    self.postMessage({ type: 'frame', gen: msg.gen, error: String(e && e.message ? e.message : e), ms: performance.now() - t0, calls });
   }
 };

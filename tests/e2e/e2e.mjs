@@ -90,11 +90,11 @@ async function waitUpdate(page, before) {
   notedWait('a frame after an edit', t0);
 }
 /** Number of non-white pixels of a canvas (is anything drawn?); the chart counts both its layers
- *  (background and data canvas, as they are seen on top of each other). */
+ *  (background and data canvas, as they are seen on top of each other), read through the page's
+ *  test hook wherever they are drawn (the chart's painter worker, or the page's thread). */
 async function inked(page, id) {
-  return page.evaluate((cid) => {
-    const layers = [cid, `${cid}-fg`].map((k) => document.getElementById(k)).filter(Boolean)
-      .map((c) => c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
+  return page.evaluate(async (cid) => {
+    const layers = (await window.rimeTest.layers(cid)).map((l) => l.data);
     const ink = (d, i) => d[i + 3] > 0 && (d[i] < 240 || d[i + 1] < 240 || d[i + 2] < 240);
     let n = 0;
     for (let i = 0; i < layers[0].length; i += 4) if (layers.some((d) => d.length === layers[0].length && ink(d, i))) n++;
@@ -114,13 +114,15 @@ try {
     await page.goto(url, { waitUntil: 'load' });
     await ready(page);
     // Both canvases are painted after the first frame arrives: wait for ink, not for a fixed time.
-    await page.waitForFunction(() => ['chart', 'map'].every((id) => {
-      const c = document.getElementById(id);
-      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-      let n = 0;
-      for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 0 && (d[i] < 240 || d[i + 1] < 240 || d[i + 2] < 240)) n++;
-      return n > 2000;
-    }), null, { timeout: GUARD_MS }).catch(() => {}); // the asserts below say what is missing
+    await page.waitForFunction(async () => {
+      for (const id of ['chart', 'map']) {
+        const d = (await window.rimeTest.layers(id))[0].data;
+        let n = 0;
+        for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 0 && (d[i] < 240 || d[i + 1] < 240 || d[i + 2] < 240)) n++;
+        if (n <= 2000) return false;
+      }
+      return true;
+    }, null, { timeout: GUARD_MS }).catch(() => {}); // the asserts below say what is missing
     const s = await page.evaluate(() => window.rimeState);
     assert(s.errors.length === 0, `app errors: ${s.errors.join('; ')}`);
     assert(s.eps.length > 10 && s.eps.every((v) => Number.isFinite(v)), 'curve values missing');
@@ -1095,6 +1097,69 @@ try {
     return 'screenshots target/www-preview-26.png and target/www-refined-26.png';
   });
 
+  await check('issue 26: the chart and map drawn by the painter worker, and on the page\'s thread where that is forced (?paint=main, the fallback where a browser has no OffscreenCanvas): same pixels, the preview swaps to the refined frame without flicker, and the hover readout reads the frame on screen', async () => {
+    const out = {};
+    for (const mode of ['worker', 'main']) {
+      const q = watch(await context.newPage(), `paint-${mode}`);
+      try {
+        await q.setViewportSize({ width: 1280, height: 800 });
+        await q.goto(mode === 'main' ? `${url}?paint=main` : url, { waitUntil: 'load' });
+        await ready(q);
+        const info = await q.evaluate(() => ({ paint: window.rimeState.paint, workers: window.rimeState.workers, cores: navigator.hardwareConcurrency, accuracy: window.rimeState.view.accuracy }));
+        assert(info.paint === mode, `painted by ${info.paint}, expected ${mode}`);
+        assert(info.workers === (info.cores > 1 ? 2 : 1), `${info.workers} frame workers on ${info.cores} cores`);
+        assert(info.accuracy === 'precise', `opens at ${info.accuracy}`);
+        // The readout under the cursor: the drawn frame's own sample (its speed and ε_N).
+        const box = await q.locator('#chart').boundingBox();
+        await q.mouse.move(box.x + box.width * 0.55, box.y + box.height * 0.4);
+        const readout = () => q.evaluate(() => document.getElementById('chart-readout').textContent);
+        const agrees = async (text, level) => {
+          assert(text.endsWith(`at ${level}`), `readout "${text}" (expected at ${level})`);
+          if (level === 'fast') return;
+          // The refined frame is in rimeState: its sample at the readout's speed has the readout's ε_N.
+          const ok = await q.evaluate((t) => {
+            const s = window.rimeState;
+            const k = s.g.findIndex((g) => t.startsWith(`g_N = ${window.rimeExports.qty(g, 'm/s', 4)} ·`));
+            if (k < 0) return `no sample at the readout's speed: ${t}`;
+            const eps = Number(t.split('ε_N = ')[1].split(' ')[0]);
+            return Math.abs(eps - s.eps[k]) <= 1e-5 * Math.abs(s.eps[k]) ? true : `readout ε_N ${eps} vs the frame's ${s.eps[k]}`;
+          }, text);
+          assert(ok === true, ok);
+        };
+        await q.waitForFunction(() => /^g_N = /.test(document.getElementById('chart-readout').textContent), null, { timeout: GUARD_MS });
+        await agrees(await readout(), 'precise');
+        const inkBefore = await inked(q, 'chart');
+        // A held-up refinement keeps the preview on screen.
+        await q.evaluate(() => { window.rimeTest.refineDelayMs = 2000; });
+        const u = await updates(q);
+        const p0 = await q.evaluate(() => window.rimeState.previews || 0);
+        await q.evaluate(() => { const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]'); e.value = String(Number(e.value) + 5); e.dispatchEvent(new Event('input', { bubbles: true })); });
+        await q.waitForFunction((p) => (window.rimeState.previews || 0) > p, p0, { timeout: GUARD_MS });
+        assert((await updates(q)) === u, 'the refined frame came before the preview was looked at');
+        await agrees(await readout(), 'fast');
+        const inkPreview = await inked(q, 'chart');
+        const mapPreview = await inked(q, 'map');
+        await q.locator('#chart').screenshot({ path: path.join(outDir, `www-preview-26-${mode}.png`) });
+        await waitUpdate(q, u);
+        await q.evaluate(() => { window.rimeTest.refineDelayMs = 0; });
+        await agrees(await readout(), 'precise');
+        const inkRefined = await inked(q, 'chart');
+        const mapRefined = await inked(q, 'map');
+        await q.locator('#chart').screenshot({ path: path.join(outDir, `www-refined-26-${mode}.png`) });
+        // No flicker: the preview is drawn in full (axes, legend, curves), as the refined frame is.
+        assert(inkPreview > 2000 && Math.abs(inkPreview - inkRefined) < 0.02 * inkRefined, `chart: preview ${inkPreview} vs refined ${inkRefined} inked pixels`);
+        assert(mapPreview > 2000 && Math.abs(mapPreview - mapRefined) < 0.05 * mapRefined, `map: preview ${mapPreview} vs refined ${mapRefined} inked pixels`);
+        out[mode] = { inkBefore, inkRefined, mapRefined };
+      } finally {
+        await q.close();
+      }
+    }
+    // One drawing code on both paths: the same scene draws the same ink (the fonts' antialiasing may differ by a few pixels).
+    const d = Math.abs(out.worker.inkBefore - out.main.inkBefore);
+    assert(d <= 0.01 * out.main.inkBefore, `chart ink: worker ${out.worker.inkBefore}, page thread ${out.main.inkBefore}`);
+    return `chart ink worker ${out.worker.inkBefore} / page thread ${out.main.inkBefore}; screenshots target/www-{preview,refined}-26-{worker,main}.png`;
+  });
+
   await check('40 slider inputs at fast each give a recomputed, redrawn frame (timings reported)', async () => {
     if ((await page.evaluate(() => window.rimeState.view.accuracy)) !== 'fast') {
       await page.selectOption('#accuracy', 'fast');
@@ -1225,11 +1290,13 @@ try {
       await q.goto(viewLink({ accuracy: 'fast', overlays: ALL_OVERLAYS }), { waitUntil: 'load' });
       await ready(q);
       await q.waitForFunction((n) => (window.rimeState.overlays || []).length === n, ALL_OVERLAYS.length, { timeout: GUARD_MS });
-      const r = await q.evaluate(() => {
+      const r = await q.evaluate(async () => {
         const c = document.getElementById('chart');
         const box = window.rimeState.chartPlot;
-        const k = c.width / c.clientWidth;
-        const px = c.getContext('2d').getImageData(Math.round((box.l + 3) * k), Math.round((box.t + 3) * k), 1, 1).data;
+        const [back] = await window.rimeTest.layers('chart');
+        const k = back.width / c.clientWidth;
+        const at = (Math.round((box.t + 3) * k) * back.width + Math.round((box.l + 3) * k)) * 4;
+        const px = back.data.subarray(at, at + 4);
         return { bg: [px[0], px[1], px[2]], styles: window.rimeState.figure.styles, names: window.rimeState.figure.series };
       });
       const palette = await q.evaluate(async () => (await import('./core.js')).PALETTE.series);

@@ -1,0 +1,99 @@
+// A dragged slider on the page (issue 26), outside `make test`: an `input` event every 50 ms for
+// 1 s (20 of them, on Young's modulus) on scenes whose refinement is slow, with one frame worker
+// (`?workers=1`, as on a one-core browser) and with the pool of two. Reports the previews and frames
+// drawn during the drag, input → the next preview drawn (median, max) and the last input → the
+// refined frame; writes target/bench/drag-page.json. It is what decided the pool (README).
+//
+// Usage: scripts/build-www.sh && scripts/setup-npm.sh && node scripts/bench-page-drag.mjs
+// (serves www/ itself on a free local port; needs target/release/rime for the scenes' JSON).
+import { spawn, execFileSync } from 'node:child_process';
+import { createRequire } from 'node:module';
+import fs from 'node:fs';
+import os from 'node:os';
+import net from 'node:net';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+const { chromium } = createRequire(path.join(root, 'tests', 'e2e', 'package.json'))('playwright-core');
+const rime = process.env.RIME_BIN || path.join(root, 'target', 'release', 'rime');
+// Hang guard for the whole drag and its last frame (the slowest, about 1 s): never a speed check.
+const GUARD_MS = 120000;
+const sceneJson = (args) => JSON.stringify(JSON.parse(execFileSync(rime, ['scene', ...args], { encoding: 'utf8' })));
+const CASES = [
+  { name: 'ice-frost, layer.reading=literal', scene: sceneJson(['--preset', 'ice-frost', '--set', 'layer.reading=literal']), level: 'precise' },
+  { name: 'ice-sticky', scene: sceneJson(['--preset', 'ice-sticky']), level: 'integrated' },
+  { name: "ice, the paper's viscosities", scene: sceneJson(['--preset', 'ice-paper-viscosities']), level: 'integrated' },
+];
+
+const freePort = () => new Promise((resolve) => {
+  const s = net.createServer();
+  s.listen(0, '127.0.0.1', () => { const { port } = s.address(); s.close(() => resolve(port)); });
+});
+const port = await freePort();
+const server = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', process.env.RIME_WWW || path.join(root, 'www')], { stdio: 'ignore' });
+process.on('exit', () => server.kill());
+await new Promise((r) => setTimeout(r, 500));
+const url = `http://127.0.0.1:${port}/`;
+const load = () => Number(fs.readFileSync('/proc/loadavg', 'utf8').split(' ')[0]);
+const cores = os.availableParallelism ? os.availableParallelism() : os.cpus().length;
+const median = (a) => { const s = [...a].sort((x, y) => x - y); return s.length ? s[s.length >> 1] : null; };
+
+const browser = await chromium.launch({ executablePath: process.env.CHROMIUM || '/usr/bin/chromium', args: ['--no-sandbox', '--disable-gpu'] });
+const records = [];
+for (const c of CASES) {
+  for (const workers of [1, 2]) {
+    const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+    await page.goto(`${url}?workers=${workers}#s=${encodeURIComponent(c.scene)}&v=${encodeURIComponent(JSON.stringify({ accuracy: c.level }))}`);
+    await page.waitForFunction(() => window.rimeState && window.rimeState.ready, null, { timeout: GUARD_MS });
+    const loadAvg = load();
+    const r = await page.evaluate((guard) => new Promise((resolve, reject) => {
+      const s = window.rimeState;
+      const slider = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
+      const [p0, u0] = [s.previews || 0, s.updates];
+      const latency = []; // input → the next preview drawn, for the inputs that waited for one
+      let waiting = null;
+      let k = 0;
+      const mo = new MutationObserver(() => {
+        if (waiting !== null && (s.previews || 0) > waiting.previews) { latency.push(performance.now() - waiting.t); waiting = null; }
+      });
+      mo.observe(document.body, { attributes: true, attributeFilter: ['data-previews', 'data-updates'] });
+      const timer = setTimeout(() => { mo.disconnect(); reject(new Error('no frame within the guard')); }, guard);
+      const step = () => {
+        if (k === 20) {
+          const end = performance.now();
+          const u = s.updates;
+          const wait = () => {
+            if (s.updates > u) {
+              mo.disconnect();
+              clearTimeout(timer);
+              resolve({ previews: (s.previews || 0) - p0, frames: s.updates - u0, latency, last: performance.now() - end });
+            } else setTimeout(wait, 5);
+          };
+          wait();
+          return;
+        }
+        if (waiting === null) waiting = { t: performance.now(), previews: s.previews || 0 };
+        slider.value = String(Number(slider.value) + (k % 2 ? -3 : 4));
+        k++;
+        slider.dispatchEvent(new Event('input', { bubbles: true }));
+        setTimeout(step, 50);
+      };
+      step();
+    }), GUARD_MS);
+    const rec = {
+      surface: 'page', scene: c.name, level: c.level, workers, inputs: 20, interval_ms: 50,
+      previews: r.previews, frames: r.frames, preview_ms_median: median(r.latency),
+      preview_ms_max: r.latency.length ? Math.max(...r.latency) : null, last_final_ms: r.last, cores, load: loadAvg,
+    };
+    records.push(rec);
+    console.log(`${c.name.padEnd(34)} ${c.level.padEnd(10)} ${workers} worker(s): ${rec.previews} previews, ${rec.frames} frame(s) in the drag; input → preview median ${rec.preview_ms_median.toFixed(0)} ms (max ${rec.preview_ms_max.toFixed(0)}); last input → frame ${rec.last_final_ms.toFixed(0)} ms`);
+    await page.close();
+  }
+}
+await browser.close();
+const out = path.join(root, 'target', 'bench', 'drag-page.json');
+fs.mkdirSync(path.dirname(out), { recursive: true });
+fs.writeFileSync(out, JSON.stringify(records, null, 2) + '\n');
+console.log(`${cores} cores, load average ${load().toFixed(2)} at the end; wrote target/bench/drag-page.json`);
+server.kill();
