@@ -6,37 +6,19 @@
 //
 // Usage: scripts/build-www.sh && scripts/setup-npm.sh && node scripts/bench-page-drag.mjs
 // (serves www/ itself on a free local port; needs target/release/rime for the scenes' JSON).
-import { spawn, execFileSync } from 'node:child_process';
-import { createRequire } from 'node:module';
 import fs from 'node:fs';
-import os from 'node:os';
-import net from 'node:net';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { chromium, cores, load, root, sceneJson, serveWww } from './bench-page-common.mjs';
 
-const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
-const { chromium } = createRequire(path.join(root, 'tests', 'e2e', 'package.json'))('playwright-core');
-const rime = process.env.RIME_BIN || path.join(root, 'target', 'release', 'rime');
 // Hang guard for the whole drag and its last frame (the slowest, about 1 s): never a speed check.
 const GUARD_MS = 120000;
-const sceneJson = (args) => JSON.stringify(JSON.parse(execFileSync(rime, ['scene', ...args], { encoding: 'utf8' })));
 const CASES = [
   { name: 'ice-frost, layer.reading=literal', scene: sceneJson(['--preset', 'ice-frost', '--set', 'layer.reading=literal']), level: 'precise' },
   { name: 'ice-sticky', scene: sceneJson(['--preset', 'ice-sticky']), level: 'integrated' },
   { name: "ice, the paper's viscosities", scene: sceneJson(['--preset', 'ice-paper-viscosities']), level: 'integrated' },
 ];
 
-const freePort = () => new Promise((resolve) => {
-  const s = net.createServer();
-  s.listen(0, '127.0.0.1', () => { const { port } = s.address(); s.close(() => resolve(port)); });
-});
-const port = await freePort();
-const server = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', process.env.RIME_WWW || path.join(root, 'www')], { stdio: 'ignore' });
-process.on('exit', () => server.kill());
-await new Promise((r) => setTimeout(r, 500));
-const url = `http://127.0.0.1:${port}/`;
-const load = () => Number(fs.readFileSync('/proc/loadavg', 'utf8').split(' ')[0]);
-const cores = os.availableParallelism ? os.availableParallelism() : os.cpus().length;
+const { url, stop: stopServer } = await serveWww();
 const median = (a) => { const s = [...a].sort((x, y) => x - y); return s.length ? s[s.length >> 1] : null; };
 
 const browser = await chromium.launch({ executablePath: process.env.CHROMIUM || '/usr/bin/chromium', args: ['--no-sandbox', '--disable-gpu'] });
@@ -96,4 +78,4 @@ const out = path.join(root, 'target', 'bench', 'drag-page.json');
 fs.mkdirSync(path.dirname(out), { recursive: true });
 fs.writeFileSync(out, JSON.stringify(records, null, 2) + '\n');
 console.log(`${cores} cores, load average ${load().toFixed(2)} at the end; wrote target/bench/drag-page.json`);
-server.kill();
+stopServer();

@@ -17,17 +17,11 @@
 // `--paint main` forces the page's fallback (the chart drawn on the page's thread, as where a
 // browser has no OffscreenCanvas); `--workers 1` a pool of one frame worker (as on a one-core
 // browser), to compare with the pool of two.
-import { spawn, execFileSync } from 'node:child_process';
-import { createRequire } from 'node:module';
 import fs from 'node:fs';
 import os from 'node:os';
-import net from 'node:net';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { chromium, cores, load, root, sceneJson, serveWww } from './bench-page-common.mjs';
 
-const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
-const { chromium } = createRequire(path.join(root, 'tests', 'e2e', 'package.json'))('playwright-core');
-const rime = process.env.RIME_BIN || path.join(root, 'target', 'release', 'rime');
 const argv = process.argv.slice(2);
 const opt = (name) => { const k = argv.indexOf(name); return k >= 0 ? argv[k + 1] : undefined; };
 const quick = argv.includes('--quick');
@@ -40,7 +34,6 @@ const outFile = opt('--out') || path.join(root, 'target', 'bench', 'frames-page.
 // about 1 s): never a speed check.
 const GUARD_MS = 120000;
 
-const sceneJson = (args) => JSON.stringify(JSON.parse(execFileSync(rime, ['scene', ...args], { encoding: 'utf8' })));
 const SCENES = [
   { name: 'ice', scene: sceneJson(['--preset', 'ice']), overlays: [] },
   { name: 'ice-frost', scene: sceneJson(['--preset', 'ice-frost']), overlays: [] },
@@ -59,23 +52,13 @@ const PROFILES = [
   { name: 'phone', viewport: { width: 375, height: 812 }, slowdown: 4, mobile: true },
 ].filter((p) => (onlyProfile ? p.name === onlyProfile : !quick || p.name === 'desktop'));
 
-const freePort = () => new Promise((resolve) => {
-  const s = net.createServer();
-  s.listen(0, '127.0.0.1', () => { const { port } = s.address(); s.close(() => resolve(port)); });
-});
-const port = await freePort();
-const server = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', process.env.RIME_WWW || path.join(root, 'www')], { stdio: 'ignore' });
-process.on('exit', () => server.kill());
-await new Promise((r) => setTimeout(r, 500));
-const url = `http://127.0.0.1:${port}/`;
+const { url, stop: stopServer } = await serveWww();
 
 const median = (a) => {
   const s = [...a].sort((x, y) => x - y);
   const m = s.length >> 1;
   return s.length ? (s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2) : null;
 };
-const load = () => Number(fs.readFileSync('/proc/loadavg', 'utf8').split(' ')[0]);
-const cores = os.availableParallelism ? os.availableParallelism() : os.cpus().length;
 
 const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'rime-bench-'));
 const context = await chromium.launchPersistentContext(userDataDir, {
@@ -188,4 +171,4 @@ await context.close();
 fs.mkdirSync(path.dirname(outFile), { recursive: true });
 fs.writeFileSync(outFile, JSON.stringify(records, null, 2) + '\n');
 console.log(`${cores} cores, load average ${load().toFixed(2)} at the end; wrote ${path.relative(root, outFile)}`);
-server.kill();
+stopServer();

@@ -28,3 +28,17 @@ pub(crate) fn powf(x: f64, y: f64) -> f64 {
 pub(crate) fn atan2(y: f64, x: f64) -> f64 {
     libm::atan2(y, x)
 }
+
+/// A Chebyshev series `Σ c_k T_k(t)` at `t ∈ [-1, 1]` by Clenshaw's recurrence (the master tables'
+/// and brilliantov2007's tables' sum); `c` must not be empty.
+#[inline]
+pub(crate) fn clenshaw(c: &[f64], t: f64) -> f64 {
+    let (mut b1, mut b2) = (0.0, 0.0);
+    let t2 = 2.0 * t;
+    for &ck in c[1..].iter().rev() {
+        let b0 = ck + t2 * b1 - b2;
+        b2 = b1;
+        b1 = b0;
+    }
+    c[0] + t * b1 - b2
+}

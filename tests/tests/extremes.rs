@@ -112,6 +112,16 @@ fn timed<T>(what: &str, f: impl FnOnce() -> T) -> T {
     r
 }
 
+/// The sticky preset's adhesion with each JKR end (brilliantov2007's two ends of contact).
+fn sticky_at_both_ends() -> [Option<rime_core::Adhesion>; 2] {
+    [rime_core::JkrEnd::Neck, rime_core::JkrEnd::PullOffForce].map(|jkr_end| {
+        Preset::IceSticky
+            .scene()
+            .adhesion
+            .map(|a| rime_core::Adhesion { jkr_end, ..a })
+    })
+}
+
 fn check_normal(what: &str, c: &Contact, g: f64, acc: Accuracy) -> rime_core::Normal {
     let n =
         timed(what, || c.normal(g, acc)).unwrap_or_else(|e| panic!("{what} g = {g} {acc:?}: {e}"));
@@ -995,27 +1005,16 @@ fn regression_balanced_zero_overlap_meets_its_1e_6_bound() {
 /// 1e6 m/s; without adhesion there is no g_cr.
 #[test]
 fn issue_25_brilliantov2007_answers_over_the_whole_grid() {
-    use rime_core::JkrEnd;
     use rime_core::models::{Evaluator, Model, ModelStatus, SpeedStatus};
     let times = [1e-9, 1e-7, 1e-5, 1e-4, 2e-4, 3e-4, 5e-4, 1e-3, 3e-3, 1e-2];
     let speeds = [1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 0.1, 1.0, 10.0];
-    let sticky = Preset::IceSticky.scene().adhesion;
     let mut counts = [0usize; 2];
     for (preset, level) in Preset::ALL
         .into_iter()
         .flat_map(|p| [(p, Accuracy::Balanced), (p, Accuracy::Precise)])
     {
-        let variants = [
-            preset.scene().adhesion,
-            sticky.map(|a| rime_core::Adhesion {
-                jkr_end: JkrEnd::Neck,
-                ..a
-            }),
-            sticky.map(|a| rime_core::Adhesion {
-                jkr_end: JkrEnd::PullOffForce,
-                ..a
-            }),
-        ];
+        let [neck, pull_off] = sticky_at_both_ends();
+        let variants = [preset.scene().adhesion, neck, pull_off];
         for (adhesion, a) in variants
             .into_iter()
             .flat_map(|v| times.into_iter().map(move |a| (v, a)))
@@ -1145,7 +1144,6 @@ fn issue_25_paper_model_g_cr_always_sticks_on_micron_grains() {
 /// within the tables' measured bound below it at `precise`.
 #[test]
 fn issue_26_brilliantov2007_tables_agree_with_live_integration() {
-    use rime_core::JkrEnd;
     use rime_core::accuracy::ERROR_BOUND_DOMAIN;
     use rime_core::models::brilliantov2007_master::{
         FAST_BOUND, PRECISE_BOUND, PRECISE_BOUND_TINY,
@@ -1153,18 +1151,8 @@ fn issue_26_brilliantov2007_tables_agree_with_live_integration() {
     use rime_core::models::{Evaluator, Model};
     let times = [1e-9, 1e-6, 1e-4, 1e-3, 1e-2];
     let speeds = [1e-12, 1e-9, 1e-6, 1e-4, 1e-2, 1.0, 1e2, 1e4, 1e6];
-    let sticky = Preset::IceSticky.scene().adhesion;
-    let variants = [
-        None,
-        sticky.map(|a| rime_core::Adhesion {
-            jkr_end: JkrEnd::Neck,
-            ..a
-        }),
-        sticky.map(|a| rime_core::Adhesion {
-            jkr_end: JkrEnd::PullOffForce,
-            ..a
-        }),
-    ];
+    let [neck, pull_off] = sticky_at_both_ends();
+    let variants = [None, neck, pull_off];
     for (adhesion, a) in variants
         .into_iter()
         .flat_map(|v| times.into_iter().map(move |a| (v, a)))

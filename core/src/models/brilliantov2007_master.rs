@@ -35,7 +35,7 @@
 #[cfg(feature = "std")]
 use super::brilliantov2007::{Outcome, energy_margin};
 use crate::master::Resolution;
-use crate::math::{cbrt, exp, log10, powf};
+use crate::math::{cbrt, clenshaw, exp, log10, powf};
 use crate::scene::{ContactEnd, JkrEnd};
 
 use super::brilliantov2007_table as generated;
@@ -177,18 +177,6 @@ fn segment_r(ys: usize, t: f64) -> f64 {
         let w = W_LOW + half * ((ys - 1) as f64 + 0.5 * (t + 1.0));
         1.0 - w * w
     }
-}
-
-#[inline]
-fn clenshaw(c: &[f64], t: f64) -> f64 {
-    let (mut b1, mut b2) = (0.0, 0.0);
-    let t2 = 2.0 * t;
-    for &ck in c[1..].iter().rev() {
-        let b0 = ck + t2 * b1 - b2;
-        b2 = b1;
-        b1 = b0;
-    }
-    c[0] + t * b1 - b2
 }
 
 impl Table {

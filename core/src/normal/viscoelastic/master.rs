@@ -165,16 +165,10 @@ pub fn eps(delta: f64, end: ContactEnd, resolution: Resolution) -> f64 {
     with_table!(end, resolution, |t| t.eps(delta))
 }
 
+/// [`crate::math::clenshaw`] on one row of coefficients.
 #[inline]
 fn clenshaw<const D: usize>(c: &[f64; D], t: f64) -> f64 {
-    let (mut b1, mut b2) = (0.0, 0.0);
-    let t2 = 2.0 * t;
-    for &ck in c[1..].iter().rev() {
-        let b0 = ck + t2 * b1 - b2;
-        b2 = b1;
-        b1 = b0;
-    }
-    c[0] + t * b1 - b2
+    crate::math::clenshaw(c, t)
 }
 
 impl<const D: usize> Table<D> {
