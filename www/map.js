@@ -3,7 +3,7 @@
 // beside it, ε_T(g_T) along one g_N row beside it, hover/keyboard readouts from the frame's own
 // values and a text alternative.
 import { HELP, PALETTE, sig, speed } from './core.js';
-import { $, el, linked, wrapText } from './dom.js';
+import { $, el, linked, setText, wrapText } from './dom.js';
 import { CanvasPainter, drawLines, drawMap, drawNote, mapGeometry, sizeElement } from './plot.js';
 import { app } from './state.js';
 
@@ -91,10 +91,10 @@ function readout() {
   const m = app.res && app.res.map;
   const h = app.hover.map;
   const out = $('map-readout');
-  if (!m || !h) { out.textContent = m ? 'hover, tap or use the arrow keys on the map for values; click or Enter picks the ε_T row' : ''; return; }
+  if (!m || !h) { setText(out, m ? 'hover, tap or use the arrow keys on the map for values; click or Enter picks the ε_T row' : ''); return; }
   const k = h.i * m.n + h.j;
   const c = app.classes[m.codes[k]];
-  out.textContent = `g_N = ${speed(m.g[h.i], 4)} · g_T = ${speed(m.g[h.j], 4)} · ε_N = ${sig(m.epsN[h.i], 5)} · ε_T = ${sig(m.epsT[k], 5)} · ${c ? c.label : '?'}${c && isArtifact(c.name) ? ' (artifact)' : ''} · at ${app.res.accuracy}`;
+  setText(out, `g_N = ${speed(m.g[h.i], 4)} · g_T = ${speed(m.g[h.j], 4)} · ε_N = ${sig(m.epsN[h.i], 5)} · ε_T = ${sig(m.epsT[k], 5)} · ${c ? c.label : '?'}${c && isArtifact(c.name) ? ' (artifact)' : ''} · at ${app.res.accuracy}`);
 }
 
 /** The legend (every class explained, artifacts marked), the artifact note and the text alternative. */
@@ -113,7 +113,7 @@ export function drawLegend(res) {
   }
   legendCounts.forEach((span, k) => {
     const text = total ? `(${sig((100 * counts[k]) / total, 3)} %)` : '';
-    if (span.textContent !== text) span.textContent = text;
+    setText(span, text);
   });
   res.classCounts = counts;
   const gap = app.classes.findIndex((c) => isArtifact(c.name));
@@ -129,7 +129,7 @@ export function drawLegend(res) {
       .map(([c, n]) => `${c.label} ${sig((100 * n) / total, 3)} %`);
     desc = `Stick map, g_T across and g_N up from 0 to ${speed(res.map.max)}: ${parts.join(', ')}.`;
   }
-  if ($('map-desc').textContent !== desc) $('map-desc').textContent = desc;
+  setText($('map-desc'), desc);
 }
 
 function cellAt(ev) {
