@@ -40,6 +40,9 @@ export function epsTSpec(m, hoverJ = null) {
   };
 }
 
+/** Sets the map's text alternative only when it changes (a write invalidates the page's style). */
+const label = (e, text) => { if (e.getAttribute('aria-label') !== text) e.setAttribute('aria-label', text); };
+
 export function drawMapCanvas(widths = {}) {
   const res = app.res;
   if (!res) return;
@@ -54,7 +57,7 @@ export function drawMapCanvas(widths = {}) {
     map = { w: s, h: s - 28, spec: mapSpec(m, h), lines: { w: lw, h: 220, spec: epsTSpec(m, h && h.i === mapRow(m) ? h.j : null) } };
     geom = mapGeometry(map.w, map.h);
     if (et.hidden) et.hidden = false;
-    canvas.setAttribute('aria-label', `stick map over g_T (across) and g_N (up), 0 to ${speed(m.max)}; summary below`);
+    label(canvas, `stick map over g_T (across) and g_N (up), 0 to ${speed(m.max)}; summary below`);
   } else {
     geom = null;
     et.hidden = true;
@@ -64,10 +67,10 @@ export function drawMapCanvas(widths = {}) {
       lines.push({ y: 50, text: '⚠ stick map not computed', size: 14, color: '#b3261e' });
       wrapText(failed.error, Math.max(20, Math.floor((s - 24) / 6.6))).slice(0, 4)
         .forEach((line, k) => lines.push({ y: 76 + k * 17, text: line, size: 12, color: '#444' }));
-      canvas.setAttribute('aria-label', `stick map not computed: ${failed.error}`);
+      label(canvas, `stick map not computed: ${failed.error}`);
     } else {
       lines.push({ y: 55, text: res.friction ? 'no stick map for this scene' : 'friction is off: no ε_T, no stick map', size: 13, color: '#555' });
-      canvas.setAttribute('aria-label', 'stick map (friction is off)');
+      label(canvas, 'stick map (friction is off)');
     }
     map = { w: s, h: failed ? 160 : 100, note: { fill: failed ? '#fdf3f2' : '#fafafa', stroke: failed ? '#e2a49f' : undefined, lines } };
   }
@@ -100,7 +103,7 @@ function readout() {
 /** The legend (every class explained, artifacts marked), the artifact note and the text alternative. */
 export function drawLegend(res) {
   const counts = new Array(app.classes.length).fill(0);
-  if (res.map) for (const c of res.map.codes) counts[c]++;
+  if (res.map) { const codes = res.map.codes; for (let k = 0; k < codes.length; k++) counts[codes[k]]++; }
   const total = res.map ? res.map.codes.length : 0;
   const colors = classColors();
   // The entries are built once; a frame writes only the shares that changed (issue 26: rebuilding
