@@ -7,7 +7,7 @@ import { Explorer, calls, counted, qty, speed, start } from './core.js';
 import { CollisionComputer, Computer, poolSize } from './compute.js';
 import { Painter, canPaintInWorker } from './painter.js';
 import { CollisionView } from './collision.js';
-import { $, errText, linkify, median } from './dom.js';
+import { $, errText, linkify, median, setText } from './dom.js';
 import { START_PRESET, app, historySize } from './state.js';
 import { buildControls, edit, reflectScene, syncControls, wireToolbar, wireView } from './controls.js';
 import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, restorePin, wireChart } from './chart.js';
@@ -196,7 +196,7 @@ function onFrame(msg, req) {
     ringOverlay(res, msg.ring);
     draw();
     const t2 = performance.now();
-    $('timing').textContent = `preview: ${qty(msg.ms / 1e3, 's', 3)} in the worker at fast, on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)} — refining to ${req.page.view.accuracy}…`;
+    setText($('timing'), `preview: ${qty(msg.ms / 1e3, 's', 3)} in the worker at fast, on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)} — refining to ${req.page.view.accuracy}…`);
     $('timing').classList.add('busy');
     afterPaint(() => {
       const s = window.rimeState;
@@ -240,9 +240,9 @@ function onFrame(msg, req) {
   app.timings.push(msg.ms);
   app.totals.push(t2 - req.page.t0);
   if (app.timings.length > 200) for (const a of [app.timings, app.totals, app.callsPerUpdate, app.formatCallsPerUpdate]) a.shift();
-  $('timing').textContent = `last frame: ${qty(msg.ms / 1e3, 's', 3)} in the worker (median ${qty(median(app.timings) / 1e3, 's', 3)}), on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)}, accuracy ${res.accuracy}`;
+  setText($('timing'), `last frame: ${qty(msg.ms / 1e3, 's', 3)} in the worker (median ${qty(median(app.timings) / 1e3, 's', 3)}), on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)}, accuracy ${res.accuracy}`);
   $('timing').classList.remove('busy');
-  $('busy').hidden = true;
+  if (!$('busy').hidden) $('busy').hidden = true;
   afterPaint(() => publish(req, res));
 }
 
@@ -295,7 +295,7 @@ function publish(req, res) {
 let busyTimer = null;
 function onBusy(busy) {
   clearTimeout(busyTimer);
-  if (!busy) { $('timing').classList.remove('busy'); $('busy').hidden = true; return; }
+  if (!busy) { $('timing').classList.remove('busy'); if (!$('busy').hidden) $('busy').hidden = true; return; }
   // Say so only when it takes long enough to notice.
   busyTimer = setTimeout(() => {
     // A preview on screen already says "refining to …".

@@ -210,7 +210,7 @@ export function pinnedForRequest(wantScene) {
 
 /** The pinned curve's note beside the chart. */
 export function pinLabel() {
-  $('pin-note').textContent = app.pinned ? `Pinned (dashed grey): the curve of the scene with ${app.pinned.label}.` : '';
+  setText($('pin-note'), app.pinned ? `Pinned (dashed grey): the curve of the scene with ${app.pinned.label}.` : '');
 }
 
 export function wireChart(h) {

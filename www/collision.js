@@ -117,21 +117,35 @@ export class CollisionView {
       ['adhesion W_s, Eq. (12)', l.adhesion, C().other],
       ['left in the bulk (force-zero end)', l.elastic_retained, C().kept],
     ];
-    $('collision-ledger').replaceChildren(...rows.map(([name, v, color]) => {
+    // The rows are built once; a new collision writes only their numbers and bars (issue 26:
+    // rebuilding the list for every frame's replay was a sizeable part of the page's layout).
+    const box = $('collision-ledger');
+    if (!this.rows || !box.contains(this.rows[0].li)) {
+      this.rows = rows.map(([name]) => {
+        const li = document.createElement('li');
+        const value = document.createTextNode('');
+        const bar = document.createElement('span');
+        bar.className = 'bar';
+        li.append(...linked(`${name}: `), value, bar);
+        return { li, value, bar };
+      });
+      this.hint = Object.assign(document.createElement('li'), { className: 'hint' });
+      box.replaceChildren(...this.rows.map((r) => r.li), this.hint);
+    }
+    rows.forEach(([, v, color], k) => {
       const pct = l.kinetic_in > 0 ? (100 * v) / l.kinetic_in : 0;
-      const li = document.createElement('li');
-      const bar = document.createElement('span');
-      bar.className = 'bar';
-      bar.style.width = `${Math.max(0, Math.min(100, pct)).toFixed(1)}%`;
-      bar.style.background = color;
-      li.append(...linked(`${name}: ${sig(pct, 3)} %`), bar);
-      return li;
-    }), Object.assign(document.createElement('li'), {
-      className: 'hint',
-      textContent: `kinetic energy in ${qty(l.kinetic_in, 'J', 3)} · closure ${sig(l.closure, 2)}${d.resolved ? '' : ' (the slow end of the contact is not sampled)'}`,
-    }));
-    $('collision-title').textContent = `at g_N = ${speed(d.g, 4)}: ε_N = ${fmtNum(d.eps_n, 5)}, ${d.status}` +
+      const { value, bar } = this.rows[k];
+      const text = `${sig(pct, 3)} %`;
+      if (value.data !== text) value.data = text;
+      const width = `${Math.max(0, Math.min(100, pct)).toFixed(1)}%`;
+      if (bar.style.width !== width) bar.style.width = width;
+      if (bar.dataset.color !== color) { bar.dataset.color = color; bar.style.background = color; }
+    });
+    const hint = `kinetic energy in ${qty(l.kinetic_in, 'J', 3)} · closure ${sig(l.closure, 2)}${d.resolved ? '' : ' (the slow end of the contact is not sampled)'}`;
+    if (this.hint.textContent !== hint) this.hint.textContent = hint;
+    const title = `at g_N = ${speed(d.g, 4)}: ε_N = ${fmtNum(d.eps_n, 5)}, ${d.status}` +
       (d.t_c === null ? '' : `, t_c = ${qty(d.t_c, 's', 3)}`) + `, ξ_max = ${qty(d.xi_max, 'm', 3)}`;
+    if ($('collision-title').textContent !== title) $('collision-title').textContent = title;
   }
 
   draw() {

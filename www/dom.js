@@ -17,7 +17,12 @@ export function el(tag, attrs = {}, ...children) {
 
 /** Sets an element's text only when it differs (a write invalidates the page's style and layout). */
 export function setText(e, text) {
-  if (e.textContent !== text) e.textContent = text;
+  if (e.textContent === text) return;
+  // A lone text node's data is rewritten in place: replacing the node (textContent) costs a new
+  // layout object and a wider relayout (issue 26: a frame's text writes are the page thread's cost).
+  const t = e.firstChild;
+  if (t && t === e.lastChild && t.nodeType === Node.TEXT_NODE && text !== '') t.data = text;
+  else e.textContent = text;
 }
 
 export const errText = (e) => String(e && e.message ? e.message : e);

@@ -3,7 +3,7 @@
 // beside it, ε_T(g_T) along one g_N row beside it, hover/keyboard readouts from the frame's own
 // values and a text alternative.
 import { HELP, PALETTE, sig, speed } from './core.js';
-import { $, el, linked, wrapText } from './dom.js';
+import { $, el, linked, setText, wrapText } from './dom.js';
 import { CanvasPainter, drawLines, drawMap, drawNote, mapGeometry, sizeElement } from './plot.js';
 import { app } from './state.js';
 
@@ -40,6 +40,9 @@ export function epsTSpec(m, hoverJ = null) {
   };
 }
 
+/** Sets the map's text alternative only when it changes (a write invalidates the page's style). */
+const label = (e, text) => { if (e.getAttribute('aria-label') !== text) e.setAttribute('aria-label', text); };
+
 export function drawMapCanvas(widths = {}) {
   const res = app.res;
   if (!res) return;
@@ -54,7 +57,7 @@ export function drawMapCanvas(widths = {}) {
     map = { w: s, h: s - 28, spec: mapSpec(m, h), lines: { w: lw, h: 220, spec: epsTSpec(m, h && h.i === mapRow(m) ? h.j : null) } };
     geom = mapGeometry(map.w, map.h);
     if (et.hidden) et.hidden = false;
-    canvas.setAttribute('aria-label', `stick map over g_T (across) and g_N (up), 0 to ${speed(m.max)}; summary below`);
+    label(canvas, `stick map over g_T (across) and g_N (up), 0 to ${speed(m.max)}; summary below`);
   } else {
     geom = null;
     et.hidden = true;
@@ -64,10 +67,10 @@ export function drawMapCanvas(widths = {}) {
       lines.push({ y: 50, text: '⚠ stick map not computed', size: 14, color: '#b3261e' });
       wrapText(failed.error, Math.max(20, Math.floor((s - 24) / 6.6))).slice(0, 4)
         .forEach((line, k) => lines.push({ y: 76 + k * 17, text: line, size: 12, color: '#444' }));
-      canvas.setAttribute('aria-label', `stick map not computed: ${failed.error}`);
+      label(canvas, `stick map not computed: ${failed.error}`);
     } else {
       lines.push({ y: 55, text: res.friction ? 'no stick map for this scene' : 'friction is off: no ε_T, no stick map', size: 13, color: '#555' });
-      canvas.setAttribute('aria-label', 'stick map (friction is off)');
+      label(canvas, 'stick map (friction is off)');
     }
     map = { w: s, h: failed ? 160 : 100, note: { fill: failed ? '#fdf3f2' : '#fafafa', stroke: failed ? '#e2a49f' : undefined, lines } };
   }
@@ -91,16 +94,16 @@ function readout() {
   const m = app.res && app.res.map;
   const h = app.hover.map;
   const out = $('map-readout');
-  if (!m || !h) { out.textContent = m ? 'hover, tap or use the arrow keys on the map for values; click or Enter picks the ε_T row' : ''; return; }
+  if (!m || !h) { setText(out, m ? 'hover, tap or use the arrow keys on the map for values; click or Enter picks the ε_T row' : ''); return; }
   const k = h.i * m.n + h.j;
   const c = app.classes[m.codes[k]];
-  out.textContent = `g_N = ${speed(m.g[h.i], 4)} · g_T = ${speed(m.g[h.j], 4)} · ε_N = ${sig(m.epsN[h.i], 5)} · ε_T = ${sig(m.epsT[k], 5)} · ${c ? c.label : '?'}${c && isArtifact(c.name) ? ' (artifact)' : ''} · at ${app.res.accuracy}`;
+  setText(out, `g_N = ${speed(m.g[h.i], 4)} · g_T = ${speed(m.g[h.j], 4)} · ε_N = ${sig(m.epsN[h.i], 5)} · ε_T = ${sig(m.epsT[k], 5)} · ${c ? c.label : '?'}${c && isArtifact(c.name) ? ' (artifact)' : ''} · at ${app.res.accuracy}`);
 }
 
 /** The legend (every class explained, artifacts marked), the artifact note and the text alternative. */
 export function drawLegend(res) {
   const counts = new Array(app.classes.length).fill(0);
-  if (res.map) for (const c of res.map.codes) counts[c]++;
+  if (res.map) { const codes = res.map.codes; for (let k = 0; k < codes.length; k++) counts[codes[k]]++; }
   const total = res.map ? res.map.codes.length : 0;
   const colors = classColors();
   // The entries are built once; a frame writes only the shares that changed (issue 26: rebuilding
@@ -113,7 +116,7 @@ export function drawLegend(res) {
   }
   legendCounts.forEach((span, k) => {
     const text = total ? `(${sig((100 * counts[k]) / total, 3)} %)` : '';
-    if (span.textContent !== text) span.textContent = text;
+    setText(span, text);
   });
   res.classCounts = counts;
   const gap = app.classes.findIndex((c) => isArtifact(c.name));
@@ -129,7 +132,7 @@ export function drawLegend(res) {
       .map(([c, n]) => `${c.label} ${sig((100 * n) / total, 3)} %`);
     desc = `Stick map, g_T across and g_N up from 0 to ${speed(res.map.max)}: ${parts.join(', ')}.`;
   }
-  if ($('map-desc').textContent !== desc) $('map-desc').textContent = desc;
+  setText($('map-desc'), desc);
 }
 
 function cellAt(ev) {

@@ -8,6 +8,7 @@ import { showOverlayScores } from './compare.js';
 let bannerKey = '';
 let warningsKey = null;
 let bannerDismissed = '';
+let bannerListKey = null; // the errors the banner's list shows
 
 export function wireBanner() {
   $('banner-close').addEventListener('click', () => { bannerDismissed = bannerKey; $('banner').hidden = true; });
@@ -21,9 +22,13 @@ export function showBanner(errors) {
     bannerKey = key;
   }
   const b = $('banner');
-  if (!errors.length || bannerDismissed === key) { b.hidden = true; return; }
-  $('banner-list').replaceChildren(...errors.map((e) => el('li', {}, el('strong', {}, e.part), `: ${e.message}`)));
-  b.hidden = false;
+  // Written only when it changes (issue 26: a write invalidates the page's style).
+  if (!errors.length || bannerDismissed === key) { if (!b.hidden) b.hidden = true; return; }
+  if (bannerListKey !== key) {
+    bannerListKey = key;
+    $('banner-list').replaceChildren(...errors.map((e) => el('li', {}, el('strong', {}, e.part), `: ${e.message}`)));
+  }
+  if (b.hidden) b.hidden = false;
 }
 
 export function showWarnings(res) {

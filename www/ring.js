@@ -104,15 +104,23 @@ export function buildRing(h) {
   check('onChart', 'draw ε_cr and the impact speed on the ε_N chart');
 }
 
+let shownKey = null;
 /** After a frame: the card's verdict, sentence and rows (or why it could not be computed). */
 export function showRing() {
   const c = ring.card;
   const note = $('ring-note');
-  note.hidden = !ring.error;
-  note.textContent = ring.error ? `⚠ not computed: ${ring.error}` : '';
-  $('ring').hidden = !c;
+  // Each written only when it changes (issue 26: a write invalidates the page's style).
+  if (note.hidden !== !ring.error) note.hidden = !ring.error;
+  const noteText = ring.error ? `⚠ not computed: ${ring.error}` : '';
+  if (note.textContent !== noteText) note.textContent = noteText;
+  if ($('ring').hidden !== !c) $('ring').hidden = !c;
   window.rimeState.ring = c ? { verdict: c.verdict, equilibrium: c.equilibrium, rows: c.rows, meeting: c.meeting, record: c.record } : null;
   if (!c) return;
+  // Rebuilt only when what it prints changes (issue 26: rebuilding the table every frame was the
+  // largest part of the page's layout per frame, and most edits leave the card as it is).
+  const key = JSON.stringify([c.equilibrium, c.verdict, c.sentence, c.rows]);
+  if (key === shownKey) return;
+  shownKey = key;
   $('ring').replaceChildren(
     el('tr', { class: c.equilibrium ? 'ok' : 'bad' }, el('th', { scope: 'row' }, 'verdict'), el('td', {}, c.verdict)),
     el('tr', {}, el('td', { colspan: 2 }, c.sentence)),
