@@ -13,7 +13,7 @@ import { buildControls, edit, reflectScene, syncControls, wireToolbar, wireView 
 import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, restorePin, wireChart } from './chart.js';
 import { drawLegend, drawMapCanvas, wireMap } from './map.js';
 import { buildTidal, showTidal } from './tidal.js';
-import { buildRing, ringInputs, ringOverlay, showRing } from './ring.js';
+import { buildRing, reflectRing, ringInputs, ringOverlay, showRing } from './ring.js';
 import { buildCompare } from './compare.js';
 import { intro, showBanner, showNotice, showPartNotes, showWarnings, wireBanner } from './messages.js';
 import { loadHash, writeHash } from './url.js';
@@ -457,6 +457,7 @@ async function main() {
     // Our own replaceState does not fire this; a pasted or edited link does.
     showNotice(loadHash(validateTidal));
     reflectScene();
+    reflectRing();
     schedule();
   });
   if (canPaintInWorker()) {
@@ -473,6 +474,7 @@ async function main() {
   app.wantScene = app.ex.toJson();
   showNotice(loadHash(validateTidal));
   reflectScene();
+  reflectRing();
   calls.compute = 0;
   calls.format = 0;
   request();

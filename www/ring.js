@@ -9,8 +9,11 @@ import { calls, parseQuantity } from './core.js';
 import { $, el, errText } from './dom.js';
 import { app } from './state.js';
 
-/** The card's inputs and its last result (not in the link). */
-export const ring = { tau: 0.5, omega: 1.3143527e-4, planet: false, onChart: false, card: null, error: null };
+/** The card's inputs as the page starts (a link carries only inputs that differ). */
+export const RING_DEFAULTS = Object.freeze({ tau: 0.5, omega: 1.3143527e-4, planet: false, onChart: false });
+
+/** The card's inputs (in the link, `&r=`) and its last result. */
+export const ring = { ...RING_DEFAULTS, card: null, error: null };
 
 let hooks = { schedule: () => {} };
 
@@ -102,6 +105,22 @@ export function buildRing(h) {
   };
   check('planet', 'Ω from the tidal card\'s planet and distance');
   check('onChart', 'draw ε_cr and the impact speed on the ε_N chart');
+}
+
+/** Shows the card's inputs as they are in `ring` (after a link set them). */
+export function reflectRing() {
+  for (const key of ['tau', 'omega']) {
+    const input = $(`r-${key}`);
+    if (input) {
+      input.value = String(ring[key]);
+      input.removeAttribute('aria-invalid');
+      $(`r-${key}-err`).textContent = '';
+    }
+  }
+  for (const key of ['planet', 'onChart']) {
+    const input = $(`r-${key}`);
+    if (input) input.checked = ring[key];
+  }
 }
 
 let shownKey = null;

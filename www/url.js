@@ -1,8 +1,10 @@
-// The link: the drawn scene, view and typed tidal inputs in the URL hash, written shortly after the
-// last change; read field by field, so that one bad field is named and the good ones are kept.
-import { HELP, parseChartSpeed, parseSpeed } from './core.js';
+// The link: the drawn scene, view, typed tidal inputs, pinned curve and ring card's inputs in the
+// URL hash, written shortly after the last change; read field by field, so that one bad field is
+// named and the good ones are kept.
+import { HELP, parseChartSpeed, parseQuantity, parseSpeed } from './core.js';
 import { errText } from './dom.js';
 import { DEFAULT_VIEW, START_PRESET, app } from './state.js';
+import { RING_DEFAULTS, ring, ringInputs } from './ring.js';
 import { TIDAL_FIELDS } from './tidal.js';
 
 let timer = null;
@@ -27,6 +29,10 @@ export function writeHashNow() {
   // The pinned curve as what computes it again (its scene, level and speeds; issue 22: the page
   // said the link holds the whole state, and the pin was not in it).
   if (app.pinned) hash += `&p=${encodeURIComponent(JSON.stringify(app.pinned.source))}`;
+  // The ring card's inputs, where they differ from the page's start.
+  const r = ringInputs();
+  const changed = Object.fromEntries(Object.entries(r).filter(([k, v]) => v !== RING_DEFAULTS[k]));
+  if (Object.keys(changed).length) hash += `&r=${encodeURIComponent(JSON.stringify(changed))}`;
   if (location.hash !== hash) history.replaceState(null, '', hash);
 }
 
@@ -182,11 +188,37 @@ export function loadHash(validateTidal) {
   app.view = readView(q.get('v'), problems);
   app.tidalIn = readTidal(q.get('t'), problems, validateTidal);
   app.pinRequest = readPinned(q.get('p'), problems);
+  readRing(q.get('r'), problems);
   if (!app.pinRequest) app.pinned = null;
   app.wantScene = app.ex.toJson();
   const shown = capped(problems);
   for (const p of shown) console.error(`rime: link: ${p}`);
   return shown;
+}
+
+/** The ring card's inputs in the link (`&r=`), field by field: each bad field named in `problems`
+ *  and left as it was; a field absent from the link takes the page's start value. */
+function readRing(text, problems) {
+  Object.assign(ring, RING_DEFAULTS);
+  if (text === null) return;
+  let obj;
+  try { obj = JSON.parse(text); } catch { problems.push('ring: not JSON'); return; }
+  if (obj === null || typeof obj !== 'object' || Array.isArray(obj)) { problems.push('ring: not an object'); return; }
+  for (const k of Object.keys(obj)) if (!(k in RING_DEFAULTS)) problems.push(`ring.${k}: unknown field`);
+  const units = { tau: '1', omega: '1/s' };
+  for (const key of ['tau', 'omega']) {
+    if (obj[key] === undefined) continue;
+    try {
+      const v = parseQuantity(`ring.${key}`, String(obj[key]), units[key]);
+      if (!(v > 0)) throw new Error(`ring.${key}: must be a positive number`);
+      ring[key] = v;
+    } catch (e) { problems.push(errText(e)); }
+  }
+  for (const key of ['planet', 'onChart']) {
+    if (obj[key] === undefined) continue;
+    if (typeof obj[key] === 'boolean') ring[key] = obj[key];
+    else problems.push(`ring.${key}: true or false`);
+  }
 }
 
 /** At most MAX_PROBLEMS distinct problems, each at most MAX_PROBLEM_CHARS long, then how many more

@@ -2,7 +2,8 @@
 # The page's ring card (issue 24) against `rime ring`: builds www/ (cached after the web step),
 # serves it on a free local port and runs tests/e2e/ring.mjs in headless Chromium (the card's
 # printed numbers read back as the CLI's to their printed digits; the verdict in the CLI's words; a
-# bad τ named; the ε_cr line, meeting point and impact-speed marker on the ε_N chart).
+# bad τ named; the ε_cr line, meeting point and impact-speed marker on the ε_N chart; the card's
+# inputs in the link, a bad one named).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 

@@ -1,7 +1,8 @@
 // End-to-end check of the page's ring card (issue 24) in headless Chromium: the card prints what
 // `rime ring` computes (every printed number reads back as the CLI's value at its printed digits, by
 // the core's agreesToPrinted), says the verdict in the CLI's words, names a bad field, and draws the
-// ε_cr line, the meeting point and the impact-speed marker on the ε_N chart when asked.
+// ε_cr line, the meeting point and the impact-speed marker on the ε_N chart when asked; its inputs
+// are in the link (a reloaded link shows the same card; a bad field is named).
 // Usage: node tests/e2e/ring.mjs http://127.0.0.1:PORT/  (RIME_BIN: the rime binary)
 import { chromium } from 'playwright-core';
 import { execFileSync } from 'node:child_process';
@@ -152,6 +153,50 @@ try {
     await page.locator('#ring').scrollIntoViewIfNeeded();
     await page.locator('.ring-card').screenshot({ path: path.join(root, 'target', 'www-ring-card.png') });
     return `Ω = ${s.ring.record.omega} 1/s; ${r}`;
+  });
+
+  await check('the ring card\'s inputs are in the link: a reloaded link shows the same τ, Ω source and chart overlay', async () => {
+    const u = await updates();
+    const tau = page.locator('#r-tau');
+    await tau.fill('0.3');
+    await tau.press('Enter');
+    await waitUpdate(u);
+    // The link is written once the edits have stopped (about a second).
+    await page.waitForFunction(() => /(^|&)r=/.test(location.hash.slice(1)), null, { timeout: GUARD_MS });
+    const link = await page.evaluate(() => location.href);
+    const before = await page.evaluate(() => window.rimeState.ring.record);
+    const again = await context.newPage();
+    try {
+      await again.goto(link, { waitUntil: 'load' });
+      await again.waitForFunction(() => window.rimeState && window.rimeState.ready === true && window.rimeState.ring, null, { timeout: GUARD_MS });
+      const shown = await again.evaluate(() => ({
+        tau: document.getElementById('r-tau').value,
+        planet: document.getElementById('r-planet').checked,
+        onChart: document.getElementById('r-onChart').checked,
+        record: window.rimeState.ring.record,
+        series: window.rimeState.figure.series,
+      }));
+      assert(shown.tau === '0.3', `τ field shows ${shown.tau}`);
+      assert(shown.planet === true && shown.onChart === true, `planet ${shown.planet}, onChart ${shown.onChart}`);
+      assert(shown.record.tau === 0.3 && shown.record.omega === before.omega, `reloaded card τ ${shown.record.tau}, Ω ${shown.record.omega} (was ${before.tau}, ${before.omega})`);
+      assert(shown.series.some((n) => /^ε_cr of the ring/.test(n)), 'the ε_cr line is not on the reloaded chart');
+    } finally {
+      await again.close();
+    }
+    // A bad field is named and left at the page's start; the good ones are kept.
+    const bad = link.replace(/([#&])r=[^&]*/, `$1r=${encodeURIComponent(JSON.stringify({ tau: -1, omega: 2e-4, bogus: 1 }))}`);
+    const third = await context.newPage();
+    try {
+      await third.goto(bad, { waitUntil: 'load' });
+      await third.waitForFunction(() => window.rimeState && window.rimeState.ready === true && window.rimeState.ring, null, { timeout: GUARD_MS });
+      const s = await third.evaluate(() => ({ notice: window.rimeState.notice || '', record: window.rimeState.ring.record, tau: document.getElementById('r-tau').value }));
+      assert(/ring\.tau/.test(s.notice) && /ring\.bogus/.test(s.notice), `notice: ${s.notice}`);
+      assert(s.record.tau === 0.5 && s.tau === '0.5', `τ after a bad link: card ${s.record.tau}, field ${s.tau}`);
+      assert(s.record.omega === 2e-4, `Ω from the link: ${s.record.omega}`);
+      return `${link.length} characters; bad link: ${s.notice.slice(0, 120)}`;
+    } finally {
+      await third.close();
+    }
   });
 
   await check('no console errors', async () => {
