@@ -199,6 +199,23 @@ try {
     }
   });
 
+  await check('at 375 px the ring card fits the screen (its table does not scroll sideways)', async () => {
+    const phone = await context.newPage();
+    try {
+      await phone.setViewportSize({ width: 375, height: 812 });
+      await phone.goto(url, { waitUntil: 'load' });
+      await phone.waitForFunction(() => window.rimeState && window.rimeState.ready === true && window.rimeState.ring, null, { timeout: GUARD_MS });
+      const [scroll, client] = await phone.evaluate(() => {
+        const t = document.querySelector('.ring-card .table-wrap');
+        return [t.scrollWidth, t.clientWidth];
+      });
+      assert(scroll <= client, `the table is ${scroll} px wide in a ${client} px box`);
+      return `${scroll} px in ${client} px`;
+    } finally {
+      await phone.close();
+    }
+  });
+
   await check('no console errors', async () => {
     assert(problems.length === 0, problems.join(' | '));
   });
