@@ -527,6 +527,15 @@ impl Scene {
         Ok(())
     }
 
+    /// The scene with its soft layer (if any) read as `reading` (Eq. (8)); without a layer, the
+    /// scene as it is.
+    pub fn with_layer_reading(self, reading: LayerReading) -> Scene {
+        Scene {
+            layer: self.layer.map(|l| Layer { reading, ..l }),
+            ..self
+        }
+    }
+
     /// The damping time `A` \[s\] of Eq. (4), from whichever form the scene gives.
     pub fn damping_time(&self) -> f64 {
         match self.bulk.damping {

@@ -979,13 +979,9 @@ mod tests {
     /// NaN as NaN), gaps, forced failures, overlays and the map included.
     #[test]
     fn units_in_any_order_assemble_the_sequential_frame_issue_26() {
-        let literal = Scene {
-            layer: Preset::IceFrost.scene().layer.map(|l| crate::Layer {
-                reading: crate::LayerReading::Literal,
-                ..l
-            }),
-            ..Preset::IceFrost.scene()
-        };
+        let literal = Preset::IceFrost
+            .scene()
+            .with_layer_reading(crate::LayerReading::Literal);
         let scenes = [
             Preset::Ice.scene(),
             Preset::IceFrost.scene(),
@@ -1027,14 +1023,9 @@ mod tests {
     #[test]
     fn frames_with_the_literal_memo_equal_frames_without_it_issue_26() {
         use crate::normal::memo::SharedLayerMemo;
-        let frost = Preset::IceFrost.scene();
-        let literal = Scene {
-            layer: frost.layer.map(|l| crate::Layer {
-                reading: crate::LayerReading::Literal,
-                ..l
-            }),
-            ..frost
-        };
+        let literal = Preset::IceFrost
+            .scene()
+            .with_layer_reading(crate::LayerReading::Literal);
         let mut sticky = literal;
         sticky.set_number("adhesion.surface_energy", 0.02).unwrap();
         let mut rough = literal;

@@ -25,7 +25,7 @@ use ratatui::backend::TestBackend;
 use rime_core::explorer::frame::SWEEPS;
 use rime_core::normal::memo::SharedLayerMemo;
 use rime_core::params::Value;
-use rime_core::{Accuracy, Layer, LayerReading, Preset, Scene};
+use rime_core::{Accuracy, LayerReading, Preset, Scene};
 use std::path::Path;
 use std::time::Instant;
 
@@ -82,13 +82,7 @@ const DAMPING_TIME: &str = "bulk.damping.time";
 /// sets and a family swept over the grain radius.
 pub fn scenes() -> Vec<Case> {
     let frost = Preset::IceFrost.scene();
-    let literal = Scene {
-        layer: frost.layer.map(|l| Layer {
-            reading: LayerReading::Literal,
-            ..l
-        }),
-        ..frost
-    };
+    let literal = frost.with_layer_reading(LayerReading::Literal);
     let radius = SWEEPS.iter().position(|s| s.path == "grains.radius");
     let case = |name, scene, sweep, overlay_set| Case {
         name,

@@ -1875,13 +1875,7 @@ fn a_cut_status_line_says_so_issue_22() {
 fn parallel_frames_equal_the_sequential_reference_issue_26() {
     use rime_core::explorer::frame::{self, Request};
     let frost = Preset::IceFrost.scene();
-    let literal = Scene {
-        layer: frost.layer.map(|l| rime_core::Layer {
-            reading: rime_core::LayerReading::Literal,
-            ..l
-        }),
-        ..frost
-    };
+    let literal = frost.with_layer_reading(rime_core::LayerReading::Literal);
     let cases = [
         (Preset::Ice.scene(), Accuracy::Balanced, 2, vec![]),
         (frost, Accuracy::Precise, 0, vec!["curve", "map"]),
@@ -2053,13 +2047,7 @@ fn quitting_cancels_the_refinement_issue_26() {
     use std::sync::atomic::{AtomicU64, Ordering};
     use std::sync::mpsc;
     let frost = Preset::IceFrost.scene();
-    let literal = Scene {
-        layer: frost.layer.map(|l| rime_core::Layer {
-            reading: rime_core::LayerReading::Literal,
-            ..l
-        }),
-        ..frost
-    };
+    let literal = frost.with_layer_reading(rime_core::LayerReading::Literal);
     let mut request = rime_core::explorer::frame::Request::new(literal, Accuracy::Balanced);
     request.points = 4000; // minutes of live integration if it were not cancelled
     let (job_tx, job_rx) = mpsc::channel();
