@@ -54,10 +54,8 @@ pub fn auto_speeds(data: &Frame) -> (f64, f64) {
     }
 }
 
-/// Threads a frame uses: the cores this process may use.
-pub fn threads() -> usize {
-    std::thread::available_parallelism().map_or(1, |n| n.get())
-}
+/// Threads a frame uses: the cores this process may use (as the subcommands).
+pub use crate::parallel::threads;
 
 /// Points per curve unit: a 241-point curve is 8 units, so the cores share even a frame whose cost
 /// is one curve (a compared model's), and a unit is long enough (≥ 30 ε_N evaluations) that
