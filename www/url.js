@@ -37,13 +37,21 @@ export function writeHashNow() {
 }
 
 
+/** A part of the link as a JSON object, or null with why named in `problems` (`name: not JSON`,
+ *  `name: not an object`). */
+function linkObject(text, name, problems) {
+  let obj;
+  try { obj = JSON.parse(text); } catch { problems.push(`${name}: not JSON`); return null; }
+  if (obj === null || typeof obj !== 'object' || Array.isArray(obj)) { problems.push(`${name}: not an object`); return null; }
+  return obj;
+}
+
 /** The view in the link, field by field; each bad field named in `problems` and left at its default. */
 function readView(text, problems) {
   const v = { ...DEFAULT_VIEW, overlays: [] };
   if (text === null) return v;
-  let obj;
-  try { obj = JSON.parse(text); } catch { problems.push('view: not JSON'); return v; }
-  if (obj === null || typeof obj !== 'object' || Array.isArray(obj)) { problems.push('view: not an object'); return v; }
+  const obj = linkObject(text, 'view', problems);
+  if (!obj) return v;
   const known = new Set(Object.keys(DEFAULT_VIEW));
   for (const k of Object.keys(obj)) if (!known.has(k)) problems.push(`view.${k}: unknown field`);
   const speedOf = (key, parse = parseSpeed) => {
@@ -93,9 +101,8 @@ function readScene(text, problems) {
   try { app.ex.setJson(text); return; } catch (e) { whole = errText(e); }
   const named = problems.length;
   app.ex.loadPreset(START_PRESET);
-  let obj;
-  try { obj = JSON.parse(text); } catch { problems.push('scene: not JSON'); return; }
-  if (obj === null || typeof obj !== 'object' || Array.isArray(obj)) { problems.push('scene: not an object'); return; }
+  const obj = linkObject(text, 'scene', problems);
+  if (!obj) return;
   const base = JSON.parse(app.ex.toJson());
   for (const k of Object.keys(obj)) {
     if (!(k in base)) problems.push(`scene.${k}: unknown field`);
@@ -149,9 +156,8 @@ function readTidal(text, problems, validate) {
  *  there is none or it cannot be read (named in `problems`). */
 function readPinned(text, problems) {
   if (text === null) return null;
-  let obj;
-  try { obj = JSON.parse(text); } catch { problems.push('pinned: not JSON'); return null; }
-  if (obj === null || typeof obj !== 'object' || Array.isArray(obj)) { problems.push('pinned: not an object'); return null; }
+  const obj = linkObject(text, 'pinned', problems);
+  if (!obj) return null;
   for (const k of Object.keys(obj)) if (!['scene', 'accuracy', 'from', 'to'].includes(k)) problems.push(`pinned.${k}: unknown field`);
   const out = {};
   try {
@@ -201,9 +207,8 @@ export function loadHash(validateTidal) {
 function readRing(text, problems) {
   Object.assign(ring, RING_DEFAULTS);
   if (text === null) return;
-  let obj;
-  try { obj = JSON.parse(text); } catch { problems.push('ring: not JSON'); return; }
-  if (obj === null || typeof obj !== 'object' || Array.isArray(obj)) { problems.push('ring: not an object'); return; }
+  const obj = linkObject(text, 'ring', problems);
+  if (!obj) return;
   for (const k of Object.keys(obj)) if (!(k in RING_DEFAULTS)) problems.push(`ring.${k}: unknown field`);
   const units = { tau: '1', omega: '1/s' };
   for (const key of ['tau', 'omega']) {
