@@ -13,7 +13,7 @@ import { buildControls, edit, reflectScene, syncControls, wireToolbar, wireView 
 import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, restorePin, wireChart } from './chart.js';
 import { drawLegend, drawMapCanvas, wireMap } from './map.js';
 import { buildTidal, showTidal } from './tidal.js';
-import { buildRing, reflectRing, ringInputs, ringOverlay, showRing } from './ring.js';
+import { buildRing, reflectRing, ringInputs, ringOverlay, showRing, takeRing } from './ring.js';
 import { buildCompare } from './compare.js';
 import { intro, showBanner, showNotice, showPartNotes, showWarnings, wireBanner } from './messages.js';
 import { loadHash, writeHash } from './url.js';
@@ -222,19 +222,21 @@ function onFrame(msg, req) {
   const tm = [performance.now()];
   draw();
   tm.push(performance.now());
-  // The collision card's trajectory is integrated in its worker, asked for after this frame is drawn.
-  scheduleReplay();
-  tm.push(performance.now());
   showWarnings(res);
   showTidal(res);
-  showRing();
+  // The ring card came with the frame when it is drawn on the chart; else it is asked for once
+  // the frame is on screen (issue 26: it never delays a frame), and the card on screen says it
+  // is being computed.
+  const ringLater = !msg.ring && req.ring;
+  if (!ringLater) { showRing(); window.rimeState.ringOf = req.gen; }
+  setBusy($('ring'), ringLater);
   showBanner(res.errors);
   tm.push(performance.now());
   syncControls();
   writeHash();
   const t2 = performance.now();
   tm.push(t2);
-  window.rimeState.drawBreakdown = { decode: tm[0] - t1, draw: tm[1] - tm[0], collision: tm[2] - tm[1], text: tm[3] - tm[2], controls: tm[4] - tm[3], wait: t1 - req.page.t0 };
+  window.rimeState.drawBreakdown = { decode: tm[0] - t1, draw: tm[1] - tm[0], text: tm[2] - tm[1], controls: tm[3] - tm[2], wait: t1 - req.page.t0 };
   app.callsPerUpdate.push(req.page.calls + msg.calls);
   app.formatCallsPerUpdate.push(req.page.format);
   app.timings.push(msg.ms);
@@ -243,7 +245,30 @@ function onFrame(msg, req) {
   setText($('timing'), `last frame: ${qty(msg.ms / 1e3, 's', 3)} in the worker (median ${qty(median(app.timings) / 1e3, 's', 3)}), on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)}, accuracy ${res.accuracy}`);
   $('timing').classList.remove('busy');
   if (!$('busy').hidden) $('busy').hidden = true;
-  afterPaint(() => publish(req, res));
+  afterPaint(() => {
+    publish(req, res);
+    // The collision card's trajectory is integrated in its worker, asked for once this frame is
+    // on screen (on two cores it took one from the painter while the frame was being drawn).
+    scheduleReplay();
+    if (ringLater) {
+      const fig = res.figures[0];
+      app.computer.ring(req.gen, req.scene, req.ring, [fig.x.min, fig.x.max], res.tidal ? res.tidal.input : null);
+    }
+  });
+}
+
+/** Marks `e` as being recomputed (aria-busy; the style greys it), written only when it changes. */
+function setBusy(e, busy) {
+  if ((e.getAttribute('aria-busy') === 'true') !== Boolean(busy)) e.setAttribute('aria-busy', busy ? 'true' : 'false');
+}
+
+/** The ring card asked for after the newest frame (`Computer.ring`). */
+function onRing(msg) {
+  takeRing(msg.ring);
+  showRing();
+  setBusy($('ring'), false);
+  window.rimeState.ringOf = msg.gen;
+  window.rimeState.ringMs = msg.ms;
 }
 
 /** The drawn frame in `window.rimeState` (tests and curious users), once it is on screen. */
@@ -268,6 +293,7 @@ function publish(req, res) {
   lazy('overlays', () => res.overlays.map((o) => ({ key: o.key, label: o.label, band: o.band, score: o.score, g: Array.from(o.g), eps: Array.from(o.eps), speeds: o.speeds })));
   Object.assign(s, {
     ready: true,
+    gen: req.gen,
     sceneJson: req.scene,
     view: { ...req.page.view },
     critical: res.crit,
@@ -468,7 +494,7 @@ async function main() {
     });
   }
   window.rimeState.paint = app.painter ? 'worker' : 'main';
-  app.computer = new Computer(module, onFrame, onBusy);
+  app.computer = new Computer(module, onFrame, onBusy, onRing);
   window.rimeState.workers = poolSize();
   app.collider = new CollisionComputer(module, onCollision);
   app.wantScene = app.ex.toJson();

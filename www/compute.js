@@ -88,17 +88,21 @@ export class Computer {
    * @param {(answer: object, request: object) => void} onFrame called with the newest request's
    *   answers: its preview (`answer.preview`), if any and if it comes first, then its frame
    * @param {(busy: boolean) => void} onBusy called when computing starts and stops
+   * @param {(answer: object) => void} onRing called with the ring card asked for by `ring`, when
+   *   no newer request was made meanwhile
    * @param {number} workers 1 or 2 (see poolSize)
    */
-  constructor(module, onFrame, onBusy, workers = poolSize()) {
+  constructor(module, onFrame, onBusy, onRing, workers = poolSize()) {
     this.onFrame = onFrame;
+    this.onRing = onRing;
     this.onBusy = onBusy;
     this.gen = 0;
     this.answered = 0; // the newest generation whose requested frame was passed on
     this.shown = 0; // the newest generation whose preview or frame was passed on
     // A crashed worker answers its request's frame with the error (a lost preview is no error).
     const crash = (req, error) => {
-      if (req.frames.some((f) => !f.preview)) this.deliver({ type: 'frame', gen: req.gen, error, ms: 0, calls: 0, last: true }, req);
+      if (req.type === 'ring') this.deliver({ type: 'ring', gen: req.gen, ring: { error }, ms: 0, last: true }, req);
+      else if (req.frames.some((f) => !f.preview)) this.deliver({ type: 'frame', gen: req.gen, error, ms: 0, calls: 0, last: true }, req);
     };
     this.lanes = Array.from({ length: workers }, () => new Lane(module, (m, r) => this.deliver(m, r), crash));
   }
@@ -134,7 +138,20 @@ export class Computer {
     return gen;
   }
 
+  /** Asks for the ring card of the newest request's frame, once that frame is on screen (the
+   *  refinement lane, so that the next edit's preview never waits behind it): `r` the card's
+   *  inputs, `chart` the frame's speed range, `tidal` the tidal card's input or null. Nothing is
+   *  asked for an older request (a newer one asks again when its frame is drawn). */
+  ring(gen, scene, r, chart, tidal) {
+    if (gen !== this.gen) return;
+    this.refineLane.post({ type: 'ring', gen, scene, ring: r, chart, tidal });
+  }
+
   deliver(msg, req) {
+    if (msg.type === 'ring') {
+      if (msg.gen === this.gen) this.onRing(msg);
+      return;
+    }
     if (msg.type === 'fatal') {
       this.onFrame({ gen: this.gen, error: msg.message, ms: 0, calls: 0 }, null);
       return;

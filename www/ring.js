@@ -45,14 +45,17 @@ export function ringInputs() {
   return { tau: ring.tau, omega: ring.omega, planet: ring.planet, onChart: ring.onChart };
 }
 
+/** Takes the card the worker computed after the frame (`out`: {json} or {error}). */
+export function takeRing(out) {
+  if (out.error) Object.assign(ring, { card: null, error: out.error });
+  else Object.assign(ring, { card: JSON.parse(out.json), error: null });
+}
+
 /** Before the chart is drawn: takes the card the worker computed with the frame (`out`: {json} or
  *  {error}; null: a preview without it, the card on screen stays) and, when asked, adds it to the
  *  ε_N figure. */
 export function ringOverlay(res, out) {
-  if (out) {
-    if (out.error) Object.assign(ring, { card: null, error: out.error });
-    else Object.assign(ring, { card: JSON.parse(out.json), error: null });
-  }
+  if (out) takeRing(out);
   const fig = res.figures[0];
   const c = ring.card;
   if (!c || !ring.onChart) return;

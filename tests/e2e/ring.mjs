@@ -48,7 +48,8 @@ const page = await context.newPage();
 page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
 page.on('pageerror', (e) => problems.push(e.message));
 const updates = () => page.evaluate(() => window.rimeState.updates);
-const waitUpdate = (before) => page.waitForFunction((b) => window.rimeState.updates > b, before, { timeout: GUARD_MS });
+// A frame drawn and its ring card in (issue 26: the card is computed once the frame is on screen).
+const waitUpdate = (before) => page.waitForFunction((b) => window.rimeState.updates > b && window.rimeState.ringOf === window.rimeState.gen, before, { timeout: GUARD_MS });
 
 /** The page's ring card against `rime ring` for the drawn scene (printed digits, by the core). */
 async function agreeWithCli(args) {
@@ -90,7 +91,7 @@ async function agreeWithCli(args) {
 
 try {
   await page.goto(url, { waitUntil: 'load' });
-  await page.waitForFunction(() => window.rimeState && window.rimeState.ready === true && window.rimeState.ring !== undefined, null, { timeout: GUARD_MS });
+  await page.waitForFunction(() => window.rimeState && window.rimeState.ready === true && window.rimeState.ringOf === window.rimeState.gen, null, { timeout: GUARD_MS });
 
   await check('issue 24: the opening scene (ice-sticky) at the A ring: the card agrees with `rime ring`', async () =>
     agreeWithCli(['--tau', '0.5', '--omega', String(OMEGA)]));

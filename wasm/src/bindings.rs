@@ -35,6 +35,12 @@ impl Frame {
     pub fn codes(&mut self) -> Vec<u8> {
         std::mem::take(&mut self.inner.codes)
     }
+
+    /// The records (JSON, `null` for a view with `records: false`) as UTF-8 bytes: handed to the
+    /// page without a copy and parsed only when a download asks for them.
+    pub fn records(&mut self) -> Vec<u8> {
+        std::mem::take(&mut self.inner.records).into_bytes()
+    }
 }
 
 /// The whole frame of `scene` (JSON) seen through `view` (JSON) in one call. Throws only for a

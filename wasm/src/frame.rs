@@ -40,6 +40,9 @@ pub struct View {
     pub pinned: Option<PinnedCurve>,
     /// The date the records' context lines carry (the page's clock; the core has none).
     pub date: String,
+    /// Whether the frame carries its records (the CSV of the downloads): a preview, never
+    /// exported, goes without them (issue 26: formatting them was a fifth of a frame's time).
+    pub records: bool,
 }
 
 /// The keys of a view that are the page's own (the others are the core request's).
@@ -56,6 +59,8 @@ struct PageKeys {
     pinned: Option<PinnedCurve>,
     #[serde(default)]
     date: String,
+    #[serde(default = "default_true")]
+    records: bool,
 }
 
 fn default_true() -> bool {
@@ -94,7 +99,7 @@ pub fn parse_view(text: &str) -> Result<View, String> {
     let mut keys: serde_json::Map<String, Json> =
         serde_json::from_str(text).map_err(|e| format!("view: {e}"))?;
     let mut page = serde_json::Map::new();
-    for k in ["tidal", "yLog", "experiments", "pinned", "date"] {
+    for k in ["tidal", "yLog", "experiments", "pinned", "date", "records"] {
         if let Some(v) = keys.remove(k) {
             page.insert(k.into(), v);
         }
@@ -125,6 +130,7 @@ pub fn parse_view(text: &str) -> Result<View, String> {
         experiments: page.experiments,
         pinned: page.pinned,
         date: page.date,
+        records: page.records,
     })
 }
 
@@ -137,6 +143,10 @@ pub struct Frame {
     pub numbers: Vec<f64>,
     /// Every code array (statuses, stick classes), concatenated.
     pub codes: Vec<u8>,
+    /// The records as JSON, `{curve, family, map: null, context: {curve, family, map}}` (the CSV of
+    /// the downloads and their context lines), apart from `json` so that the page reads them only
+    /// when a download asks; `null` when the view asked for none (`records: false`).
+    pub records: String,
 }
 
 #[derive(Default)]
@@ -328,9 +338,8 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
     out.insert("friction".into(), Json::from(scene.friction.is_some()));
     // The one CSV contract and the figure descriptions, built by the core for every surface.
     let version = env!("CARGO_PKG_VERSION");
-    let ctx = |what: &str| records::context(&f, what, version, &view.date);
-    out.insert(
-        "records".into(),
+    let record_json = if view.records {
+        let ctx = |what: &str| records::context(&f, what, version, &view.date);
         json!({
             "curve": records::frame_curve_csv(&f),
             "family": records::family_csv(&f),
@@ -341,8 +350,10 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
                 "family": ctx(records::FAMILY_WHAT),
                 "map": ctx(records::MAP_WHAT),
             },
-        }),
-    );
+        })
+    } else {
+        Json::Null
+    };
     let pinned = match &view.pinned {
         Some(p) if p.g.len() != p.eps.len() => {
             return Err("view.pinned: g and eps must have the same length".into());
@@ -387,6 +398,7 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
         json: Json::Object(out).to_string(),
         numbers: pack.numbers,
         codes: pack.codes,
+        records: record_json.to_string(),
     })
 }
 
@@ -436,6 +448,7 @@ mod tests {
         let view = r#"{"points": 30, "mapN": 6, "from": 1e-6, "to": 1, "yLog": true, "date": "D"}"#;
         let f = frame(&text, view).unwrap();
         let j: Json = serde_json::from_str(&f.json).unwrap();
+        let records: Json = serde_json::from_str(&f.records).unwrap();
         // The records are the CSV `rime curve` prints: built here from the core's normal results.
         let contact = Contact::new(&scene).unwrap();
         let mut g = vec![0.0; 30];
@@ -445,11 +458,11 @@ mod tests {
             .map(|&gi| Some(contact.normal(gi, Accuracy::Precise).unwrap()))
             .collect();
         assert_eq!(
-            j["records"]["curve"],
+            records["curve"],
             rime_core::explorer::records::curve_csv(&g, &points)
         );
         assert!(
-            j["records"]["context"]["curve"]
+            records["context"]["curve"]
                 .as_str()
                 .unwrap()
                 .contains("level precise, D")
@@ -471,6 +484,35 @@ mod tests {
         assert_eq!(figs.len(), 2);
         assert_eq!(figs[0]["y"]["log"], true, "the figure follows the view");
         assert_eq!(figs[1]["map"], true);
+    }
+
+    #[test]
+    fn a_frame_without_records_is_the_same_frame_issue_26() {
+        // A preview asks for no records (it is never exported): everything else is the frame with
+        // them, bit for bit, and `records` says null.
+        let text = serde_json::to_string(&frost()).unwrap();
+        let with = frame(&text, r#"{"points": 30, "mapN": 6, "date": "D"}"#).unwrap();
+        let without = frame(
+            &text,
+            r#"{"points": 30, "mapN": 6, "date": "D", "records": false}"#,
+        )
+        .unwrap();
+        assert_eq!(without.records, "null");
+        let records: Json = serde_json::from_str(&with.records).unwrap();
+        assert!(
+            records["curve"].as_str().unwrap().lines().count() > 30,
+            "{records}"
+        );
+        assert_eq!(
+            (&with.json, &with.numbers, &with.codes),
+            (&without.json, &without.numbers, &without.codes)
+        );
+        assert!(
+            !with.json.contains("\"records\""),
+            "the records travel apart from the frame's JSON"
+        );
+        let bad = frame(&text, r#"{"records": 1}"#).unwrap_err();
+        assert!(bad.starts_with("view.records:"), "{bad}");
     }
 
     #[test]
