@@ -104,6 +104,10 @@ try {
     const scene = JSON.parse(s.sceneJson);
     assert(scene.grains.radius_1 === 0.02 && scene.grains.radius_2 === 0.02, `ice preset radii ${scene.grains.radius_1}, ${scene.grains.radius_2}`);
     assert(s.ring.equilibrium === true, `verdict ${s.ring.verdict}`);
+    // Read as shown: scrolled to, as a user would (an off-screen card skips its rendering, and
+    // its innerText with it, until it is scrolled into view).
+    await page.locator('.ring-card').scrollIntoViewIfNeeded();
+    await page.waitForFunction(() => document.getElementById('ring').innerText.length > 0, null, { timeout: GUARD_MS });
     const text = await page.locator('#ring').innerText();
     assert(/equilibrium at the monolayer floor/.test(text), `card: ${text}`);
     return agreeWithCli(['--tau', '0.5', '--omega', String(OMEGA)]);
