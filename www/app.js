@@ -67,6 +67,7 @@ function requestPinned() {
 
 /** Asks the worker for the frame of the wanted scene and view (a newer request supersedes it). */
 function request() {
+  clearTimeout(secondaryTimer);
   if (app.pinRequest) { requestPinned(); return; }
   const v = app.view;
   const view = {
@@ -247,14 +248,30 @@ function onFrame(msg, req) {
   if (!$('busy').hidden) $('busy').hidden = true;
   afterPaint(() => {
     publish(req, res);
-    // The collision card's trajectory is integrated in its worker, asked for once this frame is
-    // on screen (on two cores it took one from the painter while the frame was being drawn).
-    scheduleReplay();
-    if (ringLater) {
-      const fig = res.figures[0];
-      app.computer.ring(req.gen, req.scene, req.ring, [fig.x.min, fig.x.max], res.tidal ? res.tidal.input : null);
-    }
+    // The collision card's trajectory (its own worker) and the ring card follow once the edits
+    // pause: while a slider is dragged they would take a core from the next frame's computation
+    // and drawing on a two-core machine (issue 26).
+    afterEdits(() => {
+      replayCollision();
+      if (ringLater) {
+        const fig = res.figures[0];
+        app.computer.ring(req.gen, req.scene, req.ring, [fig.x.min, fig.x.max], res.tidal ? res.tidal.input : null);
+      }
+    });
   });
+}
+
+/** How long after the newest frame the secondary cards are computed, if no edit came [ms]. */
+const SECONDARY_AFTER_MS = 100;
+let secondaryTimer = null;
+/** Runs `fn` SECONDARY_AFTER_MS after now unless a request is made meanwhile (request() cancels). */
+function afterEdits(fn) {
+  clearTimeout(secondaryTimer);
+  const gen = app.computer.gen;
+  secondaryTimer = setTimeout(() => {
+    secondaryTimer = null;
+    if (app.computer.gen === gen) fn();
+  }, SECONDARY_AFTER_MS);
 }
 
 /** Marks `e` as being recomputed (aria-busy; the style greys it), written only when it changes. */
@@ -387,16 +404,6 @@ function probe(g, accuracy) {
 
 /** One collision of the drawn scene at `app.collisionG` (integrated in the collision worker). */
 let replayed = '';
-let replayTimer = null;
-/** Replays the collision of the newest drawn frame once the current task has painted. */
-function scheduleReplay() {
-  if (replayTimer !== null) return;
-  replayTimer = setTimeout(() => {
-    replayTimer = null;
-    replayCollision();
-  }, 0);
-}
-
 function replayCollision(g) {
   if (g !== undefined) app.collisionG = g;
   if (!app.drawn || !app.collisionView) return;
