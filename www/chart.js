@@ -93,8 +93,20 @@ export function drawChartCanvas(width) {
   }
   window.rimeState.chartLayers = { backDraws, frontDraws: ++frontDraws };
   window.rimeState.chartPlot = { ...geom.box, legendBottom: geom.bottom };
-  describe(res);
+  describeSoon();
   readout();
+}
+
+let describeTimer = null;
+/** The text alternative follows once the frames pause (100 ms after the newest): a screen reader
+ *  needs no description of every slider step and preview, and writing it cost each frame its
+ *  formatting and a layout (issue 26). */
+function describeSoon() {
+  clearTimeout(describeTimer);
+  describeTimer = setTimeout(() => {
+    describeTimer = null;
+    if (app.res && app.drawn) describe(app.res);
+  }, 100);
 }
 
 /** The readout at the cursor: the frame's own values at its nearest sample. */

@@ -828,6 +828,8 @@ try {
     assert(/^[\d.]+ (k|M|)?Pa s$/.test(vt), `aria-valuetext "${vt}"`);
     const live = await pn.evaluate(() => { const t = document.getElementById('timing'); return !!t.closest('[aria-live]:not([aria-live="off"]), [role=status], [role=alert], [role=log]'); });
     assert(!live, 'the timing line is in a live region');
+    // The chart's description follows 100 ms after the newest frame (issue 26).
+    await pn.waitForFunction(() => document.getElementById('chart-desc').textContent.length > 40, null, { timeout: GUARD_MS });
     const alt = await pn.evaluate(() => ['chart', 'map'].map((id) => {
       const c = document.getElementById(id);
       const desc = (c.getAttribute('aria-describedby') || '').split(' ').map((x) => document.getElementById(x)).filter(Boolean).map((e) => e.textContent).join(' ');
