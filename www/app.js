@@ -240,6 +240,8 @@ function onFrame(msg, req) {
   window.rimeState.drawBreakdown = { decode: tm[0] - t1, draw: tm[1] - tm[0], text: tm[2] - tm[1], controls: tm[3] - tm[2], wait: t1 - req.page.t0 };
   app.callsPerUpdate.push(req.page.calls + msg.calls);
   app.formatCallsPerUpdate.push(req.page.format);
+  // Whether the frame's units were split over the pool's two workers (issue 26).
+  window.rimeState.split = Boolean(msg.helped);
   app.timings.push(msg.ms);
   app.totals.push(t2 - req.page.t0);
   if (app.timings.length > 200) for (const a of [app.timings, app.totals, app.callsPerUpdate, app.formatCallsPerUpdate]) a.shift();

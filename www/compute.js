@@ -4,15 +4,20 @@
 /** How long a running request may hold up a newer one before its worker is restarted [ms]. */
 const RESTART_AFTER_MS = 150;
 
+/** A refinement whose last one cost more than this on one worker [ms] is split over the pool's
+ *  two workers (splitting has its costs: the plan made twice, the share sent across). */
+const SPLIT_ABOVE_MS = 16;
+
 /** One worker and its requests: one running, the newest one queued (older queued ones are
  *  dropped, so a dragged slider never queues stale work); a running request that a newer one has
  *  waited behind for RESTART_AFTER_MS is dropped with its worker (a computation cannot be
  *  interrupted) and the worker is started again. */
 class Lane {
-  constructor(module, onMessage, onCrash) {
+  constructor(module, onMessage, onCrash, onSpawn = () => {}) {
     this.module = module;
     this.onMessage = onMessage;
     this.onCrash = onCrash;
+    this.onSpawn = onSpawn;
     this.running = null; // {req, since}
     this.queued = null;
     this.restarts = 0;
@@ -30,6 +35,7 @@ class Lane {
       this.restart();
     };
     this.worker.postMessage({ type: 'init', module: this.module });
+    this.onSpawn();
   }
 
   restart() {
@@ -73,8 +79,9 @@ class Lane {
 
 /** Workers the page computes frames with: one where the browser reports one core; else two, one
  *  for the `fast` previews (and frames asked at `fast`) and one for the refinements, so that a
- *  preview never waits behind a stale refinement and restarting one never delays the next preview
- *  (issue 26; splitting one frame's units over workers did not pay: see ARCHITECTURE.md). */
+ *  preview never waits behind a stale refinement and restarting one never delays the next preview;
+ *  a dear refinement's units are split between the two, the preview's worker helping once its
+ *  preview is out (issue 26). */
 export function poolSize() {
   // `?workers=1` in the address: the pool of one (the frame benchmark compares the two).
   const asked = Number(new URLSearchParams(location.search).get('workers'));
@@ -104,7 +111,20 @@ export class Computer {
       if (req.type === 'ring') this.deliver({ type: 'ring', gen: req.gen, ring: { error }, ms: 0, last: true }, req);
       else if (req.frames.some((f) => !f.preview)) this.deliver({ type: 'frame', gen: req.gen, error, ms: 0, calls: 0, last: true }, req);
     };
-    this.lanes = Array.from({ length: workers }, () => new Lane(module, (m, r) => this.deliver(m, r), crash));
+    this.lanes = [];
+    for (let k = 0; k < workers; k++) this.lanes.push(new Lane(module, (m, r) => this.deliver(m, r), crash, () => this.connect()));
+    this.connect();
+    // What the last refinement cost on one worker [ms] (its own compute and its helper's).
+    this.lastWork = 0;
+  }
+
+  /** Gives the two workers of the pool a channel of their own (again after a restart): a dear
+   *  refinement's units are split between them (wasm/src/split.rs). */
+  connect() {
+    if (this.lanes.length !== 2) return;
+    const { port1, port2 } = new MessageChannel();
+    this.lanes[0].worker.postMessage({ type: 'peer', port: port1 }, [port1]);
+    this.lanes[1].worker.postMessage({ type: 'peer', port: port2 }, [port2]);
   }
 
   /** The preview lane and the refinement lane (the same worker in a pool of one). */
@@ -127,8 +147,11 @@ export class Computer {
       if (this.lanes.length === 1) {
         this.fastLane.post({ ...req, frames: [preview, final] });
       } else {
-        this.fastLane.post({ ...req, frames: [preview] });
-        this.refineLane.post({ ...req, frames: [final] });
+        // A refinement that cost more than a frame's time is split: the preview's worker computes
+        // a share of its units after the preview (issue 26).
+        const split = this.lastWork > SPLIT_ABOVE_MS;
+        this.fastLane.post({ ...req, frames: [preview], help: split ? { view } : null });
+        this.refineLane.post({ ...req, frames: [{ ...final, split }] });
       }
     } else {
       // A frame at `fast` needs no preview: the fast lane computes it.
@@ -167,6 +190,7 @@ export class Computer {
       }
       return;
     }
+    if (!msg.error && msg.work !== undefined && req.frames.some((f) => !f.preview)) this.lastWork = msg.work;
     // A stale frame (a newer request exists) is dropped.
     if (msg.gen !== this.gen) return;
     this.answered = msg.gen;

@@ -7,9 +7,78 @@
 // a long task. With a frame only when it is drawn on the chart (`ring.onChart`); otherwise the page
 // asks for it ({type: 'ring', gen, scene, ring, chart, tidal}) once the frame is on screen, so that
 // it never delays a frame (issue 26).
-import init, { Explorer, computeFrame, ringCard } from './pkg/rime_wasm.js';
+import init, { Explorer, FrameShare, PendingFrame, computeFrame, ringCard } from './pkg/rime_wasm.js';
 
 let ready = null;
+// The other frame worker of the pool (a MessagePort the page hands over): a refinement's units are
+// split between the two when the refinement is dear (issue 26; wasm/src/split.rs). This worker
+// helps with a share after its preview, and takes the other's share for its own refinements.
+let peer = null;
+let latestGen = 0; // the newest request this worker was asked for: a stale share stops
+const inbox = new Map(); // gen -> the peer's share that came before it was waited for
+let waiter = null; // {gen, resolve} while a refinement waits for the peer's share
+const yielder = new MessageChannel(); // a turn of the event loop without setTimeout's clamp
+const yieldNow = () => new Promise((resolve) => { yielder.port1.onmessage = () => resolve(); yielder.port2.postMessage(0); });
+
+function onPeer(m) {
+  if (m.type !== 'share') return;
+  if (waiter && waiter.gen === m.gen) waiter.resolve(m);
+  else if (m.gen >= latestGen) { inbox.clear(); inbox.set(m.gen, m); }
+}
+
+/** The peer's share of request `gen`, or null if it has not come within `waitMs`. */
+function takeShare(gen, waitMs) {
+  const got = inbox.get(gen);
+  inbox.clear();
+  if (got) return Promise.resolve(got);
+  return new Promise((resolve) => {
+    const timer = setTimeout(() => { waiter = null; resolve(null); }, waitMs);
+    waiter = { gen, resolve: (m) => { clearTimeout(timer); waiter = null; resolve(m); } };
+  });
+}
+
+/** The frame of `scene` through `view` (JSON) with the peer's help: this worker's units, then the
+ *  peer's share (waited for as long as this worker's own units took: computing the rest here takes
+ *  about that long), then whatever did not come; the frame `computeFrame` gives, bit for bit. */
+async function splitFrame(gen, scene, view) {
+  const p = new PendingFrame(scene, view, 2);
+  try {
+    const t0 = performance.now();
+    p.runOwn();
+    const own = performance.now() - t0;
+    const share = await takeShare(gen, Math.max(2, own));
+    const took = share ? p.accept(share.numbers, share.meta) : false;
+    return { f: p.finish(), helped: took ? share.ms : 0 };
+  } finally {
+    p.free();
+  }
+}
+
+/** After the preview: share 1 of 2 of request `gen`'s refinement (`view`, JSON), a unit per turn
+ *  of the event loop, dropped when a newer request comes; sent to the peer. */
+async function help(gen, scene, view) {
+  if (!peer) return;
+  let run = null;
+  try {
+    run = new FrameShare(scene, view, 1, 2);
+    const t0 = performance.now();
+    let ms = 0;
+    for (;;) {
+      const t = performance.now();
+      const more = run.step();
+      ms += performance.now() - t;
+      if (!more) break;
+      await yieldNow();
+      if (latestGen > gen) return;
+    }
+    const numbers = run.numbers();
+    peer.postMessage({ type: 'share', gen, numbers, meta: run.meta(), ms, wall: performance.now() - t0 }, [numbers.buffer]);
+  } catch (e) {
+    // The refinement computes the share itself.
+  } finally {
+    if (run) run.free();
+  }
+}
 let explorer = null; // the collision card's scene (one per worker)
 const ringMemo = { key: '', out: null };
 
@@ -37,6 +106,11 @@ function ring(scene, r, chart, tidal) {
 
 self.onmessage = async (ev) => {
   const msg = ev.data;
+  if (msg.type === 'peer') {
+    peer = msg.port;
+    peer.onmessage = (e) => onPeer(e.data);
+    return;
+  }
   if (msg.type === 'init') {
     ready = init({ module_or_path: msg.module }).then(() => self.postMessage({ type: 'ready' }));
     try { await ready; } catch (e) { self.postMessage({ type: 'fatal', message: `worker: ${e && e.message ? e.message : e}` }); }
@@ -65,10 +139,11 @@ self.onmessage = async (ev) => {
     return;
   }
   if (msg.type !== 'frame') return;
+  latestGen = Math.max(latestGen, msg.gen);
   await ready;
   const n = msg.frames.length;
   for (let k = 0; k < n; k++) {
-    const { view: full, preview } = msg.frames[k];
+    const { view: full, preview, split } = msg.frames[k];
     const last = k === n - 1;
     const t0 = performance.now();
     try {
@@ -79,7 +154,11 @@ self.onmessage = async (ev) => {
       if (testRefineDelayMs > 0 && !preview) busyWait(testRefineDelayMs);
       const t1 = performance.now();
       // A preview is never exported: it goes without records (issue 26).
-      const f = computeFrame(msg.scene, JSON.stringify(preview ? { ...view, records: false } : view));
+      const viewJson = JSON.stringify(preview ? { ...view, records: false } : view);
+      let f;
+      let helped = 0;
+      if (split && peer) ({ f, helped } = await splitFrame(msg.gen, msg.scene, viewJson));
+      else f = computeFrame(msg.scene, viewJson);
       const json = f.json();
       const numbers = f.numbers();
       const codes = f.codes();
@@ -95,7 +174,14 @@ self.onmessage = async (ev) => {
         const fig = j.figures[0];
         r = ring(msg.scene, msg.ring, [fig.x.min, fig.x.max], j.tidal && !j.tidal.error ? j.tidal.input : null);
       }
-      self.postMessage({ type: 'frame', gen: msg.gen, preview, last, json, records, numbers, codes, ring: r, ms, calls: preview ? 0 : 5 }, [numbers.buffer, codes.buffer, records.buffer]);
+      // `work`: the frame's compute time on one worker (its own and its helper's), which decides
+      // whether the next refinement is split.
+      self.postMessage({ type: 'frame', gen: msg.gen, preview, last, json, records, numbers, codes, ring: r, ms, work: ms + helped, helped: helped > 0, calls: preview ? 0 : 5 }, [numbers.buffer, codes.buffer, records.buffer]);
+      // After the preview, this worker's share of the refinement (when the page asked for help).
+      if (last && msg.help) {
+        const { testDelayMs: _d, testRefineDelayMs: _r, ...helpView } = msg.help.view;
+        help(msg.gen, msg.scene, JSON.stringify(helpView));
+      }
     } catch (e) {
       // A refused preview is dropped by the page (the requested frame, refused alike, says why).
       self.postMessage({ type: 'frame', gen: msg.gen, preview, last, error: String(e && e.message ? e.message : e), ms: performance.now() - t0, calls: 1 });

@@ -669,6 +669,33 @@ try {
     return `${cli.split('\n').length - 2} records identical (${s.view.accuracy}, ${s.view.from}…${s.view.to} m/s)`;
   });
 
+  await check('issue 26: a dear refinement split over the two frame workers is `rime curve --accuracy integrated` byte for byte', async () => {
+    // ice at `integrated` costs more than a frame's time, so from the second edit on the preview's
+    // worker computes a share of the refinement's units and sends it to the other (wasm/src/split.rs).
+    const scene = execFileSync(rime, ['scene', '--preset', 'ice'], { encoding: 'utf8' });
+    const ps = watch(await context.newPage(), 'split');
+    await ps.goto(new URL(`?workers=2#s=${encodeURIComponent(JSON.stringify(JSON.parse(scene)))}&v=${encodeURIComponent(JSON.stringify({ accuracy: 'integrated' }))}`, url).href, { waitUntil: 'load' });
+    await ready(ps);
+    const slider = ps.locator('input[type=range][data-path="bulk.youngs_modulus"]');
+    let split = false;
+    for (let k = 0; k < 4 && !split; k++) {
+      const u = await updates(ps);
+      await slider.evaluate((e, d) => { e.value = String(Number(e.value) + d); e.dispatchEvent(new Event('input', { bubbles: true })); }, 11 + k);
+      await waitUpdate(ps, u);
+      split = await ps.evaluate(() => window.rimeState.split);
+    }
+    assert(split, 'no refinement was split over the two workers in 4 edits');
+    const s = await ps.evaluate(() => ({ csv: window.rimeExports.curvesCsv(), scene: window.rimeState.sceneJson, view: window.rimeState.view, n: window.rimeState.g.length }));
+    const sceneFile = path.join(os.tmpdir(), `rime-e2e-split-${process.pid}.json`);
+    fs.writeFileSync(sceneFile, s.scene);
+    const cli = execFileSync(rime, ['curve', '--scene', sceneFile, '--from', String(s.view.from), '--to', String(s.view.to), '--points', String(s.n), '--accuracy', 'integrated', '--format', 'csv'], { encoding: 'utf8' });
+    fs.rmSync(sceneFile);
+    const page = s.csv.split('\n').filter((l) => !l.startsWith('#')).join('\n');
+    assert(s.view.accuracy === 'integrated' && page === cli, `the split frame's records differ from rime curve's (${page.length} vs ${cli.length} characters)`);
+    await ps.close();
+    return `${cli.split('\n').length - 2} records identical at integrated, split over two workers`;
+  });
+
   await check('issue 12 item 14: intro, glossary, full citation, physics notes, help on every control, human option names, every "Eq. (N)" a link', async () => {
     const d = await pn.evaluate(() => {
       const terms = [...document.querySelectorAll('#glossary dt')].map((e) => e.textContent);

@@ -6,6 +6,7 @@
 
 use crate::explorer;
 use crate::frame;
+use crate::split;
 use wasm_bindgen::prelude::*;
 
 fn js(e: String) -> JsError {
@@ -51,6 +52,104 @@ pub fn compute_frame(scene: &str, view: &str) -> Result<Frame, JsError> {
     Ok(Frame {
         inner: frame::frame(scene, view).map_err(js)?,
     })
+}
+
+/// A frame computed with another worker's help (see [`crate::split`]): `new PendingFrame(scene,
+/// view, of)` plans it, `runOwn()` computes this worker's units, `accept(numbers, meta)` takes the
+/// helper's share, `finish()` computes what is missing and returns the [`Frame`], the one
+/// `computeFrame` returns, bit for bit.
+#[wasm_bindgen]
+pub struct PendingFrame {
+    inner: Option<split::Pending>,
+}
+
+#[wasm_bindgen]
+impl PendingFrame {
+    /// Plans the frame of `scene` seen through `view` with `of − 1` helpers.
+    #[wasm_bindgen(constructor)]
+    pub fn new(scene: &str, view: &str, of: usize) -> Result<PendingFrame, JsError> {
+        Ok(PendingFrame {
+            inner: Some(split::Pending::begin(scene, view, of).map_err(js)?),
+        })
+    }
+
+    /// Computes this worker's units.
+    #[wasm_bindgen(js_name = runOwn)]
+    pub fn run_own(&mut self) -> Result<(), JsError> {
+        self.pending()?.run_own().map_err(js)
+    }
+
+    /// Takes a helper's share; false when it is not a share of this frame's plan.
+    pub fn accept(&mut self, numbers: &[f64], meta: &str) -> Result<bool, JsError> {
+        let share = split::Share {
+            numbers: numbers.to_vec(),
+            meta: meta.to_string(),
+        };
+        Ok(self.pending()?.accept(&share))
+    }
+
+    /// Units still missing.
+    pub fn missing(&mut self) -> Result<usize, JsError> {
+        Ok(self.pending()?.missing())
+    }
+
+    /// Computes what is missing and returns the frame (once).
+    pub fn finish(&mut self) -> Result<Frame, JsError> {
+        let pending = self
+            .inner
+            .take()
+            .ok_or_else(|| js("frame: already finished".into()))?;
+        Ok(Frame {
+            inner: pending.finish().map_err(js)?,
+        })
+    }
+
+    fn pending(&mut self) -> Result<&mut split::Pending, JsError> {
+        self.inner
+            .as_mut()
+            .ok_or_else(|| js("frame: already finished".into()))
+    }
+}
+
+/// A helper's share of another worker's frame (see [`crate::split`]), a unit per `step()`.
+#[wasm_bindgen]
+pub struct FrameShare {
+    inner: Option<split::ShareRun>,
+    done: split::Share,
+}
+
+#[wasm_bindgen]
+impl FrameShare {
+    /// Plans the frame of `scene` seen through `view` and lists the units of share `share` of `of`.
+    #[wasm_bindgen(constructor)]
+    pub fn new(scene: &str, view: &str, share: usize, of: usize) -> Result<FrameShare, JsError> {
+        Ok(FrameShare {
+            inner: Some(split::ShareRun::begin(scene, view, share, of).map_err(js)?),
+            done: split::Share::default(),
+        })
+    }
+
+    /// Computes the next unit; false when the share is complete (then `numbers()` and `meta()`).
+    pub fn step(&mut self) -> Result<bool, JsError> {
+        let Some(run) = self.inner.as_mut() else {
+            return Ok(false);
+        };
+        let more = run.step().map_err(js)?;
+        if !more && let Some(run) = self.inner.take() {
+            self.done = run.finish();
+        }
+        Ok(more)
+    }
+
+    /// The share's numbers (once complete; handed over once).
+    pub fn numbers(&mut self) -> Vec<f64> {
+        std::mem::take(&mut self.done.numbers)
+    }
+
+    /// The share's units, kinds and words (JSON; once complete).
+    pub fn meta(&mut self) -> String {
+        std::mem::take(&mut self.done.meta)
+    }
 }
 
 /// The stick map's records from the frame's arrays (see [`explorer::map_records`]).

@@ -234,24 +234,39 @@ fn values(scene: &Scene) -> Json {
 /// The literal layer reading's outcomes kept between this worker's frames (issue 26): an edit that
 /// leaves the layer stage's inputs unchanged is answered without integrating again. Each worker
 /// instantiates the module, so each has its own.
-static LAYER_MEMO: SharedLayerMemo = SharedLayerMemo::new();
+pub(crate) static LAYER_MEMO: SharedLayerMemo = SharedLayerMemo::new();
 
 /// Computes the frame of `scene` as seen through `view`. Fails only for a request that is not
 /// valid (scene or view naming the field); a part that fails is listed in `errors` instead.
-// Long by design: packs every part of one frame into the page's JSON in one place, the binding's
-// single entry point.
 pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
+    let (view, req) = prepare(scene_json, view_json)?;
+    // The one explorer model of the core computes every part; this binding only packs it.
+    let f = compute_with(&req, &|| false, &LAYER_MEMO).ok_or("frame: cancelled")?;
+    pack_frame(&view, &req, &f)
+}
+
+/// The view of `view_json` and the core's request for `scene_json` seen through it.
+pub(crate) fn prepare(scene_json: &str, view_json: &str) -> Result<(View, Request), String> {
     let scene = parse_scene(scene_json)?;
     let view = parse_view(view_json)?;
+    let mut req = view.request.clone();
+    req.scene = scene;
+    Ok((view, req))
+}
+
+/// The page's frame (JSON, arrays, records) of the core's frame `f` of `req` seen through `view`.
+// Long by design: packs every part of one frame into the page's JSON in one place.
+pub(crate) fn pack_frame(
+    view: &View,
+    req: &Request,
+    f: &rime_core::explorer::frame::Frame,
+) -> Result<Frame, String> {
+    let scene = req.scene;
     let force = |part: &str| part == "tidal" && view.fail_tidal;
     let mut pack = Pack::default();
     let mut errors = Errors(Vec::new());
     let mut out = serde_json::Map::new();
     out.insert("values".into(), values(&scene));
-    // The one explorer model of the core computes every part; this binding only packs it.
-    let mut req = view.request.clone();
-    req.scene = scene;
-    let f = compute_with(&req, &|| false, &LAYER_MEMO).ok_or("frame: cancelled")?;
     out.insert("g".into(), pack.f(&f.g));
     for e in &f.errors {
         errors.push(&e.part, e.message.clone());
@@ -339,10 +354,10 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
     // The one CSV contract and the figure descriptions, built by the core for every surface.
     let version = env!("CARGO_PKG_VERSION");
     let record_json = if view.records {
-        let ctx = |what: &str| records::context(&f, what, version, &view.date);
+        let ctx = |what: &str| records::context(f, what, version, &view.date);
         json!({
-            "curve": records::frame_curve_csv(&f),
-            "family": records::family_csv(&f),
+            "curve": records::frame_curve_csv(f),
+            "family": records::family_csv(f),
             // The map's records are formatted on download (`mapRecords`), not every frame.
             "map": Json::Null,
             "context": {
@@ -370,7 +385,7 @@ pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
         experiments: view.experiments,
         pinned,
     };
-    let figs: Vec<Json> = figures::frame_figures(&f, &fig_view, version)
+    let figs: Vec<Json> = figures::frame_figures(f, &fig_view, version)
         .iter()
         .map(|fig| figure_json(&mut pack, fig))
         .collect();

@@ -10,6 +10,7 @@
 
 pub mod explorer;
 pub mod frame;
+pub mod split;
 
 #[cfg(target_arch = "wasm32")]
 pub mod bindings;
