@@ -41,15 +41,17 @@ for (const c of CASES) {
       });
       mo.observe(document.body, { attributes: true, attributeFilter: ['data-previews', 'data-updates'] });
       const timer = setTimeout(() => { mo.disconnect(); reject(new Error('no frame within the guard')); }, guard);
+      // The last input's time and the frames drawn before it: its frame is the first drawn after
+      // it (the page draws no older request's frame once a newer one is asked for), which may come
+      // before the drag's last 50 ms are over.
+      let last = null;
       const step = () => {
         if (k === 20) {
-          const end = performance.now();
-          const u = s.updates;
           const wait = () => {
-            if (s.updates > u) {
+            if (s.updates > last.u) {
               mo.disconnect();
               clearTimeout(timer);
-              resolve({ previews: (s.previews || 0) - p0, frames: s.updates - u0, latency, last: performance.now() - end });
+              resolve({ previews: (s.previews || 0) - p0, frames: last.u - u0, latency, last: s.drawnAt - last.t });
             } else setTimeout(wait, 5);
           };
           wait();
@@ -58,6 +60,7 @@ for (const c of CASES) {
         if (waiting === null) waiting = { t: performance.now(), previews: s.previews || 0 };
         slider.value = String(Number(slider.value) + (k % 2 ? -3 : 4));
         k++;
+        if (k === 20) last = { t: performance.now(), u: s.updates };
         slider.dispatchEvent(new Event('input', { bubbles: true }));
         setTimeout(step, 50);
       };

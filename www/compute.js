@@ -140,6 +140,8 @@ export class Computer {
    *  requested frame (and with the preview when it goes on the chart). Returns the generation. */
   request(scene, view, page, previewView = null, ring = null) {
     const gen = ++this.gen;
+    // Every worker hears of it at once: a stale refinement or share stops at its next turn.
+    for (const lane of this.lanes) lane.worker.postMessage({ type: 'newer', gen });
     const req = { type: 'frame', gen, scene, page, ring };
     const final = { view, preview: false };
     if (previewView) {
@@ -171,6 +173,8 @@ export class Computer {
   }
 
   deliver(msg, req) {
+    // A refinement stopped because a newer request was made (its worker is free for that one).
+    if (msg.stale) return;
     if (msg.type === 'ring') {
       if (msg.gen === this.gen) this.onRing(msg);
       return;

@@ -17,8 +17,15 @@ let peer = null;
 let latestGen = 0; // the newest request this worker was asked for: a stale share stops
 const inbox = new Map(); // gen -> the peer's share that came before it was waited for
 let waiter = null; // {gen, resolve} while a refinement waits for the peer's share
-const yielder = new MessageChannel(); // a turn of the event loop without setTimeout's clamp
-const yieldNow = () => new Promise((resolve) => { yielder.port1.onmessage = () => resolve(); yielder.port2.postMessage(0); });
+// A turn of the event loop (without setTimeout's clamp), so that a newer request's note or the
+// peer's share is read between two units; several loops may wait at once (first in, first out).
+const yielder = new MessageChannel();
+const yielded = [];
+yielder.port1.onmessage = () => { const resolve = yielded.shift(); if (resolve) resolve(); };
+const yieldNow = () => new Promise((resolve) => { yielded.push(resolve); yielder.port2.postMessage(0); });
+/** A refinement computes this long between two turns of the event loop [ms] (a cheap frame never
+ *  waits for one). */
+const SLICE_MS = 4;
 
 function onPeer(m) {
   if (m.type !== 'share') return;
@@ -37,18 +44,30 @@ function takeShare(gen, waitMs) {
   });
 }
 
-/** The frame of `scene` through `view` (JSON) with the peer's help: this worker's units, then the
- *  peer's share (waited for as long as this worker's own units took: computing the rest here takes
- *  about that long), then whatever did not come; the frame `computeFrame` gives, bit for bit. */
-async function splitFrame(gen, scene, view) {
-  const p = new PendingFrame(scene, view, 2);
+/** The requested frame of `scene` through `view` (JSON): this worker's units a few milliseconds
+ *  at a time, stopping (null) when a newer request is announced (issue 26: a stale refinement is
+ *  cancelled when the next edit arrives, and the worker keeps its memo); with `split`, the peer's
+ *  share, waited for as long as this worker's own units took (computing the rest here takes about
+ *  that long); then whatever did not come. The frame `computeFrame` gives, bit for bit. */
+async function refine(gen, scene, view, split) {
+  const p = new PendingFrame(scene, view, split ? 2 : 1);
   try {
     const t0 = performance.now();
-    p.runOwn();
-    const own = performance.now() - t0;
-    const share = await takeShare(gen, Math.max(2, own));
-    const took = share ? p.accept(share.numbers, share.meta) : false;
-    return { f: p.finish(), helped: took ? share.ms : 0 };
+    let slice = t0;
+    while (p.runNext()) {
+      if (performance.now() - slice > SLICE_MS) {
+        await yieldNow();
+        if (latestGen > gen) return null;
+        slice = performance.now();
+      }
+    }
+    let helped = 0;
+    if (split) {
+      const share = await takeShare(gen, Math.max(2, performance.now() - t0));
+      if (latestGen > gen) return null;
+      if (share && p.accept(share.numbers, share.meta)) helped = share.ms;
+    }
+    return { f: p.finish(), helped };
   } finally {
     p.free();
   }
@@ -106,6 +125,11 @@ function ring(scene, r, chart, tidal) {
 
 self.onmessage = async (ev) => {
   const msg = ev.data;
+  if (msg.type === 'newer') {
+    // A newer request was made: a stale refinement or share stops at its next turn.
+    latestGen = Math.max(latestGen, msg.gen);
+    return;
+  }
   if (msg.type === 'peer') {
     peer = msg.port;
     peer.onmessage = (e) => onPeer(e.data);
@@ -157,8 +181,15 @@ self.onmessage = async (ev) => {
       const viewJson = JSON.stringify(preview ? { ...view, records: false } : view);
       let f;
       let helped = 0;
-      if (split && peer) ({ f, helped } = await splitFrame(msg.gen, msg.scene, viewJson));
-      else f = computeFrame(msg.scene, viewJson);
+      if (preview) f = computeFrame(msg.scene, viewJson);
+      else {
+        const done = await refine(msg.gen, msg.scene, viewJson, Boolean(split && peer));
+        if (!done) {
+          self.postMessage({ type: 'frame', gen: msg.gen, preview, last: true, stale: true, ms: performance.now() - t0 });
+          return;
+        }
+        ({ f, helped } = done);
+      }
       const json = f.json();
       const numbers = f.numbers();
       const codes = f.codes();

@@ -79,6 +79,12 @@ impl PendingFrame {
         self.pending()?.run_own().map_err(js)
     }
 
+    /// Computes this worker's next unit; false when none is left.
+    #[wasm_bindgen(js_name = runNext)]
+    pub fn run_next(&mut self) -> Result<bool, JsError> {
+        self.pending()?.run_next().map_err(js)
+    }
+
     /// Takes a helper's share; false when it is not a share of this frame's plan.
     pub fn accept(&mut self, numbers: &[f64], meta: &str) -> Result<bool, JsError> {
         let share = split::Share {

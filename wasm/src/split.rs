@@ -287,18 +287,26 @@ impl Pending {
 
     /// Computes this worker's units: every unit not assigned to a helper.
     pub fn run_own(&mut self) -> Result<(), String> {
-        let Some((plan, units)) = &self.planned else {
-            return Ok(());
-        };
-        for (i, unit) in units.iter().enumerate() {
-            if self.outputs[i].is_none() && !self.helped.contains(&i) {
-                let out = plan
-                    .run_with(unit, &|| false, &LAYER_MEMO)
-                    .ok_or("frame: cancelled")?;
-                self.outputs[i] = Some(out);
-            }
-        }
+        while self.run_next()? {}
         Ok(())
+    }
+
+    /// Computes this worker's next unit; false when none is left (so that the worker can stop
+    /// between two units when its frame has become stale).
+    pub fn run_next(&mut self) -> Result<bool, String> {
+        let Some((plan, units)) = &self.planned else {
+            return Ok(false);
+        };
+        let next =
+            (0..units.len()).find(|i| self.outputs[*i].is_none() && !self.helped.contains(i));
+        let Some(i) = next else {
+            return Ok(false);
+        };
+        let out = plan
+            .run_with(&units[i], &|| false, &LAYER_MEMO)
+            .ok_or("frame: cancelled")?;
+        self.outputs[i] = Some(out);
+        Ok(true)
     }
 
     /// Takes a helper's share; false (and nothing taken) when it is not a share of this plan.
@@ -414,6 +422,20 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn a_frame_without_helpers_unit_by_unit_is_the_frame_issue_26() {
+        // A refinement on its own (of = 1), a unit per call (so that a stale one can stop).
+        let s = scene(rime_core::Preset::IceSticky, &[]);
+        let view = r#"{"accuracy": "precise", "overlays": ["model:brilliantov2007"], "date": "D"}"#;
+        let mut p = Pending::begin(&s, view, 1).unwrap();
+        let mut steps = 0;
+        while p.run_next().unwrap() {
+            steps += 1;
+        }
+        assert!(steps > 10 && p.missing() == 0, "{steps} units");
+        assert_same(&p.finish().unwrap(), &frame(&s, view).unwrap(), view);
     }
 
     #[test]
