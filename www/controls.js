@@ -42,10 +42,14 @@ function fromSlider(p, pos) {
 function setErr(path, msg) {
   const row = rows.get(path);
   if (!row) return;
-  row.err.textContent = msg || '';
-  row.root.classList.toggle('invalid', !!msg);
-  if (!msg && row.typed) row.typed.dataset.refused = '';
-  for (const input of [row.typed, row.sel, row.cb]) if (input) { if (msg) input.setAttribute('aria-invalid', 'true'); else input.removeAttribute('aria-invalid'); }
+  // Written only when they change (issue 26: every slider step passes here).
+  setText(row.err, msg || '');
+  if (row.root.classList.contains('invalid') !== !!msg) row.root.classList.toggle('invalid', !!msg);
+  if (!msg && row.typed && row.typed.dataset.refused) row.typed.dataset.refused = '';
+  for (const input of [row.typed, row.sel, row.cb]) {
+    if (!input) continue;
+    if (msg) { if (input.getAttribute('aria-invalid') !== 'true') input.setAttribute('aria-invalid', 'true'); } else if (input.hasAttribute('aria-invalid')) input.removeAttribute('aria-invalid');
+  }
 }
 
 /** The scene as the editor holds it changed: ask for its frame. */
@@ -259,8 +263,8 @@ export function step(back) {
 }
 
 function historyButtons() {
-  $('undo').disabled = !canUndo();
-  $('redo').disabled = !canRedo();
+  put($('undo'), 'disabled', !canUndo());
+  put($('redo'), 'disabled', !canRedo());
 }
 
 export function wireToolbar(presets) {
