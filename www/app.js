@@ -42,17 +42,20 @@ function schedule() {
 
 /** The preview's curve points and map side (issue 26): every other point and cell of the default
  *  view's (Request::POINTS = 241, Request::MAP_N = 81), so the preview's samples are samples of the
- *  refined frame, and a quarter of the map's cells; every fourth when the last preview took longer
- *  than a frame's time (16 ms) in the worker (other models compared: their points dominate; the
- *  corners of a 61-point curve show, so only then). */
-const PREVIEWS = [{ points: 121, mapN: 41 }, { points: 61, mapN: 21 }];
-const FRAME_MS = 16;
+ *  refined frame, and a quarter of the map's cells; every fourth, or every eighth, while previews
+ *  take longer than half a frame's time in the worker (the literal layer reading integrates every
+ *  point; other models compared: their points dominate), so that the preview is ready within the
+ *  frame the edit was made in. */
+const PREVIEWS = [{ points: 121, mapN: 41 }, { points: 61, mapN: 21 }, { points: 31, mapN: 11 }];
+/** A preview slower than this in the worker makes the next one coarser [ms]; one quicker than
+ *  PREVIEW_QUICK_MS finer (a quarter of the points or fewer take about a quarter of the time). */
+const PREVIEW_SLOW_MS = 8;
+const PREVIEW_QUICK_MS = 2;
 /** A frame asked at `fast` gets a preview too when the last one took longer than this in the
  *  worker [ms] (the literal layer reading, other models compared). */
 const SLOW_MS = 8;
 let lastFastMs = 0;
-let coarsePreview = false;
-let slowPreviews = 0; // previews in a row slower than FRAME_MS
+let previewLevel = 0; // index into PREVIEWS
 
 /** Asks the worker for the pinned curve of the link (its scene at its level and speeds), before
  *  the frame of the page: the answer becomes the pin, then the page's frame is asked for. */
@@ -85,7 +88,7 @@ function request() {
   calls.compute = 0;
   calls.format = 0;
   const preview = v.accuracy !== 'fast' || lastFastMs > SLOW_MS
-    ? { ...view, accuracy: 'fast', ...PREVIEWS[coarsePreview ? 1 : 0] } : null;
+    ? { ...view, accuracy: 'fast', ...PREVIEWS[previewLevel] } : null;
   app.computer.request(app.wantScene, view, page, preview, ringInputs());
 }
 
@@ -183,11 +186,10 @@ function onFrame(msg, req) {
     // the downloads.
     const res = decode(msg, req.page);
     res.accuracy = 'fast';
-    // Coarser after two slow previews in a row (a worker's first frame is slow while its wasm
-    // warms up: one alone says nothing of the scene); finer again once a coarse one is quick (it is
-    // about half the work, or less).
-    slowPreviews = msg.ms > FRAME_MS ? slowPreviews + 1 : 0;
-    coarsePreview = coarsePreview ? msg.ms > FRAME_MS / 4 : slowPreviews >= 2;
+    // Coarser after a slow preview, finer after a quick one (a worker's first frame, slow while
+    // its wasm warms up, costs one coarser preview).
+    if (msg.ms > PREVIEW_SLOW_MS) previewLevel = Math.min(previewLevel + 1, PREVIEWS.length - 1);
+    else if (msg.ms < PREVIEW_QUICK_MS) previewLevel = Math.max(previewLevel - 1, 0);
     const sceneChanged = !app.drawn || app.drawn.scene !== req.scene;
     keepCursor(app.res, res);
     app.res = res;
@@ -200,6 +202,7 @@ function onFrame(msg, req) {
     setText($('timing'), `preview: ${qty(msg.ms / 1e3, 's', 3)} in the worker at fast, on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)} — refining to ${req.page.view.accuracy}…`);
     $('timing').classList.add('busy');
     afterPaint(() => {
+      app.computer.previewDrawn(req.gen);
       const s = window.rimeState;
       s.previews = (s.previews || 0) + 1;
       s.previewDrawnAt = performance.now();

@@ -172,6 +172,11 @@ export class Computer {
     this.refineLane.post({ type: 'ring', gen, scene, ring: r, chart, tidal });
   }
 
+  /** The preview of request `gen` is on screen: its worker may now help with the refinement. */
+  previewDrawn(gen) {
+    if (gen === this.gen && this.lanes.length === 2) this.fastLane.worker.postMessage({ type: 'help', gen });
+  }
+
   deliver(msg, req) {
     // A refinement stopped because a newer request was made (its worker is free for that one).
     if (msg.stale) return;

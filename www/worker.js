@@ -15,6 +15,7 @@ let ready = null;
 // helps with a share after its preview, and takes the other's share for its own refinements.
 let peer = null;
 let latestGen = 0; // the newest request this worker was asked for: a stale share stops
+let helpLater = null; // {gen, scene, view}: the share to compute when the page says 'help'
 const inbox = new Map(); // gen -> the peer's share that came before it was waited for
 let waiter = null; // {gen, resolve} while a refinement waits for the peer's share
 // A turn of the event loop (without setTimeout's clamp), so that a newer request's note or the
@@ -130,6 +131,12 @@ self.onmessage = async (ev) => {
     latestGen = Math.max(latestGen, msg.gen);
     return;
   }
+  if (msg.type === 'help') {
+    const h = helpLater;
+    helpLater = null;
+    if (h && h.gen === msg.gen && h.gen >= latestGen) help(h.gen, h.scene, h.view);
+    return;
+  }
   if (msg.type === 'peer') {
     peer = msg.port;
     peer.onmessage = (e) => onPeer(e.data);
@@ -208,10 +215,11 @@ self.onmessage = async (ev) => {
       // `work`: the frame's compute time on one worker (its own and its helper's), which decides
       // whether the next refinement is split.
       self.postMessage({ type: 'frame', gen: msg.gen, preview, last, json, records, numbers, codes, ring: r, ms, work: ms + helped, helped: helped > 0, calls: preview ? 0 : 5 }, [numbers.buffer, codes.buffer, records.buffer]);
-      // After the preview, this worker's share of the refinement (when the page asked for help).
+      // This worker's share of the refinement (when the page asked for help) starts once the page
+      // has drawn the preview ('help'): before, it took a core from the preview's drawing.
       if (last && msg.help) {
         const { testDelayMs: _d, testRefineDelayMs: _r, ...helpView } = msg.help.view;
-        help(msg.gen, msg.scene, JSON.stringify(helpView));
+        helpLater = { gen: msg.gen, scene: msg.scene, view: JSON.stringify(helpView) };
       }
     } catch (e) {
       // A refused preview is dropped by the page (the requested frame, refused alike, says why).
