@@ -89,7 +89,8 @@ function request() {
   calls.format = 0;
   const preview = v.accuracy !== 'fast' || lastFastMs > SLOW_MS
     ? { ...view, accuracy: 'fast', ...PREVIEWS[previewLevel] } : null;
-  app.computer.request(app.wantScene, view, page, preview, ringInputs());
+  // The newest request (tests wait for its frame: `rimeState.gen === rimeState.asked`).
+  window.rimeState.asked = app.computer.request(app.wantScene, view, page, preview, ringInputs());
 }
 
 /** Keeps the hover cursor and the map's chosen row on the same speeds when the next frame has
@@ -332,6 +333,7 @@ function publish(req, res) {
     callsPerUpdate: [...app.callsPerUpdate],
     formatCallsPerUpdate: [...app.formatCallsPerUpdate],
     workerRestarts: app.computer.restarts,
+    refinementsStopped: app.computer.stopped,
     history: historySize(),
     pinned: app.pinned ? { g: app.pinned.g, eps: app.pinned.eps, label: app.pinned.label } : null,
     updates: (s.updates || 0) + 1,

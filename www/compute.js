@@ -116,6 +116,8 @@ export class Computer {
     this.connect();
     // What the last refinement cost on one worker [ms] (its own compute and its helper's).
     this.lastWork = 0;
+    // Refinements stopped at a unit because a newer request came (no restart needed).
+    this.stopped = 0;
   }
 
   /** Gives the two workers of the pool a channel of their own (again after a restart): a dear
@@ -179,7 +181,7 @@ export class Computer {
 
   deliver(msg, req) {
     // A refinement stopped because a newer request was made (its worker is free for that one).
-    if (msg.stale) return;
+    if (msg.stale) { this.stopped++; return; }
     if (msg.type === 'ring') {
       if (msg.gen === this.gen) this.onRing(msg);
       return;

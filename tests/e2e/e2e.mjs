@@ -696,6 +696,37 @@ try {
     return `${cli.split('\n').length - 2} records identical at integrated, split over two workers`;
   });
 
+  await check('issue 26: with one frame worker (a one-core browser), edits during a refinement stop it without a restart, and the last edit\'s frame is `rime curve`\'s', async () => {
+    const scene = execFileSync(rime, ['scene', '--preset', 'ice-sticky'], { encoding: 'utf8' });
+    const p1 = watch(await context.newPage(), 'one-worker');
+    await p1.goto(new URL(`?workers=1#s=${encodeURIComponent(JSON.stringify(JSON.parse(scene)))}&v=${encodeURIComponent(JSON.stringify({ accuracy: 'integrated' }))}`, url).href, { waitUntil: 'load' });
+    await ready(p1);
+    // Three edits 15 ms apart: each refinement at `integrated` takes longer than that.
+    await p1.evaluate(() => new Promise((resolve) => {
+      const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
+      let k = 0;
+      const edit = () => {
+        e.value = String(Number(e.value) + 9);
+        e.dispatchEvent(new Event('input', { bubbles: true }));
+        if (++k < 3) setTimeout(edit, 15); else resolve();
+      };
+      edit();
+    }));
+    // The frame drawn is the last edit's (`asked`: the newest request; older ones stopped or dropped).
+    await p1.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
+    const s = await p1.evaluate(() => ({ csv: window.rimeExports.curvesCsv(), scene: window.rimeState.sceneJson, view: window.rimeState.view, n: window.rimeState.g.length, restarts: window.rimeState.workerRestarts, stopped: window.rimeState.refinementsStopped, workers: window.rimeState.workers }));
+    assert(s.workers === 1, `a pool of ${s.workers}`);
+    assert(s.stopped >= 1 && s.restarts === 0, `${s.stopped} refinements stopped, ${s.restarts} worker restarts (a stale refinement should stop by itself)`);
+    const sceneFile = path.join(os.tmpdir(), `rime-e2e-one-${process.pid}.json`);
+    fs.writeFileSync(sceneFile, s.scene);
+    const cli = execFileSync(rime, ['curve', '--scene', sceneFile, '--from', String(s.view.from), '--to', String(s.view.to), '--points', String(s.n), '--accuracy', 'integrated', '--format', 'csv'], { encoding: 'utf8' });
+    fs.rmSync(sceneFile);
+    const page = s.csv.split('\n').filter((l) => !l.startsWith('#')).join('\n');
+    assert(page === cli, 'the refined frame differs from rime curve');
+    await p1.close();
+    return `one worker: ${s.stopped} stale refinements stopped, ${s.restarts} restarts; ${cli.split('\n').length - 2} records identical`;
+  });
+
   await check('issue 12 item 14: intro, glossary, full citation, physics notes, help on every control, human option names, every "Eq. (N)" a link', async () => {
     const d = await pn.evaluate(() => {
       const terms = [...document.querySelectorAll('#glossary dt')].map((e) => e.textContent);
