@@ -28,7 +28,10 @@ const yieldNow = () => new Promise((resolve) => { yielded.push(resolve); yielder
  *  waits for one). */
 const SLICE_MS = 4;
 
+let doneGen = 0; // the newest refinement the peer finished: a share for it is no longer wanted
+
 function onPeer(m) {
+  if (m.type === 'done') { doneGen = Math.max(doneGen, m.gen); return; }
   if (m.type !== 'share') return;
   if (waiter && waiter.gen === m.gen) waiter.resolve(m);
   else if (m.gen >= latestGen) { inbox.clear(); inbox.set(m.gen, m); }
@@ -65,6 +68,8 @@ async function refine(gen, scene, view, split) {
     let helped = 0;
     if (split) {
       const share = await takeShare(gen, Math.max(2, performance.now() - t0));
+      // A share that has not come is computed here: the peer may stop.
+      if (!share && peer) peer.postMessage({ type: 'done', gen });
       if (latestGen > gen) return null;
       if (share && p.accept(share.numbers, share.meta)) helped = share.ms;
     }
@@ -89,7 +94,7 @@ async function help(gen, scene, view) {
       ms += performance.now() - t;
       if (!more) break;
       await yieldNow();
-      if (latestGen > gen) return;
+      if (latestGen > gen || doneGen >= gen) return;
     }
     const numbers = run.numbers();
     peer.postMessage({ type: 'share', gen, numbers, meta: run.meta(), ms, wall: performance.now() - t0 }, [numbers.buffer]);
@@ -134,7 +139,7 @@ self.onmessage = async (ev) => {
   if (msg.type === 'help') {
     const h = helpLater;
     helpLater = null;
-    if (h && h.gen === msg.gen && h.gen >= latestGen) help(h.gen, h.scene, h.view);
+    if (h && h.gen === msg.gen && h.gen >= latestGen && h.gen > doneGen) help(h.gen, h.scene, h.view);
     return;
   }
   if (msg.type === 'peer') {
