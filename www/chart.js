@@ -3,7 +3,7 @@
 // keyboard readouts from the frame's own samples (computed at the chosen level, never stale);
 // lin/log y axis; zoom and pan of the speed range; a text alternative.
 import { HELP, PALETTE, qty, sig, speed } from './core.js';
-import { $, el, setText } from './dom.js';
+import { $, el, setText, viewportHeight } from './dom.js';
 import { CanvasPainter, chartGeometry, chartLegendHeight, drawChartBack, drawChartFront, sizeElement } from './plot.js';
 import { app } from './state.js';
 
@@ -50,7 +50,7 @@ function size(canvas, width) {
   const w = Math.max(240, Math.floor((width ?? canvas.parentElement.clientWidth) - 2));
   const narrow = w < 560;
   // Never taller than about half a phone screen: the page must scroll past it.
-  const maxH = Math.min(520, Math.max(260, Math.round(window.innerHeight * 0.62)));
+  const maxH = Math.min(520, Math.max(260, Math.round(viewportHeight() * 0.62)));
   return [w, Math.min(maxH, Math.max(240, Math.round(w * (narrow ? 1.05 : 0.6))))];
 }
 

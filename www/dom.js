@@ -78,3 +78,14 @@ export function wrapText(text, width) {
   if (line) lines.push(line);
   return lines;
 }
+
+let viewHeight = null;
+/** The window's inner height [CSS px], kept by a resize listener: reading `window.innerHeight`
+ *  after a write to the page forces a layout of the whole page, and a frame read it twice (issue 26). */
+export function viewportHeight() {
+  if (viewHeight === null) {
+    viewHeight = window.innerHeight;
+    window.addEventListener('resize', () => { viewHeight = window.innerHeight; });
+  }
+  return viewHeight;
+}

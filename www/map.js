@@ -3,7 +3,7 @@
 // beside it, ε_T(g_T) along one g_N row beside it, hover/keyboard readouts from the frame's own
 // values and a text alternative.
 import { HELP, PALETTE, sig, speed } from './core.js';
-import { $, el, linked, setText, wrapText } from './dom.js';
+import { $, el, linked, setText, viewportHeight, wrapText } from './dom.js';
 import { CanvasPainter, drawLines, drawMap, drawNote, mapGeometry, sizeElement } from './plot.js';
 import { app } from './state.js';
 
@@ -18,7 +18,7 @@ const isArtifact = (name) => HELP.classes.some((c) => c.name === name && c.artif
 function side(canvas, width) {
   const w = Math.max(200, Math.floor((width ?? canvas.parentElement.clientWidth) - 2));
   // A square that leaves room to scroll on a phone.
-  return Math.min(w, 560, Math.max(260, Math.round(window.innerHeight * 0.6)));
+  return Math.min(w, 560, Math.max(260, Math.round(viewportHeight() * 0.6)));
 }
 
 /** The g_N row whose ε_T is plotted: the chosen one, else the middle of the map. */

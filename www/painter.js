@@ -29,22 +29,25 @@ export class Painter {
 
   /** Draws the chart described by `spec` at `w`×`h` CSS px (the background layer too with `back`). */
   chart(spec, w, h, back) {
-    // Each series' own numbers (a view into the frame's array would post the whole array).
-    const own = (a) => (ArrayBuffer.isView(a) ? a.slice() : a);
+    // Each series' own numbers (a view into the frame's array would post the whole array), handed
+    // over without a second copy.
+    const moved = [];
+    const own = (a) => { if (!ArrayBuffer.isView(a)) return a; const c = a.slice(); moved.push(c.buffer); return c; };
     const sent = {
       ...spec,
       series: spec.series.map((s) => ({ ...s, x: own(s.x), y: own(s.y) })),
       bands: (spec.bands || []).map((b) => ({ ...b, x: own(b.x), y: own(b.y) })),
     };
-    this.worker.postMessage({ type: 'chart', seq: ++this.seq, spec: sent, w, h, dpr: window.devicePixelRatio || 1, back });
+    this.worker.postMessage({ type: 'chart', seq: ++this.seq, spec: sent, w, h, dpr: window.devicePixelRatio || 1, back }, moved);
   }
 
   /** Draws the stick map and ε_T along its row ({w, h, spec, lines: {w, h, spec}}), or a note in
    *  its place ({w, h, note}). */
   map(map) {
-    const own = (a) => (ArrayBuffer.isView(a) ? a.slice() : a);
+    const moved = [];
+    const own = (a) => { if (!ArrayBuffer.isView(a)) return a; const c = a.slice(); moved.push(c.buffer); return c; };
     const sent = map.spec ? { ...map, spec: { ...map.spec, codes: own(map.spec.codes) }, lines: { ...map.lines, spec: { ...map.lines.spec, x: own(map.lines.spec.x) } } } : map;
-    this.worker.postMessage({ type: 'map', seq: ++this.seq, map: sent, dpr: window.devicePixelRatio || 1 });
+    this.worker.postMessage({ type: 'map', seq: ++this.seq, map: sent, dpr: window.devicePixelRatio || 1 }, moved);
   }
 
   /** Moves the hover cursor of the last chart drawn. */
