@@ -1,8 +1,9 @@
 // A dragged slider on the page (issue 26), outside `make test`: an `input` event every 50 ms for
 // 1 s (20 of them, on Young's modulus) on scenes whose refinement is slow, with one frame worker
 // (`?workers=1`, as on a one-core browser) and with the pool of two. Reports the previews and frames
-// drawn during the drag, input → the next preview drawn (median, max) and the last input → the
-// refined frame; writes target/bench/drag-page.json. It is what decided the pool (README).
+// drawn during the drag, input → the next preview drawn (median, max), the last input → the
+// refined frame and the main thread's long tasks over 50 ms; writes target/bench/drag-page.json.
+// It is what decided the pool (README).
 //
 // Usage: scripts/build-www.sh && scripts/setup-npm.sh && node scripts/bench-page-drag.mjs
 // (serves www/ itself on a free local port; needs target/release/rime for the scenes' JSON).
@@ -36,6 +37,10 @@ for (const c of CASES) {
       const latency = []; // input → the next preview drawn, for the inputs that waited for one
       let waiting = null;
       let k = 0;
+      // The main thread's long tasks (over 50 ms) during the drag and its last frame.
+      const tasks = [];
+      const lt = new PerformanceObserver((l) => { for (const e of l.getEntries()) tasks.push(e.duration); });
+      lt.observe({ type: 'longtask' });
       const mo = new MutationObserver(() => {
         if (waiting !== null && (s.previews || 0) > waiting.previews) { latency.push(performance.now() - waiting.t); waiting = null; }
       });
@@ -50,8 +55,9 @@ for (const c of CASES) {
           const wait = () => {
             if (s.updates > last.u) {
               mo.disconnect();
+              lt.disconnect();
               clearTimeout(timer);
-              resolve({ previews: (s.previews || 0) - p0, frames: last.u - u0, latency, last: s.drawnAt - last.t });
+              resolve({ previews: (s.previews || 0) - p0, frames: last.u - u0, latency, last: s.drawnAt - last.t, tasks });
             } else setTimeout(wait, 5);
           };
           wait();
@@ -69,10 +75,11 @@ for (const c of CASES) {
     const rec = {
       surface: 'page', scene: c.name, level: c.level, workers, inputs: 20, interval_ms: 50,
       previews: r.previews, frames: r.frames, preview_ms_median: median(r.latency),
-      preview_ms_max: r.latency.length ? Math.max(...r.latency) : null, last_final_ms: r.last, cores, load: loadAvg,
+      preview_ms_max: r.latency.length ? Math.max(...r.latency) : null, last_final_ms: r.last,
+      long_tasks: r.tasks.length, max_task_ms: r.tasks.length ? Math.max(...r.tasks) : 0, cores, load: loadAvg,
     };
     records.push(rec);
-    console.log(`${c.name.padEnd(34)} ${c.level.padEnd(10)} ${workers} worker(s): ${rec.previews} previews, ${rec.frames} frame(s) in the drag; input → preview median ${rec.preview_ms_median.toFixed(0)} ms (max ${rec.preview_ms_max.toFixed(0)}); last input → frame ${rec.last_final_ms.toFixed(0)} ms`);
+    console.log(`${c.name.padEnd(34)} ${c.level.padEnd(10)} ${workers} worker(s): ${rec.previews} previews, ${rec.frames} frame(s) in the drag; input → preview median ${rec.preview_ms_median.toFixed(0)} ms (max ${rec.preview_ms_max.toFixed(0)}); last input → frame ${rec.last_final_ms.toFixed(0)} ms; long tasks ${rec.long_tasks}`);
     await page.close();
   }
 }
