@@ -346,12 +346,15 @@ let busyTimer = null;
 function onBusy(busy) {
   clearTimeout(busyTimer);
   if (!busy) { $('timing').classList.remove('busy'); if (!$('busy').hidden) $('busy').hidden = true; return; }
-  // Say so only when it takes long enough to notice.
+  // Say so only when it takes long enough to notice, beside the accuracy menu: a preview on screen
+  // (fewer points, at `fast`) is named as one while its refinement is awaited.
   busyTimer = setTimeout(() => {
-    // A preview on screen already says "refining to …".
-    if (!app.computer.busy || app.preview) return;
-    $('timing').classList.add('busy');
-    $('timing').textContent = `computing (${app.view.accuracy})…`;
+    if (!app.computer.busy) return;
+    setText($('busy'), app.preview ? `a fast preview is shown — refining to ${app.view.accuracy}… the controls stay live` : 'computing… the controls stay live');
+    if (!app.preview) {
+      $('timing').classList.add('busy');
+      $('timing').textContent = `computing (${app.view.accuracy})…`;
+    }
     $('busy').hidden = false;
   }, 120);
 }
