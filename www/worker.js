@@ -1,7 +1,8 @@
 // The computing half of the page: a module worker holding the wasm module. It answers each request
-// {gen, scene, frames: [{view, preview}], ring} with one message per frame, in order (one
-// computeFrame call, then its four parts; the last one marked `last`), or with the request's
-// error, so that no level of accuracy ever blocks the page's input. A preview (issue 26) is a
+// {gen, scene, frames: [{view, preview, split}], ring, help} with one message per frame, in order
+// (a preview in one computeFrame call; the requested frame a few units at a time, see `refine`; the
+// last message marked `last`; a refinement stopped for a newer request marked `stale`), or with the
+// request's error, so that no level of accuracy ever blocks the page's input. A preview (issue 26) is a
 // frame the page draws until the requested one arrives. The ring card (issue 24) is computed here
 // too: on the literal layer reading it takes longer than a frame, and on the page's thread it was
 // a long task. With a frame only when it is drawn on the chart (`ring.onChart`); otherwise the page
@@ -16,6 +17,7 @@ let ready = null;
 let peer = null;
 let latestGen = 0; // the newest request this worker was asked for: a stale share stops
 let helpLater = null; // {gen, scene, view}: the share to compute when the page says 'help'
+let doneGen = 0; // the newest refinement the peer finished: a share for it is no longer wanted
 const inbox = new Map(); // gen -> the peer's share that came before it was waited for
 let waiter = null; // {gen, resolve} while a refinement waits for the peer's share
 // A turn of the event loop (without setTimeout's clamp), so that a newer request's note or the
@@ -27,8 +29,6 @@ const yieldNow = () => new Promise((resolve) => { yielded.push(resolve); yielder
 /** A refinement computes this long between two turns of the event loop [ms] (a cheap frame never
  *  waits for one). */
 const SLICE_MS = 4;
-
-let doneGen = 0; // the newest refinement the peer finished: a share for it is no longer wanted
 
 function onPeer(m) {
   if (m.type === 'done') { doneGen = Math.max(doneGen, m.gen); return; }
@@ -104,6 +104,7 @@ async function help(gen, scene, view) {
     if (run) run.free();
   }
 }
+
 let explorer = null; // the collision card's scene (one per worker)
 const ringMemo = { key: '', out: null };
 
