@@ -346,8 +346,9 @@ let busyTimer = null;
 function onBusy(busy) {
   clearTimeout(busyTimer);
   if (!busy) { $('timing').classList.remove('busy'); if (!$('busy').hidden) $('busy').hidden = true; return; }
-  // Say so only when it takes long enough to notice, beside the accuracy menu: a preview on screen
-  // (fewer points, at `fast`) is named as one while its refinement is awaited.
+  // Say so only when it takes long enough to notice, in the note floating at the bottom of the
+  // screen: a preview on screen (fewer points, at `fast`) is named as one while its refinement is
+  // awaited.
   busyTimer = setTimeout(() => {
     if (!app.computer.busy) return;
     setText($('busy'), app.preview ? `a fast preview is shown — refining to ${app.view.accuracy}… the controls stay live` : 'computing… the controls stay live');

@@ -1138,10 +1138,10 @@ try {
       const mid = await page.evaluate(() => ({ timing: document.getElementById('timing').textContent, updates: window.rimeState.updates }));
       assert(/refining to precise/.test(mid.timing), `status during the preview: "${mid.timing}"`);
       assert(mid.updates === u, 'the refined frame arrived before the preview was looked at');
-      // While the refinement is awaited the preview is named beside the accuracy menu, in sight.
+      // While the refinement is awaited the preview is named in the note at the bottom of the screen.
       await page.waitForFunction(() => !document.getElementById('busy').hidden, null, { timeout: GUARD_MS });
       const note = await page.evaluate(() => document.getElementById('busy').textContent);
-      assert(/fast preview is shown — refining to precise/.test(note), `the note beside the accuracy menu: "${note}"`);
+      assert(/fast preview is shown — refining to precise/.test(note), `the busy note: "${note}"`);
       const inkPreview = await inked(page, 'chart');
       await page.locator('#chart').screenshot({ path: path.join(outDir, 'www-preview-26.png') });
       await page.click('#dl-curves'); // refused: a preview is on screen
