@@ -7,10 +7,12 @@
 // tasks over 50 ms meanwhile, and the main thread's busy time per frame drawn (Chromium's
 // TaskDuration metric over the edits, divided by the previews and refined frames drawn: input
 // handling, drawing, style, layout and paint of the page's thread; `main_cpu_ms_per_frame` the
-// same as thread time from a trace, less inflated by a loaded machine). Writes
-// target/bench/frames-page.json (or the file of `--out`): one record per case in the shape of
-// `rime bench --frames` (`surface: "page"`), plus `profile`, `long_tasks`, `max_task_ms`,
-// `main_ms_per_frame` and `paint` (where the chart is drawn: `worker` or `main`).
+// same as thread time from a trace, less inflated by a loaded machine; split by what started it into
+// `main_cpu_frame_ms_per_frame`, the frames' own handling, and `main_cpu_input_ms_per_edit`, the
+// input's). Writes target/bench/frames-page.json (or the file of `--out`): one record per case in
+// the shape of `rime bench --frames` (`surface: "page"`), plus `profile`, `long_tasks`,
+// `max_task_ms`, `main_ms_per_frame`, the thread times above and `paint` (where the chart is drawn:
+// `worker` or `main`).
 //
 // Usage: scripts/build-www.sh && scripts/setup-npm.sh && node scripts/bench-page-frames.mjs
 //   [--quick] [--profile desktop|phone] [--paint main] [--workers 1|2] [--out FILE] [--runs N]
