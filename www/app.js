@@ -71,6 +71,7 @@ function requestPinned() {
 /** Asks the worker for the frame of the wanted scene and view (a newer request supersedes it). */
 function request() {
   clearTimeout(secondaryTimer);
+  markCollision();
   if (app.pinRequest) { requestPinned(); return; }
   const v = app.view;
   const view = {
@@ -415,11 +416,18 @@ function probe(g, accuracy) {
 
 /** One collision of the drawn scene at `app.collisionG` (integrated in the collision worker). */
 let replayed = '';
+let collisionShown = ''; // the scene, level and speed of the collision on the card
+const collisionKey = () => (app.drawn ? `${app.drawn.scene}|${app.drawn.view.accuracy}|${app.collisionG}` : '');
+/** The collision card says it shows another scene's collision (or level's, or speed's) than the one
+ *  asked for, from the edit until the replay arrives (the replay follows once the edits pause). */
+function markCollision() {
+  setBusy($('collision-card'), collisionShown !== `${app.wantScene}|${app.view.accuracy}|${app.collisionG}`);
+}
 function replayCollision(g) {
   if (g !== undefined) app.collisionG = g;
   if (!app.drawn || !app.collisionView) return;
   // A new frame of the same scene at the same level (a zoom, an axis) does not replay it.
-  const key = `${app.drawn.scene}|${app.drawn.view.accuracy}|${app.collisionG}`;
+  const key = collisionKey();
   if (g === undefined && key === replayed) return;
   replayed = key;
   // Integrated in the collision worker (issue 22: it ran here, on the page's thread).
@@ -428,6 +436,8 @@ function replayCollision(g) {
 
 /** The collision worker's answer to the newest request. */
 function onCollision(msg, req) {
+  collisionShown = req ? `${req.scene}|${req.accuracy}|${req.g}` : '';
+  markCollision();
   if (msg.error) {
     console.error(`rime: collision: ${msg.error}`);
     app.collisionView.fail(msg.error);
