@@ -613,6 +613,29 @@ try {
     return `g ${c.g.toExponential(3)} m/s: ε_N ${c.eps_n}, t_c ${c.t_c} s (equal to rime collision), closure ${c.closure.toExponential(1)}`;
   });
 
+  await check('issue 26: an edit marks the collision card as showing the old scene until its replay, which follows once the edits pause, arrives for the new scene (as `rime collision`)', async () => {
+    const before = await pf.evaluate(() => window.rimeState.collision);
+    const u = await updates(pf);
+    const busyAtEdit = await pf.evaluate(async () => {
+      const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
+      e.value = String(Number(e.value) + 30);
+      e.dispatchEvent(new Event('input', { bubbles: true }));
+      await null; // the edit's request leaves in a microtask after the event
+      return document.getElementById('collision-card').getAttribute('aria-busy');
+    });
+    assert(busyAtEdit === 'true', `aria-busy at the edit: ${busyAtEdit}`);
+    await waitUpdate(pf, u);
+    await pf.waitForFunction(() => document.getElementById('collision-card').getAttribute('aria-busy') === 'false', null, { timeout: GUARD_MS });
+    const c = await pf.evaluate(() => window.rimeState.collision);
+    const sceneFile = path.join(os.tmpdir(), `rime-e2e-collision-edit-${process.pid}.json`);
+    fs.writeFileSync(sceneFile, await pf.evaluate(() => window.rimeState.sceneJson));
+    const cli = JSON.parse(execFileSync(rime, ['collision', '--g', String(c.g), '--scene', sceneFile, '--accuracy', 'precise', '--points', '20', '--format', 'json'], { encoding: 'utf8' }));
+    fs.rmSync(sceneFile);
+    const near = (a, b) => Math.abs(a - b) <= 1e-12 * Math.abs(b);
+    assert(near(c.t_c, cli.t_c) && c.t_c !== before.t_c, `t_c ${before.t_c} -> ${c.t_c}, rime collision ${cli.t_c}`);
+    return `busy from the edit to the replay; t_c ${before.t_c} -> ${c.t_c} s (rime collision ${cli.t_c})`;
+  });
+
   await check('calls across the wasm boundary per update (one frame call)', async () => {
     const s = await pf.evaluate(() => window.rimeState);
     const last = s.callsPerUpdate.slice(-5);
