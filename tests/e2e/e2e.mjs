@@ -953,6 +953,35 @@ try {
     return `slider reads "${vt}"; Tab, Enter, Tab reaches ${reached.path}; axe-core: 0 violations (4 states, dark included)`;
   });
 
+  await check('issue 26: the chart cursor stays on its speed through previews (every other, fourth or eighth sample)', async () => {
+    const pc = watch(await context.newPage(), 'cursor');
+    await pc.goto(url, { waitUntil: 'load' });
+    await ready(pc);
+    if ((await pc.evaluate(() => window.rimeState.view.accuracy)) !== 'precise') {
+      await pc.selectOption('#accuracy', 'precise');
+      await pc.waitForFunction(() => window.rimeState.view.accuracy === 'precise', null, { timeout: GUARD_MS });
+    }
+    // An odd sample: a preview has none there, so mapping the index to the preview's nearest sample
+    // and back moved it (by one sample with every other point, more with coarser previews).
+    await pc.locator('#chart').focus();
+    for (let k = 0; k < 7; k++) await pc.keyboard.press('ArrowRight');
+    const at = () => pc.evaluate(() => {
+      const t = document.getElementById('chart-readout').textContent;
+      return { g: (t.match(/g_N = ([^·]+)/) || [])[1], previews: window.rimeState.previews || 0 };
+    });
+    const start = await at();
+    for (let k = 0; k < 4; k++) {
+      const u = await updates(pc);
+      await pc.evaluate((d) => { const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]'); e.value = String(Number(e.value) + d); e.dispatchEvent(new Event('input', { bubbles: true })); }, 17 + k);
+      await waitUpdate(pc, u);
+      await pc.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
+    }
+    const end = await at();
+    await pc.close();
+    assert(start.g && end.g === start.g && end.previews > start.previews, `cursor at g_N ${start.g} → ${end.g} after ${end.previews - start.previews} previews`);
+    return `g_N ${end.g} kept through ${end.previews - start.previews} previews`;
+  });
+
   await check('issue 12 item 18: readouts follow the drawn scene at the chosen level; greyed sliders disabled; tidal inputs in the link; one bad field named, the rest kept; huge numbers stay short; speed fields take units', async () => {
     // Readouts: a cursor on the chart (keyboard), then the scene changes under it (Ctrl+Z): the
     // readout shows the new frame's value there, computed at the chosen level.
