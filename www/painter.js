@@ -11,6 +11,16 @@ export function canPaintInWorker() {
     && typeof Worker !== 'undefined';
 }
 
+/** A typed array's own copy (a view into the frame's array would post the whole array), its
+ *  buffer listed in `moved` to be handed over with the message without a second copy; anything
+ *  else as it is. */
+function ownCopy(a, moved) {
+  if (!ArrayBuffer.isView(a)) return a;
+  const c = a.slice();
+  moved.push(c.buffer);
+  return c;
+}
+
 export class Painter {
   /** Takes over the canvas elements {chart, 'chart-fg', map, 'eps-t'} (the chart's background
    *  and data layers, the stick map, ε_T along a row); `onError` gets a painter's error. */
@@ -29,10 +39,8 @@ export class Painter {
 
   /** Draws the chart described by `spec` at `w`×`h` CSS px (the background layer too with `back`). */
   chart(spec, w, h, back) {
-    // Each series' own numbers (a view into the frame's array would post the whole array), handed
-    // over without a second copy.
     const moved = [];
-    const own = (a) => { if (!ArrayBuffer.isView(a)) return a; const c = a.slice(); moved.push(c.buffer); return c; };
+    const own = (a) => ownCopy(a, moved);
     const sent = {
       ...spec,
       series: spec.series.map((s) => ({ ...s, x: own(s.x), y: own(s.y) })),
@@ -45,7 +53,7 @@ export class Painter {
    *  its place ({w, h, note}). */
   map(map) {
     const moved = [];
-    const own = (a) => { if (!ArrayBuffer.isView(a)) return a; const c = a.slice(); moved.push(c.buffer); return c; };
+    const own = (a) => ownCopy(a, moved);
     const sent = map.spec ? { ...map, spec: { ...map.spec, codes: own(map.spec.codes) }, lines: { ...map.lines, spec: { ...map.lines.spec, x: own(map.lines.spec.x) } } } : map;
     this.worker.postMessage({ type: 'map', seq: ++this.seq, map: sent, dpr: window.devicePixelRatio || 1 }, moved);
   }
