@@ -435,11 +435,13 @@ function probe(g, accuracy) {
 /** One collision of the drawn scene at `app.collisionG` (integrated in the collision worker). */
 let replayed = '';
 let collisionShown = ''; // the scene, level and speed of the collision on the card
-const collisionKey = () => (app.drawn ? `${app.drawn.scene}|${app.drawn.view.accuracy}|${app.collisionG}` : '');
+/** What names one collision: its scene, level and speed. */
+const collisionOf = (scene, accuracy, g) => `${scene}|${accuracy}|${g}`;
+const collisionKey = () => (app.drawn ? collisionOf(app.drawn.scene, app.drawn.view.accuracy, app.collisionG) : '');
 /** The collision card says it shows another scene's collision (or level's, or speed's) than the one
  *  asked for, from the edit until the replay arrives (the replay follows once the edits pause). */
 function markCollision() {
-  setBusy($('collision-card'), collisionShown !== `${app.wantScene}|${app.view.accuracy}|${app.collisionG}`);
+  setBusy($('collision-card'), collisionShown !== collisionOf(app.wantScene, app.view.accuracy, app.collisionG));
 }
 function replayCollision(g) {
   if (g !== undefined) app.collisionG = g;
@@ -454,7 +456,7 @@ function replayCollision(g) {
 
 /** The collision worker's answer to the newest request. */
 function onCollision(msg, req) {
-  collisionShown = req ? `${req.scene}|${req.accuracy}|${req.g}` : '';
+  collisionShown = req ? collisionOf(req.scene, req.accuracy, req.g) : '';
   markCollision();
   if (msg.error) {
     console.error(`rime: collision: ${msg.error}`);
