@@ -9,9 +9,10 @@ const RESTART_AFTER_MS = 150;
 const SPLIT_ABOVE_MS = 16;
 
 /** One worker and its requests: one running, the newest one queued (older queued ones are
- *  dropped, so a dragged slider never queues stale work); a running request that a newer one has
- *  waited behind for RESTART_AFTER_MS is dropped with its worker (a computation cannot be
- *  interrupted) and the worker is started again. */
+ *  dropped, so a dragged slider never queues stale work). A running refinement stops by itself at
+ *  its next unit once told of a newer request (`newer`, see Computer.request); what cannot stop (a
+ *  preview, the ring card) and holds up a newer request for RESTART_AFTER_MS is dropped with its
+ *  worker, and the worker is started again. */
 class Lane {
   constructor(module, onMessage, onCrash, onSpawn = () => {}) {
     this.module = module;

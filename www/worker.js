@@ -109,6 +109,10 @@ let explorer = null; // the collision card's scene (one per worker)
 const ringMemo = { key: '', out: null };
 
 const busyWait = (ms) => { const until = performance.now() + ms; while (performance.now() < until) { /* busy */ } };
+/** An exception's message for the page. */
+const message = (e) => String(e && e.message ? e.message : e);
+/** A view without the end-to-end test's stand-ins (`testDelayMs`, `testRefineDelayMs`), and them. */
+const splitTestKeys = ({ testDelayMs, testRefineDelayMs, ...view }) => ({ view, testDelayMs, testRefineDelayMs });
 
 /** The ring card of `scene` for the inputs `r` over the chart's speeds `chart` ([from, to]),
  *  with the tidal card's planet and distance `tidal` (or null; memoised). */
@@ -124,7 +128,7 @@ function ring(scene, r, chart, tidal) {
   const key = `${scene}|${text}`;
   if (key !== ringMemo.key) {
     let out;
-    try { out = { json: ringCard(scene, text) }; } catch (e) { out = { error: String(e && e.message ? e.message : e) }; }
+    try { out = { json: ringCard(scene, text) }; } catch (e) { out = { error: message(e) }; }
     Object.assign(ringMemo, { key, out });
   }
   return ringMemo.out;
@@ -150,7 +154,7 @@ self.onmessage = async (ev) => {
   }
   if (msg.type === 'init') {
     ready = init({ module_or_path: msg.module }).then(() => self.postMessage({ type: 'ready' }));
-    try { await ready; } catch (e) { self.postMessage({ type: 'fatal', message: `worker: ${e && e.message ? e.message : e}` }); }
+    try { await ready; } catch (e) { self.postMessage({ type: 'fatal', message: `worker: ${message(e)}` }); }
     return;
   }
   if (msg.type === 'collision') {
@@ -164,7 +168,7 @@ self.onmessage = async (ev) => {
       const json = explorer.collision(msg.g, msg.points, msg.accuracy);
       self.postMessage({ type: 'collision', id: msg.id, json, ms: performance.now() - t0 });
     } catch (e) {
-      self.postMessage({ type: 'collision', id: msg.id, error: String(e && e.message ? e.message : e), ms: performance.now() - t0 });
+      self.postMessage({ type: 'collision', id: msg.id, error: message(e), ms: performance.now() - t0 });
     }
     return;
   }
@@ -186,7 +190,7 @@ self.onmessage = async (ev) => {
     try {
       // The end-to-end test's stand-ins: a slow computation (the worker is busy, the page is
       // not) and a slow refinement (the preview stays on screen).
-      const { testDelayMs, testRefineDelayMs, ...view } = full;
+      const { view, testDelayMs, testRefineDelayMs } = splitTestKeys(full);
       if (testDelayMs > 0 && (k === 0 || !preview)) busyWait(testDelayMs);
       if (testRefineDelayMs > 0 && !preview) busyWait(testRefineDelayMs);
       const t1 = performance.now();
@@ -224,12 +228,11 @@ self.onmessage = async (ev) => {
       // This worker's share of the refinement (when the page asked for help) starts once the page
       // has drawn the preview ('help'): before, it took a core from the preview's drawing.
       if (last && msg.help) {
-        const { testDelayMs: _d, testRefineDelayMs: _r, ...helpView } = msg.help.view;
-        helpLater = { gen: msg.gen, scene: msg.scene, view: JSON.stringify(helpView) };
+        helpLater = { gen: msg.gen, scene: msg.scene, view: JSON.stringify(splitTestKeys(msg.help.view).view) };
       }
     } catch (e) {
       // A refused preview is dropped by the page (the requested frame, refused alike, says why).
-      self.postMessage({ type: 'frame', gen: msg.gen, preview, last, error: String(e && e.message ? e.message : e), ms: performance.now() - t0, calls: 1 });
+      self.postMessage({ type: 'frame', gen: msg.gen, preview, last, error: message(e), ms: performance.now() - t0, calls: 1 });
     }
   }
 };
