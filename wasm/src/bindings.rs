@@ -55,9 +55,9 @@ pub fn compute_frame(scene: &str, view: &str) -> Result<Frame, JsError> {
 }
 
 /// A frame computed with another worker's help (see [`crate::split`]): `new PendingFrame(scene,
-/// view, of)` plans it, `runOwn()` computes this worker's units, `accept(numbers, meta)` takes the
-/// helper's share, `finish()` computes what is missing and returns the [`Frame`], the one
-/// `computeFrame` returns, bit for bit.
+/// view, of)` plans it, `runNext()` computes this worker's units one at a time, `accept(numbers,
+/// meta)` takes the helper's share, `finish()` computes what is missing and returns the [`Frame`],
+/// the one `computeFrame` returns, bit for bit.
 #[wasm_bindgen]
 pub struct PendingFrame {
     inner: Option<split::Pending>,
@@ -73,12 +73,6 @@ impl PendingFrame {
         })
     }
 
-    /// Computes this worker's units.
-    #[wasm_bindgen(js_name = runOwn)]
-    pub fn run_own(&mut self) -> Result<(), JsError> {
-        self.pending()?.run_own().map_err(js)
-    }
-
     /// Computes this worker's next unit; false when none is left.
     #[wasm_bindgen(js_name = runNext)]
     pub fn run_next(&mut self) -> Result<bool, JsError> {
@@ -92,11 +86,6 @@ impl PendingFrame {
             meta: meta.to_string(),
         };
         Ok(self.pending()?.accept(&share))
-    }
-
-    /// Units still missing.
-    pub fn missing(&mut self) -> Result<usize, JsError> {
-        Ok(self.pending()?.missing())
     }
 
     /// Computes what is missing and returns the frame (once).

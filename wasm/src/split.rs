@@ -1,7 +1,7 @@
 //! One frame's units computed by two page workers (issue 26): the worker asked for the frame
 //! plans it, computes its share of the units and the rest of the plan ([`Pending`]), takes the
-//! other worker's share ([`share`], sent between the workers as a flat array of numbers and a line
-//! of JSON) and assembles the frame, computing itself whatever share did not come. The frame is
+//! other worker's share ([`ShareRun`], sent between the workers as a flat array of numbers and a
+//! line of JSON) and assembles the frame, computing itself whatever share did not come. The frame is
 //! the one [`crate::frame::frame`] computes, bit for bit: each unit's output does not depend on
 //! which worker computed it, and the core assembles the outputs in the plan's order.
 //!
@@ -188,14 +188,6 @@ fn plan(scene_json: &str, view_json: &str) -> Result<Planned, String> {
     Ok((view, req, planned))
 }
 
-/// Worker `share` of `of`'s outputs for the frame of `scene` seen through `view` (the helping
-/// worker's side; the frame's own worker is share 0, see [`Pending`]).
-pub fn share(scene_json: &str, view_json: &str, share: usize, of: usize) -> Result<Share, String> {
-    let mut run = ShareRun::begin(scene_json, view_json, share, of)?;
-    while run.step()? {}
-    Ok(run.finish())
-}
-
 /// A helper's share computed a unit at a time, so that the helping worker can stop between two
 /// units (a newer edit's preview must not wait behind a stale share).
 #[derive(Debug)]
@@ -353,6 +345,13 @@ mod tests {
     use super::*;
     use crate::frame::frame;
 
+    /// Worker `share` of `of`'s outputs, all at once (the helping worker runs them a unit per turn).
+    fn share(scene_json: &str, view_json: &str, share: usize, of: usize) -> Result<Share, String> {
+        let mut run = ShareRun::begin(scene_json, view_json, share, of)?;
+        while run.step()? {}
+        Ok(run.finish())
+    }
+
     fn scene(preset: rime_core::Preset, set: &[(&str, &str)]) -> String {
         let mut ex = crate::explorer::Explorer::new();
         ex.set_json(&serde_json::to_string(&preset.scene()).unwrap())
@@ -375,7 +374,7 @@ mod tests {
     }
 
     fn split(scene: &str, view: &str, share_ok: bool) -> Frame {
-        let helper = super::share(scene, view, 1, 2).unwrap();
+        let helper = share(scene, view, 1, 2).unwrap();
         let mut p = Pending::begin(scene, view, 2).unwrap();
         p.run_own().unwrap();
         if share_ok {
@@ -442,7 +441,7 @@ mod tests {
     fn a_share_of_another_plan_is_refused_and_the_frame_computed_whole_issue_26() {
         let s = scene(rime_core::Preset::IceFrost, &[]);
         let view = r#"{"accuracy": "fast", "date": "D"}"#;
-        let other = super::share(&s, r#"{"accuracy": "fast", "points": 17}"#, 1, 2).unwrap();
+        let other = share(&s, r#"{"accuracy": "fast", "points": 17}"#, 1, 2).unwrap();
         let mut p = Pending::begin(&s, view, 2).unwrap();
         p.run_own().unwrap();
         assert!(
@@ -469,7 +468,7 @@ mod tests {
         ] {
             let whole = frame(&s, view).unwrap_err();
             assert_eq!(Pending::begin(&s, view, 2).unwrap_err(), whole);
-            assert_eq!(super::share(&s, view, 1, 2).unwrap_err(), whole);
+            assert_eq!(share(&s, view, 1, 2).unwrap_err(), whole);
         }
     }
 }
