@@ -51,6 +51,13 @@ const updates = () => page.evaluate(() => window.rimeState.updates);
 // A frame drawn and its ring card in (issue 26: the card is computed once the frame is on screen).
 const waitUpdate = (before) => page.waitForFunction((b) => window.rimeState.updates > b && window.rimeState.ringOf === window.rimeState.gen, before, { timeout: GUARD_MS });
 
+/** Types τ into the ring card and presses Enter (a refused value draws no frame: no wait here). */
+async function enterTau(value) {
+  const tau = page.locator('#r-tau');
+  await tau.fill(value);
+  await tau.press('Enter');
+}
+
 /** The page's ring card against `rime ring` for the drawn scene (printed digits, by the core). */
 async function agreeWithCli(args) {
   const s = await page.evaluate(() => window.rimeState);
@@ -115,18 +122,14 @@ try {
 
   await check('issue 24: a typed τ applies; a bad τ is named and the card keeps the last good one', async () => {
     const u = await updates();
-    const tau = page.locator('#r-tau');
-    await tau.fill('0.1');
-    await tau.press('Enter');
+    await enterTau('0.1');
     await waitUpdate(u);
     const r1 = await agreeWithCli(['--tau', '0.1', '--omega', String(OMEGA)]);
-    await tau.fill('-1');
-    await tau.press('Enter');
+    await enterTau('-1');
     await page.waitForFunction(() => /ring\.tau/.test(document.getElementById('r-tau-err').textContent), null, { timeout: GUARD_MS });
     const kept = await page.evaluate(() => window.rimeState.ring);
     assert(kept && kept.record.tau === 0.1, `the card did not keep τ = 0.1: ${JSON.stringify(kept && kept.record.tau)}`);
-    await tau.fill('0.5');
-    await tau.press('Enter');
+    await enterTau('0.5');
     await page.waitForFunction(() => window.rimeState.ring && window.rimeState.ring.record.tau === 0.5, null, { timeout: GUARD_MS });
     return r1;
   });
@@ -162,9 +165,7 @@ try {
 
   await check('the ring card\'s inputs are in the link: a reloaded link shows the same τ, Ω source and chart overlay', async () => {
     const u = await updates();
-    const tau = page.locator('#r-tau');
-    await tau.fill('0.3');
-    await tau.press('Enter');
+    await enterTau('0.3');
     await waitUpdate(u);
     // The link is written once the edits have stopped (about a second).
     await page.waitForFunction(() => /(^|&)r=/.test(location.hash.slice(1)), null, { timeout: GUARD_MS });
