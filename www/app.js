@@ -7,7 +7,7 @@ import { Explorer, calls, counted, qty, speed, start } from './core.js';
 import { CollisionComputer, Computer, poolSize } from './compute.js';
 import { Painter, canPaintInWorker } from './painter.js';
 import { CollisionView } from './collision.js';
-import { $, errText, linkify, median, setText } from './dom.js';
+import { $, attr, errText, linkify, median, put, setText } from './dom.js';
 import { START_PRESET, app, historySize } from './state.js';
 import { buildControls, edit, reflectScene, syncControls, wireToolbar, wireView } from './controls.js';
 import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, restorePin, wireChart } from './chart.js';
@@ -270,7 +270,7 @@ function onFrame(msg, req) {
   if (app.timings.length > 200) for (const a of [app.timings, app.totals, app.callsPerUpdate, app.formatCallsPerUpdate]) a.shift();
   setText($('timing'), `last frame: ${qty(msg.ms / 1e3, 's', 3)} in the worker (median ${qty(median(app.timings) / 1e3, 's', 3)}), on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)}, accuracy ${res.accuracy}`);
   $('timing').classList.remove('busy');
-  if (!$('busy').hidden) $('busy').hidden = true;
+  put($('busy'), 'hidden', true);
   afterPaint(() => {
     publish(req, res);
     // The collision card's trajectory (its own worker) and the ring card follow once the edits
@@ -301,7 +301,7 @@ function afterEdits(fn) {
 
 /** Marks `e` as being recomputed (aria-busy; the style greys it), written only when it changes. */
 function setBusy(e, busy) {
-  if ((e.getAttribute('aria-busy') === 'true') !== Boolean(busy)) e.setAttribute('aria-busy', busy ? 'true' : 'false');
+  attr(e, 'aria-busy', busy ? 'true' : 'false');
 }
 
 /** The ring card asked for after the newest frame (`Computer.ring`). */
@@ -364,7 +364,7 @@ function publish(req, res) {
 let busyTimer = null;
 function onBusy(busy) {
   clearTimeout(busyTimer);
-  if (!busy) { $('timing').classList.remove('busy'); if (!$('busy').hidden) $('busy').hidden = true; return; }
+  if (!busy) { $('timing').classList.remove('busy'); put($('busy'), 'hidden', true); return; }
   // Say so only when it takes long enough to notice, in the note floating at the bottom of the
   // screen: a preview on screen (fewer points, at `fast`) is named as one while its refinement is
   // awaited.

@@ -3,7 +3,7 @@
 // undo/redo) and the view fields (speed range with units, map range, experiments). Every edit goes
 // through the core (app.ex); a value it rejects is refused at the control, naming the field.
 import { HELP, editable, parseChartSpeed, parseSpeed, qty, sig } from './core.js';
-import { $, el, errText, linked, setText } from './dom.js';
+import { $, attr, el, errText, linked, put, setText } from './dom.js';
 import { syncCompare } from './compare.js';
 import { app, canRedo, canUndo, onHistory, redo, remember, undo } from './state.js';
 
@@ -48,7 +48,8 @@ function setErr(path, msg) {
   if (!msg && row.typed && row.typed.dataset.refused) row.typed.dataset.refused = '';
   for (const input of [row.typed, row.sel, row.cb]) {
     if (!input) continue;
-    if (msg) { if (input.getAttribute('aria-invalid') !== 'true') input.setAttribute('aria-invalid', 'true'); } else if (input.hasAttribute('aria-invalid')) input.removeAttribute('aria-invalid');
+    if (msg) attr(input, 'aria-invalid', 'true');
+    else if (input.hasAttribute('aria-invalid')) input.removeAttribute('aria-invalid');
   }
 }
 
@@ -190,11 +191,6 @@ export function buildControls(h) {
 
 /** Shows the drawn scene and view in every control (a field being typed in keeps its text). An
  *  inactive parameter (its effect off) is greyed and disabled, its slider at the start. */
-/** Writes a property or attribute only when it differs (issue 26: every write invalidates the
- *  page's style, and a frame rewrote every control). */
-const put = (e, k, v) => { if (e[k] !== v) e[k] = v; };
-const attr = (e, k, v) => { if (e.getAttribute(k) !== v) e.setAttribute(k, v); };
-
 export function syncControls() {
   const values = app.res.values;
   // A frame older than the newest edit (a slider still being dragged while the worker catches up)

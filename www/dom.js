@@ -79,6 +79,12 @@ export function wrapText(text, width) {
   return lines;
 }
 
+/** Writes a property (`put`) or an attribute (`attr`) only when it differs (issue 26: every write
+ *  invalidates the page's style, and a frame rewrote controls, notes and labels that had not
+ *  changed). */
+export const put = (e, k, v) => { if (e[k] !== v) e[k] = v; };
+export const attr = (e, k, v) => { if (e.getAttribute(k) !== v) e.setAttribute(k, v); };
+
 let viewHeight = null;
 /** The window's inner height [CSS px], kept by a resize listener: reading `window.innerHeight`
  *  after a write to the page forces a layout of the whole page, and a frame read it twice (issue 26). */

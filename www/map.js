@@ -3,7 +3,7 @@
 // beside it, ε_T(g_T) along one g_N row beside it, hover/keyboard readouts from the frame's own
 // values and a text alternative.
 import { HELP, PALETTE, sig, speed } from './core.js';
-import { $, el, linked, setText, viewportHeight, wrapText } from './dom.js';
+import { $, attr, el, linked, put, setText, viewportHeight, wrapText } from './dom.js';
 import { CanvasPainter, drawLines, drawMap, drawNote, mapGeometry, sizeElement } from './plot.js';
 import { app } from './state.js';
 
@@ -40,9 +40,6 @@ export function epsTSpec(m, hoverJ = null) {
   };
 }
 
-/** Sets the map's text alternative only when it changes (a write invalidates the page's style). */
-const label = (e, text) => { if (e.getAttribute('aria-label') !== text) e.setAttribute('aria-label', text); };
-
 export function drawMapCanvas(widths = {}) {
   const res = app.res;
   if (!res) return;
@@ -56,8 +53,8 @@ export function drawMapCanvas(widths = {}) {
     const lw = Math.max(200, Math.floor((widths.epsT ?? et.parentElement.clientWidth) - 2));
     map = { w: s, h: s - 28, spec: mapSpec(m, h), lines: { w: lw, h: 220, spec: epsTSpec(m, h && h.i === mapRow(m) ? h.j : null) } };
     geom = mapGeometry(map.w, map.h);
-    if (et.hidden) et.hidden = false;
-    label(canvas, `stick map over g_T (across) and g_N (up), 0 to ${speed(m.max)}; summary below`);
+    put(et, 'hidden', false);
+    attr(canvas, 'aria-label', `stick map over g_T (across) and g_N (up), 0 to ${speed(m.max)}; summary below`);
   } else {
     geom = null;
     et.hidden = true;
@@ -67,10 +64,10 @@ export function drawMapCanvas(widths = {}) {
       lines.push({ y: 50, text: '⚠ stick map not computed', size: 14, color: '#b3261e' });
       wrapText(failed.error, Math.max(20, Math.floor((s - 24) / 6.6))).slice(0, 4)
         .forEach((line, k) => lines.push({ y: 76 + k * 17, text: line, size: 12, color: '#444' }));
-      label(canvas, `stick map not computed: ${failed.error}`);
+      attr(canvas, 'aria-label', `stick map not computed: ${failed.error}`);
     } else {
       lines.push({ y: 55, text: res.friction ? 'no stick map for this scene' : 'friction is off: no ε_T, no stick map', size: 13, color: '#555' });
-      label(canvas, 'stick map (friction is off)');
+      attr(canvas, 'aria-label', 'stick map (friction is off)');
     }
     map = { w: s, h: failed ? 160 : 100, note: { fill: failed ? '#fdf3f2' : '#fafafa', stroke: failed ? '#e2a49f' : undefined, lines } };
   }

@@ -2,7 +2,7 @@
 // the banner naming parts of a frame that failed, the notes in their place, the core's warnings,
 // and the notice naming fields of a link that could not be read.
 import { HELP, citation, physicsUrl } from './core.js';
-import { $, el, linked, setText } from './dom.js';
+import { $, el, linked, put, setText } from './dom.js';
 import { showOverlayScores } from './compare.js';
 
 let bannerKey = '';
@@ -23,12 +23,12 @@ export function showBanner(errors) {
   }
   const b = $('banner');
   // Written only when it changes (issue 26: a write invalidates the page's style).
-  if (!errors.length || bannerDismissed === key) { if (!b.hidden) b.hidden = true; return; }
+  if (!errors.length || bannerDismissed === key) { put(b, 'hidden', true); return; }
   if (bannerListKey !== key) {
     bannerListKey = key;
     $('banner-list').replaceChildren(...errors.map((e) => el('li', {}, el('strong', {}, e.part), `: ${e.message}`)));
   }
-  if (b.hidden) b.hidden = false;
+  put(b, 'hidden', false);
 }
 
 export function showWarnings(res) {
@@ -54,10 +54,10 @@ export function showPartNotes(res) {
   }
   const cn = $('chart-note');
   setText(cn, notes.length ? `⚠ ${notes.join(' · ')} (see the message above)` : '');
-  if (cn.hidden !== !notes.length) cn.hidden = !notes.length;
+  put(cn, 'hidden', !notes.length);
   const rn = $('map-range-note');
   setText(rn, res.mapNote ? `Note: ${res.mapNote}.` : '');
-  if (rn.hidden !== !res.mapNote) rn.hidden = !res.mapNote;
+  put(rn, 'hidden', !res.mapNote);
 }
 
 export function showNotice(problems) {

@@ -6,7 +6,7 @@
 // the core's series and marker (so the chart, its downloads and the terminal draw them alike).
 import * as wasm from './pkg/rime_wasm.js';
 import { calls, parseQuantity } from './core.js';
-import { $, el, errText } from './dom.js';
+import { $, el, errText, put } from './dom.js';
 import { app } from './state.js';
 
 /** The card's inputs as the page starts (a link carries only inputs that differ). */
@@ -132,10 +132,10 @@ export function showRing() {
   const c = ring.card;
   const note = $('ring-note');
   // Each written only when it changes (issue 26: a write invalidates the page's style).
-  if (note.hidden !== !ring.error) note.hidden = !ring.error;
+  put(note, 'hidden', !ring.error);
   const noteText = ring.error ? `⚠ not computed: ${ring.error}` : '';
   if (note.textContent !== noteText) note.textContent = noteText;
-  if ($('ring').hidden !== !c) $('ring').hidden = !c;
+  put($('ring'), 'hidden', !c);
   window.rimeState.ring = c ? { verdict: c.verdict, equilibrium: c.equilibrium, rows: c.rows, meeting: c.meeting, record: c.record } : null;
   if (!c) return;
   // Rebuilt only when what it prints changes (issue 26: rebuilding the table every frame was the
