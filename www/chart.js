@@ -3,7 +3,7 @@
 // keyboard readouts from the frame's own samples (computed at the chosen level, never stale);
 // lin/log y axis; zoom and pan of the speed range; a text alternative.
 import { HELP, PALETTE, qty, sig, speed } from './core.js';
-import { $, el, setText, viewportHeight } from './dom.js';
+import { $, debounced, DESCRIBE_AFTER_MS, el, setText, viewportHeight } from './dom.js';
 import { CanvasPainter, chartGeometry, chartLegendHeight, drawChartBack, drawChartFront, sizeElement } from './plot.js';
 import { app } from './state.js';
 
@@ -97,16 +97,10 @@ export function drawChartCanvas(width) {
   readout();
 }
 
-let describeTimer = null;
-/** The text alternative follows once the frames pause (100 ms after the newest): a screen reader
- *  needs no description of every slider step and preview, and writing it cost each frame its
- *  formatting and a layout (issue 26). */
+const describeLater = debounced(DESCRIBE_AFTER_MS);
+/** The text alternative follows once the frames pause (it also saves each frame its formatting). */
 function describeSoon() {
-  clearTimeout(describeTimer);
-  describeTimer = setTimeout(() => {
-    describeTimer = null;
-    if (app.res && app.drawn) describe(app.res);
-  }, 100);
+  describeLater(() => { if (app.res && app.drawn) describe(app.res); });
 }
 
 /** The readout at the cursor: the frame's own values at its nearest sample. */

@@ -178,8 +178,8 @@ export function buildControls(h) {
         typed.addEventListener('input', () => { typed.dataset.dirty = '1'; });
         const root = el('div', { class: 'param', 'data-path': p.path },
           el('label', { class: 'name', for: id }, p.label),
-          slider,
-          el('span', { class: 'typed' }, typed, el('span', { class: 'unit' }, p.unit || '–')),
+          el('span', { class: 'slider-box' }, slider),
+          el('span', { class: 'typed' }, el('span', { class: 'typed-box' }, typed), el('span', { class: 'unit' }, p.unit || '–')),
           helpLine(p.path, hid),
           err);
         box.append(root);

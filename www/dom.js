@@ -25,6 +25,20 @@ export function setText(e, text) {
   else e.textContent = text;
 }
 
+/** How long after the newest frame a text alternative is written [ms]: a screen reader needs no
+ *  description of every slider step and preview, and writing one cost each frame a layout of the
+ *  page (issue 26). */
+export const DESCRIBE_AFTER_MS = 100;
+
+/** A function that runs the `fn` of its newest call `ms` after that call (earlier ones are dropped). */
+export function debounced(ms) {
+  let timer = null;
+  return (fn) => {
+    clearTimeout(timer);
+    timer = setTimeout(() => { timer = null; fn(); }, ms);
+  };
+}
+
 export const errText = (e) => String(e && e.message ? e.message : e);
 
 const EQ = /Eq\. \((A\.\d+|\d+)\)(?:–\((A\.\d+|\d+)\))?|decision (\d+)/g;

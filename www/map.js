@@ -3,7 +3,7 @@
 // beside it, ε_T(g_T) along one g_N row beside it, hover/keyboard readouts from the frame's own
 // values and a text alternative.
 import { HELP, PALETTE, sig, speed } from './core.js';
-import { $, attr, el, linked, put, setText, viewportHeight, wrapText } from './dom.js';
+import { $, attr, debounced, DESCRIBE_AFTER_MS, el, linked, put, setText, viewportHeight, wrapText } from './dom.js';
 import { CanvasPainter, drawLines, drawMap, drawNote, mapGeometry, sizeElement } from './plot.js';
 import { app } from './state.js';
 
@@ -129,8 +129,11 @@ export function drawLegend(res) {
       .map(([c, n]) => `${c.label} ${sig((100 * n) / total, 3)} %`);
     desc = `Stick map, g_T across and g_N up from 0 to ${speed(res.map.max)}: ${parts.join(', ')}.`;
   }
-  setText($('map-desc'), desc);
+  // The text alternative follows once the frames pause, as the chart's (an absolutely positioned
+  // box is never laid out alone: writing it laid out the page on every frame).
+  describeLater(() => setText($('map-desc'), desc));
 }
+const describeLater = debounced(DESCRIBE_AFTER_MS);
 
 function cellAt(ev) {
   const m = app.res && app.res.map;
