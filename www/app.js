@@ -51,11 +51,23 @@ const PREVIEWS = [{ points: 121, mapN: 41 }, { points: 61, mapN: 21 }, { points:
  *  PREVIEW_QUICK_MS finer (a quarter of the points or fewer take about a quarter of the time). */
 const PREVIEW_SLOW_MS = 8;
 const PREVIEW_QUICK_MS = 2;
-/** A frame asked at `fast` gets a preview too when the last one took longer than this in the
- *  worker [ms] (the literal layer reading, other models compared). */
+/** A frame gets a preview first only when the last frame of its kind (`frameKind`) took longer
+ *  than this in the worker, or is of a kind not seen yet [ms]: a quicker one is on screen as soon
+ *  as its preview would be, and the preview would only cost the page's thread a second frame and
+ *  put the refined one a display frame later (issue 26). One that is late after all gets its
+ *  preview then (Computer.request). */
 const SLOW_MS = 8;
-let lastFastMs = 0;
+/** What the last frame of each kind cost in the worker [ms]. */
+const frameCost = new Map();
 let previewLevel = 0; // index into PREVIEWS
+
+/** A frame's kind, for the cost its next one will likely have: its level, the compared overlays,
+ *  the family's sweep, the parameter whose edit asked for it, and the scene with every number
+ *  blanked. The edited parameter counts because the literal layer reading's worker keeps the
+ *  outcomes an edit of μ leaves unchanged, and not those an edit of E changes. */
+function frameKind(scene, view, edited) {
+  return [view.accuracy, view.overlays.join(','), view.sweep || '', view.experiments, edited, scene.replace(/-?\d+(?:\.\d+)?(?:[eE][+-]?\d+)?/g, '#')].join('|');
+}
 
 /** Asks the worker for the pinned curve of the link (its scene at its level and speeds), before
  *  the frame of the page: the answer becomes the pin, then the page's frame is asked for. */
@@ -84,14 +96,19 @@ function request() {
   if (window.rimeTest.delayMs > 0) view.testDelayMs = window.rimeTest.delayMs;
   if (window.rimeTest.refineDelayMs > 0) view.testRefineDelayMs = window.rimeTest.refineDelayMs;
   if (window.rimeTest.sweep) view.sweep = window.rimeTest.sweep;
+  const kind = frameKind(app.wantScene, view, app.edited);
+  app.edited = '';
   // Main-thread calls across the wasm boundary made for this request (edits since the last one).
-  const page = { view: { ...v, overlays: [...v.overlays] }, tidal: app.tidalIn, t0: performance.now(), calls: calls.compute, format: calls.format };
+  const page = { view: { ...v, overlays: [...v.overlays] }, tidal: app.tidalIn, t0: performance.now(), calls: calls.compute, format: calls.format, kind };
   calls.compute = 0;
   calls.format = 0;
-  const preview = v.accuracy !== 'fast' || lastFastMs > SLOW_MS
-    ? { ...view, accuracy: 'fast', ...PREVIEWS[previewLevel] } : null;
+  const preview = { ...view, accuracy: 'fast', ...PREVIEWS[previewLevel] };
+  const cost = frameCost.get(kind);
+  const quick = cost !== undefined && cost <= SLOW_MS;
+  // Whether this request asked for a preview first (the end-to-end test checks the rule).
+  window.rimeState.previewAsked = !quick;
   // The newest request (tests wait for its frame: `rimeState.gen === rimeState.asked`).
-  window.rimeState.asked = app.computer.request(app.wantScene, view, page, preview, ringInputs());
+  window.rimeState.asked = app.computer.request(app.wantScene, view, page, quick ? null : preview, ringInputs(), quick ? preview : null);
 }
 
 /** Keeps the hover cursor and the map's chosen row on the same speeds when the next frame has
@@ -236,7 +253,8 @@ function onFrame(msg, req) {
   const racing = window.rimeTest.beforeFrame;
   if (racing) { window.rimeTest.beforeFrame = null; racing(); }
   const res = decode(msg, req.page);
-  if (req.page.view.accuracy === 'fast') lastFastMs = msg.ms;
+  if (frameCost.size > 200) frameCost.clear();
+  if (req.page.kind) frameCost.set(req.page.kind, msg.ms);
   const sceneChanged = !app.drawn || app.drawn.scene !== req.scene;
   keepCursor(app.res, res);
   app.res = res;

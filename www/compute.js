@@ -4,6 +4,10 @@
 /** How long a running request may hold up a newer one before its worker is restarted [ms]. */
 const RESTART_AFTER_MS = 150;
 
+/** A frame asked without a preview (one of its kind came quickly) that has not come this long
+ *  after the request gets its preview after all, from the other worker [ms]. */
+const LATE_MS = 12;
+
 /** A refinement whose last one cost more than this on one worker [ms] is split over the pool's
  *  two workers (splitting has its costs: the plan made twice, the share sent across). */
 const SPLIT_ABOVE_MS = 16;
@@ -140,8 +144,10 @@ export class Computer {
   /** Asks for the frame of `scene` (JSON text) seen through `view`; `page` comes back with the
    *  answer. With `previewView`, that view's frame comes first as a preview (`msg.preview`), drawn
    *  until the requested one arrives. `ring` (or null): the ring card's inputs, computed with the
-   *  requested frame (and with the preview when it goes on the chart). Returns the generation. */
-  request(scene, view, page, previewView = null, ring = null) {
+   *  requested frame (and with the preview when it goes on the chart). `latePreview` (or null),
+   *  with no `previewView`: the preview asked for if the frame has not come within LATE_MS (in a
+   *  pool of two). Returns the generation. */
+  request(scene, view, page, previewView = null, ring = null, latePreview = null) {
     const gen = ++this.gen;
     // Every worker hears of it at once: a stale refinement or share stops at its next turn.
     for (const lane of this.lanes) lane.worker.postMessage({ type: 'newer', gen });
@@ -159,8 +165,15 @@ export class Computer {
         this.refineLane.post({ ...req, frames: [{ ...final, split }] });
       }
     } else {
-      // A frame at `fast` needs no preview: the fast lane computes it.
-      (view.accuracy === 'fast' ? this.fastLane : this.refineLane).post({ ...req, frames: [final] });
+      // A frame at `fast` is computed by the fast lane, another by the refinement lane.
+      const lane = view.accuracy === 'fast' ? this.fastLane : this.refineLane;
+      lane.post({ ...req, frames: [final] });
+      const other = this.lanes.find((l) => l !== lane);
+      if (latePreview && other) {
+        setTimeout(() => {
+          if (this.gen === gen && this.shown < gen) other.post({ ...req, frames: [{ view: latePreview, preview: true }] });
+        }, LATE_MS);
+      }
     }
     this.onBusy(true);
     return gen;

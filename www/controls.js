@@ -89,6 +89,7 @@ export function edit(key, fn) {
     const after = app.ex.toJson();
     if (after !== before) remember(before, key);
     app.wantScene = after;
+    app.edited = key;
     reflectScene();
     setErr(key, '');
     hooks.schedule();

@@ -15,6 +15,7 @@ export const app = {
   drawn: null, // {scene, view} of the frame on screen
   res: null, // the decoded frame on screen
   preview: false, // whether it is the fast preview of the newest request (never downloaded)
+  edited: '', // the parameter whose edit asks for the next frame ('' for any other change)
   computer: null,
   painter: null, // the chart's painter worker (painter.js); null: the chart is drawn on this thread
   probeEx: null, // the drawn scene, for probes and collisions

@@ -39,7 +39,10 @@ function report(name, ok, detail = '') {
   if (!ok) failures++;
   console.log(`${ok ? 'PASS' : 'FAIL'} ${name}${detail ? ` — ${detail}` : ''}`);
 }
+// `E2E_ONLY=text`: only the checks whose name contains it (while working on them; make test runs all).
+const only = process.env.E2E_ONLY;
 async function check(name, fn) {
+  if (only && !name.includes(only)) return;
   try {
     const detail = await fn();
     report(name, true, detail || '');
@@ -970,6 +973,9 @@ try {
       return { g: (t.match(/g_N = ([^·]+)/) || [])[1], previews: window.rimeState.previews || 0 };
     });
     const start = await at();
+    // A quick refinement needs no preview; held up 40 ms in the worker, each edit's is late and
+    // gets one (compute.js LATE_MS).
+    await pc.evaluate(() => { window.rimeTest.refineDelayMs = 40; });
     for (let k = 0; k < 4; k++) {
       const u = await updates(pc);
       await pc.evaluate((d) => { const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]'); e.value = String(Number(e.value) + d); e.dispatchEvent(new Event('input', { bubbles: true })); }, 17 + k);
@@ -980,6 +986,64 @@ try {
     await pc.close();
     assert(start.g && end.g === start.g && end.previews > start.previews, `cursor at g_N ${start.g} → ${end.g} after ${end.previews - start.previews} previews`);
     return `g_N ${end.g} kept through ${end.previews - start.previews} previews`;
+  });
+
+  await check('issue 26: an edit gets a fast preview first only when the last frame of its kind took over 8 ms in the worker or is of a new kind; a frame that is late (12 ms) gets one after all', async () => {
+    const pq = watch(await context.newPage(), 'quick');
+    const scene = JSON.stringify(JSON.parse(execFileSync(rime, ['scene', '--preset', 'ice-sticky'], { encoding: 'utf8' })));
+    await pq.goto(new URL(`#s=${encodeURIComponent(scene)}&v=${encodeURIComponent(JSON.stringify({ accuracy: 'precise' }))}`, url).href, { waitUntil: 'load' });
+    await ready(pq);
+    // One slider step of E; its frame awaited. What the request asked, and the worker's time of the
+    // frame before it (the same kind: the same scene but for numbers, level and edited parameter).
+    const step = async (d) => {
+      const u = await updates(pq);
+      const before = await pq.evaluate(() => window.rimeState.computeMs.at(-1));
+      const asked = await pq.evaluate((dd) => {
+        const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
+        e.value = String(Number(e.value) + dd);
+        e.dispatchEvent(new Event('input', { bubbles: true }));
+        // The request leaves in a microtask queued by the edit, before this one.
+        return new Promise((r) => queueMicrotask(() => r(window.rimeState.previewAsked)));
+      }, d);
+      await waitUpdate(pq, u);
+      await pq.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
+      return { asked, before };
+    };
+    const first = await step(3);
+    assert(first.asked === true, 'the first edit of E (a kind not seen yet) asked for no preview');
+    const seen = [];
+    for (let k = 0; k < 4; k++) {
+      const r = await step(5 + k);
+      assert(r.asked === r.before > 8, `the frame before took ${r.before} ms and the edit ${r.asked ? 'asked' : 'did not ask'} for a preview`);
+      seen.push(`${r.before.toFixed(1)} ms → ${r.asked ? 'preview' : 'none'}`);
+    }
+    // Another kind (the level `integrated`): a preview first again.
+    const u = await updates(pq);
+    await pq.selectOption('#accuracy', 'integrated');
+    await waitUpdate(pq, u);
+    await pq.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
+    const other = await step(4);
+    assert(other.asked === true, 'the first edit of E at integrated asked for no preview');
+    // Back to the quick kind, the refinement held up 300 ms: whether asked at once or, late, after
+    // 12 ms, a preview is drawn before the refined frame.
+    await pq.selectOption('#accuracy', 'precise');
+    await pq.waitForFunction(() => window.rimeState.gen === window.rimeState.asked && window.rimeState.view.accuracy === 'precise', null, { timeout: GUARD_MS });
+    await step(6);
+    await pq.evaluate(() => { window.rimeTest.refineDelayMs = 300; });
+    const u2 = await updates(pq);
+    const p2 = await pq.evaluate(() => window.rimeState.previews || 0);
+    const asked = await pq.evaluate(() => {
+      const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
+      e.value = String(Number(e.value) + 9);
+      e.dispatchEvent(new Event('input', { bubbles: true }));
+      return new Promise((r) => queueMicrotask(() => r(window.rimeState.previewAsked)));
+    });
+    await pq.waitForFunction((p) => (window.rimeState.previews || 0) > p, p2, { timeout: GUARD_MS });
+    assert((await updates(pq)) === u2, 'the refined frame came before the preview');
+    await pq.evaluate(() => { window.rimeTest.refineDelayMs = 0; });
+    await waitUpdate(pq, u2);
+    await pq.close();
+    return `E at precise: ${seen.join(', ')}; at integrated: preview; held up 300 ms: preview ${asked ? 'asked at once' : 'asked late'}`;
   });
 
   await check('issue 12 item 18: readouts follow the drawn scene at the chosen level; greyed sliders disabled; tidal inputs in the link; one bad field named, the rest kept; huge numbers stay short; speed fields take units', async () => {
