@@ -58,22 +58,28 @@ async function refine(gen, scene, view, split) {
   try {
     const t0 = performance.now();
     let slice = t0;
+    // Time spent waiting (turns of the event loop, the peer's share), not computing.
+    let waited = 0;
     while (p.runNext()) {
       if (performance.now() - slice > SLICE_MS) {
+        const tw = performance.now();
         await yieldNow();
+        waited += performance.now() - tw;
         if (latestGen > gen) return null;
         slice = performance.now();
       }
     }
     let helped = 0;
     if (split) {
-      const share = await takeShare(gen, Math.max(2, performance.now() - t0));
+      const tw = performance.now();
+      const share = await takeShare(gen, Math.max(2, tw - t0 - waited));
+      waited += performance.now() - tw;
       // A share that has not come is computed here: the peer may stop.
       if (!share && peer) peer.postMessage({ type: 'done', gen });
       if (latestGen > gen) return null;
       if (share && p.accept(share.numbers, share.meta)) helped = share.ms;
     }
-    return { f: p.finish(), helped };
+    return { f: p.finish(), helped, waited };
   } finally {
     p.free();
   }
@@ -198,6 +204,7 @@ self.onmessage = async (ev) => {
       const viewJson = JSON.stringify(preview ? { ...view, records: false } : view);
       let f;
       let helped = 0;
+      let waited = 0;
       if (preview) f = computeFrame(msg.scene, viewJson);
       else {
         const done = await refine(msg.gen, msg.scene, viewJson, Boolean(split && peer));
@@ -205,7 +212,7 @@ self.onmessage = async (ev) => {
           self.postMessage({ type: 'frame', gen: msg.gen, preview, last: true, stale: true, ms: performance.now() - t0 });
           return;
         }
-        ({ f, helped } = done);
+        ({ f, helped, waited } = done);
       }
       const json = f.json();
       const numbers = f.numbers();
@@ -222,9 +229,9 @@ self.onmessage = async (ev) => {
         const fig = j.figures[0];
         r = ring(msg.scene, msg.ring, [fig.x.min, fig.x.max], j.tidal && !j.tidal.error ? j.tidal.input : null);
       }
-      // `work`: the frame's compute time on one worker (its own and its helper's), which decides
-      // whether the next refinement is split.
-      self.postMessage({ type: 'frame', gen: msg.gen, preview, last, json, records, numbers, codes, ring: r, ms, work: ms + helped, helped: helped > 0, calls: preview ? 0 : 5 }, [numbers.buffer, codes.buffer, records.buffer]);
+      // `work`: the frame's compute time on one worker (its own, without its waits, and its
+      // helper's), which decides whether the next refinement is split.
+      self.postMessage({ type: 'frame', gen: msg.gen, preview, last, json, records, numbers, codes, ring: r, ms, work: ms - waited + helped, helped: helped > 0, calls: preview ? 0 : 5 }, [numbers.buffer, codes.buffer, records.buffer]);
       // This worker's share of the refinement (when the page asked for help) starts once the page
       // has drawn the preview ('help'): before, it took a core from the preview's drawing.
       if (last && msg.help) {
