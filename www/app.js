@@ -344,6 +344,10 @@ function publish(req, res) {
     get() { const v = fn(); Object.defineProperty(s, name, { value: v, enumerable: true, configurable: true, writable: true }); return v; },
   });
   lazy('g', () => Array.from(res.g));
+  lazy('computeMs', () => [...app.timings]);
+  lazy('totalMs', () => [...app.totals]);
+  lazy('callsPerUpdate', () => [...app.callsPerUpdate]);
+  lazy('formatCallsPerUpdate', () => [...app.formatCallsPerUpdate]);
   lazy('eps', () => (res.eps ? Array.from(res.eps) : []));
   lazy('status', () => (res.status ? Array.from(res.status, (c) => app.statusNames[c] ?? 'failed') : []));
   lazy('family', () => res.family && { path: res.family.path, values: res.family.values, isScene: res.family.isScene, curves: res.family.curves.map((c) => c && Array.from(c)) });
@@ -365,10 +369,6 @@ function publish(req, res) {
     tidal: res.tidal,
     tidalIn: app.tidalIn,
     frameErrors: res.errors,
-    computeMs: [...app.timings],
-    totalMs: [...app.totals],
-    callsPerUpdate: [...app.callsPerUpdate],
-    formatCallsPerUpdate: [...app.formatCallsPerUpdate],
     workerRestarts: app.computer.restarts,
     refinementsStopped: app.computer.stopped,
     history: historySize(),

@@ -116,6 +116,7 @@ export class Computer {
       if (req.type === 'ring') this.deliver({ type: 'ring', gen: req.gen, ring: { error }, ms: 0, last: true }, req);
       else if (req.frames.some((f) => !f.preview)) this.deliver({ type: 'frame', gen: req.gen, error, ms: 0, calls: 0, last: true }, req);
     };
+    this.helper = null; // the lane asked to help with the newest refinement (previewDrawn)
     this.lanes = [];
     for (let k = 0; k < workers; k++) this.lanes.push(new Lane(module, (m, r) => this.deliver(m, r), crash, () => this.connect()));
     this.connect();
@@ -149,8 +150,10 @@ export class Computer {
    *  pool of two). Returns the generation. */
   request(scene, view, page, previewView = null, ring = null, latePreview = null) {
     const gen = ++this.gen;
-    // Every worker hears of it at once: a stale refinement or share stops at its next turn.
-    for (const lane of this.lanes) lane.worker.postMessage({ type: 'newer', gen });
+    // Every busy worker hears of it at once: a stale refinement or share stops at its next turn
+    // (an idle one learns it from its next request).
+    for (const lane of this.lanes) if (lane.running || lane === this.helper) lane.worker.postMessage({ type: 'newer', gen });
+    this.helper = null;
     const req = { type: 'frame', gen, scene, page, ring };
     const final = { view, preview: false };
     if (previewView) {
@@ -190,7 +193,11 @@ export class Computer {
 
   /** The preview of request `gen` is on screen: its worker may now help with the refinement. */
   previewDrawn(gen) {
-    if (gen === this.gen && this.lanes.length === 2) this.fastLane.worker.postMessage({ type: 'help', gen });
+    if (gen === this.gen && this.lanes.length === 2) {
+      this.fastLane.worker.postMessage({ type: 'help', gen });
+      // It may be computing its share until the next request (which tells it to stop).
+      this.helper = this.fastLane;
+    }
   }
 
   deliver(msg, req) {
