@@ -287,14 +287,18 @@ function onFrame(msg, req) {
   app.totals.push(t2 - req.page.t0);
   if (app.timings.length > 200) for (const a of [app.timings, app.totals, app.callsPerUpdate, app.formatCallsPerUpdate]) a.shift();
   setText($('timing'), `last frame: ${qty(msg.ms / 1e3, 's', 3)} in the worker (median ${qty(median(app.timings) / 1e3, 's', 3)}), on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)}, accuracy ${res.accuracy}`);
-  $('timing').classList.remove('busy');
-  put($('busy'), 'hidden', true);
+  const newest = req.gen === app.computer.gen;
+  if (newest) {
+    $('timing').classList.remove('busy');
+    put($('busy'), 'hidden', true);
+  }
   afterPaint(() => {
     publish(req, res);
     // The collision card's trajectory (its own worker) and the ring card follow once the edits
     // pause: while a slider is dragged they would take a core from the next frame's computation
     // and drawing on a two-core machine (issue 26).
-    afterEdits(() => {
+    // (Not for an older request's frame, drawn while a newer one is computed.)
+    if (newest) afterEdits(() => {
       replayCollision();
       if (ringLater) {
         const fig = res.figures[0];

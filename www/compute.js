@@ -98,7 +98,8 @@ export class Computer {
   /**
    * @param {WebAssembly.Module} module the compiled wasm module (shared with the workers)
    * @param {(answer: object, request: object) => void} onFrame called with the newest request's
-   *   answers: its preview (`answer.preview`), if any and if it comes first, then its frame
+   *   answers: its preview (`answer.preview`), if any and if it comes first, then its frame; and
+   *   with an older request's preview or frame that is newer than what is on screen
    * @param {(busy: boolean) => void} onBusy called when computing starts and stops
    * @param {(answer: object) => void} onRing called with the ring card asked for by `ring`, when
    *   no newer request was made meanwhile
@@ -223,8 +224,16 @@ export class Computer {
       return;
     }
     if (!msg.error && msg.work !== undefined && req.frames.some((f) => !f.preview)) this.lastWork = msg.work;
-    // A stale frame (a newer request exists) is dropped.
-    if (msg.gen !== this.gen) return;
+    if (msg.gen !== this.gen) {
+      // An older request's frame, newer than what is on screen, is drawn as it comes, as a preview
+      // is: while a slider is dragged faster than frames come, the screen follows it (a quick frame
+      // has no preview). It is at the requested level, of the scene it shows.
+      if (msg.gen > this.shown && !msg.error) {
+        this.shown = msg.gen;
+        this.onFrame(msg, req);
+      }
+      return;
+    }
     this.answered = msg.gen;
     this.shown = msg.gen;
     this.onFrame(msg, req);
