@@ -69,7 +69,10 @@ class Lane {
     const req = this.queued;
     this.queued = null;
     this.running = { req, since: performance.now() };
-    this.worker.postMessage(req);
+    // The page's own bookkeeping (`page`) stays here: the worker needs none of it (cloning it was
+    // a good part of posting a request).
+    const { page, ...sent } = req;
+    this.worker.postMessage(sent);
   }
 
   answer(msg) {

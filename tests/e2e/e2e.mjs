@@ -1294,6 +1294,8 @@ try {
       const slider = page.locator('input[type=range][data-path="layer.viscosity"]');
       await slider.evaluate((e) => { e.value = String(Number(e.value) + 40); e.dispatchEvent(new Event('input', { bubbles: true })); });
       await page.waitForFunction((p) => (window.rimeState.previews || 0) > p, p0, { timeout: GUARD_MS });
+      // The timing line follows 100 ms after the newest frame.
+      await page.waitForFunction(() => /^preview/.test(document.getElementById('timing').textContent), null, { timeout: GUARD_MS });
       const mid = await page.evaluate(() => ({ timing: document.getElementById('timing').textContent, updates: window.rimeState.updates }));
       assert(/refining to precise/.test(mid.timing), `status during the preview: "${mid.timing}"`);
       assert(mid.updates === u, 'the refined frame arrived before the preview was looked at');
@@ -1307,6 +1309,7 @@ try {
       await waitUpdate(page, u);
       await page.locator('#chart').screenshot({ path: path.join(outDir, 'www-refined-26.png') });
       const inkRefined = await inked(page, 'chart');
+      await page.waitForFunction(() => /^last frame/.test(document.getElementById('timing').textContent), null, { timeout: GUARD_MS });
       const timing = await page.evaluate(() => document.getElementById('timing').textContent);
       assert(!/refining/.test(timing), `status after the refinement: "${timing}"`);
       assert(inkPreview > 2000 && Math.abs(inkPreview - inkRefined) < 0.02 * inkRefined, `preview ${inkPreview} vs refined ${inkRefined} inked pixels`);
