@@ -41,33 +41,30 @@ for (const c of CASES) {
       const tasks = [];
       const lt = new PerformanceObserver((l) => { for (const e of l.getEntries()) tasks.push(e.duration); });
       lt.observe({ type: 'longtask' });
-      const mo = new MutationObserver(() => {
-        if (waiting !== null && (s.previews || 0) > waiting.previews) { latency.push(performance.now() - waiting.t); waiting = null; }
-      });
-      mo.observe(document.body, { attributes: true, attributeFilter: ['data-previews', 'data-updates'] });
-      const timer = setTimeout(() => { mo.disconnect(); reject(new Error('no frame within the guard')); }, guard);
-      // The last input's time and the frames drawn before it: its frame is the first drawn after
-      // it (the page draws no older request's frame once a newer one is asked for), which may come
-      // before the drag's last 50 ms are over.
+      // The page fires `rime:drawn` for each preview and frame on its canvas.
+      const onDrawn = (ev) => {
+        if (waiting !== null && ev.detail.preview) { latency.push(performance.now() - waiting.t); waiting = null; }
+        if (last && last.gen !== null && !ev.detail.preview && ev.detail.gen === last.gen) {
+          window.removeEventListener('rime:drawn', onDrawn);
+          lt.disconnect();
+          clearTimeout(timer);
+          resolve({ previews: (s.previews || 0) - p0, frames: last.u - u0, latency, last: s.drawnAt - last.t, tasks });
+        }
+      };
+      window.addEventListener('rime:drawn', onDrawn);
+      const timer = setTimeout(() => { window.removeEventListener('rime:drawn', onDrawn); reject(new Error('no frame within the guard')); }, guard);
+      // The last input's time, the frames drawn before it and its request: its own frame ends the
+      // run (older requests' frames may be drawn after it, and it may come before the drag's last
+      // 50 ms are over).
       let last = null;
       const step = () => {
-        if (k === 20) {
-          const wait = () => {
-            if (s.updates > last.u) {
-              mo.disconnect();
-              lt.disconnect();
-              clearTimeout(timer);
-              resolve({ previews: (s.previews || 0) - p0, frames: last.u - u0, latency, last: s.drawnAt - last.t, tasks });
-            } else setTimeout(wait, 5);
-          };
-          wait();
-          return;
-        }
+        if (k === 20) return;
         if (waiting === null) waiting = { t: performance.now(), previews: s.previews || 0 };
         slider.value = String(Number(slider.value) + (k % 2 ? -3 : 4));
         k++;
-        if (k === 20) last = { t: performance.now(), u: s.updates };
+        if (k === 20) last = { t: performance.now(), u: s.updates, gen: null };
         slider.dispatchEvent(new Event('input', { bubbles: true }));
+        if (k === 20) queueMicrotask(() => { last.gen = s.asked; });
         setTimeout(step, 50);
       };
       step();

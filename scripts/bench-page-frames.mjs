@@ -101,7 +101,7 @@ for (const profile of PROFILES) {
         // One slider step, timed inside the page: input → the animation frame after each draw.
         runs.push(await page.evaluate(({ guard, step }) => new Promise((resolve, reject) => {
           const s = window.rimeState;
-          const [u0, p0] = [s.updates || 0, s.previews || 0];
+          const p0 = s.previews || 0;
           const slider = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]')
             || document.querySelector('input[type=range]');
           const tasks = [];
@@ -110,18 +110,17 @@ for (const profile of PROFILES) {
           let first = null;
           const t0 = performance.now();
           // No polling loop (it would cost the page's thread a task every frame, counted in its busy
-          // time): the page marks each drawn preview and frame on <body> (data-previews,
-          // data-updates) once it is on its canvas, and the animation frame after that mark is
-          // when it is painted.
-          const done = (fn) => { obs.disconnect(); mo.disconnect(); clearTimeout(timer); fn(); };
+          // time): the page fires `rime:drawn` on window for each preview and frame once it is on
+          // its canvas, and the animation frame after that is when it is painted.
+          const done = (fn) => { obs.disconnect(); window.removeEventListener('rime:drawn', onDrawn); clearTimeout(timer); fn(); };
           const timer = setTimeout(() => done(() => reject(new Error('no frame within the guard'))), guard);
-          const mo = new MutationObserver(() => {
-            const [u, p] = [s.updates || 0, s.previews || 0];
-            if (first === null && (p > p0 || u > u0)) {
+          let asked = null; // this step's request (it leaves in a microtask after the input)
+          const onDrawn = (ev) => {
+            if (first === null) {
               const mark = first = -1;
               requestAnimationFrame(() => { if (first === mark) first = performance.now() - t0; });
             }
-            if (u > u0) {
+            if (!ev.detail.preview && ev.detail.gen === asked) {
               requestAnimationFrame(() => {
                 const final = performance.now() - t0;
                 if (first === -1) first = final;
@@ -130,10 +129,11 @@ for (const profile of PROFILES) {
                 setTimeout(() => done(() => resolve({ first, final, drawnFirst, drawnFinal: s.drawnAt - t0, tasks, previews: (s.previews || 0) - p0 })), 0);
               });
             }
-          });
-          mo.observe(document.body, { attributes: true, attributeFilter: ['data-updates', 'data-previews'] });
+          };
+          window.addEventListener('rime:drawn', onDrawn);
           slider.value = String(Number(slider.value) + step);
           slider.dispatchEvent(new Event('input', { bubbles: true }));
+          queueMicrotask(() => { asked = s.asked; });
         }), { guard: GUARD_MS, step: 7 }));
       }
       const busyMs = (await taskSeconds() - busy0) * 1e3;

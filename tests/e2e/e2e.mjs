@@ -1069,11 +1069,12 @@ try {
       window.rimeTest.refineDelayMs = 60;
       const s = window.rimeState;
       const drawn = [];
-      const mo = new MutationObserver(() => {
-        drawn.push(s.gen);
-        if (s.gen === s.asked && s.gen === asked[2]) { mo.disconnect(); window.rimeTest.refineDelayMs = 0; resolve({ drawn, asked, previews: s.previews }); }
-      });
-      mo.observe(document.body, { attributes: true, attributeFilter: ['data-updates'] });
+      const onDrawn = (ev) => {
+        if (ev.detail.preview) return;
+        drawn.push(ev.detail.gen);
+        if (ev.detail.gen === asked[2]) { window.removeEventListener('rime:drawn', onDrawn); window.rimeTest.refineDelayMs = 0; resolve({ drawn, asked, previews: s.previews }); }
+      };
+      window.addEventListener('rime:drawn', onDrawn);
       const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
       const asked = [];
       const step = (k) => {
