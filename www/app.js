@@ -25,8 +25,8 @@ window.rimeState = { ready: false, errors: [] };
 // a slow computation (`delayMs`), a slow refinement after the preview (`refineDelayMs`), an
 // input landing just before a frame is drawn (`beforeFrame`) and the family's swept parameter
 // (`sweep`, a path of the core's sweeps; the page offers no choice of it: the frame benchmark's
-// swept family).
-window.rimeTest = { fail: [], delayMs: 0, refineDelayMs: 0, beforeFrame: null, sweep: null };
+// swept family) and frames asked without a preview whatever they cost (`noPreview`).
+window.rimeTest = { fail: [], delayMs: 0, refineDelayMs: 0, beforeFrame: null, sweep: null, noPreview: false };
 
 let pending = false;
 
@@ -104,7 +104,7 @@ function request() {
   calls.format = 0;
   const preview = { ...view, accuracy: 'fast', ...PREVIEWS[previewLevel] };
   const cost = frameCost.get(kind);
-  const quick = cost !== undefined && cost <= SLOW_MS;
+  const quick = window.rimeTest.noPreview || (cost !== undefined && cost <= SLOW_MS);
   // Whether this request asked for a preview first (the end-to-end test checks the rule).
   window.rimeState.previewAsked = !quick;
   // The newest request (tests wait for its frame: `rimeState.gen === rimeState.asked`).
@@ -237,7 +237,7 @@ function onFrame(msg, req) {
     draw();
     const t2 = performance.now();
     timingLater(() => setText($('timing'), `preview: ${qty(msg.ms / 1e3, 's', 3)} in the worker at fast, on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)} — refining to ${req.page.view.accuracy}…`));
-    $('timing').classList.add('busy');
+    $('timing').classList.toggle('busy', true); // (toggle with force: no write when unchanged)
     afterPaint(() => {
       app.computer.previewDrawn(req.gen);
       const s = window.rimeState;
@@ -289,7 +289,7 @@ function onFrame(msg, req) {
   timingLater(() => setText($('timing'), `last frame: ${qty(msg.ms / 1e3, 's', 3)} in the worker (median ${qty(median(app.timings) / 1e3, 's', 3)}), on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)}, accuracy ${res.accuracy}`));
   const newest = req.gen === app.computer.gen;
   if (newest) {
-    $('timing').classList.remove('busy');
+    $('timing').classList.toggle('busy', false);
     put($('busy'), 'hidden', true);
   }
   afterPaint(() => {
@@ -396,7 +396,7 @@ function drawnEvent(gen, preview) {
 let busyTimer = null;
 function onBusy(busy) {
   clearTimeout(busyTimer);
-  if (!busy) { $('timing').classList.remove('busy'); put($('busy'), 'hidden', true); return; }
+  if (!busy) { $('timing').classList.toggle('busy', false); put($('busy'), 'hidden', true); return; }
   // Say so only when it takes long enough to notice, in the note floating at the bottom of the
   // screen: a preview on screen (fewer points, at `fast`) is named as one while its refinement is
   // awaited.
@@ -404,7 +404,7 @@ function onBusy(busy) {
     if (!app.computer.busy) return;
     setText($('busy'), app.preview ? `a fast preview is shown — refining to ${app.view.accuracy}… the controls stay live` : 'computing… the controls stay live');
     if (!app.preview) {
-      $('timing').classList.add('busy');
+      $('timing').classList.toggle('busy', true); // (toggle with force: no write when unchanged)
       timingLater(() => {}); // a frame's line not yet written is older than this
       $('timing').textContent = `computing (${app.view.accuracy})…`;
     }

@@ -111,10 +111,23 @@ export function drawLegend(res) {
       el('span', { class: 'sw', style: `background:${colors[k]}`, 'aria-hidden': 'true' }),
       el('span', {}, ...linked(c.meaning), ' ', legendCounts[k]))));
   }
-  legendCounts.forEach((span, k) => {
-    const text = total ? `(${sig((100 * counts[k]) / total, 3)} %)` : '';
-    setText(span, text);
-  });
+  // The shares follow once the frames pause, as the text alternatives do: while a slider is dragged
+  // they would be unreadable, and writing them was the only change a frame made to the document,
+  // which cost it a rendering update of the page's thread (the chart and map are drawn in the
+  // painter worker; issue 26). Meanwhile they are marked as the previous frame's (greyed after
+  // 0.2 s, as the ring and collision cards are).
+  const texts = counts.map((n) => (total ? `(${sig((100 * n) / total, 3)} %)` : ''));
+  const changed = texts.some((t, k) => legendCounts[k].textContent !== t);
+  // (A write still pending is replaced by this frame's, even when it changes nothing.)
+  if (changed || countsPending) {
+    if (changed) attr($('legend'), 'aria-busy', 'true');
+    countsPending = true;
+    countsLater(() => {
+      countsPending = false;
+      legendCounts.forEach((span, k) => setText(span, texts[k]));
+      attr($('legend'), 'aria-busy', 'false');
+    });
+  }
   res.classCounts = counts;
   const gap = app.classes.findIndex((c) => isArtifact(c.name));
   const note = $('artifact-note');
@@ -134,6 +147,8 @@ export function drawLegend(res) {
   describeLater(() => setText($('map-desc'), desc));
 }
 const describeLater = debounced(DESCRIBE_AFTER_MS);
+const countsLater = debounced(DESCRIBE_AFTER_MS);
+let countsPending = false;
 
 function cellAt(ev) {
   const m = app.res && app.res.map;
