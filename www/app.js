@@ -7,7 +7,7 @@ import { Explorer, calls, counted, qty, speed, start } from './core.js';
 import { CollisionComputer, Computer, poolSize } from './compute.js';
 import { Painter, canPaintInWorker } from './painter.js';
 import { CollisionView } from './collision.js';
-import { $, attr, debounced, DESCRIBE_AFTER_MS, errText, linkify, median, put, setText } from './dom.js';
+import { $, debounced, DESCRIBE_AFTER_MS, errText, linkify, markBusy, median, put, setText } from './dom.js';
 import { START_PRESET, app, historySize } from './state.js';
 import { buildControls, edit, reflectScene, syncControls, wireToolbar, wireView } from './controls.js';
 import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, restorePin, wireChart } from './chart.js';
@@ -271,7 +271,7 @@ function onFrame(msg, req) {
   // is being computed.
   const ringLater = !msg.ring && req.ring;
   if (!ringLater) { showRing(); window.rimeState.ringOf = req.gen; }
-  setBusy($('ring'), ringLater);
+  markBusy($('ring'), ringLater);
   showBanner(res.errors);
   tm.push(performance.now());
   syncControls();
@@ -325,16 +325,11 @@ function afterEdits(fn) {
   }, SECONDARY_AFTER_MS);
 }
 
-/** Marks `e` as being recomputed (aria-busy; the style greys it), written only when it changes. */
-function setBusy(e, busy) {
-  attr(e, 'aria-busy', busy ? 'true' : 'false');
-}
-
 /** The ring card asked for after the newest frame (`Computer.ring`). */
 function onRing(msg) {
   takeRing(msg.ring);
   showRing();
-  setBusy($('ring'), false);
+  markBusy($('ring'), false);
   window.rimeState.ringOf = msg.gen;
   window.rimeState.ringMs = msg.ms;
 }
@@ -474,7 +469,7 @@ const collisionKey = () => (app.drawn ? collisionOf(app.drawn.scene, app.drawn.v
 /** The collision card says it shows another scene's collision (or level's, or speed's) than the one
  *  asked for, from the edit until the replay arrives (the replay follows once the edits pause). */
 function markCollision() {
-  setBusy($('collision-card'), collisionShown !== collisionOf(app.wantScene, app.view.accuracy, app.collisionG));
+  markBusy($('collision-card'), collisionShown !== collisionOf(app.wantScene, app.view.accuracy, app.collisionG));
 }
 function replayCollision(g) {
   if (g !== undefined) app.collisionG = g;

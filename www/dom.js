@@ -39,6 +39,29 @@ export function debounced(ms) {
   };
 }
 
+/** A card or list being recomputed greys only once that has lasted this long [ms]: a flash at
+ *  every slider step would be noise. */
+const GREY_AFTER_MS = 200;
+const greyTimers = new WeakMap();
+/** Marks `e` as showing what was before the newest edit: `aria-busy` at once (assistive technology
+ *  waits for it), and greyed by the style (`data-stale`) once that has lasted GREY_AFTER_MS. A CSS
+ *  transition with that delay greyed it alike, but kept the page's thread restyling the element at
+ *  every display frame while it waited (issue 26). Writes only what changes. */
+export function markBusy(e, busy) {
+  attr(e, 'aria-busy', busy ? 'true' : 'false');
+  if (busy) {
+    if (greyTimers.has(e) || e.hasAttribute('data-stale')) return;
+    greyTimers.set(e, setTimeout(() => {
+      greyTimers.delete(e);
+      if (e.getAttribute('aria-busy') === 'true') e.setAttribute('data-stale', '');
+    }, GREY_AFTER_MS));
+  } else {
+    clearTimeout(greyTimers.get(e));
+    greyTimers.delete(e);
+    if (e.hasAttribute('data-stale')) e.removeAttribute('data-stale');
+  }
+}
+
 export const errText = (e) => String(e && e.message ? e.message : e);
 
 const EQ = /Eq\. \((A\.\d+|\d+)\)(?:–\((A\.\d+|\d+)\))?|decision (\d+)/g;

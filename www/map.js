@@ -3,7 +3,7 @@
 // beside it, ε_T(g_T) along one g_N row beside it, hover/keyboard readouts from the frame's own
 // values and a text alternative.
 import { HELP, PALETTE, sig, speed } from './core.js';
-import { $, attr, debounced, DESCRIBE_AFTER_MS, el, linked, put, setText, viewportHeight, wrapText } from './dom.js';
+import { $, attr, debounced, DESCRIBE_AFTER_MS, el, linked, markBusy, put, setText, viewportHeight, wrapText } from './dom.js';
 import { CanvasPainter, drawLines, drawMap, drawNote, mapGeometry, sizeElement } from './plot.js';
 import { app } from './state.js';
 
@@ -120,12 +120,12 @@ export function drawLegend(res) {
   const changed = texts.some((t, k) => legendCounts[k].textContent !== t);
   // (A write still pending is replaced by this frame's, even when it changes nothing.)
   if (changed || countsPending) {
-    if (changed) attr($('legend'), 'aria-busy', 'true');
+    if (changed) markBusy($('legend'), true);
     countsPending = true;
     countsLater(() => {
       countsPending = false;
       legendCounts.forEach((span, k) => setText(span, texts[k]));
-      attr($('legend'), 'aria-busy', 'false');
+      markBusy($('legend'), false);
     });
   }
   res.classCounts = counts;
