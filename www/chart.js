@@ -3,7 +3,7 @@
 // keyboard readouts from the frame's own samples (computed at the chosen level, never stale);
 // lin/log y axis; zoom and pan of the speed range; a text alternative.
 import { HELP, PALETTE, qty, sig, speed } from './core.js';
-import { $, debounced, DESCRIBE_AFTER_MS, el, setText, viewportHeight } from './dom.js';
+import { $, debounced, DESCRIBE_AFTER_MS, el, followLater, setText, viewportHeight } from './dom.js';
 import { CanvasPainter, chartGeometry, chartLegendHeight, drawChartBack, drawChartFront, sizeElement } from './plot.js';
 import { app } from './state.js';
 
@@ -264,14 +264,12 @@ export function wireChart(h) {
 }
 
 /** The family's meaning, beside the chart. */
-let familyKey = null;
 export function familyNote(res) {
   const f = res.family;
   const key = f ? JSON.stringify([f.sym, f.values, f.unit, f.isScene]) : '';
-  if (key === familyKey) return;
-  familyKey = key;
-  $('family-note').replaceChildren(...(f ? [
+  // Written once the frames pause (the values of a derived parameter change at every step).
+  followLater($('family-note'), key, () => $('family-note').replaceChildren(...(f ? [
     el('strong', {}, 'Family: '),
     `${f.sym} varied around this scene (${f.values.map((v, i) => qty(v, f.unit, 3) + (f.isScene && f.isScene[i] ? ' = this scene' : '')).join(', ')}), every other parameter as in the scene.`,
-  ] : []));
+  ] : [])));
 }

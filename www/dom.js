@@ -62,6 +62,29 @@ export function markBusy(e, busy) {
   }
 }
 
+const follows = new WeakMap();
+/** Writes a part of the page that describes the frame (a note, a list) once the frames pause, as
+ *  the text alternatives are: `key` names what it would show, `write` writes it. While what is
+ *  written differs from the newest frame's, the part is marked busy (markBusy: greyed after 0.2 s).
+ *  A frame during a drag then changes nothing in the document (issue 26). */
+export function followLater(e, key, write) {
+  let f = follows.get(e);
+  if (!f) {
+    f = { key: undefined, pending: false, later: debounced(DESCRIBE_AFTER_MS) };
+    follows.set(e, f);
+  }
+  if (key === f.key && !f.pending) return;
+  if (key !== f.key) markBusy(e, true);
+  // (A write still pending is replaced by this frame's, even when it changes nothing.)
+  f.pending = true;
+  f.later(() => {
+    f.pending = false;
+    if (f.key !== key) write();
+    f.key = key;
+    markBusy(e, false);
+  });
+}
+
 export const errText = (e) => String(e && e.message ? e.message : e);
 
 const EQ = /Eq\. \((A\.\d+|\d+)\)(?:–\((A\.\d+|\d+)\))?|decision (\d+)/g;

@@ -2,11 +2,10 @@
 // the banner naming parts of a frame that failed, the notes in their place, the core's warnings,
 // and the notice naming fields of a link that could not be read.
 import { HELP, citation, physicsUrl } from './core.js';
-import { $, el, linked, put, setText } from './dom.js';
+import { $, el, followLater, linked, put, setText } from './dom.js';
 import { showOverlayScores } from './compare.js';
 
 let bannerKey = '';
-let warningsKey = null;
 let bannerDismissed = '';
 let bannerListKey = null; // the errors the banner's list shows
 
@@ -35,11 +34,9 @@ export function showWarnings(res) {
   showOverlayScores(res);
   // The core's warnings, each with its help on hover (the terminal's `?` and the CLI say the same).
   const details = res.warningDetails || res.warnings.map((text) => ({ text, help: '' }));
-  // Rebuilt only when they change (issue 26: a frame's DOM writes are the page thread's cost).
-  const key = JSON.stringify(details);
-  if (key === warningsKey) return;
-  warningsKey = key;
-  $('warnings').replaceChildren(...details.map((w) => el('li', { title: w.help }, ...linked(w.text))));
+  // Rebuilt only when they change, once the frames pause (issue 26: a frame's DOM writes are the
+  // page thread's cost, and a warning that comes and goes during a drag would flicker).
+  followLater($('warnings'), JSON.stringify(details), () => $('warnings').replaceChildren(...details.map((w) => el('li', { title: w.help }, ...linked(w.text)))));
 }
 
 /** A visible note in place of each part of the chart that failed (the banner has the details). */

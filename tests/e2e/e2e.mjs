@@ -849,6 +849,8 @@ try {
     const noteText = await note.textContent();
     const noteVisible = await note.isVisible();
     const inFooter = await p.locator('footer #timing').count();
+    // The warnings are written once the frames pause (aria-busy until then).
+    await p.waitForFunction(() => document.getElementById('warnings').getAttribute('aria-busy') === 'false', null, { timeout: GUARD_MS });
     const warnings = await p.locator('#warnings').innerText();
     const bannerShown = await p.locator('#banner').isVisible();
     await p.close();
