@@ -3,7 +3,7 @@
 // beside it, ε_T(g_T) along one g_N row beside it, hover/keyboard readouts from the frame's own
 // values and a text alternative.
 import { HELP, PALETTE, sig, speed } from './core.js';
-import { $, attr, debounced, DESCRIBE_AFTER_MS, el, linked, markBusy, put, setText, viewportHeight, wrapText } from './dom.js';
+import { $, attr, debounced, DESCRIBE_AFTER_MS, el, followLater, linked, put, setText, viewportHeight, wrapText } from './dom.js';
 import { CanvasPainter, drawLines, drawMap, drawNote, mapGeometry, sizeElement } from './plot.js';
 import { app } from './state.js';
 
@@ -117,17 +117,7 @@ export function drawLegend(res) {
   // painter worker; issue 26). Meanwhile they are marked as the previous frame's (greyed after
   // 0.2 s, as the ring and collision cards are).
   const texts = counts.map((n) => (total ? `(${sig((100 * n) / total, 3)} %)` : ''));
-  const changed = texts.some((t, k) => legendCounts[k].textContent !== t);
-  // (A write still pending is replaced by this frame's, even when it changes nothing.)
-  if (changed || countsPending) {
-    if (changed) markBusy($('legend'), true);
-    countsPending = true;
-    countsLater(() => {
-      countsPending = false;
-      legendCounts.forEach((span, k) => setText(span, texts[k]));
-      markBusy($('legend'), false);
-    });
-  }
+  followLater($('legend'), texts.join('|'), () => legendCounts.forEach((span, k) => setText(span, texts[k])));
   res.classCounts = counts;
   const gap = app.classes.findIndex((c) => isArtifact(c.name));
   const note = $('artifact-note');
@@ -147,8 +137,7 @@ export function drawLegend(res) {
   describeLater(() => setText($('map-desc'), desc));
 }
 const describeLater = debounced(DESCRIBE_AFTER_MS);
-const countsLater = debounced(DESCRIBE_AFTER_MS);
-let countsPending = false;
+
 
 function cellAt(ev) {
   const m = app.res && app.res.map;
