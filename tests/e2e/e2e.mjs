@@ -1093,6 +1093,43 @@ try {
     return `edits ${out.asked.join(', ')} (one worker, the second dropped in the queue): frames drawn ${out.drawn.join(', ')}`;
   });
 
+  await check('issue 26: the map legend\'s shares are marked busy while edits stream and are the newest frame\'s once they pause', async () => {
+    const pl = watch(await context.newPage(), 'legend');
+    await pl.goto(url, { waitUntil: 'load' });
+    await ready(pl);
+    const out = await pl.evaluate(() => new Promise((resolve) => {
+      const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
+      const legend = document.getElementById('legend');
+      let busySeen = false;
+      let n = 0;
+      const tick = () => {
+        e.value = String(Number(e.value) + (n % 2 ? 3 : -2));
+        e.dispatchEvent(new Event('input', { bubbles: true }));
+        if (legend.getAttribute('aria-busy') === 'true') busySeen = true;
+        if (++n < 12) setTimeout(tick, 16);
+        else resolve(busySeen);
+      };
+      tick();
+    }));
+    await pl.waitForFunction(() => window.rimeState.gen === window.rimeState.asked && document.getElementById('legend').getAttribute('aria-busy') === 'false', null, { timeout: GUARD_MS });
+    const got = await pl.evaluate(() => {
+      const codes = window.rimeState.mapClasses;
+      const n = document.querySelectorAll('#legend .count').length;
+      const counts = new Array(n).fill(0);
+      for (const c of codes) counts[c]++;
+      return { shares: counts.map((k) => (100 * k) / codes.length), shown: [...document.querySelectorAll('#legend .count')].map((c) => c.textContent) };
+    });
+    await pl.close();
+    assert(out, 'the legend was never marked busy while the edits streamed');
+    // Each share as shown ("(21.8 %)", three significant digits) against the frame's own classes.
+    const bad = got.shares.map((x, k) => [x, got.shown[k]]).filter(([x, t]) => {
+      const v = Number((t.match(/\(([^ ]+) %\)/) || [])[1]);
+      return !(Number.isFinite(v) && Math.abs(v - x) <= 6e-3 * x + 1e-12);
+    });
+    assert(bad.length === 0, `shares shown vs the frame's: ${JSON.stringify(bad)}`);
+    return `marked busy while 12 edits streamed; then ${got.shown.join(' ')}, the newest frame's`;
+  });
+
   await check('issue 12 item 18: readouts follow the drawn scene at the chosen level; greyed sliders disabled; tidal inputs in the link; one bad field named, the rest kept; huge numbers stay short; speed fields take units', async () => {
     // Readouts: a cursor on the chart (keyboard), then the scene changes under it (Ctrl+Z): the
     // readout shows the new frame's value there, computed at the chosen level.
