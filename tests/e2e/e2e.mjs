@@ -1097,21 +1097,29 @@ try {
     const pl = watch(await context.newPage(), 'legend');
     await pl.goto(url, { waitUntil: 'load' });
     await ready(pl);
-    const out = await pl.evaluate(() => new Promise((resolve) => {
-      const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
+    // Whether the legend is marked busy at any time from the first edit until its shares are
+    // written (a busy machine may draw no frame before the last edit); the first frame's shares
+    // written first.
+    await pl.waitForFunction(() => document.getElementById('legend').getAttribute('aria-busy') === 'false', null, { timeout: GUARD_MS });
+    await pl.evaluate(() => {
       const legend = document.getElementById('legend');
-      let busySeen = false;
+      window.legendBusySeen = false;
+      new MutationObserver(() => { if (legend.getAttribute('aria-busy') === 'true') window.legendBusySeen = true; })
+        .observe(legend, { attributes: true, attributeFilter: ['aria-busy'] });
+    });
+    await pl.evaluate(() => new Promise((resolve) => {
+      const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
       let n = 0;
       const tick = () => {
         e.value = String(Number(e.value) + (n % 2 ? 3 : -2));
         e.dispatchEvent(new Event('input', { bubbles: true }));
-        if (legend.getAttribute('aria-busy') === 'true') busySeen = true;
         if (++n < 12) setTimeout(tick, 16);
-        else resolve(busySeen);
+        else resolve();
       };
       tick();
     }));
-    await pl.waitForFunction(() => window.rimeState.gen === window.rimeState.asked && document.getElementById('legend').getAttribute('aria-busy') === 'false', null, { timeout: GUARD_MS });
+    await pl.waitForFunction(() => window.rimeState.gen === window.rimeState.asked && window.legendBusySeen && document.getElementById('legend').getAttribute('aria-busy') === 'false', null, { timeout: GUARD_MS }).catch(() => {});
+    const out = await pl.evaluate(() => window.legendBusySeen);
     const got = await pl.evaluate(() => {
       const codes = window.rimeState.mapClasses;
       const n = document.querySelectorAll('#legend .count').length;
