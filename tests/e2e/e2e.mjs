@@ -87,6 +87,17 @@ async function ready(page) {
 async function updates(page) {
   return page.evaluate(() => window.rimeState.updates);
 }
+/** One step of the slider of Young's modulus (`d` slider steps, an `input` event). Resolves with
+ *  whether the edit's request asked for a preview first (it leaves in a microtask queued by the
+ *  edit, before the one read here). */
+function nudgeE(page, d) {
+  return page.evaluate((dd) => {
+    const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
+    e.value = String(Number(e.value) + dd);
+    e.dispatchEvent(new Event('input', { bubbles: true }));
+    return new Promise((r) => queueMicrotask(() => r(window.rimeState.previewAsked)));
+  }, d);
+}
 async function waitUpdate(page, before) {
   const t0 = Date.now();
   await page.waitForFunction((b) => window.rimeState.updates > b, before, { timeout: GUARD_MS });
@@ -980,7 +991,7 @@ try {
     await pc.evaluate(() => { window.rimeTest.refineDelayMs = 40; });
     for (let k = 0; k < 4; k++) {
       const u = await updates(pc);
-      await pc.evaluate((d) => { const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]'); e.value = String(Number(e.value) + d); e.dispatchEvent(new Event('input', { bubbles: true })); }, 17 + k);
+      await nudgeE(pc, 17 + k);
       await waitUpdate(pc, u);
       await pc.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
     }
@@ -1000,13 +1011,7 @@ try {
     const step = async (d) => {
       const u = await updates(pq);
       const before = await pq.evaluate(() => window.rimeState.computeMs.at(-1));
-      const asked = await pq.evaluate((dd) => {
-        const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
-        e.value = String(Number(e.value) + dd);
-        e.dispatchEvent(new Event('input', { bubbles: true }));
-        // The request leaves in a microtask queued by the edit, before this one.
-        return new Promise((r) => queueMicrotask(() => r(window.rimeState.previewAsked)));
-      }, d);
+      const asked = await nudgeE(pq, d);
       await waitUpdate(pq, u);
       await pq.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
       return { asked, before };
@@ -1034,12 +1039,7 @@ try {
     await pq.evaluate(() => { window.rimeTest.refineDelayMs = 300; });
     const u2 = await updates(pq);
     const p2 = await pq.evaluate(() => window.rimeState.previews || 0);
-    const asked = await pq.evaluate(() => {
-      const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
-      e.value = String(Number(e.value) + 9);
-      e.dispatchEvent(new Event('input', { bubbles: true }));
-      return new Promise((r) => queueMicrotask(() => r(window.rimeState.previewAsked)));
-    });
+    const asked = await nudgeE(pq, 9);
     await pq.waitForFunction((p) => (window.rimeState.previews || 0) > p, p2, { timeout: GUARD_MS });
     assert((await updates(pq)) === u2, 'the refined frame came before the preview');
     await pq.evaluate(() => { window.rimeTest.refineDelayMs = 0; });
@@ -1055,15 +1055,10 @@ try {
     const pd = watch(await context.newPage(), 'follow');
     await pd.goto(new URL(`?workers=1#s=${encodeURIComponent(scene)}&v=${encodeURIComponent(JSON.stringify({ accuracy: 'precise' }))}`, url).href, { waitUntil: 'load' });
     await ready(pd);
-    const edit = (d) => pd.evaluate((dd) => {
-      const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
-      e.value = String(Number(e.value) + dd);
-      e.dispatchEvent(new Event('input', { bubbles: true }));
-    }, d);
     // Two edits of E first, so that the kind's cost is known.
     for (const d of [3, 4]) {
       const u = await updates(pd);
-      await edit(d);
+      await nudgeE(pd, d);
       await waitUpdate(pd, u);
       await pd.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
     }
@@ -1408,7 +1403,7 @@ try {
         await q.evaluate(() => { window.rimeTest.refineDelayMs = 2000; });
         const u = await updates(q);
         const p0 = await q.evaluate(() => window.rimeState.previews || 0);
-        await q.evaluate(() => { const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]'); e.value = String(Number(e.value) + 5); e.dispatchEvent(new Event('input', { bubbles: true })); });
+        await nudgeE(q, 5);
         await q.waitForFunction((p) => (window.rimeState.previews || 0) > p, p0, { timeout: GUARD_MS });
         assert((await updates(q)) === u, 'the refined frame came before the preview was looked at');
         await agrees(await readout(), 'fast');
