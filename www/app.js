@@ -82,7 +82,7 @@ function requestPinned() {
 
 /** Asks the worker for the frame of the wanted scene and view (a newer request supersedes it). */
 function request() {
-  clearTimeout(secondaryTimer);
+  secondaryLater.cancel();
   markCollision();
   if (app.pinRequest) { requestPinned(); return; }
   const v = app.view;
@@ -314,15 +314,11 @@ const timingLater = debounced(DESCRIBE_AFTER_MS);
 
 /** How long after the newest frame the secondary cards are computed, if no edit came [ms]. */
 const SECONDARY_AFTER_MS = 100;
-let secondaryTimer = null;
+const secondaryLater = debounced(SECONDARY_AFTER_MS);
 /** Runs `fn` SECONDARY_AFTER_MS after now unless a request is made meanwhile (request() cancels). */
 function afterEdits(fn) {
-  clearTimeout(secondaryTimer);
   const gen = app.computer.gen;
-  secondaryTimer = setTimeout(() => {
-    secondaryTimer = null;
-    if (app.computer.gen === gen) fn();
-  }, SECONDARY_AFTER_MS);
+  secondaryLater(() => { if (app.computer.gen === gen) fn(); });
 }
 
 /** The ring card asked for after the newest frame (`Computer.ring`). */
@@ -400,7 +396,7 @@ function onBusy(busy) {
     setText($('busy'), app.preview ? `a fast preview is shown — refining to ${app.view.accuracy}… the controls stay live` : 'computing… the controls stay live');
     if (!app.preview) {
       $('timing').classList.toggle('busy', true); // (toggle with force: no write when unchanged)
-      timingLater(() => {}); // a frame's line not yet written is older than this
+      timingLater.cancel(); // a frame's line not yet written is older than this
       $('timing').textContent = `computing (${app.view.accuracy})…`;
     }
     $('busy').hidden = false;

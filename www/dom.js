@@ -30,13 +30,16 @@ export function setText(e, text) {
  *  page (issue 26). */
 export const DESCRIBE_AFTER_MS = 100;
 
-/** A function that runs the `fn` of its newest call `ms` after that call (earlier ones are dropped). */
+/** A function that runs the `fn` of its newest call `ms` after that call (earlier ones are
+ *  dropped); its `cancel()` drops the one waiting. */
 export function debounced(ms) {
   let timer = null;
-  return (fn) => {
+  const later = (fn) => {
     clearTimeout(timer);
     timer = setTimeout(() => { timer = null; fn(); }, ms);
   };
+  later.cancel = () => { clearTimeout(timer); timer = null; };
+  return later;
 }
 
 /** A card or list being recomputed greys only once that has lasted this long [ms]: a flash at
