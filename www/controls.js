@@ -48,8 +48,7 @@ function setErr(path, msg) {
   if (!msg && row.typed && row.typed.dataset.refused) row.typed.dataset.refused = '';
   for (const input of [row.typed, row.sel, row.cb]) {
     if (!input) continue;
-    if (msg) attr(input, 'aria-invalid', 'true');
-    else if (input.hasAttribute('aria-invalid')) input.removeAttribute('aria-invalid');
+    attr(input, 'aria-invalid', msg ? 'true' : null);
   }
 }
 

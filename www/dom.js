@@ -61,7 +61,7 @@ export function markBusy(e, busy) {
   } else {
     clearTimeout(greyTimers.get(e));
     greyTimers.delete(e);
-    if (e.hasAttribute('data-stale')) e.removeAttribute('data-stale');
+    attr(e, 'data-stale', null);
   }
 }
 
@@ -142,11 +142,15 @@ export function wrapText(text, width) {
   return lines;
 }
 
-/** Writes a property (`put`) or an attribute (`attr`) only when it differs (issue 26: every write
- *  invalidates the page's style, and a frame rewrote controls, notes and labels that had not
- *  changed). */
+/** Writes a property (`put`) or an attribute (`attr`; `null` removes it) only when it differs
+ *  (issue 26: every write invalidates the page's style, and a frame rewrote controls, notes and
+ *  labels that had not changed). */
 export const put = (e, k, v) => { if (e[k] !== v) e[k] = v; };
-export const attr = (e, k, v) => { if (e.getAttribute(k) !== v) e.setAttribute(k, v); };
+export const attr = (e, k, v) => {
+  if (e.getAttribute(k) === v) return;
+  if (v === null) e.removeAttribute(k);
+  else e.setAttribute(k, v);
+};
 
 let viewHeight = null;
 /** The window's inner height [CSS px], kept by a resize listener: reading `window.innerHeight`
