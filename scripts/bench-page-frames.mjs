@@ -16,6 +16,7 @@
 //
 // Usage: scripts/build-www.sh && scripts/setup-npm.sh && node scripts/bench-page-frames.mjs
 //   [--quick] [--profile desktop|phone] [--paint main] [--workers 1|2] [--out FILE] [--runs N]
+//   [--scene TEXT] [--level LEVEL]
 // (serves www/ itself on a free local port; needs target/release/rime for the scenes' JSON).
 // `--paint main` forces the page's fallback (the chart drawn on the page's thread, as where a
 // browser has no OffscreenCanvas); `--workers 1` a pool of one frame worker (as on a one-core
@@ -49,7 +50,10 @@ const SCENES = [
   { name: 'ice-frost, family over R₁=R₂', scene: sceneJson(['--preset', 'ice-frost']), overlays: [], sweep: 'grains.radius' },
   { name: "ice, the paper's viscosities", scene: sceneJson(['--preset', 'ice-paper-viscosities']), overlays: [] },
 ];
-const LEVELS = ['fast', 'precise', 'integrated'];
+// `--scene TEXT` keeps the scenes whose name contains TEXT, `--level` one level (for A/B runs of one case).
+const onlyScene = opt('--scene');
+if (onlyScene) SCENES.splice(0, SCENES.length, ...SCENES.filter((s) => s.name.includes(onlyScene)));
+const LEVELS = ['fast', 'precise', 'integrated'].filter((l) => !opt('--level') || l === opt('--level'));
 const PROFILES = [
   { name: 'desktop', viewport: { width: 1280, height: 800 }, slowdown: 1 },
   { name: 'phone', viewport: { width: 375, height: 812 }, slowdown: 4, mobile: true },

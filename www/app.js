@@ -22,11 +22,12 @@ import { chartSvg, curvesCsv, familyCsv, mapCsv, mapSvg, setVersion, wireDownloa
 // Exposed for tests and curious users.
 window.rimeState = { ready: false, errors: [] };
 // Test hooks: parts of the frame to fail on purpose (see the view's `fail` in wasm/src/frame.rs),
-// a slow computation (`delayMs`), a slow refinement after the preview (`refineDelayMs`), an
-// input landing just before a frame is drawn (`beforeFrame`) and the family's swept parameter
-// (`sweep`, a path of the core's sweeps; the page offers no choice of it: the frame benchmark's
-// swept family) and frames asked without a preview whatever they cost (`noPreview`).
-window.rimeTest = { fail: [], delayMs: 0, refineDelayMs: 0, beforeFrame: null, sweep: null, noPreview: false };
+// a slow computation (`delayMs`), a slow refinement after the preview (`refineDelayMs`), a slow
+// preview (`previewDelayMs`, counted in the preview's time in the worker), an input landing just
+// before a frame is drawn (`beforeFrame`) and the family's swept parameter (`sweep`, a path of the
+// core's sweeps; the page offers no choice of it: the frame benchmark's swept family) and frames
+// asked without a preview whatever they cost (`noPreview`).
+window.rimeTest = { fail: [], delayMs: 0, refineDelayMs: 0, previewDelayMs: 0, beforeFrame: null, sweep: null, noPreview: false };
 
 let pending = false;
 
@@ -42,14 +43,17 @@ function schedule() {
 
 /** The preview's curve points and map side (issue 26): every other point and cell of the default
  *  view's (Request::POINTS = 241, Request::MAP_N = 81), so the preview's samples are samples of the
- *  refined frame, and a quarter of the map's cells; every fourth, or every eighth, while previews
- *  take longer than half a frame's time in the worker (the literal layer reading integrates every
- *  point; other models compared: their points dominate), so that the preview is ready within the
- *  frame the edit was made in. */
-const PREVIEWS = [{ points: 121, mapN: 41 }, { points: 61, mapN: 21 }, { points: 31, mapN: 11 }];
+ *  refined frame, and a quarter of the map's cells; every fourth, eighth or sixteenth point while
+ *  previews take longer than PREVIEW_SLOW_MS in the worker (the literal layer reading integrates
+ *  every point and its family's; other models compared: their points dominate), so that the
+ *  preview is on screen within the frame the edit was made in. Input to a worker's start, the
+ *  page's handling and the painter take 4–5 ms of that frame on two cores; the literal reading's
+ *  preview takes 5.3 ms in the worker at 31 points, 2.7 ms at 16. */
+const PREVIEWS = [{ points: 121, mapN: 41 }, { points: 61, mapN: 21 }, { points: 31, mapN: 11 }, { points: 16, mapN: 11 }];
 /** A preview slower than this in the worker makes the next one coarser [ms]; one quicker than
- *  PREVIEW_QUICK_MS finer (a quarter of the points or fewer take about a quarter of the time). */
-const PREVIEW_SLOW_MS = 8;
+ *  PREVIEW_QUICK_MS finer (half the points take about half the time, so a preview between the two
+ *  stays where it is). */
+const PREVIEW_SLOW_MS = 5;
 const PREVIEW_QUICK_MS = 2;
 /** A frame gets a preview first only when the last frame of its kind (`frameKind`) took longer
  *  than this in the worker, or is of a kind not seen yet [ms]: a quicker one is on screen as soon
@@ -103,6 +107,7 @@ function request() {
   calls.compute = 0;
   calls.format = 0;
   const preview = { ...view, accuracy: 'fast', ...PREVIEWS[previewLevel] };
+  if (window.rimeTest.previewDelayMs > 0) preview.testPreviewMs = window.rimeTest.previewDelayMs;
   const cost = frameCost.get(kind);
   const quick = window.rimeTest.noPreview || (cost !== undefined && cost <= SLOW_MS);
   // Whether this request asked for a preview first (the end-to-end test checks the rule).
@@ -242,6 +247,7 @@ function onFrame(msg, req) {
       app.computer.previewDrawn(req.gen);
       const s = window.rimeState;
       s.previews = (s.previews || 0) + 1;
+      s.previewPoints = res.g.length;
       s.previewDrawnAt = performance.now();
       s.previewMs = s.previewDrawnAt - req.page.t0;
       drawnEvent(req.gen, true);

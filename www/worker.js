@@ -117,8 +117,9 @@ const ringMemo = { key: '', out: null };
 const busyWait = (ms) => { const until = performance.now() + ms; while (performance.now() < until) { /* busy */ } };
 /** An exception's message for the page. */
 const message = (e) => String(e && e.message ? e.message : e);
-/** A view without the end-to-end test's stand-ins (`testDelayMs`, `testRefineDelayMs`), and them. */
-const splitTestKeys = ({ testDelayMs, testRefineDelayMs, ...view }) => ({ view, testDelayMs, testRefineDelayMs });
+/** A view without the end-to-end test's stand-ins (`testDelayMs`, `testRefineDelayMs`,
+ *  `testPreviewMs`), and them. */
+const splitTestKeys = ({ testDelayMs, testRefineDelayMs, testPreviewMs, ...view }) => ({ view, testDelayMs, testRefineDelayMs, testPreviewMs });
 
 /** The ring card of `scene` for the inputs `r` over the chart's speeds `chart` ([from, to]),
  *  with the tidal card's planet and distance `tidal` (or null; memoised). */
@@ -195,11 +196,12 @@ self.onmessage = async (ev) => {
     const t0 = performance.now();
     try {
       // The end-to-end test's stand-ins: a slow computation (the worker is busy, the page is
-      // not) and a slow refinement (the preview stays on screen).
-      const { view, testDelayMs, testRefineDelayMs } = splitTestKeys(full);
+      // not), a slow refinement (the preview stays on screen) and a slow preview (its time counts).
+      const { view, testDelayMs, testRefineDelayMs, testPreviewMs } = splitTestKeys(full);
       if (testDelayMs > 0 && (k === 0 || !preview)) busyWait(testDelayMs);
       if (testRefineDelayMs > 0 && !preview) busyWait(testRefineDelayMs);
       const t1 = performance.now();
+      if (testPreviewMs > 0 && preview) busyWait(testPreviewMs);
       // A preview is never exported: it goes without records (issue 26).
       const viewJson = JSON.stringify(preview ? { ...view, records: false } : view);
       let f;

@@ -969,7 +969,7 @@ try {
     return `slider reads "${vt}"; Tab, Enter, Tab reaches ${reached.path}; axe-core: 0 violations (4 states, dark included)`;
   });
 
-  await check('issue 26: the chart cursor stays on its speed through previews (every other, fourth or eighth sample)', async () => {
+  await check('issue 26: the chart cursor stays on its speed through previews (every other, fourth, eighth or sixteenth sample)', async () => {
     const pc = watch(await context.newPage(), 'cursor');
     await pc.goto(url, { waitUntil: 'load' });
     await ready(pc);
@@ -999,6 +999,38 @@ try {
     await pc.close();
     assert(start.g && end.g === start.g && end.previews > start.previews, `cursor at g_N ${start.g} → ${end.g} after ${end.previews - start.previews} previews`);
     return `g_N ${end.g} kept through ${end.previews - start.previews} previews`;
+  });
+
+  await check('issue 26: previews get coarser while they are slow (over 5 ms in the worker): 121, 61, 31 and 16 points, never fewer', async () => {
+    const pv = watch(await context.newPage(), 'coarser');
+    await pv.goto(url, { waitUntil: 'load' });
+    await ready(pv);
+    if ((await pv.evaluate(() => window.rimeState.view.accuracy)) !== 'precise') {
+      await pv.selectOption('#accuracy', 'precise');
+      await pv.waitForFunction(() => window.rimeState.view.accuracy === 'precise', null, { timeout: GUARD_MS });
+    }
+    // Each refinement held up 40 ms (late: its preview is asked after 12 ms, compute.js LATE_MS),
+    // each preview 10 ms (counted in its time in the worker, so slower than 5 ms).
+    await pv.evaluate(() => { window.rimeTest.refineDelayMs = 40; window.rimeTest.previewDelayMs = 10; });
+    const coarser = { 241: 121, 121: 61, 61: 31, 31: 16, 16: 16 };
+    const seen = [];
+    for (let k = 0; k < 6; k++) {
+      const p0 = await pv.evaluate(() => window.rimeState.previews || 0);
+      const u = await updates(pv);
+      await nudgeE(pv, 3 + k);
+      await waitUpdate(pv, u);
+      await pv.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
+      const s = await pv.evaluate(() => ({ n: window.rimeState.previews || 0, points: window.rimeState.previewPoints }));
+      if (s.n > p0) seen.push(s.points);
+    }
+    await pv.evaluate(() => { window.rimeTest.refineDelayMs = 0; window.rimeTest.previewDelayMs = 0; });
+    await pv.close();
+    assert(seen.length >= 5, `only ${seen.length} previews in 6 edits whose refinements were held up 40 ms`);
+    for (let k = 1; k < seen.length; k++) {
+      assert(seen[k] === coarser[seen[k - 1]], `a preview of ${seen[k - 1]} points taking over 5 ms was followed by one of ${seen[k]}: ${seen.join(', ')}`);
+    }
+    assert(seen.at(-1) === 16 && seen.at(-2) === 16, `previews ${seen.join(', ')} did not settle at 16 points`);
+    return `points of the previews: ${seen.join(', ')}`;
   });
 
   await check('issue 26: an edit gets a fast preview first only when the last frame of its kind took over 8 ms in the worker or is of a new kind; a frame that is late (12 ms) gets one after all', async () => {
