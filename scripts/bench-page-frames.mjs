@@ -4,7 +4,8 @@
 // seen before, so no worker's memo of literal outcomes is warm by coming back) `RUNS` times and times,
 // inside the page, input → the preview painted (first) and input → the requested level painted
 // (final): the first animation frame after the page drew each, and counts the main thread's long
-// tasks over 50 ms meanwhile, and the main thread's busy time per frame drawn (Chromium's
+// tasks over 50 ms meanwhile. Then `RUNS` more steps under a Chromium trace (kept apart: its own cost
+// lengthened the latencies) give the main thread's busy time per frame drawn (Chromium's
 // TaskDuration metric over the edits, divided by the previews and refined frames drawn: input
 // handling, drawing, style, layout and paint of the page's thread; `main_cpu_ms_per_frame` the
 // same as thread time from a trace, less inflated by a loaded machine; split by what started it into
@@ -93,53 +94,57 @@ for (const profile of PROFILES) {
       }
       const loadAvg = load();
       const taskSeconds = async () => (await cdp.send('Performance.getMetrics')).metrics.find((m) => m.name === 'TaskDuration').value;
+      // One slider step, timed inside the page: input → the animation frame after each draw.
+      const step = () => page.evaluate(({ guard, step }) => new Promise((resolve, reject) => {
+        const s = window.rimeState;
+        const p0 = s.previews || 0;
+        const slider = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]')
+          || document.querySelector('input[type=range]');
+        const tasks = [];
+        const obs = new PerformanceObserver((l) => { for (const e of l.getEntries()) tasks.push(e.duration); });
+        obs.observe({ type: 'longtask' });
+        let first = null;
+        const t0 = performance.now();
+        // No polling loop (it would cost the page's thread a task every frame, counted in its busy
+        // time): the page fires `rime:drawn` on window for each preview and frame once it is on
+        // its canvas, and the animation frame after that is when it is painted.
+        const done = (fn) => { obs.disconnect(); window.removeEventListener('rime:drawn', onDrawn); clearTimeout(timer); fn(); };
+        const timer = setTimeout(() => done(() => reject(new Error('no frame within the guard'))), guard);
+        let asked = null; // this step's request (it leaves in a microtask after the input)
+        const onDrawn = (ev) => {
+          if (first === null) {
+            const mark = first = -1;
+            requestAnimationFrame(() => { if (first === mark) first = performance.now() - t0; });
+          }
+          if (!ev.detail.preview && ev.detail.gen === asked) {
+            requestAnimationFrame(() => {
+              const final = performance.now() - t0;
+              if (first === -1) first = final;
+              // Let the observer deliver the tasks of this edit before reporting.
+              const drawnFirst = ((s.previews || 0) > p0 ? Math.min(s.previewDrawnAt, s.drawnAt) : s.drawnAt) - t0;
+              setTimeout(() => done(() => resolve({ first, final, drawnFirst, drawnFinal: s.drawnAt - t0, tasks, previews: (s.previews || 0) - p0 })), 0);
+            });
+          }
+        };
+        window.addEventListener('rime:drawn', onDrawn);
+        slider.value = String(Number(slider.value) + step);
+        slider.dispatchEvent(new Event('input', { bubbles: true }));
+        queueMicrotask(() => { asked = s.asked; });
+      }), { guard: GUARD_MS, step: 7 });
+      // The latencies: RUNS steps with no trace running (a trace's own cost, which grows with the
+      // workers' tasks, once put up to 5 ms on the literal reading's first frames).
+      const runs = [];
+      for (let i = 0; i < RUNS; i++) runs.push(await step());
+      // The main thread's time: RUNS more steps, traced. Its own time in its tasks (thread time,
+      // which a loaded machine inflates far less than the wall time of TaskDuration): Chromium's
+      // top-level task events.
       const busy0 = await taskSeconds();
-      // The main thread's own time in its tasks (thread time, which a loaded machine inflates far
-      // less than the wall time of TaskDuration): Chromium's top-level task events.
       const traced = [];
       const onData = (d) => traced.push(...d.value);
       cdp.on('Tracing.dataCollected', onData);
       await cdp.send('Tracing.start', { categories: 'toplevel', transferMode: 'ReportEvents' });
-      const runs = [];
-      for (let i = 0; i < RUNS; i++) {
-        // One slider step, timed inside the page: input → the animation frame after each draw.
-        runs.push(await page.evaluate(({ guard, step }) => new Promise((resolve, reject) => {
-          const s = window.rimeState;
-          const p0 = s.previews || 0;
-          const slider = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]')
-            || document.querySelector('input[type=range]');
-          const tasks = [];
-          const obs = new PerformanceObserver((l) => { for (const e of l.getEntries()) tasks.push(e.duration); });
-          obs.observe({ type: 'longtask' });
-          let first = null;
-          const t0 = performance.now();
-          // No polling loop (it would cost the page's thread a task every frame, counted in its busy
-          // time): the page fires `rime:drawn` on window for each preview and frame once it is on
-          // its canvas, and the animation frame after that is when it is painted.
-          const done = (fn) => { obs.disconnect(); window.removeEventListener('rime:drawn', onDrawn); clearTimeout(timer); fn(); };
-          const timer = setTimeout(() => done(() => reject(new Error('no frame within the guard'))), guard);
-          let asked = null; // this step's request (it leaves in a microtask after the input)
-          const onDrawn = (ev) => {
-            if (first === null) {
-              const mark = first = -1;
-              requestAnimationFrame(() => { if (first === mark) first = performance.now() - t0; });
-            }
-            if (!ev.detail.preview && ev.detail.gen === asked) {
-              requestAnimationFrame(() => {
-                const final = performance.now() - t0;
-                if (first === -1) first = final;
-                // Let the observer deliver the tasks of this edit before reporting.
-                const drawnFirst = ((s.previews || 0) > p0 ? Math.min(s.previewDrawnAt, s.drawnAt) : s.drawnAt) - t0;
-                setTimeout(() => done(() => resolve({ first, final, drawnFirst, drawnFinal: s.drawnAt - t0, tasks, previews: (s.previews || 0) - p0 })), 0);
-              });
-            }
-          };
-          window.addEventListener('rime:drawn', onDrawn);
-          slider.value = String(Number(slider.value) + step);
-          slider.dispatchEvent(new Event('input', { bubbles: true }));
-          queueMicrotask(() => { asked = s.asked; });
-        }), { guard: GUARD_MS, step: 7 }));
-      }
+      const traceRuns = [];
+      for (let i = 0; i < RUNS; i++) traceRuns.push(await step());
       const busyMs = (await taskSeconds() - busy0) * 1e3;
       const traceDone = new Promise((r) => cdp.once('Tracing.tracingComplete', r));
       await cdp.send('Tracing.end');
@@ -153,7 +158,7 @@ for (const profile of PROFILES) {
       }
       // The page's renderer: the busiest main thread (a closed page's renderer is idle).
       const cpuMs = Math.max(0, ...cpuBy.values());
-      const framesDrawn = runs.reduce((n, r) => n + r.previews + 1, 0);
+      const framesDrawn = traceRuns.reduce((n, r) => n + r.previews + 1, 0);
       // The same thread time split by what started it (the task's origin in the trace): the edit
       // (the benchmark's call into the page, which dispatches the input event: the input's handling
       // and the request to the workers, with the call's own cost) and the frames (the workers' and
@@ -180,7 +185,7 @@ for (const profile of PROFILES) {
         }
       }
       const paint = await page.evaluate(() => window.rimeState.paint || 'main');
-      const tasks = runs.flatMap((r) => r.tasks);
+      const tasks = [...runs, ...traceRuns].flatMap((r) => r.tasks);
       const rec = {
         surface: 'page', scene: sc.name, level, size: `${profile.viewport.width}x${profile.viewport.height}`,
         profile: profile.name, cpu_slowdown: profile.slowdown,

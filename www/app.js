@@ -244,11 +244,11 @@ function onFrame(msg, req) {
     timingLater(() => setText($('timing'), `preview: ${qty(msg.ms / 1e3, 's', 3)} in the worker at fast, on screen after ${qty((t2 - req.page.t0) / 1e3, 's', 3)} — refining to ${req.page.view.accuracy}…`));
     $('timing').classList.toggle('busy', true); // (toggle with force: no write when unchanged)
     afterPaint(() => {
-      app.computer.previewDrawn(req.gen);
       const s = window.rimeState;
+      s.previewDrawnAt = performance.now();
+      app.computer.previewDrawn(req.gen);
       s.previews = (s.previews || 0) + 1;
       s.previewPoints = res.g.length;
-      s.previewDrawnAt = performance.now();
       s.previewMs = s.previewDrawnAt - req.page.t0;
       drawnEvent(req.gen, true);
     });
@@ -376,6 +376,7 @@ function publish(req, res) {
     frameErrors: res.errors,
     workerRestarts: app.computer.restarts,
     refinementsStopped: app.computer.stopped,
+    refinementPosted: app.computer.refinementPosted,
     history: historySize(),
     pinned: app.pinned ? { g: app.pinned.g, eps: app.pinned.eps, label: app.pinned.label } : null,
     updates: (s.updates || 0) + 1,

@@ -12,6 +12,12 @@ const LATE_MS = 12;
  *  two workers (splitting has its costs: the plan made twice, the share sent across). */
 const SPLIT_ABOVE_MS = 16;
 
+/** Where the browser reports fewer than four cores, a refinement that comes after a preview is
+ *  posted once the preview is on screen: the preview's worker, the page's thread and the painter
+ *  need the cores until then (issue 26). At most this long after the request [ms]. */
+const HOLD_REFINEMENT = (navigator.hardwareConcurrency || 1) < 4 && new URLSearchParams(location.search).get('hold') !== '0';
+const HOLD_AT_MOST_MS = 40;
+
 /** One worker and its requests: one running, the newest one queued (older queued ones are
  *  dropped, so a dragged slider never queues stale work). A running refinement stops by itself at
  *  its next unit once told of a newer request (`newer`, see Computer.request); what cannot stop (a
@@ -121,6 +127,8 @@ export class Computer {
       else if (req.frames.some((f) => !f.preview)) this.deliver({ type: 'frame', gen: req.gen, error, ms: 0, calls: 0, last: true }, req);
     };
     this.helper = null; // the lane asked to help with the newest refinement (previewDrawn)
+    this.held = null; // {gen, post}: the newest request's refinement, held until its preview is drawn
+    this.refinementPosted = null; // {gen, at}: when the last refinement after a preview was posted
     this.lanes = [];
     for (let k = 0; k < workers; k++) this.lanes.push(new Lane(module, (m, r) => this.deliver(m, r), crash, () => this.connect()));
     this.connect();
@@ -158,6 +166,7 @@ export class Computer {
     // (an idle one learns it from its next request).
     for (const lane of this.lanes) if (lane.running || lane === this.helper) lane.worker.postMessage({ type: 'newer', gen });
     this.helper = null;
+    this.held = null;
     const req = { type: 'frame', gen, scene, page, ring };
     const final = { view, preview: false };
     if (previewView) {
@@ -169,7 +178,14 @@ export class Computer {
         // a share of its units after the preview (issue 26).
         const split = this.lastWork > SPLIT_ABOVE_MS;
         this.fastLane.post({ ...req, frames: [preview], help: split ? { view } : null });
-        this.refineLane.post({ ...req, frames: [{ ...final, split }] });
+        const refine = () => {
+          this.refinementPosted = { gen, at: performance.now() };
+          this.refineLane.post({ ...req, frames: [{ ...final, split }] });
+        };
+        if (HOLD_REFINEMENT) {
+          this.held = { gen, post: refine };
+          setTimeout(() => this.release(gen), HOLD_AT_MOST_MS);
+        } else refine();
       }
     } else {
       // A frame at `fast` is computed by the fast lane, another by the refinement lane.
@@ -195,8 +211,18 @@ export class Computer {
     this.refineLane.post({ type: 'ring', gen, scene, ring: r, chart, tidal });
   }
 
+  /** Posts request `gen`'s held refinement, if it is still held. */
+  release(gen) {
+    if (this.held && this.held.gen === gen) {
+      const { post } = this.held;
+      this.held = null;
+      post();
+    }
+  }
+
   /** The preview of request `gen` is on screen: its worker may now help with the refinement. */
   previewDrawn(gen) {
+    this.release(gen);
     if (gen === this.gen && this.lanes.length === 2) {
       this.fastLane.worker.postMessage({ type: 'help', gen });
       // It may be computing its share until the next request (which tells it to stop).
@@ -217,6 +243,7 @@ export class Computer {
     }
     if (!req) return;
     if (msg.preview) {
+      if (msg.error) this.release(msg.gen);
       // A preview newer than anything on screen is drawn even when a newer request waits: while a
       // slider is dragged faster than previews come, the screen follows it (a stale frame is only
       // ever a preview; downloads wait for the newest request's frame).
