@@ -13,8 +13,9 @@ const LATE_MS = 12;
 const SPLIT_ABOVE_MS = 16;
 
 /** Where the browser reports fewer than four cores, a refinement that comes after a preview is
- *  posted once the preview is on screen: the preview's worker, the page's thread and the painter
- *  need the cores until then (issue 26). At most this long after the request [ms]. */
+ *  posted once the preview is on screen (previewDrawn): the preview's worker, the page's thread,
+ *  the painter and the compositor need the cores until then (issue 26). At most this long after
+ *  the request [ms]. */
 const HOLD_REFINEMENT = (navigator.hardwareConcurrency || 1) < 4 && new URLSearchParams(location.search).get('hold') !== '0';
 const HOLD_AT_MOST_MS = 40;
 
@@ -220,7 +221,8 @@ export class Computer {
     }
   }
 
-  /** The preview of request `gen` is on screen: its worker may now help with the refinement. */
+  /** The preview of request `gen` is on screen: its held refinement is posted, and its worker may
+   *  now help with the refinement. */
   previewDrawn(gen) {
     this.release(gen);
     if (gen === this.gen && this.lanes.length === 2) {
