@@ -30,7 +30,7 @@ import { chromium, cores, load, root, sceneJson, serveWww } from './bench-page-c
 const argv = process.argv.slice(2);
 const opt = (name) => { const k = argv.indexOf(name); return k >= 0 ? argv[k + 1] : undefined; };
 const quick = argv.includes('--quick');
-const RUNS = Number(opt('--runs') || (quick ? 3 : 9));
+const RUNS = Number(opt('--runs') || (quick ? 3 : 15));
 const paintMain = opt('--paint') === 'main';
 const workers = opt('--workers');
 const onlyProfile = opt('--profile');

@@ -55,6 +55,20 @@ const PREVIEWS = [{ points: 121, mapN: 41 }, { points: 61, mapN: 21 }, { points:
  *  stays where it is). */
 const PREVIEW_SLOW_MS = 5;
 const PREVIEW_QUICK_MS = 2;
+/** The preview level after a preview of `points` points took `ms` in the worker: after a slow one,
+ *  the finest level coarser than now whose time, scaled by its points, is within PREVIEW_SLOW_MS
+ *  (the coarsest if none: a slow scene's previews need not step down one edit at a time); after a
+ *  quick one, one level finer. */
+function nextPreviewLevel(ms, points) {
+  const at = PREVIEWS.findIndex((p) => p.points === points);
+  const now = at < 0 ? previewLevel : at;
+  if (ms > PREVIEW_SLOW_MS) {
+    for (let k = now + 1; k < PREVIEWS.length; k++) if ((ms * PREVIEWS[k].points) / points <= PREVIEW_SLOW_MS) return k;
+    return PREVIEWS.length - 1;
+  }
+  return ms < PREVIEW_QUICK_MS ? Math.max(now - 1, 0) : now;
+}
+
 /** A frame gets a preview first only when the last frame of its kind (`frameKind`) took longer
  *  than this in the worker, or is of a kind not seen yet [ms]: a quicker one is on screen as soon
  *  as its preview would be, and the preview would only cost the page's thread a second frame and
@@ -238,9 +252,8 @@ function onFrame(msg, req) {
     const res = decode(msg, req.page);
     res.accuracy = 'fast';
     // Coarser after a slow preview, finer after a quick one (a worker's first frame, slow while
-    // its wasm warms up, costs one coarser preview).
-    if (msg.ms > PREVIEW_SLOW_MS) previewLevel = Math.min(previewLevel + 1, PREVIEWS.length - 1);
-    else if (msg.ms < PREVIEW_QUICK_MS) previewLevel = Math.max(previewLevel - 1, 0);
+    // its wasm warms up, costs a coarser preview).
+    previewLevel = nextPreviewLevel(msg.ms, res.g.length);
     const sceneChanged = !app.drawn || app.drawn.scene !== req.scene;
     keepCursor(app.res, res);
     app.res = res;
@@ -261,6 +274,7 @@ function onFrame(msg, req) {
       afterPresented(() => app.computer.previewDrawn(req.gen));
       s.previews = (s.previews || 0) + 1;
       s.previewPoints = res.g.length;
+      s.previewWorkerMs = msg.ms;
       s.previewMs = s.previewDrawnAt - req.page.t0;
       drawnEvent(req.gen, true);
     });

@@ -1001,7 +1001,7 @@ try {
     return `g_N ${end.g} kept through ${end.previews - start.previews} previews`;
   });
 
-  await check('issue 26: previews get coarser while they are slow (over 5 ms in the worker): 121, 61, 31 and 16 points, never fewer', async () => {
+  await check('issue 26: previews get coarser while they are slow (over 5 ms in the worker), at once to the finest level whose time scaled by its points is within 5 ms, never below 16 points', async () => {
     const pv = watch(await context.newPage(), 'coarser');
     await pv.goto(url, { waitUntil: 'load' });
     await ready(pv);
@@ -1012,7 +1012,7 @@ try {
     // Each refinement held up 40 ms (late: its preview is asked after 12 ms, compute.js LATE_MS),
     // each preview 10 ms (counted in its time in the worker, so slower than 5 ms).
     await pv.evaluate(() => { window.rimeTest.refineDelayMs = 40; window.rimeTest.previewDelayMs = 10; });
-    const coarser = { 241: 121, 121: 61, 61: 31, 31: 16, 16: 16 };
+    const levels = [121, 61, 31, 16];
     const seen = [];
     for (let k = 0; k < 6; k++) {
       const p0 = await pv.evaluate(() => window.rimeState.previews || 0);
@@ -1020,17 +1020,26 @@ try {
       await nudgeE(pv, 3 + k);
       await waitUpdate(pv, u);
       await pv.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
-      const s = await pv.evaluate(() => ({ n: window.rimeState.previews || 0, points: window.rimeState.previewPoints }));
-      if (s.n > p0) seen.push(s.points);
+      const s = await pv.evaluate(() => ({ n: window.rimeState.previews || 0, points: window.rimeState.previewPoints, ms: window.rimeState.previewWorkerMs }));
+      if (s.n > p0) seen.push(s);
     }
     await pv.evaluate(() => { window.rimeTest.refineDelayMs = 0; window.rimeTest.previewDelayMs = 0; });
     await pv.close();
-    assert(seen.length >= 5, `only ${seen.length} previews in 6 edits whose refinements were held up 40 ms`);
+    const text = seen.map((x) => `${x.points} (${x.ms.toFixed(1)} ms)`).join(', ');
+    assert(seen.length >= 5, `only ${seen.length} previews in 6 edits whose refinements were held up 40 ms: ${text}`);
     for (let k = 1; k < seen.length; k++) {
-      assert(seen[k] === coarser[seen[k - 1]], `a preview of ${seen[k - 1]} points taking over 5 ms was followed by one of ${seen[k]}: ${seen.join(', ')}`);
+      const [a, b] = [seen[k - 1], seen[k]];
+      assert(a.ms > 10 && levels.includes(b.points), `previews ${text}`);
+      // Fewer points after a slow one (16 stays); and the scaled time of the level chosen is within
+      // 5 ms unless it is the coarsest, while the next finer level's is not.
+      assert(a.points === 16 ? b.points === 16 : b.points < a.points, `a preview of ${a.points} points taking ${a.ms.toFixed(1)} ms was followed by one of ${b.points}: ${text}`);
+      const scaled = (p) => (a.ms * p) / a.points;
+      const i = levels.indexOf(b.points);
+      assert(b.points === 16 || scaled(b.points) <= 5, `${b.points} points after ${a.points} in ${a.ms.toFixed(1)} ms: scaled ${scaled(b.points).toFixed(1)} ms > 5: ${text}`);
+      assert(a.points === 16 || i === levels.indexOf(a.points) + 1 || scaled(levels[i - 1]) > 5, `${b.points} points after ${a.points} in ${a.ms.toFixed(1)} ms: ${levels[i - 1]} would have been within 5 ms: ${text}`);
     }
-    assert(seen.at(-1) === 16 && seen.at(-2) === 16, `previews ${seen.join(', ')} did not settle at 16 points`);
-    return `points of the previews: ${seen.join(', ')}`;
+    assert(seen.at(-1).points === 16 && seen.at(-2).points === 16, `previews ${text} did not settle at 16 points`);
+    return `previews: ${text}`;
   });
 
   await check('issue 26: on fewer than four cores a refinement after a preview is posted once the preview is drawn (and at once with ?hold=0)', async () => {
