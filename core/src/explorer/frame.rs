@@ -237,6 +237,28 @@ pub fn stick_threshold_with(
     accuracy: Accuracy,
     memo: &dyn LayerMemo,
 ) -> crate::Result<Option<f64>> {
+    stick_threshold_within(contact, accuracy, memo, STICK_THRESHOLD_RTOL)
+}
+
+/// The bisection's relative width at which [`stick_threshold`] stops.
+pub const STICK_THRESHOLD_RTOL: f64 = 1e-12;
+
+/// The relative width to which the explorer's "sticks below" marker is located at `accuracy`: the
+/// level's own error bound on ε_N ([`Accuracy::error_bound`], 1e-6 at `fast` and `integrated`,
+/// 1e-10 at `precise`), never below [`STICK_THRESHOLD_RTOL`]. Each halving is one contact; at
+/// `fast` this takes 25 of them instead of 45, which on the literal layer reading is most of a
+/// preview's time (issue 26).
+pub fn marker_rtol(accuracy: Accuracy) -> f64 {
+    accuracy.error_bound().max(STICK_THRESHOLD_RTOL)
+}
+
+/// [`stick_threshold_with`], stopping when the bracket's relative width is below `rtol`.
+pub fn stick_threshold_within(
+    contact: &Contact,
+    accuracy: Accuracy,
+    memo: &dyn LayerMemo,
+    rtol: f64,
+) -> crate::Result<Option<f64>> {
     let stuck = |g: f64| -> crate::Result<bool> {
         let r = contact.normal_with(g, accuracy, memo)?;
         Ok(matches!(
@@ -255,7 +277,7 @@ pub fn stick_threshold_with(
         } else {
             hi = mid;
         }
-        if hi / lo < 1.0 + 1e-12 {
+        if hi / lo < 1.0 + rtol {
             break;
         }
     }
@@ -640,8 +662,13 @@ impl Plan {
                 let threshold = if req.forced("marker") {
                     Err(String::from("failure forced for testing"))
                 } else {
-                    stick_threshold_with(&self.contact, req.accuracy, memo)
-                        .map_err(|e| format!("{e}"))
+                    stick_threshold_within(
+                        &self.contact,
+                        req.accuracy,
+                        memo,
+                        marker_rtol(req.accuracy),
+                    )
+                    .map_err(|e| format!("{e}"))
                 };
                 Some(Output::Threshold(threshold))
             }
@@ -942,6 +969,46 @@ mod tests {
         .unwrap()
         .eps;
         assert!((eps_v * t / g_s - 1.0).abs() < 1e-9, "{t} {g_s} {eps_v}");
+    }
+
+    #[test]
+    fn the_stick_marker_is_located_to_the_levels_own_bound_issue_26() {
+        // Eq. (15): at the stick threshold t the rebound speed without adhesion equals g_s,
+        // ε_v(t) t = g_s. The marker is bisected to `marker_rtol` of its level; with the level's
+        // own ε_N error that puts ε_v(t) t / g_s within a few bounds of 1 (ε_v at `precise`).
+        let scene = Preset::IceSticky.scene();
+        let c = Contact::new(&scene).unwrap();
+        let g_s = c.adhesion.unwrap().critical_velocity;
+        let clean = Contact::new(&Scene {
+            adhesion: None,
+            ..scene
+        })
+        .unwrap();
+        for level in [Accuracy::Fast, Accuracy::Balanced, Accuracy::Precise] {
+            let mut req = Request::new(scene, level);
+            req.points = 11;
+            req.map_n = 3;
+            let f = compute(&req, &|| false).unwrap();
+            let t = f.markers.iter().find(|m| m.key == "stick").unwrap().value;
+            let eps_v = clean.normal(t, Accuracy::Precise).unwrap().eps;
+            let off = (eps_v * t / g_s - 1.0).abs();
+            assert!(
+                off < 4.0 * marker_rtol(level),
+                "{level:?}: {t} off by {off:e}"
+            );
+            // And the bisection agrees with the library's 1e-12 threshold to its own width.
+            let exact = stick_threshold(&c, Accuracy::Precise).unwrap().unwrap();
+            assert!(
+                (t / exact - 1.0).abs() < 4.0 * marker_rtol(level),
+                "{level:?}: {t} vs {exact}"
+            );
+        }
+        assert_eq!(marker_rtol(Accuracy::Fast), 1e-6);
+        assert_eq!(marker_rtol(Accuracy::Precise), 1e-10);
+        assert_eq!(
+            marker_rtol(Accuracy::Tolerance(1e-13)),
+            STICK_THRESHOLD_RTOL
+        );
     }
 
     #[test]
