@@ -94,8 +94,11 @@ for (const profile of PROFILES) {
       }
       const loadAvg = load();
       const taskSeconds = async () => (await cdp.send('Performance.getMetrics')).metrics.find((m) => m.name === 'TaskDuration').value;
-      // One slider step, timed inside the page: input → the animation frame after each draw.
-      const step = () => page.evaluate(({ guard, step }) => new Promise((resolve, reject) => {
+      // One slider step, timed inside the page: input → the animation frame after each draw. With
+      // `aligned`, the input is dispatched in an animation frame's callback, as Chromium dispatches
+      // a dragged pointer's events (rAF-aligned input), and `frames` counts the display frames from
+      // that one to the one after the first frame is drawn (1: the next display frame).
+      const step = (aligned = false) => page.evaluate(({ guard, step, aligned }) => new Promise((resolve, reject) => {
         const s = window.rimeState;
         const p0 = s.previews || 0;
         const slider = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]')
@@ -104,7 +107,9 @@ for (const profile of PROFILES) {
         const obs = new PerformanceObserver((l) => { for (const e of l.getEntries()) tasks.push(e.duration); });
         obs.observe({ type: 'longtask' });
         let first = null;
-        const t0 = performance.now();
+        let t0 = performance.now();
+        let frame0 = null; // the input's animation frame time (aligned)
+        let frames = null;
         // No polling loop (it would cost the page's thread a task every frame, counted in its busy
         // time): the page fires `rime:drawn` on window for each preview and frame once it is on
         // its canvas, and the animation frame after that is when it is painted.
@@ -114,27 +119,43 @@ for (const profile of PROFILES) {
         const onDrawn = (ev) => {
           if (first === null) {
             const mark = first = -1;
-            requestAnimationFrame(() => { if (first === mark) first = performance.now() - t0; });
+            requestAnimationFrame((ts) => {
+              if (first !== mark) return;
+              first = performance.now() - t0;
+              if (frame0 !== null) frames = Math.round((ts - frame0) / (1000 / 60));
+            });
           }
           if (!ev.detail.preview && ev.detail.gen === asked) {
-            requestAnimationFrame(() => {
+            requestAnimationFrame((ts) => {
               const final = performance.now() - t0;
-              if (first === -1) first = final;
+              if (first === -1) {
+                first = final;
+                if (frame0 !== null) frames = Math.round((ts - frame0) / (1000 / 60));
+              }
               // Let the observer deliver the tasks of this edit before reporting.
               const drawnFirst = ((s.previews || 0) > p0 ? Math.min(s.previewDrawnAt, s.drawnAt) : s.drawnAt) - t0;
-              setTimeout(() => done(() => resolve({ first, final, drawnFirst, drawnFinal: s.drawnAt - t0, tasks, previews: (s.previews || 0) - p0 })), 0);
+              setTimeout(() => done(() => resolve({ first, final, drawnFirst, drawnFinal: s.drawnAt - t0, tasks, previews: (s.previews || 0) - p0, frames })), 0);
             });
           }
         };
         window.addEventListener('rime:drawn', onDrawn);
-        slider.value = String(Number(slider.value) + step);
-        slider.dispatchEvent(new Event('input', { bubbles: true }));
-        queueMicrotask(() => { asked = s.asked; });
-      }), { guard: GUARD_MS, step: 7 });
+        const input = () => {
+          slider.value = String(Number(slider.value) + step);
+          slider.dispatchEvent(new Event('input', { bubbles: true }));
+          queueMicrotask(() => { asked = s.asked; });
+        };
+        if (aligned) {
+          requestAnimationFrame((ts) => { frame0 = ts; t0 = performance.now(); input(); });
+        } else input();
+      }), { guard: GUARD_MS, step: 7, aligned });
       // The latencies: RUNS steps with no trace running (a trace's own cost, which grows with the
       // workers' tasks, once put up to 5 ms on the literal reading's first frames).
       const runs = [];
       for (let i = 0; i < RUNS; i++) runs.push(await step());
+      // The same steps with the input in an animation frame (as a dragged pointer's): in which
+      // display frame after the input's the first frame is shown.
+      const alignedRuns = [];
+      for (let i = 0; i < RUNS; i++) alignedRuns.push(await step(true));
       // The main thread's time: RUNS more steps, traced. Its own time in its tasks (thread time,
       // which a loaded machine inflates far less than the wall time of TaskDuration): Chromium's
       // top-level task events.
@@ -185,7 +206,7 @@ for (const profile of PROFILES) {
         }
       }
       const paint = await page.evaluate(() => window.rimeState.paint || 'main');
-      const tasks = [...runs, ...traceRuns].flatMap((r) => r.tasks);
+      const tasks = [...runs, ...alignedRuns, ...traceRuns].flatMap((r) => r.tasks);
       const rec = {
         surface: 'page', scene: sc.name, level, size: `${profile.viewport.width}x${profile.viewport.height}`,
         profile: profile.name, cpu_slowdown: profile.slowdown,
@@ -193,6 +214,10 @@ for (const profile of PROFILES) {
         // Input → on its canvas (before the animation frame that paints it).
         first_drawn_ms: median(runs.map((r) => r.drawnFirst)), final_drawn_ms: median(runs.map((r) => r.drawnFinal)),
         first_each_ms: runs.map((r) => r.first), final_each_ms: runs.map((r) => r.final), previews: runs.map((r) => r.previews),
+        // Input in an animation frame: the display frames to the first frame shown (each step,
+        // their median, and how many steps showed it in the next one) and input → first [ms].
+        first_frames_each: alignedRuns.map((r) => r.frames), first_frames: median(alignedRuns.map((r) => r.frames)),
+        first_next_frame: alignedRuns.filter((r) => r.frames === 1).length, first_aligned_ms: median(alignedRuns.map((r) => r.first)),
         long_tasks: tasks.filter((d) => d > 50).length, max_task_ms: tasks.length ? Math.max(...tasks) : 0,
         main_ms_per_frame: busyMs / framesDrawn, main_cpu_ms_per_frame: cpuMs / framesDrawn,
         main_cpu_frame_ms_per_frame: frameMs / framesDrawn, main_cpu_input_ms_per_edit: inputMs / RUNS, paint,
@@ -200,7 +225,7 @@ for (const profile of PROFILES) {
         runs: RUNS, cores, load: loadAvg,
       };
       records.push(rec);
-      console.log(`${profile.name.padEnd(8)} ${sc.name.padEnd(34)} ${level.padEnd(10)} first ${rec.first_ms.toFixed(1).padStart(7)} ms (drawn ${rec.first_drawn_ms.toFixed(1).padStart(6)})  final ${rec.final_ms.toFixed(1).padStart(7)} ms  main ${rec.main_ms_per_frame.toFixed(1).padStart(5)} ms/frame (cpu ${rec.main_cpu_ms_per_frame.toFixed(1).padStart(5)}: frames ${rec.main_cpu_frame_ms_per_frame.toFixed(1)}/frame, input ${rec.main_cpu_input_ms_per_edit.toFixed(1)}/edit)  long tasks ${rec.long_tasks} (max ${rec.max_task_ms.toFixed(0)} ms)`);
+      console.log(`${profile.name.padEnd(8)} ${sc.name.padEnd(34)} ${level.padEnd(10)} first ${rec.first_ms.toFixed(1).padStart(7)} ms (drawn ${rec.first_drawn_ms.toFixed(1).padStart(6)}; next frame ${rec.first_next_frame}/${RUNS})  final ${rec.final_ms.toFixed(1).padStart(7)} ms  main ${rec.main_ms_per_frame.toFixed(1).padStart(5)} ms/frame (cpu ${rec.main_cpu_ms_per_frame.toFixed(1).padStart(5)}: frames ${rec.main_cpu_frame_ms_per_frame.toFixed(1)}/frame, input ${rec.main_cpu_input_ms_per_edit.toFixed(1)}/edit)  long tasks ${rec.long_tasks} (max ${rec.max_task_ms.toFixed(0)} ms)`);
       await page.close();
     }
   }
