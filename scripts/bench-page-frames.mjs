@@ -4,8 +4,12 @@
 // seen before, so no worker's memo of literal outcomes is warm by coming back) `RUNS` times and times,
 // inside the page, input → the preview painted (first) and input → the requested level painted
 // (final): the first animation frame after the page drew each, and counts the main thread's long
-// tasks over 50 ms meanwhile. Then `RUNS` more steps under a Chromium trace (kept apart: its own cost
-// lengthened the latencies) give the main thread's busy time per frame drawn (Chromium's
+// tasks over 50 ms meanwhile. Then `RUNS` steps with the input dispatched in an animation frame (as
+// Chromium dispatches a dragged pointer's events): in which display frame after the input's the
+// first frame is shown (`first_frames_each`, their median `first_frames`, `first_next_frame` the
+// steps that showed it in the next one, `first_aligned_ms`). Then `RUNS` more steps under a
+// Chromium trace (kept apart: its own cost lengthened the latencies) give the main thread's busy
+// time per frame drawn (Chromium's
 // TaskDuration metric over the edits, divided by the previews and refined frames drawn: input
 // handling, drawing, style, layout and paint of the page's thread; `main_cpu_ms_per_frame` the
 // same as thread time from a trace, less inflated by a loaded machine; split by what started it into
