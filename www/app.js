@@ -23,7 +23,8 @@ import { chartSvg, curvesCsv, familyCsv, mapCsv, mapSvg, setVersion, wireDownloa
 window.rimeState = { ready: false, errors: [] };
 // Test hooks: parts of the frame to fail on purpose (see the view's `fail` in wasm/src/frame.rs),
 // a slow computation (`delayMs`), a slow refinement after the preview (`refineDelayMs`), a slow
-// preview (`previewDelayMs`, counted in the preview's time in the worker), an input landing just
+// preview (`previewDelayMs`, counted in the preview's time in the worker; `finestPreview` puts the
+// next request's preview back at the finest level), an input landing just
 // before a frame is drawn (`beforeFrame`) and the family's swept parameter (`sweep`, a path of the
 // core's sweeps; the page offers no choice of it: the frame benchmark's swept family) and frames
 // asked without a preview whatever they cost (`noPreview`).
@@ -120,6 +121,7 @@ function request() {
   const page = { view: { ...v, overlays: [...v.overlays] }, tidal: app.tidalIn, t0: performance.now(), calls: calls.compute, format: calls.format, kind };
   calls.compute = 0;
   calls.format = 0;
+  if (window.rimeTest.finestPreview) { previewLevel = 0; window.rimeTest.finestPreview = false; }
   const preview = { ...view, accuracy: 'fast', ...PREVIEWS[previewLevel] };
   if (window.rimeTest.previewDelayMs > 0) preview.testPreviewMs = window.rimeTest.previewDelayMs;
   const cost = frameCost.get(kind);

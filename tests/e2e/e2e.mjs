@@ -98,6 +98,17 @@ function nudgeE(page, d) {
     return new Promise((r) => queueMicrotask(() => r(window.rimeState.previewAsked)));
   }, d);
 }
+/** A new page (watched as `name`) on the default scene at `precise`, its first frame drawn. */
+async function openAtPrecise(context, name) {
+  const page = watch(await context.newPage(), name);
+  await page.goto(url, { waitUntil: 'load' });
+  await ready(page);
+  if ((await page.evaluate(() => window.rimeState.view.accuracy)) !== 'precise') {
+    await page.selectOption('#accuracy', 'precise');
+    await page.waitForFunction(() => window.rimeState.view.accuracy === 'precise', null, { timeout: GUARD_MS });
+  }
+  return page;
+}
 async function waitUpdate(page, before) {
   const t0 = Date.now();
   await page.waitForFunction((b) => window.rimeState.updates > b, before, { timeout: GUARD_MS });
@@ -970,13 +981,7 @@ try {
   });
 
   await check('issue 26: the chart cursor stays on its speed through previews (every other, fourth, eighth or sixteenth sample)', async () => {
-    const pc = watch(await context.newPage(), 'cursor');
-    await pc.goto(url, { waitUntil: 'load' });
-    await ready(pc);
-    if ((await pc.evaluate(() => window.rimeState.view.accuracy)) !== 'precise') {
-      await pc.selectOption('#accuracy', 'precise');
-      await pc.waitForFunction(() => window.rimeState.view.accuracy === 'precise', null, { timeout: GUARD_MS });
-    }
+    const pc = await openAtPrecise(context, 'cursor');
     // An odd sample: a preview has none there, so mapping the index to the preview's nearest sample
     // and back moved it (by one sample with every other point, more with coarser previews).
     await pc.locator('#chart').focus();
@@ -1002,16 +1007,11 @@ try {
   });
 
   await check('issue 26: previews get coarser while they are slow (over 5 ms in the worker), at once to the finest level whose time scaled by its points is within 5 ms, never below 16 points', async () => {
-    const pv = watch(await context.newPage(), 'coarser');
-    await pv.goto(url, { waitUntil: 'load' });
-    await ready(pv);
-    if ((await pv.evaluate(() => window.rimeState.view.accuracy)) !== 'precise') {
-      await pv.selectOption('#accuracy', 'precise');
-      await pv.waitForFunction(() => window.rimeState.view.accuracy === 'precise', null, { timeout: GUARD_MS });
-    }
+    const pv = await openAtPrecise(context, 'coarser');
     // Each refinement held up 40 ms (late: its preview is asked after 12 ms, compute.js LATE_MS),
     // each preview 10 ms (counted in its time in the worker, so slower than 5 ms).
-    await pv.evaluate(() => { window.rimeTest.refineDelayMs = 40; window.rimeTest.previewDelayMs = 10; });
+    // From the finest level (the page's first previews may have moved it already).
+    await pv.evaluate(() => { window.rimeTest.refineDelayMs = 40; window.rimeTest.previewDelayMs = 10; window.rimeTest.finestPreview = true; });
     const levels = [121, 61, 31, 16];
     const seen = [];
     for (let k = 0; k < 6; k++) {
@@ -1027,6 +1027,7 @@ try {
     await pv.close();
     const text = seen.map((x) => `${x.points} (${x.ms.toFixed(1)} ms)`).join(', ');
     assert(seen.length >= 5, `only ${seen.length} previews in 6 edits whose refinements were held up 40 ms: ${text}`);
+    assert(seen[0].points === 121, `the first preview after finestPreview had ${seen[0].points} points: ${text}`);
     for (let k = 1; k < seen.length; k++) {
       const [a, b] = [seen[k - 1], seen[k]];
       assert(a.ms > 10 && levels.includes(b.points), `previews ${text}`);
