@@ -228,16 +228,7 @@ fn gap_error(part: &str, c: &Curve, first: Option<String>) -> Option<PartError> 
 /// The largest impact speed at which the grains stick, by bisection in log speed on the status the
 /// core reports (`None` when they never stick in \[1e-12, 1e2\] m/s, or always do).
 pub fn stick_threshold(contact: &Contact, accuracy: Accuracy) -> crate::Result<Option<f64>> {
-    stick_threshold_with(contact, accuracy, &NoMemo)
-}
-
-/// [`stick_threshold`] with the literal layer reading's outcomes kept in `memo`.
-pub fn stick_threshold_with(
-    contact: &Contact,
-    accuracy: Accuracy,
-    memo: &dyn LayerMemo,
-) -> crate::Result<Option<f64>> {
-    stick_threshold_within(contact, accuracy, memo, STICK_THRESHOLD_RTOL)
+    stick_threshold_within(contact, accuracy, &NoMemo, STICK_THRESHOLD_RTOL)
 }
 
 /// The bisection's relative width at which [`stick_threshold`] stops.
@@ -252,7 +243,8 @@ pub fn marker_rtol(accuracy: Accuracy) -> f64 {
     accuracy.error_bound().max(STICK_THRESHOLD_RTOL)
 }
 
-/// [`stick_threshold_with`], stopping when the bracket's relative width is below `rtol`.
+/// [`stick_threshold`] with the literal layer reading's outcomes kept in `memo`, stopping when the
+/// bracket's relative width is below `rtol`.
 pub fn stick_threshold_within(
     contact: &Contact,
     accuracy: Accuracy,
