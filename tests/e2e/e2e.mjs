@@ -114,6 +114,24 @@ async function waitUpdate(page, before) {
   await page.waitForFunction((b) => window.rimeState.updates > b, before, { timeout: GUARD_MS });
   notedWait('a frame after an edit', t0);
 }
+/** `nudgeE(page, d)`, then waits for the edit's own frame (not only a frame after it). Resolves
+ *  with whether the edit asked for a preview first. */
+async function stepE(page, d) {
+  const u = await updates(page);
+  const asked = await nudgeE(page, d);
+  await waitUpdate(page, u);
+  await page.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
+  return asked;
+}
+/** A new page (watched as `name`) on preset `preset` at `accuracy`, with `query` (`?workers=1`) in
+ *  its address, its first frame drawn. */
+async function openPreset(context, name, preset, accuracy, query = '') {
+  const scene = JSON.stringify(JSON.parse(execFileSync(rime, ['scene', '--preset', preset], { encoding: 'utf8' })));
+  const page = watch(await context.newPage(), name);
+  await page.goto(new URL(`${query}#s=${encodeURIComponent(scene)}&v=${encodeURIComponent(JSON.stringify({ accuracy }))}`, url).href, { waitUntil: 'load' });
+  await ready(page);
+  return page;
+}
 /** Number of non-white pixels of a canvas (is anything drawn?); the chart counts both its layers
  *  (background and data canvas, as they are seen on top of each other), read through the page's
  *  test hook wherever they are drawn (the chart's painter worker, or the page's thread). */
@@ -720,10 +738,7 @@ try {
   await check('issue 26: a dear refinement split over the two frame workers is `rime curve --accuracy integrated` byte for byte', async () => {
     // ice at `integrated` costs more than a frame's time, so from the second edit on the preview's
     // worker computes a share of the refinement's units and sends it to the other (wasm/src/split.rs).
-    const scene = execFileSync(rime, ['scene', '--preset', 'ice'], { encoding: 'utf8' });
-    const ps = watch(await context.newPage(), 'split');
-    await ps.goto(new URL(`?workers=2#s=${encodeURIComponent(JSON.stringify(JSON.parse(scene)))}&v=${encodeURIComponent(JSON.stringify({ accuracy: 'integrated' }))}`, url).href, { waitUntil: 'load' });
-    await ready(ps);
+    const ps = await openPreset(context, 'split', 'ice', 'integrated', '?workers=2');
     const slider = ps.locator('input[type=range][data-path="bulk.youngs_modulus"]');
     let split = false;
     for (let k = 0; k < 4 && !split; k++) {
@@ -745,10 +760,7 @@ try {
   });
 
   await check('issue 26: with one frame worker (a one-core browser), edits during a refinement stop it without a restart, and the last edit\'s frame is `rime curve`\'s', async () => {
-    const scene = execFileSync(rime, ['scene', '--preset', 'ice-sticky'], { encoding: 'utf8' });
-    const p1 = watch(await context.newPage(), 'one-worker');
-    await p1.goto(new URL(`?workers=1#s=${encodeURIComponent(JSON.stringify(JSON.parse(scene)))}&v=${encodeURIComponent(JSON.stringify({ accuracy: 'integrated' }))}`, url).href, { waitUntil: 'load' });
-    await ready(p1);
+    const p1 = await openPreset(context, 'one-worker', 'ice-sticky', 'integrated', '?workers=1');
     // Three edits 15 ms apart: each refinement at `integrated` takes longer than that.
     await p1.evaluate(() => new Promise((resolve) => {
       const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
@@ -994,12 +1006,7 @@ try {
     // A quick refinement needs no preview; held up 40 ms in the worker, each edit's is late and
     // gets one (compute.js LATE_MS).
     await pc.evaluate(() => { window.rimeTest.refineDelayMs = 40; });
-    for (let k = 0; k < 4; k++) {
-      const u = await updates(pc);
-      await nudgeE(pc, 17 + k);
-      await waitUpdate(pc, u);
-      await pc.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
-    }
+    for (let k = 0; k < 4; k++) await stepE(pc, 17 + k);
     const end = await at();
     await pc.close();
     assert(start.g && end.g === start.g && end.previews > start.previews, `cursor at g_N ${start.g} → ${end.g} after ${end.previews - start.previews} previews`);
@@ -1016,10 +1023,7 @@ try {
     const seen = [];
     for (let k = 0; k < 6; k++) {
       const p0 = await pv.evaluate(() => window.rimeState.previews || 0);
-      const u = await updates(pv);
-      await nudgeE(pv, 3 + k);
-      await waitUpdate(pv, u);
-      await pv.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
+      await stepE(pv, 3 + k);
       const s = await pv.evaluate(() => ({ n: window.rimeState.previews || 0, points: window.rimeState.previewPoints, ms: window.rimeState.previewWorkerMs }));
       if (s.n > p0) seen.push(s);
     }
@@ -1044,19 +1048,12 @@ try {
   });
 
   await check('issue 26: on fewer than four cores a refinement after a preview is posted once the preview is drawn (and at once with ?hold=0)', async () => {
-    const scene = JSON.stringify(JSON.parse(execFileSync(rime, ['scene', '--preset', 'ice'], { encoding: 'utf8' })));
-    const hash = `#s=${encodeURIComponent(scene)}&v=${encodeURIComponent(JSON.stringify({ accuracy: 'integrated' }))}`;
     const seen = [];
     for (const query of ['', '?hold=0']) {
-      const ph = watch(await context.newPage(), `hold${query}`);
-      await ph.goto(new URL(`${query}${hash}`, url).href, { waitUntil: 'load' });
-      await ready(ph);
+      const ph = await openPreset(context, `hold${query}`, 'ice', 'integrated', query);
       const cores = await ph.evaluate(() => navigator.hardwareConcurrency);
       for (let k = 0; k < 3; k++) {
-        const u = await updates(ph);
-        const asked = await nudgeE(ph, 3 + k);
-        await waitUpdate(ph, u);
-        await ph.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
+        const asked = await stepE(ph, 3 + k);
         const r = await ph.evaluate(() => ({ gen: window.rimeState.asked, posted: window.rimeState.refinementPosted, drawn: window.rimeState.previewDrawnAt, workers: window.rimeState.workers }));
         // At `integrated` on ice every frame is dear: a preview first (the rule has its own check).
         if (!asked || r.workers !== 2) continue;
@@ -1073,19 +1070,12 @@ try {
   });
 
   await check('issue 26: an edit gets a fast preview first only when the last frame of its kind took over 8 ms in the worker or is of a new kind; a frame that is late (12 ms) gets one after all', async () => {
-    const pq = watch(await context.newPage(), 'quick');
-    const scene = JSON.stringify(JSON.parse(execFileSync(rime, ['scene', '--preset', 'ice-sticky'], { encoding: 'utf8' })));
-    await pq.goto(new URL(`#s=${encodeURIComponent(scene)}&v=${encodeURIComponent(JSON.stringify({ accuracy: 'precise' }))}`, url).href, { waitUntil: 'load' });
-    await ready(pq);
+    const pq = await openPreset(context, 'quick', 'ice-sticky', 'precise');
     // One slider step of E; its frame awaited. What the request asked, and the worker's time of the
     // frame before it (the same kind: the same scene but for numbers, level and edited parameter).
     const step = async (d) => {
-      const u = await updates(pq);
       const before = await pq.evaluate(() => window.rimeState.computeMs.at(-1));
-      const asked = await nudgeE(pq, d);
-      await waitUpdate(pq, u);
-      await pq.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
-      return { asked, before };
+      return { asked: await stepE(pq, d), before };
     };
     const first = await step(3);
     assert(first.asked === true, 'the first edit of E (a kind not seen yet) asked for no preview');
@@ -1122,17 +1112,9 @@ try {
   await check('issue 26: with no preview, an older edit\'s frame newer than the screen is drawn as it comes (the screen follows a drag)', async () => {
     // One worker, so the edits queue behind each other; each refinement held up 60 ms in the worker
     // and asked without a preview (on a busy machine a frame may take over 8 ms and get one).
-    const scene = JSON.stringify(JSON.parse(execFileSync(rime, ['scene', '--preset', 'ice-sticky'], { encoding: 'utf8' })));
-    const pd = watch(await context.newPage(), 'follow');
-    await pd.goto(new URL(`?workers=1#s=${encodeURIComponent(scene)}&v=${encodeURIComponent(JSON.stringify({ accuracy: 'precise' }))}`, url).href, { waitUntil: 'load' });
-    await ready(pd);
+    const pd = await openPreset(context, 'follow', 'ice-sticky', 'precise', '?workers=1');
     // Two edits of E first, so that the kind's cost is known.
-    for (const d of [3, 4]) {
-      const u = await updates(pd);
-      await nudgeE(pd, d);
-      await waitUpdate(pd, u);
-      await pd.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
-    }
+    for (const d of [3, 4]) await stepE(pd, d);
     const out = await pd.evaluate(() => new Promise((resolve) => {
       window.rimeTest.refineDelayMs = 60;
       window.rimeTest.noPreview = true;
