@@ -120,22 +120,21 @@ for (const profile of PROFILES) {
         const done = (fn) => { obs.disconnect(); window.removeEventListener('rime:drawn', onDrawn); clearTimeout(timer); fn(); };
         const timer = setTimeout(() => done(() => reject(new Error('no frame within the guard'))), guard);
         let asked = null; // this step's request (it leaves in a microtask after the input)
+        // The first frame is painted in the animation frame at `ts` (once; `first` is -1 until then).
+        const firstPainted = (ts) => {
+          if (first !== -1) return;
+          first = performance.now() - t0;
+          if (frame0 !== null) frames = Math.round((ts - frame0) / (1000 / 60));
+        };
         const onDrawn = (ev) => {
           if (first === null) {
-            const mark = first = -1;
-            requestAnimationFrame((ts) => {
-              if (first !== mark) return;
-              first = performance.now() - t0;
-              if (frame0 !== null) frames = Math.round((ts - frame0) / (1000 / 60));
-            });
+            first = -1;
+            requestAnimationFrame(firstPainted);
           }
           if (!ev.detail.preview && ev.detail.gen === asked) {
             requestAnimationFrame((ts) => {
+              firstPainted(ts);
               const final = performance.now() - t0;
-              if (first === -1) {
-                first = final;
-                if (frame0 !== null) frames = Math.round((ts - frame0) / (1000 / 60));
-              }
               // Let the observer deliver the tasks of this edit before reporting.
               const drawnFirst = ((s.previews || 0) > p0 ? Math.min(s.previewDrawnAt, s.drawnAt) : s.drawnAt) - t0;
               setTimeout(() => done(() => resolve({ first, final, drawnFirst, drawnFinal: s.drawnAt - t0, tasks, previews: (s.previews || 0) - p0, frames })), 0);
