@@ -1111,8 +1111,11 @@ try {
 
   await check('issue 26: with no preview, an older edit\'s frame newer than the screen is drawn as it comes (the screen follows a drag)', async () => {
     // One worker, so the edits queue behind each other; each refinement held up 60 ms in the worker
-    // and asked without a preview (on a busy machine a frame may take over 8 ms and get one).
-    const pd = await openPreset(context, 'follow', 'ice-sticky', 'precise', '?workers=1');
+    // and asked without a preview (on a busy machine a frame may take over 8 ms and get one). At
+    // `fast` (under a millisecond of compute): a refinement that computes longer than SLICE_MS
+    // (worker.js) yields, sees the newer edits and stops as stale, and at `precise` on a busy
+    // machine the first edit's did (a fresh clone's make test drew only the last frame).
+    const pd = await openPreset(context, 'follow', 'ice-sticky', 'fast', '?workers=1');
     // Two edits of E first, so that the kind's cost is known.
     for (const d of [3, 4]) await stepE(pd, d);
     const out = await pd.evaluate(() => new Promise((resolve) => {
