@@ -129,7 +129,7 @@ export class Computer {
     };
     this.helper = null; // the lane asked to help with the newest refinement (previewDrawn)
     this.held = null; // {gen, post}: the newest request's refinement, held until its preview is drawn
-    this.refinementPosted = null; // {gen, at}: when the last refinement after a preview was posted
+    this.refinementPosted = null; // {gen, at, by}: when and why the last refinement after a preview was posted
     this.lanes = [];
     for (let k = 0; k < workers; k++) this.lanes.push(new Lane(module, (m, r) => this.deliver(m, r), crash, () => this.connect()));
     this.connect();
@@ -179,14 +179,14 @@ export class Computer {
         // a share of its units after the preview (issue 26).
         const split = this.lastWork > SPLIT_ABOVE_MS;
         this.fastLane.post({ ...req, frames: [preview], help: split ? { view } : null });
-        const refine = () => {
-          this.refinementPosted = { gen, at: performance.now() };
+        const refine = (by) => {
+          this.refinementPosted = { gen, at: performance.now(), by };
           this.refineLane.post({ ...req, frames: [{ ...final, split }] });
         };
         if (HOLD_REFINEMENT) {
           this.held = { gen, post: refine };
-          setTimeout(() => this.release(gen), HOLD_AT_MOST_MS);
-        } else refine();
+          setTimeout(() => this.release(gen, 'cap'), HOLD_AT_MOST_MS);
+        } else refine('now');
       }
     } else {
       // A frame at `fast` is computed by the fast lane, another by the refinement lane.
@@ -212,19 +212,20 @@ export class Computer {
     this.refineLane.post({ type: 'ring', gen, scene, ring: r, chart, tidal });
   }
 
-  /** Posts request `gen`'s held refinement, if it is still held. */
-  release(gen) {
+  /** Posts request `gen`'s held refinement, if it is still held; `by`: what released it (`preview`
+   *  on screen, its `error`, the `cap` of HOLD_AT_MOST_MS). */
+  release(gen, by) {
     if (this.held && this.held.gen === gen) {
       const { post } = this.held;
       this.held = null;
-      post();
+      post(by);
     }
   }
 
   /** The preview of request `gen` is on screen: its held refinement is posted, and its worker may
    *  now help with the refinement. */
   previewDrawn(gen) {
-    this.release(gen);
+    this.release(gen, 'preview');
     if (gen === this.gen && this.lanes.length === 2) {
       this.fastLane.worker.postMessage({ type: 'help', gen });
       // It may be computing its share until the next request (which tells it to stop).
@@ -245,7 +246,7 @@ export class Computer {
     }
     if (!req) return;
     if (msg.preview) {
-      if (msg.error) this.release(msg.gen);
+      if (msg.error) this.release(msg.gen, 'error');
       // A preview newer than anything on screen is drawn even when a newer request waits: while a
       // slider is dragged faster than previews come, the screen follows it (a stale frame is only
       // ever a preview; downloads wait for the newest request's frame).
