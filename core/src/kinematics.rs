@@ -15,6 +15,9 @@
 use crate::error::{Error, Result, positive, within};
 pub use nalgebra::Vector3;
 
+/// The inertia factor `q` of a homogeneous solid sphere, `I = 2/5 m a²`.
+pub const SOLID_SPHERE: f64 = 0.4;
+
 /// Position-free state of one spherical grain.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GrainState {
@@ -42,9 +45,25 @@ impl GrainState {
         GrainState {
             mass,
             radius,
-            inertia_factor: 0.4,
+            inertia_factor: SOLID_SPHERE,
             velocity,
             spin,
+        }
+    }
+
+    /// The same grain with the contact point at `arm` from its centre instead of at its radius,
+    /// keeping its moment of inertia `q m a²`: radius `arm`, inertia factor `q a²/arm²`.
+    ///
+    /// An N-body code finds a pair overlapping (centre distance `d < a_i + a_j`); the contact point
+    /// splits the line of centres in the ratio of the radii, at `a_i d/(a_i + a_j)` from each centre.
+    /// With these arms in Eq. (2) and in [`collide`], the torques of the impulse about the two
+    /// centres cancel the change of orbital angular momentum exactly, and at touching (`d = a_i +
+    /// a_j`) it is the grain itself.
+    pub fn with_lever_arm(&self, arm: f64) -> GrainState {
+        GrainState {
+            radius: arm,
+            inertia_factor: self.inertia_factor * (self.radius / arm) * (self.radius / arm),
+            ..*self
         }
     }
 

@@ -56,6 +56,7 @@ pub mod fit_scene;
 pub mod kinematics;
 pub mod limits;
 mod math;
+pub mod merge;
 pub mod models;
 pub mod normal;
 pub mod ode;

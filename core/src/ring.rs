@@ -280,8 +280,29 @@ impl RingPatch {
         radius: Option<f64>,
         scale_damping: bool,
     ) -> Result<RingPatch> {
+        Self::with_damping_set_for(
+            scene,
+            tau,
+            orbit,
+            radius,
+            scale_damping,
+            scene.grains.radius_1,
+        )
+    }
+
+    /// [`RingPatch::new`] when the scene's A was set for grains of radius `set_for` \[m\] rather
+    /// than for the scene's own grains: e.g. `rime ring --radius 1 --set bulk.damping.time=5e-3`
+    /// gives A for the 1 m grains of the patch, so `set_for` is 1 m and nothing is scaled or noted.
+    pub fn with_damping_set_for(
+        scene: &Scene,
+        tau: f64,
+        orbit: Orbit,
+        radius: Option<f64>,
+        scale_damping: bool,
+        set_for: f64,
+    ) -> Result<RingPatch> {
+        let set_for = crate::error::positive("set_for", set_for)?;
         let mut scene = *scene;
-        let set_for = scene.grains.radius_1;
         if let Some(r) = radius {
             scene.grains.radius_1 = r;
             scene.grains.radius_2 = r;
@@ -605,6 +626,29 @@ mod tests {
         let same = RingPatch::new(&ice, 0.5, orbit, None, false).unwrap();
         let rec = equilibrium(&same.scene, &same.input).unwrap();
         assert_eq!(same.damping_note(&rec, "--flag"), None);
+    }
+
+    /// A given for the patch's own grains (issue 35): no note, the same record as a scene whose
+    /// grains are that size, and nothing to scale.
+    #[test]
+    fn issue_35_a_set_for_the_patch_grains_is_not_noted() {
+        let mut ice = Preset::Ice.scene();
+        ice.bulk.damping = Damping::Time(5e-3);
+        let orbit = Orbit::Omega(1.3e-4);
+        let given =
+            RingPatch::with_damping_set_for(&ice, 0.5, orbit, Some(1.0), false, 1.0).unwrap();
+        assert_eq!(given.input.damping_set_for_radius, None);
+        let rec = equilibrium(&given.scene, &given.input).unwrap();
+        assert_eq!(rec.scaled_damping_time, None);
+        assert_eq!(given.damping_note(&rec, "--flag"), None);
+        // The same as a scene of 1 m grains with that A, asked about its own grains.
+        let mut metre = ice;
+        (metre.grains.radius_1, metre.grains.radius_2) = (1.0, 1.0);
+        let own = RingPatch::new(&metre, 0.5, orbit, None, false).unwrap();
+        assert_eq!(equilibrium(&own.scene, &own.input).unwrap(), rec);
+        let e =
+            RingPatch::with_damping_set_for(&ice, 0.5, orbit, Some(1.0), true, 1.0).unwrap_err();
+        assert!(alloc::format!("{e}").starts_with("scale_damping:"), "{e}");
     }
 
     const SATURN_A_RING_OMEGA: f64 = 1.3143527e-4;

@@ -19,6 +19,38 @@ pub struct Grains {
     pub density: f64,
 }
 
+impl Grains {
+    /// The grains of two bodies of an N-body code with their own masses and radii \[m, kg\]: the
+    /// radii, and the one density whose effective mass with these radii is `m₁m₂/(m₁+m₂)` of the
+    /// given masses, `ρ = m_eff (V₁ + V₂)/(V₁V₂)` with `V = 4/3 π r³` (each body's density when both
+    /// share one). The models depend on the masses only through `m_eff`, so this pair of grains
+    /// collides as the two bodies do.
+    ///
+    /// ```
+    /// use rime_core::Grains;
+    /// let m = 900.0 * 4.0 / 3.0 * core::f64::consts::PI * 0.02f64.powi(3);
+    /// let g = Grains::from_masses(0.02, m, 0.02, m)?;
+    /// assert!((g.density - 900.0).abs() < 1e-12);
+    /// # Ok::<(), rime_core::Error>(())
+    /// ```
+    ///
+    /// Errors name `radius_1`, `mass_2`, … when a value is not finite and > 0.
+    pub fn from_masses(radius_1: f64, mass_1: f64, radius_2: f64, mass_2: f64) -> Result<Grains> {
+        let radius_1 = crate::error::positive("radius_1", radius_1)?;
+        let mass_1 = crate::error::positive("mass_1", mass_1)?;
+        let radius_2 = crate::error::positive("radius_2", radius_2)?;
+        let mass_2 = crate::error::positive("mass_2", mass_2)?;
+        let volume = |r: f64| 4.0 / 3.0 * core::f64::consts::PI * r * r * r;
+        let (v1, v2) = (volume(radius_1), volume(radius_2));
+        let m_eff = mass_1 * mass_2 / (mass_1 + mass_2);
+        Ok(Grains {
+            radius_1,
+            radius_2,
+            density: m_eff * (v1 + v2) / (v1 * v2),
+        })
+    }
+}
+
 impl Default for Grains {
     fn default() -> Self {
         Grains {

@@ -293,7 +293,7 @@ fn subcommand(sub: &'static Sub, common: Common, given: &Given) -> CliResult<Com
         "fit" => Command::Fit(common, crate::commands::fit::parse(&owned)?),
         "data" => Command::Data(common, crate::commands::data::parse(&owned)?),
         "stick" => Command::Stick(common, crate::commands::stick::parse(&owned)?),
-        "ring" => Command::Ring(common, crate::commands::ring::parse(&owned)?),
+        "ring" => Command::Ring(common, crate::commands::ring::parse(&owned, &given.sets)?),
         "collision" => Command::Collision(common, crate::commands::collision::parse(&owned)?),
         "bench" => {
             let out = PathBuf::from(get("--out").unwrap_or("target/bench"));

@@ -17,10 +17,15 @@ pub struct Args {
     pub radius: Option<f64>,
     /// `--scale-damping`: replace A by A′ = A·R′/R (a different material).
     pub scale_damping: bool,
+    /// A was given in this command (`--set bulk.damping…`) without the grains' radius: it was
+    /// given for the `--radius` grains, not for the scene's.
+    pub damping_given_here: bool,
 }
 
-/// Reads `--tau`, `--omega | --planet-mass --distance`, `--radius`, `--scale-damping`.
-pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
+/// Reads `--tau`, `--omega | --planet-mass --distance`, `--radius`, `--scale-damping`; `sets` are
+/// the command's `--set KEY=VALUE` (A set here without `grains.radius_*` is A of the `--radius`
+/// grains).
+pub fn parse(get: &dyn Fn(&str) -> Option<String>, sets: &[String]) -> CliResult<Args> {
     let q = |name: &'static str, unit: &str| -> CliResult<Option<f64>> {
         get(name)
             .map(|v| rime_core::units::parse_quantity(name, &v, unit).map_err(CliError::from))
@@ -49,7 +54,13 @@ pub fn parse(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Args> {
         orbit,
         radius: q("--radius", "m")?,
         scale_damping: get("--scale-damping").as_deref() == Some("true"),
+        damping_given_here: sets.iter().any(|s| set_key(s).starts_with("bulk.damping"))
+            && !sets.iter().any(|s| set_key(s).starts_with("grains.radius")),
     })
+}
+
+fn set_key(set: &str) -> &str {
+    set.split_once('=').map_or(set, |(k, _)| k).trim()
 }
 
 /// The ring's record in the chosen format.
@@ -63,12 +74,28 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     {
         return err("--scale-damping: only with a --radius other than the scene's");
     }
-    let patch = RingPatch::new(
+    // A set in this command (and no grain radius) describes the grains of this ring.
+    let set_for = match args.radius {
+        Some(r) if args.damping_given_here => {
+            if args.scale_damping {
+                return err(format!(
+                    "--scale-damping: A was given here (--set bulk.damping…) for the {} m grains \
+                     of --radius; nothing to scale (set grains.radius_1/2 to the grains A was \
+                     measured for to scale it from them)",
+                    output::num(r)
+                ));
+            }
+            r
+        }
+        _ => common.scene.grains.radius_1,
+    };
+    let patch = RingPatch::with_damping_set_for(
         &common.scene,
         args.tau,
         args.orbit,
         args.radius,
         args.scale_damping,
+        set_for,
     )?;
     let rec = equilibrium(&patch.scene, &patch.input)?;
     let p = rec.prediction();

@@ -503,3 +503,66 @@ fn issue_24_ring_verdicts_and_the_a_over_r_note() {
         assert!(err.contains(field), "{args:?}: {err}");
     }
 }
+
+/// Issue 35: A set in the same command as `--radius` (and no grain radius) is A of those grains:
+/// no "was set for 0.02 m grains" note, no A′, the record of a scene whose own grains are that
+/// size; `--scale-damping` has nothing to scale then. With the grains' radius set too, A is theirs.
+#[test]
+fn issue_35_ring_a_given_for_the_radius_grains_is_not_rescaled() {
+    let base = [
+        "ring",
+        "--preset",
+        "ice",
+        "--tau",
+        "0.5",
+        "--omega",
+        "1.3143527e-4",
+    ];
+    let with = |extra: &[&str]| {
+        let mut a: Vec<&str> = base.to_vec();
+        a.extend_from_slice(extra);
+        json(&a)
+    };
+    let given = with(&["--radius", "1", "--set", "bulk.damping.time=5e-3"]);
+    assert!(given["damping_note"].is_null(), "{}", given["damping_note"]);
+    assert!(given["scaled_damping_time"].is_null());
+    assert_eq!(given["damping_time"], 5e-3);
+    let own = with(&[
+        "--set",
+        "grains.radius_1=1",
+        "--set",
+        "grains.radius_2=1",
+        "--set",
+        "bulk.damping.time=5e-3",
+    ]);
+    assert_eq!(given, own);
+    // A for the 2 cm grains named in the command: the note stays, with A' = A·R/R_set.
+    let named = with(&[
+        "--radius",
+        "1",
+        "--set",
+        "bulk.damping.time=5e-3",
+        "--set",
+        "grains.radius_1=0.02",
+        "--set",
+        "grains.radius_2=0.02",
+    ]);
+    assert!(rel(named["scaled_damping_time"].as_f64().unwrap(), 0.25) < 1e-12);
+    assert!(
+        named["damping_note"]
+            .as_str()
+            .unwrap()
+            .contains("was set for 0.02 m grains")
+    );
+    let mut args = base.to_vec();
+    args.extend_from_slice(&[
+        "--radius",
+        "1",
+        "--set",
+        "bulk.damping.time=5e-3",
+        "--scale-damping",
+    ]);
+    let (code, _, err) = rime(&args);
+    assert_eq!(code, 2);
+    assert!(err.contains("--scale-damping: A was given here"), "{err}");
+}
