@@ -154,6 +154,18 @@ pub fn effective_tangential_mass(i: &GrainState, j: &GrainState) -> f64 {
     1.0 / inv
 }
 
+/// The normal restitution an N-body code applies with a floor `v_min` \[its speed unit\] on the
+/// normal separation speed (REBOUND's `minimum_collision_velocity`): `max(ε_N, v_min/|g_N|)`, at
+/// most 1, for an approach `g_N < 0`; `eps_n` itself when `v_min ≤ 0` or the pair is not
+/// approaching. The floor keeps resting grains from sinking into each other under a steady pull.
+pub fn restitution_with_floor(eps_n: f64, g_n: f64, v_min: f64) -> f64 {
+    if v_min > 0.0 && g_n < 0.0 {
+        eps_n.max((v_min / -g_n).min(1.0))
+    } else {
+        eps_n
+    }
+}
+
 /// Applies restitution coefficients to a pair of touching grains.
 ///
 /// An impulse `J = −m_eff (1+ε_N) g_N n − m_t (1−ε_T) g_T` acts on `i` and `−J` on `j`, both at the
@@ -236,6 +248,28 @@ mod tests {
 
     fn close(a: &Vector3<f64>, b: &Vector3<f64>, tol: f64) -> bool {
         (a - b).norm() <= tol * b.norm().max(a.norm())
+    }
+
+    #[test]
+    fn issue_35_the_floor_sets_the_separation_speed_and_never_exceeds_one() {
+        // Approach at 2 (g_N = −2): a floor of 0.5 gives ε 0.25 over ε_N = 0, none over ε_N = 0.6.
+        assert_eq!(restitution_with_floor(0.0, -2.0, 0.5), 0.25);
+        assert_eq!(restitution_with_floor(0.6, -2.0, 0.5), 0.6);
+        assert_eq!(restitution_with_floor(0.0, -2.0, 5.0), 1.0);
+        assert_eq!(restitution_with_floor(0.3, -2.0, 0.0), 0.3);
+        assert_eq!(restitution_with_floor(0.3, 1.0, 0.5), 0.3);
+    }
+
+    #[test]
+    fn issue_35_a_lever_arm_keeps_the_moment_of_inertia() {
+        let g = GrainState::solid_sphere(3.0, 0.5, Vector3::zeros(), Vector3::zeros());
+        let arm = g.with_lever_arm(0.49);
+        assert_eq!(arm.radius, 0.49);
+        assert!(
+            (arm.moment_of_inertia() - g.moment_of_inertia()).abs()
+                <= 1e-16 * g.moment_of_inertia()
+        );
+        assert_eq!(g.with_lever_arm(0.5), g);
     }
 
     #[test]

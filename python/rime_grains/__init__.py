@@ -32,6 +32,9 @@ ValueError: layer.thickness: expected a length, e.g. 1e-6, 1 um, 2 cm
 from . import _native
 from ._native import Scene
 
+#: The package's version (``pip show rime-grains`` gives the same).
+__version__ = _native.__version__
+
 __all__ = [
     "Scene",
     "eps_n",

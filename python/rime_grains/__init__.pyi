@@ -13,6 +13,7 @@ ArrayLike = npt.ArrayLike
 Speeds = npt.NDArray[np.float64]
 
 ACCURACY_LEVELS: tuple[str, ...]
+__version__: str
 
 class Scene:
     """A collision scene: two grains, the bulk, optional layer, adhesion and friction."""

@@ -3,4 +3,5 @@ from typing import Any
 from . import Scene as Scene
 
 REBOUND_VERSION: str
+__version__: str
 def __getattr__(name: str) -> Any: ...

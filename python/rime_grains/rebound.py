@@ -16,19 +16,36 @@ What the handler uses
 
 Units: ``length_unit``, ``time_unit`` and ``mass_unit`` say what one code unit is, as a number in
 SI (metres, seconds, kilograms) or a string such as ``"cm"``, ``"min"``, ``"g"``, ``"1 AU"``,
-``"1 yr"``. Spins are in radians per code time unit.
+``"1 yr"``; ``time_unit="orbit"`` with ``omega=`` (Ω in 1/s) is one orbit, 2π/Ω, the unit of a
+shearing sheet whose ``sim.OMEGA`` is 2π (checked when ``sim.OMEGA`` is set). Spins are in radians
+per code time unit.
 
 Sticking (ε_N = 0: stuck in the layer or by adhesion)
     * ``"merge"``: the two become one grain (mass, volume, momentum and angular momentum kept);
     * ``"stay"``: they stay two grains with ε_N = 0 and the tangential outcome the core gives
       (ε_T of the class ``normal_stick_only``, …); ``sim.minimum_collision_velocity`` is honoured
-      as a floor on the normal separation speed (code units) of every bounce;
+      as a floor on the normal separation speed (code units) of every bounce. With REBOUND's
+      default floor 0, grains that stay stuck under a steady pull (gravity, the tidal field) sink
+      into each other a little every step they touch (about 2 % of the radius per orbit in a 2 cm
+      ring patch): set ``sim.minimum_collision_velocity`` to a speed well below the sticking speed
+      (e.g. 1e-6 m/s in code units) to keep them apart; it turns a resting contact into slow
+      bounces at that speed;
     * ``"merge_if_slow"``: merge only when the tangential speed is also below the pair's sticking
       speed (``rime.thresholds(scene)["stick"]`` for the pair's radii), else stay.
 
-Spins live in an array owned by the returned ``Attachment``; each particle's ``ap`` points into it
-(REBOUNDx uses ``ap`` too: with REBOUNDx attached, use ``track_spins=False``). REBOUND does not save
-``ap``: use ``Attachment.save(filename)`` and ``load_spins(filename, sim)`` (see ``attach``).
+Spins live in the handler's own table, one per particle index (never in ``ap``, so REBOUNDx works
+beside the handler whether it is created before or after ``attach``). The table follows REBOUND's
+array: merges, and particles added at the end (spin 0); remove particles yourself only with
+``att.track_spins(spins)`` afterwards (the handler stops with a message when N fell behind its
+back). REBOUND's files keep no spins: ``Attachment.save(filename)`` writes them beside the snapshot,
+and with REBOUND's periodic archive (``sim.save_to_file(filename, interval=...)``, ``step=``,
+``walltime=``) the handler appends the spins of every snapshot to ``filename + ".spins"`` itself
+(through ``sim.heartbeat``; a heartbeat set before attach still runs). ``load_spins(filename, sim)``
+reads them back; ``attach`` refuses a simulation past t = 0 without ``spins=`` (a reloaded
+simulation would otherwise restart its spins at 0 silently).
+
+The contact constants of each pair of (radius, mass) are cached, at most ``cache_size`` pairs
+(the least recently used go first); ``Attachment.cache_info()`` reports entries, hits and misses.
 """
 
 import ctypes
@@ -40,7 +57,7 @@ import numpy as np
 
 from . import _native
 
-__all__ = ["attach", "load_spins", "Attachment", "REBOUND_VERSION", "unit"]
+__all__ = ["attach", "load_spins", "orbit", "Attachment", "REBOUND_VERSION", "unit"]
 
 #: The REBOUND version this handler is built and tested for; others are refused.
 REBOUND_VERSION = _native.REBOUND_VERSION
@@ -61,19 +78,41 @@ _DIMENSION = {
     "mass_unit": {"kg", "g", "mg", "t"},
 }
 
-# Simulations with a handler: address -> _Link (keeps the handler and the spin arrays the particles'
-# ap point to alive while REBOUND may call the handler; not the simulation itself, so a simulation
-# nobody refers to is still freed).
+# Simulations with a handler: address -> _Link (keeps the handler and the heartbeat pointers alive
+# while REBOUND may call them; not the simulation itself, so a simulation nobody refers to is still
+# freed, and its registration is then dropped).
 _ATTACHED = {}
+
+#: The default number of (radius, mass) pairs whose contact constants are cached (~440 B each).
+CACHE_SIZE = 4096
 
 
 class _Link:
-    def __init__(self, handler):
+    def __init__(self, handler, previous_heartbeat):
         self.handler = handler
-        self.storage = []  # spin arrays (the particles' ap point into them)
+        # The heartbeat set before attach (restored by detach); its ctypes object stays alive here.
+        self.previous_heartbeat = previous_heartbeat
+        self.heartbeat = None
 
-    def owns(self, address):
-        return any(a.ctypes.data <= address < a.ctypes.data + a.nbytes for a in self.storage)
+
+def orbit(omega):
+    """Seconds of one orbit at the orbital frequency ``omega`` [1/s]: 2π/Ω (for ``time_unit``).
+
+    >>> from rime_grains.rebound import orbit
+    >>> round(orbit(1.3143527e-4))
+    47804
+    >>> orbit(0)
+    Traceback (most recent call last):
+    ...
+    ValueError: omega: the orbital frequency must be finite and > 0 1/s (got 0)
+    """
+    try:
+        w = float(omega)
+    except (TypeError, ValueError):
+        raise ValueError(f"omega: expected the orbital frequency in 1/s (got {omega!r})") from None
+    if not (np.isfinite(w) and w > 0):
+        raise ValueError(f"omega: the orbital frequency must be finite and > 0 1/s (got {omega!r})")
+    return 2 * np.pi / w
 
 
 def unit(field, value):
@@ -85,7 +124,7 @@ def unit(field, value):
     >>> unit("time_unit", "cm")
     Traceback (most recent call last):
     ...
-    ValueError: time_unit: 'cm' is not a time (use s, ms, min, h, hr, d, day, yr, year or a number of seconds)
+    ValueError: time_unit: 'cm' is not a time (use s, ms, min, h, hr, d, day, yr, year or 'orbit' with omega= or a number of seconds)
     """
     if isinstance(value, str):
         m = re.fullmatch(r"\s*([0-9.eE+-]+)?\s*([A-Za-zµ]+)\s*", value)
@@ -94,7 +133,8 @@ def unit(field, value):
             kind = {"length_unit": "length", "time_unit": "time", "mass_unit": "mass"}[field]
             si = {"length_unit": "metres", "time_unit": "seconds", "mass_unit": "kilograms"}[field]
             names = [u for u in _UNITS if u in allowed]
-            raise ValueError(f"{field}: {value!r} is not a {kind} (use {', '.join(names)} or a number of {si})")
+            extra = " or 'orbit' with omega=" if field == "time_unit" else ""
+            raise ValueError(f"{field}: {value!r} is not a {kind} (use {', '.join(names)}{extra} or a number of {si})")
         number = float(m.group(1)) if m.group(1) else 1.0
         value = number * _UNITS[m.group(2)]
     try:
@@ -134,12 +174,21 @@ def _layout(rebound):
         "N": S.N.offset,
         "status": S._status.offset,
         "minimum_collision_velocity": S.minimum_collision_velocity.offset,
+        "t": S.t.offset,
+        "dt": S.dt.offset,
+        "steps_done": S.steps_done.offset,
+        "walltime": S.walltime.offset,
+        "simulationarchive_filename": S._simulationarchive_filename.offset,
+        "simulationarchive_auto_interval": S.simulationarchive_auto_interval.offset,
+        "simulationarchive_auto_walltime": S.simulationarchive_auto_walltime.offset,
+        "simulationarchive_auto_step": S.simulationarchive_auto_step.offset,
+        "simulationarchive_next": S.simulationarchive_next.offset,
+        "simulationarchive_next_step": S.simulationarchive_next_step.offset,
         "particle_size": ctypes.sizeof(P),
         "x": P.x.offset,
         "vx": P.vx.offset,
         "m": P.m.offset,
         "r": P.r.offset,
-        "ap": P.ap.offset,
     }
 
 
@@ -172,42 +221,31 @@ class Attachment:
 
     @property
     def cached_pairs(self):
-        """Number of (radius, mass) pairs whose contact constants are cached."""
+        """Number of (radius, mass) pairs whose contact constants are cached (at most
+        ``cache_size``)."""
         return self._handler.cached_pairs
 
+    def cache_info(self):
+        """The contact cache: ``entries``, ``capacity``, ``hits`` and ``misses`` (pairs computed)."""
+        return self._handler.cache_info()
+
     def track_spins(self, spins=None):
-        """Gives every particle a spin slot (``ap``), initialised from ``spins`` (an (N, 3) array,
-        rad per code time) or from the particle's current spin. Call it again after adding
-        particles; particles without a slot have spin 0 and their spin is not updated."""
+        """Sets the particles' spins, an (N, 3) array (rad per code time) or a number for all;
+        ``None`` keeps them (particles added since get 0). Call it with the remaining spins after
+        removing particles yourself. Returns the spins."""
         if not self._track:
             raise ValueError("track_spins: this attachment was made with track_spins=False")
-        sim = self._sim
-        n = sim.N
-        current = self.spins if spins is None else np.asarray(spins, dtype=float)
-        if current.shape != (n, 3):
-            raise ValueError(f"spins: expected shape ({n}, 3) (got {current.shape})")
-        if not np.all(np.isfinite(current)):
-            raise ValueError("spins: every value must be finite")
-        storage = np.ascontiguousarray(current, dtype=np.float64).copy()
-        base = storage.ctypes.data
-        for k in range(n):
-            sim.particles[k].ap = base + 24 * k
-        self._link.storage = [storage]  # older arrays are no longer pointed to
-        return storage
+        n = self._sim.N
+        current = self.spins if spins is None else _spins(spins, n)
+        self._handler.set_spins(current.tolist())
+        return self.spins
 
     @property
     def spins(self):
         """The particles' angular velocities, an (N, 3) array [rad per code time] (a copy)."""
-        sim = self._sim
-        out = np.zeros((sim.N, 3))
         if not self._track:
-            return out
-        for k in range(sim.N):
-            ap = sim.particles[k].ap
-            if ap:
-                w = ctypes.cast(ap, ctypes.POINTER(ctypes.c_double))
-                out[k] = (w[0], w[1], w[2])
-        return out
+            return np.zeros((self._sim.N, 3))
+        return np.array(self._handler.spins(), dtype=float).reshape(self._sim.N, 3)
 
     def save(self, filename):
         """Saves the simulation (``sim.save_to_file(filename)``, appending a snapshot) and its spins
@@ -216,23 +254,27 @@ class Attachment:
         Reload with ``sim = rebound.Simulation(filename)`` (the last snapshot) and
         ``attach(sim, scene, ..., spins=load_spins(filename, sim))``."""
         self._sim.save_to_file(filename)
-        record = {"t": self._sim.t, "N": self._sim.N, "spins": self.spins.tolist()}
         with open(filename + ".spins", "a", encoding="utf-8") as f:
-            f.write(json.dumps(record) + "\n")
+            f.write(self._handler.spin_record() + "\n")
 
     def detach(self):
-        """Unregisters the handler and restores REBOUND's default (``"hardsphere"``)."""
+        """Unregisters the handler and restores REBOUND's default (``"hardsphere"``) and the
+        heartbeat set before attach."""
         self._sim.collision_resolve = "hardsphere"
+        if self._link.heartbeat is not None:
+            self._sim._heartbeat = self._link.previous_heartbeat
         self._handler.detach()
         _ATTACHED.pop(ctypes.addressof(self._sim), None)
 
 
 def load_spins(filename, sim):
-    """The spins saved by ``Attachment.save(filename)`` for the snapshot ``sim`` was loaded from
-    (matched by time and N), as an (N, 3) array for ``attach(..., spins=...)``."""
+    """The spins saved by ``Attachment.save(filename)``, or beside REBOUND's periodic archive
+    ``filename``, for the snapshot ``sim`` was loaded from (matched by time and N), as an (N, 3)
+    array for ``attach(..., spins=...)``."""
     path = filename + ".spins"
     if not os.path.exists(path):
-        raise ValueError(f"filename: no spin file {path!r} (save with Attachment.save)")
+        raise ValueError(f"filename: no spin file {path!r} (save with Attachment.save, or attach "
+                         "before sim.save_to_file(filename, interval=...))")
     found = None
     with open(path, encoding="utf-8") as f:
         for line in f:
@@ -244,15 +286,54 @@ def load_spins(filename, sim):
     return np.array(found["spins"], dtype=float).reshape(sim.N, 3)
 
 
+def _spins(spins, n):
+    """An (N, 3) float array of spins from an array or one number for all."""
+    try:
+        w = np.asarray(spins, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"spins: expected an ({n}, 3) array or a number (got {type(spins).__name__})") from None
+    if w.ndim == 0:
+        w = np.full((n, 3), float(w))
+    if w.shape != (n, 3):
+        raise ValueError(f"spins: expected shape ({n}, 3) (got {w.shape})")
+    if not np.all(np.isfinite(w)):
+        raise ValueError("spins: every value must be finite")
+    return np.ascontiguousarray(w)
+
+
+def _time_unit(sim, time_unit, omega):
+    """The code time unit in seconds: ``time_unit``, or one orbit with ``omega``; ``sim.OMEGA``,
+    when set, must be Ω in code units."""
+    if isinstance(time_unit, str) and time_unit.strip() == "orbit":
+        if omega is None:
+            raise ValueError("time_unit: 'orbit' needs omega=, the orbital frequency Ω in 1/s "
+                             "(one orbit is 2π/Ω seconds)")
+        seconds = orbit(omega)
+    else:
+        seconds = unit("time_unit", time_unit)
+    if omega is not None:
+        w = 2 * np.pi / orbit(omega)  # checked
+        if sim.OMEGA != 0 and abs(sim.OMEGA / seconds - w) > 1e-9 * w:
+            raise ValueError(
+                f"omega: sim.OMEGA = {sim.OMEGA!r} per code time unit is {sim.OMEGA / seconds:.6g} 1/s "
+                f"with time_unit = {seconds:.6g} s, not omega = {w:.6g} 1/s (a time unit of one orbit "
+                "needs sim.OMEGA = 2π)")
+    return seconds
+
+
 def attach(sim, scene, *, length_unit, time_unit, mass_unit, density="particles",
-           sticking="merge", track_spins=True, accuracy="precise", spins=None):
+           sticking="merge", track_spins=True, accuracy="precise", spins=None, omega=None,
+           cache_size=CACHE_SIZE):
     """Sets ``sim.collision_resolve`` to rime's handler for ``scene``; returns the ``Attachment``.
 
     ``length_unit``, ``time_unit``, ``mass_unit``: one code unit in SI (a number) or as a string
-    (``"cm"``, ``"min"``, ``"g"``, ``"1 AU"``). ``density``: ``"particles"`` or ``"scene"``;
-    ``sticking``: ``"merge"``, ``"stay"`` or ``"merge_if_slow"`` (see the module documentation);
-    ``accuracy``: the level of ε_N and ε_T (default ``"precise"``); ``spins``: initial spins, an
-    (N, 3) array [rad per code time].
+    (``"cm"``, ``"min"``, ``"g"``, ``"1 AU"``); ``time_unit="orbit"`` with ``omega`` (Ω [1/s]) is
+    2π/Ω seconds (``sim.OMEGA``, when set, must then be 2π). ``density``: ``"particles"`` or
+    ``"scene"``; ``sticking``: ``"merge"``, ``"stay"`` or ``"merge_if_slow"`` (see the module
+    documentation); ``accuracy``: the level of ε_N and ε_T (default ``"precise"``); ``spins``:
+    initial spins, an (N, 3) array [rad per code time] or one number for all (required past
+    t = 0: ``load_spins(filename, sim)`` for a reloaded simulation, 0 to start from rest);
+    ``cache_size``: at most this many pairs' contact constants are kept.
 
     >>> import rebound, rime_grains as rime
     >>> sim = rebound.Simulation()
@@ -272,36 +353,37 @@ def attach(sim, scene, *, length_unit, time_unit, mass_unit, density="particles"
         raise ValueError(f"sim: expected a rebound.Simulation (got {type(sim).__name__})")
     if not isinstance(scene, _native.Scene):
         raise ValueError(f"scene: expected a rime_grains.Scene (got {type(scene).__name__})")
-    units = {f: unit(f, v) for f, v in
-             (("length_unit", length_unit), ("time_unit", time_unit), ("mass_unit", mass_unit))}
+    units = {"length_unit": unit("length_unit", length_unit),
+             "time_unit": _time_unit(sim, time_unit, omega),
+             "mass_unit": unit("mass_unit", mass_unit)}
     if not isinstance(track_spins, bool):
         raise ValueError(f"track_spins: expected True or False (got {track_spins!r})")
+    if not isinstance(cache_size, int) or isinstance(cache_size, bool) or cache_size < 2:
+        raise ValueError(f"cache_size: expected a whole number of pairs >= 2 (got {cache_size!r})")
+    address = ctypes.addressof(sim)
+    previous = _ATTACHED.get(address)
     if spins is not None:
         if not track_spins:
             raise ValueError("spins: given with track_spins=False")
-        spins = np.asarray(spins, dtype=float)
-        if spins.shape != (sim.N, 3):
-            raise ValueError(f"spins: expected shape ({sim.N}, 3) (got {spins.shape})")
-        if not np.all(np.isfinite(spins)):
-            raise ValueError("spins: every value must be finite")
-    address = ctypes.addressof(sim)
-    previous = _ATTACHED.get(address)
-    if track_spins:
-        if sim.extras:
-            raise ValueError(
-                "track_spins: this simulation has an extension attached (sim.extras is set, e.g. "
-                "REBOUNDx), which uses the particles' ap pointers that rime's spins need; attach "
-                "with track_spins=False (spins are then 0 and not updated)")
-        for k in range(sim.N):
-            ap = sim.particles[k].ap
-            if ap and not (previous is not None and previous.owns(ap)):
-                raise ValueError(
-                    f"track_spins: particle {k} has an ap pointer rime did not set (REBOUNDx or user "
-                    "data); attach with track_spins=False or clear it")
+        spins = _spins(spins, sim.N)
+    elif track_spins and previous is None and sim.t != 0:
+        raise ValueError(
+            f"spins: this simulation is at t = {sim.t!r}, not 0, and REBOUND keeps no spins: if it "
+            "was loaded from a file, pass spins=rime_grains.rebound.load_spins(filename, sim) (saved "
+            "by Attachment.save or beside the periodic archive); spins=0 starts them from rest")
+    # The heartbeat before attach: kept (and called after rime's), unless it is an earlier rime one.
+    from rebound.simulation import AFF
+
+    current = ctypes.cast(sim._heartbeat, ctypes.c_void_p).value or 0
+    if previous is not None and previous.heartbeat is not None and current == previous.handler.heartbeat_address:
+        before = previous.previous_heartbeat
+    else:
+        before = AFF(current)
     handler = _native._attach(address, _layout(rebound), scene, units["length_unit"],
                               units["time_unit"], units["mass_unit"], density, sticking,
-                              track_spins, accuracy)
-    link = _Link(handler)
+                              track_spins, accuracy, cache_size,
+                              ctypes.cast(before, ctypes.c_void_p).value or 0)
+    link = _Link(handler, before)
     g = scene.get("grains.density")
     description = (
         f"eps_N and eps_T from the scene with each pair's own radii and "
@@ -309,12 +391,22 @@ def attach(sim, scene, *, length_unit, time_unit, mass_unit, density="particles"
            else f"the scene's density {g:g} kg/m3 (impulses use the particles' masses)")
         + f"; sticking={sticking!r}, accuracy={accuracy!r}, units: {units['length_unit']:g} m, "
         f"{units['time_unit']:g} s, {units['mass_unit']:g} kg; spins "
-        + ("tracked through ap" if track_spins else "not tracked (0)"))
+        + ("tracked (rime's own table)" if track_spins else "not tracked (0)"))
     attachment = Attachment(sim, link, track_spins, description)
     if track_spins:
-        if spins is None and previous is not None:
-            spins = attachment.spins  # the previous attachment's, read through ap
+        if spins is None and previous is not None and previous.handler is not None:
+            try:
+                spins = _spins(previous.handler.spins(), sim.N)  # the previous attachment's
+            except ValueError:
+                spins = None
         attachment.track_spins(spins if spins is not None else np.zeros((sim.N, 3)))
+        # Spins beside REBOUND's periodic archive, then the earlier heartbeat.
+        link.heartbeat = AFF(handler.heartbeat_address)
+        sim._heartbeat = link.heartbeat
+    elif previous is not None and previous.heartbeat is not None:
+        sim._heartbeat = before
     sim.collision_resolve = handler.function_address
+    if previous is not None:
+        previous.handler.detach()
     _ATTACHED[address] = link
     return attachment

@@ -664,6 +664,8 @@ fn bench_batch(
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyScene>()?;
+    // The crate's version: the wheel's (pyproject.toml and the workspace agree, a test checks it).
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(eps_n, m)?)?;
     m.add_function(wrap_pyfunction!(ring::ring_equilibrium, m)?)?;
     m.add_function(wrap_pyfunction!(eps_t, m)?)?;

@@ -5,9 +5,15 @@
 //! `sim.collision_resolve` to [`collision_resolve`]. REBOUND calls it with the simulation and a
 //! `struct reb_collision` by value; it applies ε_N (Eq. (4)–(17)), ε_T (Eq. (26)) and the spin change
 //! of one impulse at the contact point (Eq. (1)–(2)) through the core's kinematics, or merges the
-//! grains (mass, volume, momentum and angular momentum kept). Contact constants are cached per
-//! pair of (radius, mass) behind a read–write lock, so the handler is safe when REBOUND resolves
-//! collisions from several threads.
+//! grains through the core's [`rime_core::merge`]. The physics lives in the core; this file maps
+//! REBOUND's memory to it.
+//!
+//! Spins live in the handler's own table, one entry per particle index, never in `ap` (which
+//! REBOUNDx owns and frees). The table follows REBOUND's particle array: a merge removes p2's entry
+//! as REBOUND removes p2 (shifting the ones after it), particles added at the end get spin 0, and a
+//! removal the handler did not make (N falls) stops the integration with a message rather than
+//! giving the spins to the wrong grains. The contact constants of a pair of (radius, mass) are
+//! cached in a bounded two-generation cache.
 
 // Unsafe is needed here and only here: REBOUND hands the handler raw pointers to its simulation
 // and particles (a C callback). Every access goes through the small helpers below, whose offsets
@@ -18,9 +24,11 @@ use crate::{core_error, value_error};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rime_core::kinematics::{GrainState, Vector3, collide};
-use rime_core::{Accuracy, Contact, Scene};
+use rime_core::merge::{Body, merge};
+use rime_core::{Accuracy, Contact, Grains, Scene};
 use std::collections::HashMap;
-use std::ffi::{c_int, c_void};
+use std::ffi::{CStr, c_char, c_int, c_void};
+use std::io::Write;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, RwLock};
 
@@ -42,15 +50,11 @@ pub struct RebCollision {
     pub ri: usize,
 }
 
-/// `REB_COLLISION_RESOLVE_OUTCOME`: keep both, remove p1, remove p2.
+/// `REB_COLLISION_RESOLVE_OUTCOME`: keep both, remove p2.
 const KEEP_BOTH: c_int = 0;
-const REMOVE_P1: c_int = 1;
 const REMOVE_P2: c_int = 2;
 /// `REB_STATUS_GENERIC_ERROR`: stops `sim.integrate`, which raises `rebound.GenericError`.
 const STATUS_GENERIC_ERROR: c_int = 1;
-/// Solid spheres: I = 2/5 m r².
-const INERTIA_FACTOR: f64 = 0.4;
-
 /// Byte offsets into `struct reb_simulation` and `struct reb_particle`.
 #[derive(Clone, Copy, Debug)]
 struct Layout {
@@ -58,12 +62,67 @@ struct Layout {
     n: usize,
     status: usize,
     minimum_collision_velocity: usize,
+    t: usize,
+    dt: usize,
+    steps_done: usize,
+    walltime: usize,
+    archive_filename: usize,
+    archive_interval: usize,
+    archive_walltime: usize,
+    archive_step: usize,
+    archive_next: usize,
+    archive_next_step: usize,
     particle_size: usize,
     x: usize,
     vx: usize,
     m: usize,
     r: usize,
-    ap: usize,
+}
+
+/// Contact constants of recent pairs: two generations, each at most half the capacity. A lookup
+/// checks the young one, then the old one (moving a hit back to the young); when the young one is
+/// full it becomes the old one and the oldest generation is dropped. Memory stays bounded and the
+/// pairs in use stay cached (a least-recently-used cache in two steps).
+struct PairCache {
+    young: HashMap<[u64; 4], Pair>,
+    old: HashMap<[u64; 4], Pair>,
+    capacity: usize,
+    hits: u64,
+    misses: u64,
+}
+
+impl PairCache {
+    fn new(capacity: usize) -> PairCache {
+        PairCache {
+            young: HashMap::new(),
+            old: HashMap::new(),
+            capacity,
+            hits: 0,
+            misses: 0,
+        }
+    }
+
+    fn get(&mut self, key: &[u64; 4]) -> Option<Pair> {
+        if let Some(p) = self.young.get(key) {
+            self.hits += 1;
+            return Some(*p);
+        }
+        let p = self.old.remove(key)?;
+        self.hits += 1;
+        self.insert(*key, p);
+        Some(p)
+    }
+
+    fn insert(&mut self, key: [u64; 4], pair: Pair) {
+        if self.young.len() >= self.capacity.div_ceil(2) {
+            self.old = std::mem::take(&mut self.young);
+        }
+        self.young.insert(key, pair);
+    }
+
+    fn len(&self) -> usize {
+        self.young.len() + self.old.len()
+    }
 }
 
 #[derive(Clone, Copy, PartialEq, Debug)]
@@ -99,7 +158,12 @@ struct State {
     density: Density,
     sticking: Sticking,
     track_spins: bool,
-    cache: RwLock<HashMap<[u64; 4], Pair>>,
+    /// The spin of particle k \[rad per code time\], for k below the length; particles added at
+    /// the end since have spin 0.
+    spins: Mutex<Vec<[f64; 3]>>,
+    cache: Mutex<PairCache>,
+    /// The heartbeat that was set before the handler's own (called after it), as an address.
+    previous_heartbeat: usize,
     error: Mutex<Option<String>>,
     bounces: AtomicU64,
     merges: AtomicU64,
@@ -116,7 +180,7 @@ struct Particle {
     v: [f64; 3],
     m: f64,
     r: f64,
-    spin: *mut f64,
+    index: usize,
 }
 
 impl State {
@@ -142,33 +206,67 @@ impl State {
         unsafe {
             let base = array.add(k * l.particle_size);
             let d = |off: usize| base.add(off) as *const f64;
-            let spin = if self.track_spins {
-                *(base.add(l.ap) as *const *mut f64)
-            } else {
-                std::ptr::null_mut()
-            };
             Some(Particle {
                 base,
                 x: [*d(l.x), *d(l.x + 8), *d(l.x + 16)],
                 v: [*d(l.vx), *d(l.vx + 8), *d(l.vx + 16)],
                 m: *d(l.m),
                 r: *d(l.r),
-                spin,
+                index: k,
             })
         }
     }
 
-    fn spin(p: &Particle) -> Vector3<f64> {
-        if p.spin.is_null() {
-            return Vector3::zeros();
-        }
-        // SAFETY: a non-null `ap` of a tracked particle points at 3 doubles of the attachment's
-        // spin array (set by `Attachment.track_spins`, kept alive by the attachment).
-        unsafe { Vector3::new(*p.spin, *p.spin.add(1), *p.spin.add(2)) }
+    /// The number of particles of the simulation at `sim`.
+    ///
+    /// # Safety
+    /// As [`State::particle`].
+    unsafe fn count(&self, sim: *mut u8) -> usize {
+        // SAFETY: the offset of N comes from rebound's ctypes class of the simulation.
+        unsafe { *(sim.add(self.layout.n) as *const usize) }
     }
 
-    /// Writes velocity, mass, radius, position and spin back into the particle.
-    fn store(&self, p: &Particle, x: [f64; 3], v: [f64; 3], m: f64, r: f64, w: Vector3<f64>) {
+    /// The spin table checked against the simulation's N: grown with zeros for particles added at
+    /// the end; an error when N fell (particles removed outside the handler).
+    ///
+    /// # Safety
+    /// As [`State::particle`].
+    unsafe fn spins_for(
+        &self,
+        sim: *mut u8,
+    ) -> Result<std::sync::MutexGuard<'_, Vec<[f64; 3]>>, String> {
+        // SAFETY: the caller's contract.
+        let n = unsafe { self.count(sim) };
+        let mut spins = self
+            .spins
+            .lock()
+            .map_err(|_| "the spin table is unusable (a thread panicked)".to_string())?;
+        if n < spins.len() {
+            return Err(format!(
+                "spins: the simulation has {n} particles, the spin table {}: particles were \
+                 removed outside rime's handler (sim.remove, an open boundary), so the spins no \
+                 longer match the particles; give them again with Attachment.track_spins(spins) \
+                 after removing",
+                spins.len()
+            ));
+        }
+        spins.resize(n, [0.0; 3]);
+        Ok(spins)
+    }
+
+    /// Writes velocity, mass, radius and position back into the particle, and its spin into the
+    /// table (when spins are tracked).
+    #[allow(clippy::too_many_arguments)]
+    fn store(
+        &self,
+        spins: Option<&mut Vec<[f64; 3]>>,
+        p: &Particle,
+        x: [f64; 3],
+        v: [f64; 3],
+        m: f64,
+        r: f64,
+        w: Vector3<f64>,
+    ) {
         let l = &self.layout;
         // SAFETY: `p.base` was read by `particle` for an index below N during this call; REBOUND
         // does not move the array while a collision is being resolved.
@@ -180,11 +278,72 @@ impl State {
             }
             *d(l.m) = m;
             *d(l.r) = r;
-            if !p.spin.is_null() {
-                for k in 0..3 {
-                    *p.spin.add(k) = w[k];
-                }
+        }
+        if let Some(slot) = spins.and_then(|s| s.get_mut(p.index)) {
+            *slot = [w[0], w[1], w[2]];
+        }
+    }
+
+    /// Reads a field of the simulation.
+    ///
+    /// # Safety
+    /// `sim` as in [`State::particle`]; `offset` one of the layout's simulation offsets, of a
+    /// field of type `T`.
+    unsafe fn field<T: Copy>(sim: *mut u8, offset: usize) -> T {
+        // SAFETY: see the function's contract.
+        unsafe { *(sim.add(offset) as *const T) }
+    }
+
+    /// The spins of every particle in order, as one JSON line of the spin file: `{"t", "N",
+    /// "spins"}`.
+    ///
+    /// # Safety
+    /// As [`State::particle`].
+    unsafe fn spin_record(&self, sim: *mut u8) -> String {
+        // SAFETY: the caller's contract.
+        let (t, n) = unsafe { (Self::field::<f64>(sim, self.layout.t), self.count(sim)) };
+        // SAFETY: the caller's contract.
+        let spins = match unsafe { self.spins_for(sim) } {
+            Ok(s) if self.track_spins => s.clone(),
+            _ => vec![[0.0; 3]; n],
+        };
+        serde_json::json!({"t": t, "N": n, "spins": spins}).to_string()
+    }
+
+    /// Whether REBOUND's periodic archive writes a snapshot before the next step: the test of
+    /// `reb_simulationarchive_heartbeat` (REBOUND 5.2.2), which runs after this heartbeat and
+    /// before the next step, so the snapshot and the spins are of one state.
+    ///
+    /// # Safety
+    /// As [`State::particle`].
+    unsafe fn archive_due(&self, sim: *mut u8) -> Option<String> {
+        let l = &self.layout;
+        // SAFETY: offsets from rebound's ctypes class of the simulation, of these types.
+        unsafe {
+            let name = Self::field::<*const c_char>(sim, l.archive_filename);
+            if name.is_null() {
+                return None;
             }
+            let interval = Self::field::<f64>(sim, l.archive_interval);
+            let step = Self::field::<u64>(sim, l.archive_step);
+            let walltime = Self::field::<f64>(sim, l.archive_walltime);
+            let next = Self::field::<f64>(sim, l.archive_next);
+            let due = if interval != 0.0 {
+                let sign = if Self::field::<f64>(sim, l.dt) > 0.0 {
+                    1.0
+                } else {
+                    -1.0
+                };
+                sign * next <= sign * Self::field::<f64>(sim, l.t)
+            } else if step != 0 {
+                Self::field::<u64>(sim, l.archive_next_step)
+                    <= Self::field::<u64>(sim, l.steps_done)
+            } else if walltime != 0.0 {
+                next <= Self::field::<f64>(sim, l.walltime)
+            } else {
+                false
+            };
+            due.then(|| CStr::from_ptr(name).to_string_lossy().into_owned())
         }
     }
 
@@ -209,23 +368,23 @@ impl State {
             Density::Particles => [a.0.to_bits(), a.1.to_bits(), b.0.to_bits(), b.1.to_bits()],
             Density::Scene => [a.0.to_bits(), 0, b.0.to_bits(), 0],
         };
-        if let Ok(cache) = self.cache.read()
+        if let Ok(mut cache) = self.cache.lock()
             && let Some(p) = cache.get(&key)
         {
-            return Ok(*p);
+            return Ok(p);
         }
         let mut scene = self.scene;
-        scene.grains.radius_1 = r1 * self.length_unit;
-        scene.grains.radius_2 = r2 * self.length_unit;
-        if self.density == Density::Particles {
-            // The model depends on the masses only through m_eff: the density that gives the
-            // particles' m_eff with these radii (their own density when both share one).
-            let volume = |r: f64| 4.0 / 3.0 * std::f64::consts::PI * r * r * r;
-            let (v1, v2) = (volume(scene.grains.radius_1), volume(scene.grains.radius_2));
-            let (ms1, ms2) = (m1 * self.mass_unit, m2 * self.mass_unit);
-            let m_eff = ms1 * ms2 / (ms1 + ms2);
-            scene.grains.density = m_eff * (v1 + v2) / (v1 * v2);
-        }
+        let (r1, r2) = (r1 * self.length_unit, r2 * self.length_unit);
+        scene.grains = match self.density {
+            Density::Particles => {
+                Grains::from_masses(r1, m1 * self.mass_unit, r2, m2 * self.mass_unit)?
+            }
+            Density::Scene => Grains {
+                radius_1: r1,
+                radius_2: r2,
+                ..scene.grains
+            },
+        };
         let contact = Contact::new(&scene)?;
         let stick_speed = if self.sticking == Sticking::MergeIfSlow {
             rime_core::explorer::frame::stick_threshold(&contact, self.accuracy)?
@@ -237,7 +396,8 @@ impl State {
             contact,
             stick_speed,
         };
-        if let Ok(mut cache) = self.cache.write() {
+        if let Ok(mut cache) = self.cache.lock() {
+            cache.misses += 1;
             cache.insert(key, pair);
         }
         Ok(pair)
@@ -270,18 +430,19 @@ impl State {
             return Ok(KEEP_BOTH);
         }
         let n = d / dist; // from p2's centre to p1's
-        let (w1, w2) = (Self::spin(&p1), Self::spin(&p2));
-        // REBOUND finds the pair overlapping at the end of a step. The impulse acts at the contact
-        // point, which splits the line of centres in the ratio of the radii: the lever arms are
-        // a_i d/(a_i + a_j) (the radii when touching), so angular momentum (orbital + spin) is kept
-        // exactly; the moments of inertia stay 2/5 m a².
+        let mut spins = if self.track_spins {
+            // SAFETY: as above.
+            Some(unsafe { self.spins_for(sim) }?)
+        } else {
+            None
+        };
+        let spin = |k: usize| Vector3::from(spins.as_ref().map_or([0.0; 3], |s| s[k]));
+        let (w1, w2) = (spin(p1.index), spin(p2.index));
+        // REBOUND finds the pair overlapping at the end of a step: the impulse acts at the contact
+        // point, a_i d/(a_1 + a_2) from each centre (docs/physics.md#python-rebound).
         let scale = dist / (p1.r + p2.r);
-        let grain = |p: &Particle, v, w| GrainState {
-            mass: p.m,
-            radius: p.r * scale,
-            inertia_factor: INERTIA_FACTOR / (scale * scale),
-            velocity: v,
-            spin: w,
+        let grain = |p: &Particle, v, w| {
+            GrainState::solid_sphere(p.m, p.r, v, w).with_lever_arm(p.r * scale)
         };
         let mut gi = grain(&p1, v1, w1);
         let mut gj = grain(&p2, v2, w2);
@@ -318,28 +479,21 @@ impl State {
                 Sticking::MergeIfSlow => gt_si <= pair.stick_speed,
             };
             if merge {
+                // p1 takes the merged grain; p2 is removed (REBOUND shifts the particles after it).
+                let (dx, dv) = ([-gb[0], -gb[1], -gb[2]], [-gb[3], -gb[4], -gb[5]]);
+                self.merge(spins.as_deref_mut(), &p1, &p2, dx, dv, w1, w2)
+                    .map_err(field)?;
                 self.merges.fetch_add(1, Ordering::Relaxed);
-                // Keep the grain that tracks a spin (p1 unless only p2 does).
-                return Ok(if p1.spin.is_null() && !p2.spin.is_null() {
-                    self.merge(&p2, &p1, [gb[0], gb[1], gb[2]], [gb[3], gb[4], gb[5]]);
-                    REMOVE_P1
-                } else {
-                    self.merge(&p1, &p2, [-gb[0], -gb[1], -gb[2]], [-gb[3], -gb[4], -gb[5]]);
-                    REMOVE_P2
-                });
+                return Ok(REMOVE_P2);
             }
             self.stays.fetch_add(1, Ordering::Relaxed);
         } else {
             self.bounces.fetch_add(1, Ordering::Relaxed);
         }
-        // REBOUND's floor on the separation speed: the normal speed after is at least
-        // sim.minimum_collision_velocity (code units), so resting grains do not sink into each other.
+        // REBOUND's floor on the separation speed (sim.minimum_collision_velocity, code units).
         // SAFETY: offset from rebound's ctypes class of struct reb_simulation.
         let v_min = unsafe { *(sim.add(self.layout.minimum_collision_velocity) as *const f64) };
-        let mut eps = eps_n;
-        if v_min > 0.0 && g_n < 0.0 {
-            eps = eps.max((v_min / -g_n).min(1.0));
-        }
+        let eps = rime_core::kinematics::restitution_with_floor(eps_n, g_n, v_min);
         collide(&mut gi, &mut gj, &n, eps, eps_t).map_err(field)?;
         let v1_new = [
             gi.velocity[0] - gb[3],
@@ -347,37 +501,53 @@ impl State {
             gi.velocity[2] - gb[5],
         ];
         let v2_new = [gj.velocity[0], gj.velocity[1], gj.velocity[2]];
-        self.store(&p1, p1.x, v1_new, p1.m, p1.r, gi.spin);
-        self.store(&p2, p2.x, v2_new, p2.m, p2.r, gj.spin);
+        self.store(spins.as_deref_mut(), &p1, p1.x, v1_new, p1.m, p1.r, gi.spin);
+        self.store(spins.as_deref_mut(), &p2, p2.x, v2_new, p2.m, p2.r, gj.spin);
         Ok(KEEP_BOTH)
     }
 
-    /// Merges `other` into `keep`; `(dx, dv)` moves `other` into `keep`'s ghost frame. Keeps mass,
-    /// volume, momentum and angular momentum (orbital about the centre of mass plus spins).
-    fn merge(&self, keep: &Particle, other: &Particle, dx: [f64; 3], dv: [f64; 3]) {
-        let (m1, m2) = (keep.m, other.m);
-        let mass = m1 + m2;
-        let x1 = Vector3::from(keep.x);
-        let v1 = Vector3::from(keep.v);
-        let x2 = Vector3::from(other.x) + Vector3::from(dx);
-        let v2 = Vector3::from(other.v) + Vector3::from(dv);
-        let com = (x1 * m1 + x2 * m2) / mass;
-        let vcom = (v1 * m1 + v2 * m2) / mass;
-        let spin_l = |p: &Particle| Self::spin(p) * (INERTIA_FACTOR * p.m * p.r * p.r);
-        let l = (x1 - com).cross(&(v1 - vcom)) * m1
-            + (x2 - com).cross(&(v2 - vcom)) * m2
-            + spin_l(keep)
-            + spin_l(other);
-        let radius = (keep.r.powi(3) + other.r.powi(3)).cbrt();
-        let w = l / (INERTIA_FACTOR * mass * radius * radius);
+    /// Merges `other` into `keep` through the core ([`rime_core::merge`]: mass, volume, momentum,
+    /// angular momentum kept); `(dx, dv)` moves `other` into `keep`'s ghost frame.
+    #[allow(clippy::too_many_arguments)]
+    fn merge(
+        &self,
+        mut spins: Option<&mut Vec<[f64; 3]>>,
+        keep: &Particle,
+        other: &Particle,
+        dx: [f64; 3],
+        dv: [f64; 3],
+        w_keep: Vector3<f64>,
+        w_other: Vector3<f64>,
+    ) -> rime_core::Result<()> {
+        let body = |p: &Particle, dx: [f64; 3], dv: [f64; 3], w| {
+            Body::solid_sphere(
+                p.m,
+                p.r,
+                Vector3::from(p.x) + Vector3::from(dx),
+                Vector3::from(p.v) + Vector3::from(dv),
+                w,
+            )
+        };
+        let one = merge(
+            &body(keep, [0.0; 3], [0.0; 3], w_keep),
+            &body(other, dx, dv, w_other),
+        )?;
         self.store(
+            spins.as_deref_mut(),
             keep,
-            [com[0], com[1], com[2]],
-            [vcom[0], vcom[1], vcom[2]],
-            mass,
-            radius,
-            w,
+            one.position.into(),
+            one.velocity.into(),
+            one.mass,
+            one.radius,
+            one.spin,
         );
+        // REBOUND removes `other` after this returns, shifting the particles after it down.
+        if let Some(s) = spins
+            && other.index < s.len()
+        {
+            s.remove(other.index);
+        }
+        Ok(())
     }
 }
 
@@ -401,6 +571,52 @@ extern "C" fn collision_resolve(sim: *mut c_void, c: RebCollision) -> c_int {
         }
     });
     outcome.unwrap_or(KEEP_BOTH)
+}
+
+/// REBOUND's `heartbeat` (every step): when REBOUND's periodic archive (`sim.save_to_file(file,
+/// interval=…)`, `step=`, `walltime=`) is about to write a snapshot, appends the spins of that state
+/// to `file + ".spins"`; then calls the heartbeat that was set before attach.
+extern "C" fn heartbeat(sim: *mut c_void) {
+    let state = std::panic::catch_unwind(|| {
+        let registry = REGISTRY.read().ok()?;
+        let (_, state) = registry.iter().find(|(a, _)| *a == sim as usize)?;
+        Some(Arc::clone(state))
+    })
+    .ok()
+    .flatten();
+    let Some(state) = state else {
+        return;
+    };
+    // The registry's lock is released: the previous heartbeat may attach or detach.
+    let _ = std::panic::catch_unwind(|| {
+        // SAFETY: `sim` is the live simulation REBOUND passed to its heartbeat.
+        if state.track_spins
+            && let Some(file) = unsafe { state.archive_due(sim as *mut u8) }
+        {
+            let path = format!("{file}.spins");
+            // SAFETY: as above.
+            let line = unsafe { state.spin_record(sim as *mut u8) } + "\n";
+            let written = std::fs::OpenOptions::new()
+                .create(true)
+                .append(true)
+                .open(&path)
+                .and_then(|mut f| f.write_all(line.as_bytes()));
+            if let Err(e) = written {
+                state.fail(
+                    sim as *mut u8,
+                    format!("spins of the periodic archive: cannot write {path}: {e}"),
+                );
+            }
+        }
+    });
+    if state.previous_heartbeat != 0 {
+        // SAFETY: the address was REBOUND's `heartbeat` pointer before attach (a C function or a
+        // ctypes thunk that the simulation's Python object keeps alive), of this signature.
+        let previous: extern "C" fn(*mut c_void) = unsafe {
+            std::mem::transmute::<usize, extern "C" fn(*mut c_void)>(state.previous_heartbeat)
+        };
+        previous(sim);
+    }
 }
 
 /// The handler attached to one simulation (returned by `_attach`; `rime_grains.rebound.Attachment`
@@ -437,7 +653,65 @@ impl Handler {
     /// Number of (radius, mass) pairs whose contact constants are cached.
     #[getter]
     fn cached_pairs(&self) -> usize {
-        self.state.cache.read().map(|c| c.len()).unwrap_or(0)
+        self.state.cache.lock().map(|c| c.len()).unwrap_or(0)
+    }
+
+    /// The contact cache: entries, capacity, hits and misses (pairs computed).
+    fn cache_info<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        if let Ok(c) = self.state.cache.lock() {
+            d.set_item("entries", c.len())?;
+            d.set_item("capacity", c.capacity)?;
+            d.set_item("hits", c.hits)?;
+            d.set_item("misses", c.misses)?;
+        }
+        Ok(d)
+    }
+
+    /// The address of the C function to assign to `sim.heartbeat` (spins beside REBOUND's
+    /// periodic archive, then the previous heartbeat).
+    #[getter]
+    fn heartbeat_address(&self) -> usize {
+        heartbeat as *const () as usize
+    }
+
+    /// Sets the spins of the particles in order, an (N, 3) list.
+    fn set_spins(&self, spins: Vec<[f64; 3]>) -> PyResult<()> {
+        // SAFETY: the attachment holds the simulation's Python object, so `sim` is alive.
+        let n = unsafe { self.state.count(self.sim as *mut u8) };
+        if spins.len() != n {
+            return Err(value_error(
+                "spins",
+                format!("expected shape ({n}, 3) (got ({}, 3))", spins.len()),
+            ));
+        }
+        if let Some(bad) = spins.iter().flatten().find(|w| !w.is_finite()) {
+            return Err(value_error(
+                "spins",
+                format!("every value must be finite (got {bad})"),
+            ));
+        }
+        let mut table =
+            self.state.spins.lock().map_err(|_| {
+                value_error("spins", "the spin table is unusable (a thread panicked)")
+            })?;
+        *table = spins;
+        Ok(())
+    }
+
+    /// The particles' spins in order, an (N, 3) list (0 for particles added since the last
+    /// collision); an error when particles were removed outside the handler.
+    fn spins(&self) -> PyResult<Vec<[f64; 3]>> {
+        // SAFETY: the attachment holds the simulation's Python object, so `sim` is alive.
+        let table = unsafe { self.state.spins_for(self.sim as *mut u8) }
+            .map_err(|e| value_error("spins", e.trim_start_matches("spins: ")))?;
+        Ok(table.clone())
+    }
+
+    /// The spin file's line for the simulation's present state (`Attachment.save`).
+    fn spin_record(&self) -> String {
+        // SAFETY: the attachment holds the simulation's Python object, so `sim` is alive.
+        unsafe { self.state.spin_record(self.sim as *mut u8) }
     }
 
     /// Removes this handler's registration (the simulation must not call it afterwards).
@@ -461,7 +735,7 @@ fn positive(field: &str, v: f64) -> PyResult<f64> {
 
 /// Registers the handler for the simulation at `sim` (see `rime_grains.rebound.attach`).
 #[pyfunction]
-#[pyo3(signature = (sim, layout, scene, length_unit, time_unit, mass_unit, density, sticking, track_spins, accuracy))]
+#[pyo3(signature = (sim, layout, scene, length_unit, time_unit, mass_unit, density, sticking, track_spins, accuracy, cache_size, previous_heartbeat))]
 #[allow(clippy::too_many_arguments)]
 // Long by design: checks every argument of the REBOUND handler at the Python boundary, one named
 // error each, before the C callback is registered.
@@ -476,7 +750,15 @@ fn _attach(
     sticking: &str,
     track_spins: bool,
     accuracy: &str,
+    cache_size: usize,
+    previous_heartbeat: usize,
 ) -> PyResult<Handler> {
+    if cache_size < 2 {
+        return Err(value_error(
+            "cache_size",
+            format!("must be at least 2 pairs (got {cache_size})"),
+        ));
+    }
     if sim == 0 {
         return Err(value_error("sim", "a null simulation"));
     }
@@ -491,19 +773,27 @@ fn _attach(
         n: get("N")?,
         status: get("status")?,
         minimum_collision_velocity: get("minimum_collision_velocity")?,
+        t: get("t")?,
+        dt: get("dt")?,
+        steps_done: get("steps_done")?,
+        walltime: get("walltime")?,
+        archive_filename: get("simulationarchive_filename")?,
+        archive_interval: get("simulationarchive_auto_interval")?,
+        archive_walltime: get("simulationarchive_auto_walltime")?,
+        archive_step: get("simulationarchive_auto_step")?,
+        archive_next: get("simulationarchive_next")?,
+        archive_next_step: get("simulationarchive_next_step")?,
         particle_size: get("particle_size")?,
         x: get("x")?,
         vx: get("vx")?,
         m: get("m")?,
         r: get("r")?,
-        ap: get("ap")?,
     };
     for (name, off, width) in [
         ("x", layout.x, 24),
         ("vx", layout.vx, 24),
         ("m", layout.m, 8),
         ("r", layout.r, 8),
-        ("ap", layout.ap, 8),
     ] {
         if off % 8 != 0 || off + width > layout.particle_size {
             return Err(value_error(
@@ -522,6 +812,16 @@ fn _attach(
             "minimum_collision_velocity",
             layout.minimum_collision_velocity,
         ),
+        ("t", layout.t),
+        ("dt", layout.dt),
+        ("steps_done", layout.steps_done),
+        ("walltime", layout.walltime),
+        ("simulationarchive_filename", layout.archive_filename),
+        ("simulationarchive_auto_interval", layout.archive_interval),
+        ("simulationarchive_auto_walltime", layout.archive_walltime),
+        ("simulationarchive_auto_step", layout.archive_step),
+        ("simulationarchive_next", layout.archive_next),
+        ("simulationarchive_next_step", layout.archive_next_step),
     ] {
         if off % 8 != 0 {
             return Err(value_error(
@@ -561,7 +861,13 @@ fn _attach(
         density,
         sticking,
         track_spins,
-        cache: RwLock::new(HashMap::new()),
+        spins: Mutex::new(Vec::new()),
+        cache: Mutex::new(PairCache::new(cache_size)),
+        previous_heartbeat: if previous_heartbeat == heartbeat as *const () as usize {
+            0 // never call itself
+        } else {
+            previous_heartbeat
+        },
         error: Mutex::new(None),
         bounces: AtomicU64::new(0),
         merges: AtomicU64::new(0),

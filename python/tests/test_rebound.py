@@ -114,13 +114,15 @@ def test_two_body_hits_reproduce_rime(name):
     assert att.counts()["bounces"] == 1 and att.error is None
 
 
-def head_on_eps(scene, mass, units=(1.0, 1.0, 1.0), speed=0.005, density="particles", radius=RADIUS):
-    L, T, M = (rime.rebound.unit(f, u) for f, u in zip(("length_unit", "time_unit", "mass_unit"), units))
+def head_on_eps(scene, mass, units=(1.0, 1.0, 1.0), speed=0.005, density="particles", radius=RADIUS,
+                omega=None):
+    L, T, M = (rime.rebound.orbit(omega) if u == "orbit" else rime.rebound.unit(f, u)
+               for f, u in zip(("length_unit", "time_unit", "mass_unit"), units))
     sim = pair_sim([-(radius + 1e-3) / L, 0, 0], [speed * T / L, 0, 0],
                    [(radius + 1e-3) / L, 0, 0], [-speed * T / L, 0, 0],
                    mass=mass / M, radius=radius / L, dt=1e-3 / T)
     att = rime.rebound.attach(sim, scene, length_unit=units[0], time_unit=units[1], mass_unit=units[2],
-                              density=density)
+                              density=density, omega=omega)
     before, after = step_to_collision(sim, att)
     return (after[1][1][0] - after[0][1][0]) / (before[0][1][0] - before[1][1][0]), sim, att
 
@@ -290,17 +292,16 @@ def test_reattaching_keeps_the_spins():
     assert np.array_equal(second.spins, spins) and np.array_equal(first.spins, spins)
 
 
-def test_particles_added_later_get_a_spin_slot_from_track_spins():
+def test_particles_added_later_get_a_spin_from_track_spins():
     sim = pair_sim([-0.021, 0, 0], [0.005, 0, 0], [0.021, 0, 0], [-0.005, 0, 0])
     spins = np.array([[1.0, 2.0, 3.0], [-1.0, 0.5, 0.25]])
     att = rime.rebound.attach(sim, rime.Scene(), length_unit=1, time_unit=1, mass_unit=1, spins=spins)
     sim.add(m=MASS, r=RADIUS, x=1.0)
-    assert not sim.particles[2].ap and np.array_equal(att.spins[2], [0, 0, 0])
-    att.track_spins()
-    assert sim.particles[2].ap and np.array_equal(att.spins[:2], spins)
+    assert np.array_equal(att.spins, [*spins, [0, 0, 0]])
+    att.track_spins([[1.0, 2.0, 3.0], [-1.0, 0.5, 0.25], [7.0, 8.0, 9.0]])
+    assert np.array_equal(att.spins[2], [7, 8, 9]) and not sim.particles[2].ap  # ap is not used
     with pytest.raises(ValueError, match="^spins: expected shape"):
         att.track_spins(np.zeros((2, 3)))
-
 
 def test_ring_patch_runs_and_spins_up():
     sim, att = ring()
@@ -351,16 +352,14 @@ def test_other_rebound_versions_are_refused(monkeypatch):
         rime.rebound.attach(rebound.Simulation(), rime.Scene(), length_unit=1, time_unit=1, mass_unit=1)
 
 
-def test_extension_using_ap_is_refused_with_a_clear_message():
+def test_issue_35_ap_set_by_someone_else_is_left_alone():
     sim = pair_sim([-0.021, 0, 0], [0.005, 0, 0], [0.021, 0, 0], [-0.005, 0, 0])
-    dummy = (ctypes.c_double * 3)()
+    dummy = (ctypes.c_double * 3)(1.0, 2.0, 3.0)
     sim.particles[0].ap = ctypes.addressof(dummy)
-    with pytest.raises(ValueError, match="^track_spins: particle 0 has an ap pointer"):
-        rime.rebound.attach(sim, rime.Scene(), length_unit=1, time_unit=1, mass_unit=1)
-    # Without spins it works beside such an extension (and leaves ap alone).
-    att = rime.rebound.attach(sim, rime.Scene(), length_unit=1, time_unit=1, mass_unit=1, track_spins=False)
+    att = rime.rebound.attach(sim, rime.Scene(), length_unit=1, time_unit=1, mass_unit=1)
     sim.integrate(1.0)
     assert att.counts()["bounces"] == 1 and sim.particles[0].ap == ctypes.addressof(dummy)
+    assert list(dummy) == [1.0, 2.0, 3.0]
     sim.particles[0].ap = None
 
 
@@ -388,3 +387,294 @@ def test_attach_bad_input_names_the_field(kwargs, field):
     args.update(kwargs)
     with pytest.raises(ValueError, match=f"^{field}"):
         rime.rebound.attach(sim, rime.Scene(), **args)
+
+
+# Issue 35: REBOUNDx beside the handler in either order. Run in a child process: a crash (the
+# segfault of spins kept in `ap`, which REBOUNDx frees) then fails the test instead of pytest.
+REBOUNDX_RUN = r"""
+import gc, json, math, sys
+import numpy as np
+import rebound, reboundx
+import rime_grains as rime
+
+order, A = sys.argv[1], float(sys.argv[2])
+radius, mass = 0.02, 900 * 4 / 3 * math.pi * 0.02**3
+sim = rebound.Simulation()
+sim.gravity, sim.integrator, sim.collision, sim.dt = "none", "leapfrog", "direct", 1e-3
+# A heavy source at the origin; the pair approaches along the y axis at y = 10 m, so the central
+# force A r^0 = A (gammacentral 0) pushes both grains by exactly A along +y and leaves their
+# relative velocity alone; a far grain spins and never collides.
+sim.add(m=1e20, r=1e-3)
+sim.add(m=mass, r=radius, y=10 - 0.021, vy=0.005)
+sim.add(m=mass, r=radius, y=10 + 0.021, vy=-0.005)
+sim.add(m=mass, r=radius, x=5.0, y=10.0)
+spins = np.array([[0.0, 0.0, 0.5], [0, 0, 0], [0, 0, 0], [1.0, 2.0, 3.0]])
+
+def extras():
+    rebx = reboundx.Extras(sim)
+    force = rebx.load_force("central_force")
+    rebx.add_force(force)
+    sim.particles[0].params["Acentral"] = A
+    sim.particles[0].params["gammacentral"] = 0.0
+    return rebx
+
+if order == "before":
+    rebx = extras() if A else None
+    att = rime.rebound.attach(sim, rime.Scene.preset("ice"), length_unit=1, time_unit=1, mass_unit=1, spins=spins)
+else:
+    att = rime.rebound.attach(sim, rime.Scene.preset("ice"), length_unit=1, time_unit=1, mass_unit=1, spins=spins)
+    rebx = extras() if A else None
+v_before = [sim.particles[k].vy for k in (1, 2)]
+sim.integrate(1.0)
+out = {
+    "eps": (sim.particles[2].vy - sim.particles[1].vy) / (v_before[0] - v_before[1]),
+    "com_vy": (sim.particles[1].vy + sim.particles[2].vy) / 2,
+    "far_vy": sim.particles[3].vy,
+    "spins": att.spins.tolist(),
+    "counts": att.counts(),
+    "error": att.error,
+    "param": sim.particles[0].params["Acentral"] if A else None,
+}
+del rebx, att, sim
+gc.collect()
+out["freed"] = True
+print(json.dumps(out))
+"""
+
+
+@pytest.mark.parametrize("order", ["before", "after"])
+def test_issue_35_reboundx_beside_the_handler_in_either_order(order, tmp_path):
+    import os
+    import subprocess
+    import sys
+
+    script = tmp_path / "rebx.py"
+    script.write_text(REBOUNDX_RUN)
+    accel = 1e-3
+
+    def run(a):
+        done = subprocess.run([sys.executable, str(script), order, repr(a)], capture_output=True,
+                              text=True, env=os.environ.copy(), timeout=120)
+        assert done.returncode == 0, f"exit {done.returncode} (a negative code is a signal): {done.stderr[-2000:]}"
+        return __import__("json").loads(done.stdout.strip().splitlines()[-1])
+
+    with_force, without = run(accel), run(0.0)
+    assert with_force["freed"] and with_force["error"] is None and with_force["param"] == accel
+    assert with_force["counts"]["bounces"] == 1
+    # rime's law: the relative velocity is the one of `rime eps` at 1 cm/s (the force adds none).
+    want = cli("eps", "--preset", "ice", "--g", "0.01")[0]["eps_n"]
+    assert with_force["eps"] == pytest.approx(want, rel=1e-12)
+    assert without["eps"] == pytest.approx(want, rel=1e-12)
+    # REBOUNDx's force: A t = 1e-3 m/s along +y on every grain after 1 s (the pair's centre of
+    # mass, the far grain up to the direction of its offset, 5 m at 10 m: cos = 2/√5).
+    assert with_force["com_vy"] - without["com_vy"] == pytest.approx(accel * 1.0, rel=1e-9)
+    assert with_force["far_vy"] - without["far_vy"] == pytest.approx(accel * 2 / math.sqrt(5), rel=1e-6)
+    # Spins kept: the far grain's and the source's, untouched by a head-on hit.
+    assert with_force["spins"][3] == [1.0, 2.0, 3.0] and with_force["spins"][0] == [0.0, 0.0, 0.5]
+
+
+def test_issue_35_spins_follow_a_merge_and_particles_added_later():
+    """The spin table follows REBOUND's array: a merge of particles 0 and 1 removes 1 (the ones
+    after it shift down), a particle added later starts at 0."""
+    sim, att = sticky_pair("merge", g_t=3e-6)
+    sim.add(m=MASS, r=RADIUS, x=5.0)
+    sim.add(m=MASS, r=RADIUS, x=10.0)
+    w = att.spins
+    assert np.array_equal(w[2:], np.zeros((2, 3)))
+    att.track_spins([w[0], w[1], [1.0, 2.0, 3.0], [4.0, 5.0, 6.0]])
+    p0, l0 = momenta(sim, att)
+    sim.integrate(50.0)
+    assert sim.N == 3 and att.counts()["merges"] == 1
+    assert np.array_equal(att.spins[1:], [[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]])
+    p1, l1 = momenta(sim, att)
+    assert np.linalg.norm(l1 - l0) <= 1e-12 * np.linalg.norm(l0)
+
+
+def test_issue_35_a_removal_behind_the_handlers_back_stops_with_a_message():
+    sim = pair_sim([-0.021, 0, 0], [0.005, 0, 0], [0.021, 0, 0], [-0.005, 0, 0])
+    sim.add(m=MASS, r=RADIUS, x=-1.0)
+    att = rime.rebound.attach(sim, rime.Scene.preset("ice"), length_unit=1, time_unit=1, mass_unit=1,
+                              spins=[[1, 0, 0], [2, 0, 0], [3, 0, 0]])
+    sim.remove(2)
+    with pytest.raises(ValueError, match="^spins: the simulation has 2 particles, the spin table 3"):
+        att.spins
+    with pytest.raises(rebound.GenericError):
+        sim.integrate(1.0)
+    assert "removed outside rime's handler" in att.error
+    # Given again, they are used.
+    att2 = rime.rebound.attach(sim, rime.Scene.preset("ice"), length_unit=1, time_unit=1, mass_unit=1,
+                               spins=[[1, 0, 0], [2, 0, 0]])
+    sim.integrate(2.0)
+    assert att2.error is None and att2.counts()["bounces"] == 1
+
+
+def test_issue_35_reload_without_spins_is_refused_and_spins_0_starts_from_rest(tmp_path):
+    sim, att = ring(orbits=0.1, collision="direct")
+    path = str(tmp_path / "ring.bin")
+    att.save(path)
+    with pytest.warns(RuntimeWarning, match="reset function pointers"):
+        loaded = rebound.Simulation(path)
+    kw = dict(length_unit=1, time_unit=1, mass_unit=1)
+    with pytest.raises(ValueError, match=r"^spins: this simulation is at t = .*load_spins"):
+        rime.rebound.attach(loaded, rime.Scene.preset("ice"), **kw)
+    rest = rime.rebound.attach(loaded, rime.Scene.preset("ice"), spins=0, **kw)
+    assert np.array_equal(rest.spins, np.zeros((loaded.N, 3)))
+    kept = rime.rebound.attach(loaded, rime.Scene.preset("ice"), spins=rime.rebound.load_spins(path, loaded), **kw)
+    assert np.array_equal(kept.spins, att.spins) and np.count_nonzero(kept.spins) > 0
+
+
+def snapshot(archive, j):
+    with pytest.warns(RuntimeWarning, match="reset function pointers"):
+        return archive[j]
+
+
+def test_issue_35_rebounds_periodic_archive_gets_the_spins(tmp_path):
+    """sim.save_to_file(file, step=K): every snapshot has its spins beside it (the ones the
+    attachment holds at that step), and a reload from the last one goes on bit for bit."""
+    sim, att = ring(orbits=0.2, collision="direct")
+    sim.rand_seed = 7
+    path = str(tmp_path / "archive.bin")
+    k = 50
+    sim.save_to_file(path, step=k)
+    held = []
+    for _ in range(6):
+        sim.steps(k)
+        held.append((sim.t, att.spins))
+    archive = rebound.Simulationarchive(path)
+    assert len(archive) == 7  # the first snapshot is the state the archive started at
+    for j, (t, spins) in enumerate(held, start=1):
+        snap = snapshot(archive, j)
+        assert snap.t == t
+        assert np.array_equal(rime.rebound.load_spins(path, snap), spins)
+    assert np.count_nonzero(held[-1][1]) > 0
+    with pytest.warns(RuntimeWarning, match="reset function pointers"):
+        loaded = rebound.Simulation(path)
+    again = rime.rebound.attach(loaded, rime.Scene.preset("ice"), length_unit=1, time_unit=1,
+                                mass_unit=1, spins=rime.rebound.load_spins(path, loaded))
+    loaded.simulationarchive_auto_step = 0  # no second archive from the copy
+    loaded._simulationarchive_filename = None
+    t = sim.t + 0.1 * 2 * math.pi / sim.OMEGA
+    sim.integrate(t)
+    loaded.integrate(t)
+    assert np.array_equal(again.spins, att.spins)
+    assert np.array_equal([p.vxyz for p in loaded.particles], [p.vxyz for p in sim.particles])
+
+
+def test_issue_35_archive_by_interval_and_an_earlier_heartbeat_still_runs(tmp_path):
+    calls = []
+    sim = ring(orbits=0.0, collision="direct")[0]
+    sim.heartbeat = lambda s: calls.append(s.contents.t)
+    att = rime.rebound.attach(sim, rime.Scene.preset("ice"), length_unit=1, time_unit=1, mass_unit=1)
+    path = str(tmp_path / "interval.bin")
+    orbit = 2 * math.pi / sim.OMEGA
+    sim.save_to_file(path, interval=0.05 * orbit)
+    sim.integrate(0.3 * orbit)
+    assert len(calls) > 100  # the user's heartbeat, every step
+    archive = rebound.Simulationarchive(path)
+    assert len(archive) >= 6
+    for j in range(len(archive)):
+        rime.rebound.load_spins(path, snapshot(archive, j))  # each snapshot has its record
+    assert np.count_nonzero(rime.rebound.load_spins(path, snapshot(archive, len(archive) - 1))) > 0
+    att.detach()
+    n = len(calls)
+    sim.integrate(0.31 * orbit)
+    assert len(calls) > n  # restored by detach
+
+
+def test_issue_35_contact_cache_is_bounded_and_eviction_changes_nothing():
+    """Continuous radii (one new pair per collision): a cache of 8 pairs stays at 8 and gives the
+    run of an unbounded cache bit for bit."""
+    def run(cache_size):
+        rng = np.random.default_rng(3)
+        sim = rebound.Simulation()
+        sim.gravity, sim.integrator, sim.collision = "none", "leapfrog", "direct"
+        sim.boundary, sim.root_size, sim.N_ghost_x, sim.N_ghost_y, sim.N_ghost_z = "periodic", 0.2, 1, 1, 1
+        sim.dt, sim.rand_seed = 1e-3, 5
+        placed = []
+        while len(placed) < 40:
+            x = rng.uniform(-0.08, 0.08, 3)
+            if all(np.linalg.norm(x - q) > 0.045 for q in placed):
+                placed.append(x)
+                r = rng.uniform(0.01, 0.02)
+                v = rng.normal(0, 0.05, 3)
+                sim.add(m=900 * 4 / 3 * math.pi * r**3, r=r, x=x[0], y=x[1], z=x[2], vx=v[0], vy=v[1], vz=v[2])
+        att = rime.rebound.attach(sim, rime.Scene.preset("ice"), length_unit=1, time_unit=1,
+                                  mass_unit=1, cache_size=cache_size)
+        sizes = []
+        for _ in range(20):
+            sim.integrate(sim.t + 0.1)
+            sizes.append(att.cached_pairs)
+        return sim, att, sizes
+
+    small, small_att, sizes = run(8)
+    big, big_att, _ = run(100000)
+    info = small_att.cache_info()
+    assert max(sizes) <= 8 and info["capacity"] == 8
+    assert big_att.cached_pairs > 8 and info["misses"] > 8  # eviction happened
+    assert info["hits"] + info["misses"] == big_att.cache_info()["hits"] + big_att.cache_info()["misses"]
+    assert small_att.counts() == big_att.counts() and small_att.counts()["bounces"] > 20
+    assert np.array_equal([p.vxyz for p in small.particles], [p.vxyz for p in big.particles])
+    assert np.array_equal(small_att.spins, big_att.spins)
+    with pytest.raises(ValueError, match="^cache_size"):
+        rime.rebound.attach(small, rime.Scene(), length_unit=1, time_unit=1, mass_unit=1, cache_size=1, spins=0)
+
+
+def test_issue_35_stay_sinks_without_a_floor_and_a_floor_keeps_grains_apart():
+    """`stay` under a steady pull (the pair's own gravity, G = 1e-3): with REBOUND's default floor 0
+    stuck grains sink into each other about ½ a dt² per step; with a floor v_min they leave at
+    v_min and the overlap stays below 2 (v_min + a dt) dt, as the documentation says."""
+    scene = rime.Scene.preset("ice-sticky")
+
+    def run(v_min):
+        sim, att = sticky_pair("stay")
+        sim.gravity, sim.G = "basic", 1e-3
+        sim.minimum_collision_velocity = v_min
+        deepest = 0.0
+        for _ in range(100):
+            sim.integrate(sim.t + 0.1)
+            d = np.linalg.norm(np.subtract(sim.particles[0].xyz, sim.particles[1].xyz))
+            deepest = max(deepest, 2 * RADIUS - d)
+        return deepest, att
+
+    a = 2 * 1e-3 * MASS / (2 * RADIUS) ** 2  # relative acceleration at contact
+    assert a * 1e-3 < rime.thresholds(scene)["stick"]  # each step's approach sticks
+    sunk, att = run(0.0)
+    assert att.counts()["stays"] > 1000 and att.counts()["bounces"] == 0
+    assert sunk > 0.25 * 0.5 * a * 1e-3**2 * 9000  # ~½ a dt² per step over most of 10 000 steps
+    v_min = 1e-4
+    apart, att = run(v_min)
+    assert apart <= 2 * (v_min + a * 1e-3) * 1e-3 and sunk > 100 * apart
+
+
+@pytest.mark.parametrize("kwargs,message", [
+    (dict(time_unit="orbit"), "^time_unit: 'orbit' needs omega="),
+    (dict(time_unit="orbit", omega=-1.0), "^omega: the orbital frequency"),
+    (dict(time_unit=1, omega=2e-4), r"^omega: sim.OMEGA = 0.00013143527 per code time unit"),
+])
+def test_issue_35_orbit_time_unit_is_validated(kwargs, message):
+    sim = ring(orbits=0.0, collision="direct")[0]
+    args = dict(length_unit=1, time_unit=1, mass_unit=1)
+    args.update(kwargs)
+    with pytest.raises(ValueError, match=message):
+        rime.rebound.attach(sim, rime.Scene.preset("ice"), **args)
+
+
+def test_issue_35_time_in_orbits_gives_the_si_result():
+    """A head-on hit at 1 cm/s written in orbits of Ω (time_unit="orbit", omega=Ω): rime's ε_N at
+    1 cm/s, and the velocities after, converted to SI by hand, those of the SI run."""
+    omega = 0.00013143527
+    period = 2 * math.pi / omega
+    want = cli("eps", "--preset", "ice", "--g", "0.01")[0]["eps_n"]
+    eps, sim, _ = head_on_eps(rime.Scene.preset("ice"), MASS, units=(1.0, "orbit", 1.0), omega=omega)
+    eps_si, sim_si, _ = head_on_eps(rime.Scene.preset("ice"), MASS)
+    assert eps == pytest.approx(want, rel=1e-12) and eps_si == pytest.approx(want, rel=1e-12)
+    for p, q in zip(sim.particles, sim_si.particles):
+        assert p.vx / period == pytest.approx(q.vx, rel=1e-12)
+
+
+def test_issue_35_version_is_the_packages():
+    import pathlib
+    import re
+
+    pyproject = (pathlib.Path(__file__).resolve().parents[1] / "pyproject.toml").read_text()
+    assert rime.__version__ == re.search(r'^version = "([^"]+)"', pyproject, re.M).group(1)
