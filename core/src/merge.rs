@@ -11,7 +11,7 @@
 //!   centre of mass moves with the total momentum.
 //!
 //! The merged grain is a homogeneous sphere with the two grains' inertia factor `q` (they must
-//! share it: 2/5, [`SOLID_SPHERE`](crate::kinematics::SOLID_SPHERE), for the solid spheres of the
+//! share it: 2/5, [`SOLID_SPHERE`], for the solid spheres of the
 //! handlers). Kinetic energy is not kept: the merge is perfectly inelastic, like ε_N = 0 and a
 //! locked contact.
 //!
