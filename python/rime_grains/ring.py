@@ -34,13 +34,15 @@ __all__ = ["equilibrium", "scaled_damping_time"]
 
 
 def equilibrium(scene, *, tau, omega=None, planet_mass=None, distance=None, radius=None,
-                scale_damping=False):
+                scale_damping=False, damping_set_for=None):
     """The ring's equilibrium for ``scene`` at optical depth ``tau``.
 
     Give ``omega`` [1/s], or ``planet_mass`` [kg] and ``distance`` [m] (Ω = √(GM/d³)). ``radius``
     [m] sets both grains. ``scale_damping=True`` replaces A by A′ = A·R/R_scene, which keeps the
     scene's ε_N(g) for the new size: **a different material** (the result's ``damping_note`` says
     so). Without it, when ``radius`` differs from the scene's, ``scaled_damping_time`` reports A′.
+    ``damping_set_for`` [m]: the grain radius the scene's A was given for, when not the scene's
+    (``damping_set_for=radius`` after setting A for the ``radius`` grains: no A′, no note).
 
     Returns a dict: ``verdict`` (``equilibrium``, ``monolayer_floor``, ``aggregates``, ``heats``),
     ``equilibrium`` (True for the first two: the floor is a steady state too), ``verdict_words``,
@@ -49,7 +51,8 @@ def equilibrium(scene, *, tau, omega=None, planet_mass=None, distance=None, radi
     """
     from . import _scene
     return _native.ring_equilibrium(_scene(scene), tau=tau, omega=omega, planet_mass=planet_mass,
-                                    distance=distance, radius=radius, scale_damping=scale_damping)
+                                    distance=distance, radius=radius, scale_damping=scale_damping,
+                                    damping_set_for=damping_set_for)
 
 
 def scaled_damping_time(damping_time, radius, new_radius):

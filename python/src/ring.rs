@@ -7,7 +7,7 @@ use rime_core::ring::{Orbit, RingPatch, equilibrium};
 
 /// The ring's equilibrium: the same fields as `rime ring --format json`.
 #[pyfunction]
-#[pyo3(signature = (scene, *, tau, omega = None, planet_mass = None, distance = None, radius = None, scale_damping = false))]
+#[pyo3(signature = (scene, *, tau, omega = None, planet_mass = None, distance = None, radius = None, scale_damping = false, damping_set_for = None))]
 #[allow(clippy::too_many_arguments)]
 // Long by design: converts every Python argument at the boundary with a named error each, then one
 // call.
@@ -20,6 +20,7 @@ pub(crate) fn ring_equilibrium<'py>(
     distance: Option<f64>,
     radius: Option<f64>,
     scale_damping: bool,
+    damping_set_for: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let orbit = match (omega, planet_mass, distance) {
         (Some(o), None, None) => Orbit::Omega(o),
@@ -43,8 +44,17 @@ pub(crate) fn ring_equilibrium<'py>(
         }
     };
     // core_error names the field (`scale_damping: expected a radius other than the scene's …`).
+    // A given for other grains than the scene's (issue 35): `damping_set_for`, else the scene's.
+    let set_for = damping_set_for.unwrap_or(scene.scene.grains.radius_1);
     let patch =
-        RingPatch::new(&scene.scene, tau, orbit, radius, scale_damping).map_err(core_error)?;
+        RingPatch::with_damping_set_for(&scene.scene, tau, orbit, radius, scale_damping, set_for)
+            .map_err(|e| match e {
+                rime_core::Error::OutOfRange { field: "set_for", .. } => value_error(
+                    "damping_set_for",
+                    format!("must be a finite radius > 0 m (got {set_for})"),
+                ),
+                e => core_error(e),
+            })?;
     let rec = py
         .detach(|| equilibrium(&patch.scene, &patch.input))
         .map_err(core_error)?;

@@ -70,3 +70,19 @@ def test_the_metre_patch_with_the_preset_a_heats():
     pred, runs = measure(5)
     assert pred["verdict"] == "heats"
     assert all(r[2][-1] / r[2][0] > 2.0 for r in runs)
+
+
+def test_issue_35_a_given_for_the_radius_grains_needs_no_scaling(rime_cli):
+    """A set for the 1 m grains of `radius` (damping_set_for=1): no A', no note, the record of a
+    scene whose own grains are 1 m, which is what `rime ring` gives for those grains."""
+    ice = rime.Scene.preset("ice")
+    ice.set("bulk.damping.time", 5e-3)
+    given = rime.ring.equilibrium(ice, tau=0.5, omega=OMEGA, radius=1.0, damping_set_for=1.0)
+    assert given["damping_note"] is None and given["scaled_damping_time"] is None
+    want = rime_cli("ring", "--preset", "ice", "--set", "bulk.damping.time=5e-3", "--set", "grains.radius_1=1",
+                    "--set", "grains.radius_2=1", "--tau", "0.5", "--omega", repr(OMEGA))
+    assert given["velocity_dispersion"] == want["velocity_dispersion"] and given["verdict"] == want["verdict"]
+    noted = rime.ring.equilibrium(ice, tau=0.5, omega=OMEGA, radius=1.0)
+    assert noted["scaled_damping_time"] == pytest.approx(0.25, rel=1e-12)
+    with pytest.raises(ValueError, match="^damping_set_for"):
+        rime.ring.equilibrium(ice, tau=0.5, omega=OMEGA, radius=1.0, damping_set_for=-1.0)
