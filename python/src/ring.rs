@@ -49,12 +49,14 @@ pub(crate) fn ring_equilibrium<'py>(
     let patch =
         RingPatch::with_damping_set_for(&scene.scene, tau, orbit, radius, scale_damping, set_for)
             .map_err(|e| match e {
-                rime_core::Error::OutOfRange { field: "set_for", .. } => value_error(
-                    "damping_set_for",
-                    format!("must be a finite radius > 0 m (got {set_for})"),
-                ),
-                e => core_error(e),
-            })?;
+            rime_core::Error::OutOfRange {
+                field: "set_for", ..
+            } => value_error(
+                "damping_set_for",
+                format!("must be a finite radius > 0 m (got {set_for})"),
+            ),
+            e => core_error(e),
+        })?;
     let rec = py
         .detach(|| equilibrium(&patch.scene, &patch.input))
         .map_err(core_error)?;
