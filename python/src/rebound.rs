@@ -84,18 +84,48 @@ struct Layout {
 /// full it becomes the old one and the oldest generation is dropped. Memory stays bounded and the
 /// pairs in use stay cached (a least-recently-used cache in two steps).
 struct PairCache {
-    young: HashMap<[u64; 4], Pair>,
-    old: HashMap<[u64; 4], Pair>,
+    young: HashMap<[u64; 4], Pair, PairHashing>,
+    old: HashMap<[u64; 4], Pair, PairHashing>,
+    /// The pair of the last lookup: a ring of one size asks for it every time, without a hash.
+    last: Option<([u64; 4], Pair)>,
     capacity: usize,
     hits: u64,
     misses: u64,
 }
 
+/// A multiply–rotate hash of the four words of a key (the bits of radii and masses): the keys are
+/// not chosen by an adversary, so the standard library's SipHash buys nothing here.
+#[derive(Default)]
+struct PairHasher(u64);
+
+impl std::hash::Hasher for PairHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+
+    fn write(&mut self, bytes: &[u8]) {
+        for b in bytes {
+            self.write_u64(u64::from(*b));
+        }
+    }
+
+    fn write_u64(&mut self, x: u64) {
+        self.0 = (self.0.rotate_left(5) ^ x).wrapping_mul(0x517c_c1b7_2722_0a95);
+    }
+
+    fn write_usize(&mut self, x: usize) {
+        self.write_u64(x as u64);
+    }
+}
+
+type PairHashing = std::hash::BuildHasherDefault<PairHasher>;
+
 impl PairCache {
     fn new(capacity: usize) -> PairCache {
         PairCache {
-            young: HashMap::new(),
-            old: HashMap::new(),
+            young: HashMap::default(),
+            old: HashMap::default(),
+            last: None,
             capacity,
             hits: 0,
             misses: 0,
@@ -103,13 +133,22 @@ impl PairCache {
     }
 
     fn get(&mut self, key: &[u64; 4]) -> Option<Pair> {
-        if let Some(p) = self.young.get(key) {
+        if let Some((k, p)) = &self.last
+            && k == key
+        {
             self.hits += 1;
             return Some(*p);
         }
-        let p = self.old.remove(key)?;
+        let p = match self.young.get(key) {
+            Some(p) => *p,
+            None => {
+                let p = self.old.remove(key)?;
+                self.insert(*key, p);
+                p
+            }
+        };
         self.hits += 1;
-        self.insert(*key, p);
+        self.last = Some((*key, p));
         Some(p)
     }
 
@@ -118,6 +157,7 @@ impl PairCache {
             self.old = std::mem::take(&mut self.young);
         }
         self.young.insert(key, pair);
+        self.last = Some((key, pair));
     }
 
     fn len(&self) -> usize {
