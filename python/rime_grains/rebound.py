@@ -259,12 +259,16 @@ class Attachment:
 
     def detach(self):
         """Unregisters the handler and restores REBOUND's default (``"hardsphere"``) and the
-        heartbeat set before attach."""
+        heartbeat set before attach. An attachment replaced by a newer ``attach`` leaves the
+        newer one in place."""
+        address = ctypes.addressof(self._sim)
+        self._handler.detach()
+        if _ATTACHED.get(address) is not self._link:
+            return
         self._sim.collision_resolve = "hardsphere"
         if self._link.heartbeat is not None:
             self._sim._heartbeat = self._link.previous_heartbeat
-        self._handler.detach()
-        _ATTACHED.pop(ctypes.addressof(self._sim), None)
+        del _ATTACHED[address]
 
 
 def load_spins(filename, sim):

@@ -678,3 +678,15 @@ def test_issue_35_version_is_the_packages():
 
     pyproject = (pathlib.Path(__file__).resolve().parents[1] / "pyproject.toml").read_text()
     assert rime.__version__ == re.search(r'^version = "([^"]+)"', pyproject, re.M).group(1)
+
+
+def test_issue_35_detaching_a_replaced_attachment_leaves_the_newer_one():
+    sim = pair_sim([-0.021, 0, 0], [0.005, 0, 0], [0.021, 0, 0], [-0.005, 0, 0])
+    kw = dict(length_unit=1, time_unit=1, mass_unit=1)
+    old = rime.rebound.attach(sim, rime.Scene.preset("ice"), **kw)
+    new = rime.rebound.attach(sim, rime.Scene.preset("ice"), **kw)
+    old.detach()
+    sim.integrate(1.0)
+    assert new.counts()["bounces"] == 1 and old.counts()["bounces"] == 0
+    want = cli("eps", "--preset", "ice", "--g", "0.01")[0]["eps_n"]
+    assert (sim.particles[1].vx - sim.particles[0].vx) / 0.01 == pytest.approx(want, rel=1e-12)
