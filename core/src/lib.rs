@@ -58,6 +58,7 @@ pub mod limits;
 mod math;
 pub mod models;
 pub mod normal;
+pub mod numerics;
 pub mod ode;
 pub mod params;
 pub mod ring;
