@@ -11,26 +11,6 @@ use rime_core::{Accuracy, Contact, Preset, Scene, Status, StickClass};
 use serde_json::{Value as Json, json};
 
 pub use rime_core::explorer::limits::{MAX_CURVE_POINTS, MAX_MAP_SIDE, MAX_SCENE_BYTES};
-/// Smallest and largest impact speeds the core accepts \[m/s\].
-pub const SPEED_RANGE: (f64, f64) = (1e-300, 1e6);
-
-/// The statuses in code order: `statuses()[i]` is the code of [`Status`] `STATUSES[i]`.
-pub const STATUSES: [Status; 4] = [
-    Status::Rebound,
-    Status::StuckInLayer,
-    Status::StuckByAdhesion,
-    Status::Overdamped,
-];
-
-/// The code of a status (its index in [`STATUSES`]).
-pub fn status_code(s: Status) -> u8 {
-    match s {
-        Status::Rebound => 0,
-        Status::StuckInLayer => 1,
-        Status::StuckByAdhesion => 2,
-        Status::Overdamped => 3,
-    }
-}
 
 /// The code of a stick class (its index in [`StickClass::ALL`]).
 pub fn class_code(c: StickClass) -> u8 {
@@ -162,10 +142,11 @@ fn core_err(e: rime_core::Error) -> String {
 }
 
 fn check_speed(field: &str, g: f64) -> Result<f64, String> {
-    if g.is_finite() && g >= SPEED_RANGE.0 && g <= SPEED_RANGE.1 {
+    if rime_core::limits::speed_is_valid(g) {
         Ok(g)
     } else {
-        Err(format!("{field}: speed must lie in (0, 1e6] m/s (got {g})"))
+        let domain = rime_core::limits::SPEED_DOMAIN;
+        Err(format!("{field}: speed must lie in {domain} m/s (got {g})"))
     }
 }
 
@@ -434,10 +415,11 @@ impl Explorer {
 }
 
 fn check_map_speed(field: &str, g: f64) -> Result<f64, String> {
-    if g.is_finite() && (0.0..=SPEED_RANGE.1).contains(&g) {
+    if rime_core::limits::speed_or_zero_is_valid(g) {
         Ok(g)
     } else {
-        Err(format!("{field}: speed must lie in [0, 1e6] m/s (got {g})"))
+        let domain = rime_core::limits::SPEED_OR_ZERO_DOMAIN;
+        Err(format!("{field}: speed must lie in {domain} m/s (got {g})"))
     }
 }
 
@@ -514,7 +496,7 @@ pub fn classes_json() -> String {
 
 /// The status names in code order as JSON.
 pub fn statuses_json() -> String {
-    Json::from(STATUSES.map(Status::name).to_vec()).to_string()
+    Json::from(Status::ALL.map(Status::name).to_vec()).to_string()
 }
 
 /// The experimental context of the ε_N chart as JSON: the Bridges et al. (1984) law
@@ -593,7 +575,7 @@ pub fn parse_speed(field: &str, text: &str) -> Result<f64, String> {
         field,
         text,
         rime_core::explorer::limits::speed_is_valid,
-        "(0, 1e6]",
+        rime_core::limits::SPEED_DOMAIN,
     )
 }
 
@@ -604,7 +586,7 @@ pub fn parse_chart_speed(field: &str, text: &str) -> Result<f64, String> {
         field,
         text,
         rime_core::explorer::limits::chart_speed_is_valid,
-        "[1e-12, 1e6]",
+        rime_core::explorer::limits::CHART_SPEED_DOMAIN,
     )
 }
 
