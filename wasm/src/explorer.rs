@@ -6,7 +6,7 @@
 
 use rime_core::params::{Kind, PARAMETERS, Value};
 use rime_core::sweep::log_space;
-use rime_core::tidal::{PAPER_QUOTED, TidalInput, tidal};
+use rime_core::tidal::TidalInput;
 use rime_core::{Accuracy, Contact, Preset, Scene, Status, StickClass};
 use serde_json::{Value as Json, json};
 
@@ -56,23 +56,13 @@ pub fn map_records(g: &[f64], eps_t: &[f64], codes: &[u8]) -> Result<String, Str
 /// and distance with the scene's grain 1 radius, density and surface energy (the paper's 0.1 J/m²
 /// without adhesion). One builder for the frame and [`Explorer::tidal`].
 pub fn tidal_json(scene: &Scene, input: Option<TidalInput>) -> Result<Json, String> {
-    let input = input.unwrap_or_else(|| TidalInput {
-        radius: scene.grains.radius_1,
-        density: scene.grains.density,
-        surface_energy: scene
-            .adhesion
-            .map_or(TidalInput::default().surface_energy, |a| a.surface_energy),
-        ..TidalInput::default()
-    });
-    let r = tidal(&input).map_err(|e| format!("tidal.{e}"))?;
-    let q = PAPER_QUOTED;
-    Ok(json!({
-        "input": input,
-        "result": r,
-        "verdict": {"holds": r.holds(), "margin": r.margin(), "text": r.verdict()},
-        "paper": {"delta_f": q.delta_f, "surface_force": q.surface_force, "d_roche": q.d_roche,
-                  "d_min": q.d_min, "r_max": q.r_max},
-    }))
+    use rime_core::explorer::tidal::{card, input_for};
+    let (input, gamma_from_paper) = match input {
+        Some(typed) => (typed, false),
+        None => input_for(scene, 1.0),
+    };
+    let card = card(input, gamma_from_paper).map_err(|e| format!("tidal.{e}"))?;
+    serde_json::to_value(&card).map_err(|e| format!("tidal: {e}"))
 }
 
 /// What the page's ring card sends (issue 24): τ, Ω or a planet and a distance, and the ε_N
@@ -397,7 +387,7 @@ impl Explorer {
             .to_string())
     }
 
-    /// The appendix (Eq. (A.1)–(A.7)) as JSON: `{input, result, paper}`. `input_json` is a
+    /// The appendix (Eq. (A.1)–(A.7)) as JSON: the core's tidal card (`rime_core::explorer::tidal`). `input_json` is a
     /// `TidalInput`; empty means the paper's planet and distance with the scene's grain 1 radius,
     /// density and surface energy (the paper's 0.1 J/m² without adhesion).
     pub fn tidal(&self, input_json: &str) -> Result<String, String> {
@@ -732,6 +722,10 @@ mod tests {
         assert_eq!(x["bands"].as_array().unwrap().len(), 2);
         let t: Json = serde_json::from_str(&Explorer::new().tidal("").unwrap()).unwrap();
         assert!(t["result"]["d_roche"].as_f64().unwrap() > 1e8);
+        // Issue 36: the page receives the core's card itself, so its marks are the terminal's.
+        let (input, from_paper) = rime_core::explorer::tidal::input_for(&Scene::default(), 1.0);
+        let card = rime_core::explorer::tidal::card(input, from_paper).unwrap();
+        assert_eq!(t, serde_json::to_value(&card).unwrap());
         let n: Json = serde_json::from_str(&Explorer::new().normal(0.01, "fast").unwrap()).unwrap();
         assert_eq!(n["status"], "rebound");
     }
