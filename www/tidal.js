@@ -1,7 +1,7 @@
 // The tidal calculator (appendix, Eq. (A.1)–(A.7)): typed inputs parsed by the core's unit parser,
-// the core's numbers beside the paper's printed ones, compared by the core's one rule
-// (agreesToPrinted). The typed inputs live in the state and so in the link.
-import { HELP, agrees, editable, parseQuantity, printedDigits, qty, sig } from './core.js';
+// the core's tidal card (rows beside the paper's printed numbers, compared by the core's one rule,
+// and the verdict) laid out. The typed inputs live in the state and so in the link.
+import { editable, parseQuantity, printedDigits, qty, sig } from './core.js';
 import { $, el, errText, linkify } from './dom.js';
 import { app } from './state.js';
 
@@ -78,42 +78,27 @@ export function showTidal(res) {
   note.textContent = failed ? `⚠ not computed: ${failed.message}` : '';
   $('tidal').hidden = !t;
   if (!t) return;
-  const r = t.result, q = t.paper, inp = t.input;
+  const inp = t.input;
   for (const row of rows.values()) {
     if (document.activeElement !== row.typed && !row.root.classList.contains('invalid')) row.typed.value = shown(row.f, inp[row.f.key]);
   }
   $('tidal-source').textContent = app.tidalIn ? '(typed values, kept in the link)' : '(following the scene)';
-  // The paper's printed numbers are for its example only: compare only there.
-  const example = Object.keys(HELP.tidalPaper).every((k) => inp[k] === HELP.tidalPaper[k]);
-  const row = (name, v, unit, paper, noteText, always = false) => {
-    let mark = '', cls = '';
-    if (paper !== undefined && example) {
-      const ok = agrees(v, paper);
-      mark = ok ? ' ✓' : ' ⚠';
-      cls = ok ? 'ok' : 'bad';
-    }
-    const text = example || always ? (noteText || '') : '';
+  // The core's card: its rows, each compared by the core's one rule where the inputs are the
+  // paper's example, its notes and its one verdict (the terminal and `rime tidal` say the same).
+  const line = (r) => {
+    const c = r.comparison;
+    const text = t.paper_inputs || r.note_always ? r.note : '';
     const tr = el('tr', {},
-      el('td', {}, name),
-      el('td', { class: 'num' }, Number.isFinite(v) ? `${sig(v, 4)} ${unit}` : '—'),
-      el('td', { class: `num ${cls}` }, paper === undefined ? '—' : `${sig(paper, printedDigits(paper))} ${unit}${mark}`),
+      el('td', {}, r.equation ? `${r.label} (${r.equation})` : r.label),
+      el('td', { class: 'num' }, Number.isFinite(r.computed) ? `${sig(r.computed, 4)} ${r.unit}` : '—'),
+      el('td', { class: `num ${c ? (c.agrees ? 'ok' : 'bad') : ''}` },
+        r.printed === null ? '—' : `${sig(r.printed, printedDigits(r.printed))} ${r.unit}${c ? ` ${c.mark}` : ''}`),
       el('td', { class: 'note' }, text));
     return text ? [tr, el('tr', { class: 'note-row' }, el('td', { colspan: 3 }, text))] : [tr];
   };
-  const rMax = r.r_max ?? NaN;
   $('tidal').replaceChildren(
     el('tr', {}, el('th', { scope: 'col' }, 'quantity'), el('th', { scope: 'col' }, 'computed'), el('th', { scope: 'col' }, 'paper'), el('th', { class: 'note', scope: 'col' }, 'note')),
-    ...[row('ΔF tidal force difference (A.1)', r.delta_f, 'N', q.delta_f),
-    row('F_s = πγR_eff, R_eff = r/2 (A.2)', r.surface_force, 'N', q.surface_force, 'the printed 6.28e-3 N is πγr, twice Eq. (A.2)'),
-    row('πγr (what the paper prints as F_s)', r.surface_force_paper, 'N', q.surface_force),
-    row('F_g mutual gravity (A.3)', r.gravity, 'N', undefined, 'not printed', true),
-    row('d_Roche (A.7)', r.d_roche, 'm', q.d_roche),
-    row('d_min (A.6)', r.d_min, 'm', q.d_min, 'printed 5.43e4 m is not reproduced: A.6 (both printed forms) gives 3.08e5 m, also inside the planet'),
-    r.r_max === null
-      ? row('r_max (A.5)', rMax, 'm', q.r_max, 'none: at or outside d_Roche self-gravity holds grains of any size', true)
-      : row('r_max (A.5)', rMax, 'm', q.r_max, 'A.5 gives 37.72 m vs printed 37.6 m (0.3 %); r_max moves −27× any relative change of 4M/d³'),
-    ].flat(),
-    // The core's one verdict (the terminal and `rime tidal` say the same).
-    ...(t.verdict ? [el('tr', { class: t.verdict.holds ? 'ok' : 'bad' }, el('td', { colspan: 4 }, t.verdict.text))] : []));
+    ...t.rows.flatMap(line),
+    el('tr', { class: t.holds ? 'ok' : 'bad' }, el('td', { colspan: 4 }, t.verdict)));
   linkify($('tidal'));
 }

@@ -428,7 +428,7 @@ pub const ENTRIES: &[Entry] = &[
         id: "heisselmann2010",
         kind: Kind::Range,
         citation: Citation {
-            authors: "Heisselmann, D., Blum, J., Fraser, H. J., Wolling, K.",
+            authors: "Heißelmann, D., Blum, J., Fraser, H. J., Wolling, K.",
             year: 2010,
             journal: "Icarus",
             volume: "206",
@@ -452,7 +452,7 @@ pub const ENTRIES: &[Entry] = &[
         id: "hill2015",
         kind: Kind::Range,
         citation: Citation {
-            authors: "Hill, C. R., Heisselmann, D., Blum, J., Fraser, H. J.",
+            authors: "Hill, C. R., Heißelmann, D., Blum, J., Fraser, H. J.",
             year: 2015,
             journal: "Astron. Astrophys.",
             volume: "573",

@@ -207,7 +207,7 @@ impl BatchLaw {
                     };
                     bad |= q.abs() < ADHESION_BAND;
                 }
-                bad |= !(a > 0.0 && a <= 1e6);
+                bad |= !crate::limits::speed_is_valid(a);
                 *o = eps;
                 *flag = bad;
                 any |= bad;

@@ -2,7 +2,7 @@
 
 use crate::error::{Error, Result};
 use crate::math::{powf, sqrt};
-use crate::scene::{AdhesionModulus, ContactEnd, Friction, LayerReading, Scene};
+use crate::scene::{ContactEnd, Friction, LayerReading, Scene};
 
 /// Constants of the soft layer model, Eq. (8)–(10).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -158,18 +158,14 @@ impl Contact {
         let adhesion = match &scene.adhesion {
             None => None,
             Some(a) => {
-                let e_printed = y / (1.0 - nu * nu);
-                let modulus = match a.modulus {
-                    AdhesionModulus::AsPrinted => e_printed,
-                    AdhesionModulus::Consistent => 0.5 * e_printed,
-                };
+                let modulus = crate::analytic::adhesion_modulus(y, nu, a.modulus);
                 let gamma = a.surface_energy;
                 // (γ⁵R⁴/E²)^(1/3), evaluated factor by factor so that no power overflows.
                 let k13 =
                     powf(gamma, 5.0 / 3.0) * powf(r_eff, 4.0 / 3.0) * powf(modulus, -2.0 / 3.0);
                 // Eq. (12) and Eq. (15); note 14.18 = 2 × 7.09, i.e. ½ m_eff g_s² = W_s.
-                let separation_energy = 7.09 * k13;
-                let critical_velocity = sqrt(14.18 / m_eff) * sqrt(k13);
+                let separation_energy = crate::analytic::EQ12_CONSTANT * k13;
+                let critical_velocity = sqrt(crate::analytic::EQ15_CONSTANT / m_eff) * sqrt(k13);
                 if !(separation_energy.is_finite() && critical_velocity.is_finite()) {
                     return Err(Error::DerivedOutOfRange {
                         quantity: "g_s (adhesion)",

@@ -254,6 +254,7 @@ pub fn eps_points(
 /// The experimental context of the ε_N charts.
 pub mod experiments {
     use super::*;
+    use crate::explorer::format::qty;
 
     /// Bridges, Hatzes & Lin (1984), Nature 309, 333: ε = 0.32 (v / 1 cm/s)^−0.234 (frosty ice at
     /// ~185 K), drawn over `from..to`.
@@ -296,26 +297,42 @@ pub mod experiments {
         })
     }
 
-    /// Microgravity ice experiments: Heißelmann et al. (2010), Icarus 206, 424 (1.5 cm spheres,
-    /// 6–22 cm/s, ε 0.06–0.84) and Hill et al. (2015), A&A 573, A49 (5–11 mm, 0.27–0.51 m/s,
-    /// ε 0.08–0.65), both in palette colour `color` (the experiments' one colour).
+    /// The measured ranges of the data atlas ([`crate::atlas::Kind::Range`]: the microgravity ice
+    /// experiments of Heißelmann et al. 2010 and Hill et al. 2015) as boxes over their speeds and
+    /// their ε, in palette colour `color` (the experiments' one colour). Labels are built from each
+    /// entry's citation and grain size, so the chart says what the atlas says.
     pub fn bands(color: usize) -> Vec<Band> {
-        vec![
-            Band {
-                x: (0.06, 0.22),
-                y: (0.06, 0.84),
-                label: "Heißelmann et al. 2010 (1.5 cm ice, µg)".to_string(),
-                short: "Heißelmann'10".to_string(),
-                color,
-            },
-            Band {
-                x: (0.27, 0.51),
-                y: (0.08, 0.65),
-                label: "Hill et al. 2015 (5–11 mm ice, µg)".to_string(),
-                short: "Hill'15".to_string(),
-                color,
-            },
-        ]
+        crate::atlas::ENTRIES
+            .iter()
+            .filter_map(|e| {
+                let [lo, hi] = e.band()?;
+                let first = e.citation.short_authors().first;
+                let diameter = diameter_range(e.radius);
+                Some(Band {
+                    x: (e.valid_speed[0], e.valid_speed[1]),
+                    y: (lo, hi),
+                    label: format!(
+                        "{} {} ({diameter} ice, µg)",
+                        e.citation.short_authors(),
+                        e.citation.year
+                    ),
+                    short: format!("{first}'{:02}", e.citation.year % 100),
+                    color,
+                })
+            })
+            .collect()
+    }
+
+    /// `15 mm` or `4.7–10.8 mm`: the diameters of an entry's radius range, the unit written once.
+    fn diameter_range([lo, hi]: [f64; 2]) -> String {
+        let (a, b) = (qty(2.0 * lo, "m"), qty(2.0 * hi, "m"));
+        if a == b {
+            return a;
+        }
+        match (a.split_once(' '), b.split_once(' ')) {
+            (Some((na, ua)), Some((_, ub))) if ua == ub => format!("{na}–{b}"),
+            _ => format!("{a}–{b}"),
+        }
     }
 }
 
@@ -570,3 +587,25 @@ pub use ticks::{Corner, Tick, decimal_label};
 mod render;
 #[cfg(feature = "plot")]
 pub use render::{render_png, render_svg};
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Issue 36: the experiments' boxes are read from the atlas, not restated. The numbers below are
+    /// the sources' own (Hill et al. 2015, abstract: 4.7–10.8 mm, 0.27–0.51 m/s, ε 0.08–0.65;
+    /// Heißelmann et al. 2010 as tabulated by Hill et al. 2015, Table 2: 15 mm, 0.06–0.22 m/s).
+    #[test]
+    fn issue_36_the_experiments_boxes_are_the_atlas_ranges() {
+        let bands = experiments::bands(3);
+        assert_eq!(bands.len(), 2);
+        let (h10, h15) = (&bands[0], &bands[1]);
+        assert_eq!((h10.x, h10.y), ((0.06, 0.22), (0.06, 0.84)));
+        assert_eq!(h10.label, "Heißelmann et al. 2010 (15 mm ice, µg)");
+        assert_eq!(h10.short, "Heißelmann'10");
+        assert_eq!((h15.x, h15.y), ((0.27, 0.51), (0.08, 0.65)));
+        assert_eq!(h15.label, "Hill et al. 2015 (4.7–10.8 mm ice, µg)");
+        assert_eq!(h15.short, "Hill'15");
+        assert!(bands.iter().all(|b| b.color == 3));
+    }
+}

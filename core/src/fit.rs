@@ -10,6 +10,7 @@
 
 use crate::error::{Error, Result};
 use crate::math::{exp, ln, powf, sqrt};
+use crate::numerics::lm::{LeastSquares, Schedule, damped_diagonal, minimise};
 use nalgebra::{SMatrix, SVector};
 
 /// Eq. (27) fitted to a curve.
@@ -250,16 +251,21 @@ fn cost(g: &[f64], eps: &[f64], p: &[f64; 4]) -> f64 {
         .sum()
 }
 
-/// Levenberg–Marquardt on the 4 parameters (ln a, b, ln c, ln d) with analytic Jacobian.
-fn levenberg_marquardt(g: &[f64], eps: &[f64], start: [f64; 4]) -> [f64; 4] {
-    let mut p = start;
-    let mut lambda = 1e-3;
-    let mut current = cost(g, eps, &p);
-    for _ in 0..500 {
+/// The Eq. (27) fit as a least-squares problem in (ln a, b, ln c, ln d), with its analytic Jacobian.
+struct Eq27Problem<'a> {
+    g: &'a [f64],
+    eps: &'a [f64],
+}
+
+impl LeastSquares for Eq27Problem<'_> {
+    type Point = [f64; 4];
+    type Normal = (SMatrix<f64, 4, 4>, SVector<f64, 4>);
+
+    fn normal(&self, p: &[f64; 4]) -> Option<Self::Normal> {
         let mut jtj = SMatrix::<f64, 4, 4>::zeros();
         let mut jtr = SVector::<f64, 4>::zeros();
         let (a, b, c, d) = (exp(p[0]), p[1], exp(p[2]), exp(p[3]));
-        for (&gi, &ei) in g.iter().zip(eps) {
+        for (&gi, &ei) in self.g.iter().zip(self.eps) {
             let lg = ln(gi);
             let gb = powf(gi, b);
             let gd = powf(gi, d);
@@ -276,41 +282,43 @@ fn levenberg_marquardt(g: &[f64], eps: &[f64], start: [f64; 4]) -> [f64; 4] {
             jtj += j * j.transpose();
             jtr += j * r;
         }
-        let mut improved = false;
-        for _ in 0..20 {
-            let mut m = jtj;
-            for k in 0..4 {
-                m[(k, k)] += lambda * (jtj[(k, k)] + 1e-12);
-            }
-            let Some(step) = m.lu().solve(&(-jtr)) else {
-                lambda *= 10.0;
-                continue;
-            };
-            let trial = [
-                p[0] + step[0],
-                p[1] + step[1],
-                p[2] + step[2],
-                p[3] + step[3],
-            ];
-            let c_trial = cost(g, eps, &trial);
-            if c_trial.is_finite() && c_trial < current {
-                let rel = (current - c_trial) / current.max(1e-300);
-                p = trial;
-                current = c_trial;
-                lambda = (lambda * 0.3).max(1e-12);
-                improved = true;
-                if rel < 1e-14 {
-                    return p;
-                }
-                break;
-            }
-            lambda *= 10.0;
-        }
-        if !improved {
-            break;
-        }
+        Some((jtj, jtr))
     }
-    p
+
+    fn damped_step(
+        &self,
+        p: &[f64; 4],
+        (jtj, jtr): &Self::Normal,
+        lambda: f64,
+    ) -> Option<[f64; 4]> {
+        let mut m = *jtj;
+        for k in 0..4 {
+            m[(k, k)] = damped_diagonal(jtj[(k, k)], lambda);
+        }
+        let step = m.lu().solve(&(-jtr))?;
+        Some([
+            p[0] + step[0],
+            p[1] + step[1],
+            p[2] + step[2],
+            p[3] + step[3],
+        ])
+    }
+
+    fn cost(&self, p: &[f64; 4]) -> f64 {
+        cost(self.g, self.eps, p)
+    }
+}
+
+/// Levenberg–Marquardt on the 4 parameters (ln a, b, ln c, ln d): the crate's one loop
+/// ([`crate::numerics::lm`]).
+fn levenberg_marquardt(g: &[f64], eps: &[f64], start: [f64; 4]) -> [f64; 4] {
+    let problem = Eq27Problem { g, eps };
+    let schedule = Schedule {
+        iterations: 500,
+        tries: 20,
+        relative_decrease: 1e-14,
+    };
+    minimise(&problem, start, cost(g, eps, &start), schedule).0
 }
 
 #[cfg(test)]

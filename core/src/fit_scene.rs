@@ -20,6 +20,7 @@ use crate::contact::Contact;
 use crate::error::Number;
 use crate::explorer::format::sig;
 use crate::math::{exp, ln, sqrt};
+use crate::numerics::lm::{LeastSquares, Schedule, damped_diagonal, minimise};
 use crate::params::{Kind, Value, parameter};
 use crate::scene::Scene;
 use alloc::format;
@@ -457,46 +458,50 @@ fn scan(problem: &Problem<'_>, u: &mut [f64], best: &mut f64) {
     }
 }
 
-fn levenberg_marquardt(problem: &Problem<'_>, u: &mut [f64], cost: &mut f64) {
-    let p = u.len();
-    let mut lambda = 1e-3;
-    for _ in 0..200 {
-        let (Some(j), Some(r)) = (problem.jacobian(u), problem.residuals(u)) else {
-            return;
-        };
+impl LeastSquares for Problem<'_> {
+    type Point = Vec<f64>;
+    type Normal = (DMatrix<f64>, DVector<f64>);
+
+    fn normal(&self, u: &Vec<f64>) -> Option<Self::Normal> {
+        let (j, r) = (self.jacobian(u)?, self.residuals(u)?);
         let jtj = j.transpose() * &j;
         let jtr = j.transpose() * r;
-        let mut improved = false;
-        for _ in 0..30 {
-            let mut m = jtj.clone();
-            for k in 0..p {
-                m[(k, k)] += lambda * (jtj[(k, k)] + 1e-12);
-            }
-            let Some(step) = m.lu().solve(&(-&jtr)) else {
-                lambda *= 10.0;
-                continue;
-            };
-            let trial: Vec<f64> = (0..p)
-                .map(|k| problem.coords[k].clamp(u[k] + step[k]))
-                .collect();
-            let c = problem.cost(&trial);
-            if c.is_finite() && c < *cost {
-                let rel = (*cost - c) / cost.max(1e-300);
-                u.copy_from_slice(&trial);
-                *cost = c;
-                lambda = (lambda * 0.3).max(1e-12);
-                improved = true;
-                if rel < 1e-13 {
-                    return;
-                }
-                break;
-            }
-            lambda *= 10.0;
-        }
-        if !improved {
-            return;
-        }
+        Some((jtj, jtr))
     }
+
+    fn damped_step(
+        &self,
+        u: &Vec<f64>,
+        (jtj, jtr): &Self::Normal,
+        lambda: f64,
+    ) -> Option<Vec<f64>> {
+        let mut m = jtj.clone();
+        for k in 0..u.len() {
+            m[(k, k)] = damped_diagonal(jtj[(k, k)], lambda);
+        }
+        let step = m.lu().solve(&(-jtr))?;
+        Some(
+            (0..u.len())
+                .map(|k| self.coords[k].clamp(u[k] + step[k]))
+                .collect(),
+        )
+    }
+
+    fn cost(&self, u: &Vec<f64>) -> f64 {
+        Problem::cost(self, u)
+    }
+}
+
+/// The crate's one Levenberg–Marquardt loop ([`crate::numerics::lm`]) on the scene's coordinates.
+fn levenberg_marquardt(problem: &Problem<'_>, u: &mut Vec<f64>, cost: &mut f64) {
+    let schedule = Schedule {
+        iterations: 200,
+        tries: 30,
+        relative_decrease: 1e-13,
+    };
+    let (best, best_cost) = minimise(problem, core::mem::take(u), *cost, schedule);
+    *u = best;
+    *cost = best_cost;
 }
 
 /// Samples on a law's measured speeds for [`fit_to_entry`].

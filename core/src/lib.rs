@@ -59,6 +59,7 @@ mod math;
 pub mod merge;
 pub mod models;
 pub mod normal;
+pub mod numerics;
 pub mod ode;
 pub mod params;
 pub mod ring;

@@ -122,9 +122,15 @@ pub(crate) fn speed(flag: &str, text: &str, allow_zero: bool) -> CliResult<f64> 
         let shown: String = text.trim().chars().take(40).collect();
         CliError::input(format!("{flag} {shown}{e}"))
     })?;
-    let ok = if allow_zero { v >= 0.0 } else { v > 0.0 };
-    if !ok || v > rime_core::limits::SPEED_MAX {
-        let range = if allow_zero { "[0, 1e6]" } else { "(0, 1e6]" };
+    use rime_core::limits::{
+        SPEED_DOMAIN, SPEED_OR_ZERO_DOMAIN, speed_is_valid, speed_or_zero_is_valid,
+    };
+    let (ok, range) = if allow_zero {
+        (speed_or_zero_is_valid(v), SPEED_OR_ZERO_DOMAIN)
+    } else {
+        (speed_is_valid(v), SPEED_DOMAIN)
+    };
+    if !ok {
         return err(format!(
             "{flag}: speed {} must lie in {range} m/s",
             rime_core::error::Number(v)

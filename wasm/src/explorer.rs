@@ -6,31 +6,11 @@
 
 use rime_core::params::{Kind, PARAMETERS, Value};
 use rime_core::sweep::log_space;
-use rime_core::tidal::{PAPER_QUOTED, TidalInput, tidal};
+use rime_core::tidal::TidalInput;
 use rime_core::{Accuracy, Contact, Preset, Scene, Status, StickClass};
 use serde_json::{Value as Json, json};
 
 pub use rime_core::explorer::limits::{MAX_CURVE_POINTS, MAX_MAP_SIDE, MAX_SCENE_BYTES};
-/// Smallest and largest impact speeds the core accepts \[m/s\].
-pub const SPEED_RANGE: (f64, f64) = (1e-300, 1e6);
-
-/// The statuses in code order: `statuses()[i]` is the code of [`Status`] `STATUSES[i]`.
-pub const STATUSES: [Status; 4] = [
-    Status::Rebound,
-    Status::StuckInLayer,
-    Status::StuckByAdhesion,
-    Status::Overdamped,
-];
-
-/// The code of a status (its index in [`STATUSES`]).
-pub fn status_code(s: Status) -> u8 {
-    match s {
-        Status::Rebound => 0,
-        Status::StuckInLayer => 1,
-        Status::StuckByAdhesion => 2,
-        Status::Overdamped => 3,
-    }
-}
 
 /// The code of a stick class (its index in [`StickClass::ALL`]).
 pub fn class_code(c: StickClass) -> u8 {
@@ -76,23 +56,13 @@ pub fn map_records(g: &[f64], eps_t: &[f64], codes: &[u8]) -> Result<String, Str
 /// and distance with the scene's grain 1 radius, density and surface energy (the paper's 0.1 J/m²
 /// without adhesion). One builder for the frame and [`Explorer::tidal`].
 pub fn tidal_json(scene: &Scene, input: Option<TidalInput>) -> Result<Json, String> {
-    let input = input.unwrap_or_else(|| TidalInput {
-        radius: scene.grains.radius_1,
-        density: scene.grains.density,
-        surface_energy: scene
-            .adhesion
-            .map_or(TidalInput::default().surface_energy, |a| a.surface_energy),
-        ..TidalInput::default()
-    });
-    let r = tidal(&input).map_err(|e| format!("tidal.{e}"))?;
-    let q = PAPER_QUOTED;
-    Ok(json!({
-        "input": input,
-        "result": r,
-        "verdict": {"holds": r.holds(), "margin": r.margin(), "text": r.verdict()},
-        "paper": {"delta_f": q.delta_f, "surface_force": q.surface_force, "d_roche": q.d_roche,
-                  "d_min": q.d_min, "r_max": q.r_max},
-    }))
+    use rime_core::explorer::tidal::{card, input_for};
+    let (input, gamma_from_paper) = match input {
+        Some(typed) => (typed, false),
+        None => input_for(scene, 1.0),
+    };
+    let card = card(input, gamma_from_paper).map_err(|e| format!("tidal.{e}"))?;
+    serde_json::to_value(&card).map_err(|e| format!("tidal: {e}"))
 }
 
 /// What the page's ring card sends (issue 24): τ, Ω or a planet and a distance, and the ε_N
@@ -162,10 +132,11 @@ fn core_err(e: rime_core::Error) -> String {
 }
 
 fn check_speed(field: &str, g: f64) -> Result<f64, String> {
-    if g.is_finite() && g >= SPEED_RANGE.0 && g <= SPEED_RANGE.1 {
+    if rime_core::limits::speed_is_valid(g) {
         Ok(g)
     } else {
-        Err(format!("{field}: speed must lie in (0, 1e6] m/s (got {g})"))
+        let domain = rime_core::limits::SPEED_DOMAIN;
+        Err(format!("{field}: speed must lie in {domain} m/s (got {g})"))
     }
 }
 
@@ -416,7 +387,7 @@ impl Explorer {
             .to_string())
     }
 
-    /// The appendix (Eq. (A.1)–(A.7)) as JSON: `{input, result, paper}`. `input_json` is a
+    /// The appendix (Eq. (A.1)–(A.7)) as JSON: the core's tidal card (`rime_core::explorer::tidal`). `input_json` is a
     /// `TidalInput`; empty means the paper's planet and distance with the scene's grain 1 radius,
     /// density and surface energy (the paper's 0.1 J/m² without adhesion).
     pub fn tidal(&self, input_json: &str) -> Result<String, String> {
@@ -434,10 +405,11 @@ impl Explorer {
 }
 
 fn check_map_speed(field: &str, g: f64) -> Result<f64, String> {
-    if g.is_finite() && (0.0..=SPEED_RANGE.1).contains(&g) {
+    if rime_core::limits::speed_or_zero_is_valid(g) {
         Ok(g)
     } else {
-        Err(format!("{field}: speed must lie in [0, 1e6] m/s (got {g})"))
+        let domain = rime_core::limits::SPEED_OR_ZERO_DOMAIN;
+        Err(format!("{field}: speed must lie in {domain} m/s (got {g})"))
     }
 }
 
@@ -514,7 +486,7 @@ pub fn classes_json() -> String {
 
 /// The status names in code order as JSON.
 pub fn statuses_json() -> String {
-    Json::from(STATUSES.map(Status::name).to_vec()).to_string()
+    Json::from(Status::ALL.map(Status::name).to_vec()).to_string()
 }
 
 /// The experimental context of the ε_N chart as JSON: the Bridges et al. (1984) law
@@ -593,7 +565,7 @@ pub fn parse_speed(field: &str, text: &str) -> Result<f64, String> {
         field,
         text,
         rime_core::explorer::limits::speed_is_valid,
-        "(0, 1e6]",
+        rime_core::limits::SPEED_DOMAIN,
     )
 }
 
@@ -604,7 +576,7 @@ pub fn parse_chart_speed(field: &str, text: &str) -> Result<f64, String> {
         field,
         text,
         rime_core::explorer::limits::chart_speed_is_valid,
-        "[1e-12, 1e6]",
+        rime_core::explorer::limits::CHART_SPEED_DOMAIN,
     )
 }
 
@@ -750,6 +722,10 @@ mod tests {
         assert_eq!(x["bands"].as_array().unwrap().len(), 2);
         let t: Json = serde_json::from_str(&Explorer::new().tidal("").unwrap()).unwrap();
         assert!(t["result"]["d_roche"].as_f64().unwrap() > 1e8);
+        // Issue 36: the page receives the core's card itself, so its marks are the terminal's.
+        let (input, from_paper) = rime_core::explorer::tidal::input_for(&Scene::default(), 1.0);
+        let card = rime_core::explorer::tidal::card(input, from_paper).unwrap();
+        assert_eq!(t, serde_json::to_value(&card).unwrap());
         let n: Json = serde_json::from_str(&Explorer::new().normal(0.01, "fast").unwrap()).unwrap();
         assert_eq!(n["status"], "rebound");
     }

@@ -6,7 +6,7 @@
 //! fails becomes a gap (NaN, status code [`FAILED`]), not a failed frame. The numbers are packed into
 //! two flat arrays (`f64` and `u8`); the JSON gives each array as `{"at": offset, "len": n}` into them.
 
-use crate::explorer::{STATUSES, class_code, parse_scene, status_code, tidal_json};
+use crate::explorer::{class_code, parse_scene, tidal_json};
 use rime_core::explorer::frame::{Curve, Request, SWEEPS, compute_with};
 use rime_core::explorer::{figures, records};
 use rime_core::figure::Figure;
@@ -182,7 +182,7 @@ fn curve_json(pack: &mut Pack, c: &Curve) -> Json {
     let status: Vec<u8> = c
         .points
         .iter()
-        .map(|p| p.map_or(FAILED, |n| status_code(n.status)))
+        .map(|p| p.map_or(FAILED, |n| n.status.code()))
         .collect();
     json!({"eps": pack.f(&c.eps()), "status": pack.u(&status), "failed": c.failed()})
 }
@@ -406,7 +406,7 @@ pub(crate) fn pack_frame(
     );
     out.insert(
         "statusNames".into(),
-        Json::from(STATUSES.map(Status::name).to_vec()),
+        Json::from(Status::ALL.map(Status::name).to_vec()),
     );
     out.insert("errors".into(), Json::from(errors.0));
     Ok(Frame {

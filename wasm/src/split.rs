@@ -8,14 +8,10 @@
 //! Only the units that are lists of numbers travel (a curve's points, a model's ε_N, the stick
 //! map's rows); the stick threshold and the overlays' labels stay with the frame's worker.
 
-use crate::explorer::{STATUSES, status_code};
 use crate::frame::{Frame, LAYER_MEMO, View, pack_frame, prepare};
 use rime_core::explorer::frame::{Output, Plan, Request, Unit};
-use rime_core::normal::Normal;
+use rime_core::normal::{Normal, Status};
 use serde_json::{Value as Json, json};
-
-/// Points per curve unit and rows per map unit (the terminal's threads split alike).
-pub const CHUNK: usize = 32;
 
 /// Numbers per point of a curve: present, ε_N, status code, t_c, ξ_max, error estimate,
 /// right-hand-side evaluations.
@@ -73,7 +69,7 @@ fn encode(items: &[(usize, &Output)]) -> Share {
                         Some(n) => numbers.extend_from_slice(&[
                             1.0,
                             n.eps,
-                            f64::from(status_code(n.status)),
+                            f64::from(n.status.code()),
                             n.t_c,
                             n.xi_max,
                             n.error_estimate,
@@ -136,7 +132,7 @@ fn decode(share: &Share, units: &[Unit]) -> Result<Vec<(usize, Output)>, String>
                     points.push(if p[0] == 0.0 {
                         None
                     } else {
-                        let status = *STATUSES
+                        let status = *Status::ALL
                             .get(p[2] as usize)
                             .ok_or("share: unknown status code")?;
                         Some(Normal {
@@ -180,7 +176,7 @@ fn plan(scene_json: &str, view_json: &str) -> Result<Planned, String> {
     let (view, req) = prepare(scene_json, view_json)?;
     let planned = match Plan::new(&req) {
         Ok(plan) => {
-            let units = plan.units(CHUNK);
+            let units = plan.units(Plan::UNIT_POINTS);
             Ok((plan, units))
         }
         Err(frame) => Err(*frame),

@@ -486,6 +486,12 @@ pub struct Plan {
 const MIN_CHUNK: usize = 16;
 
 impl Plan {
+    /// Points per curve unit and rows per map unit for a surface that runs the units side by side
+    /// (the terminal's threads, the page's two workers): a 241-point curve is 8 units, so the cores
+    /// share even a frame whose cost is one curve (a compared model's), and a unit is long enough
+    /// (≥ 30 ε_N evaluations) that handing it out costs nothing.
+    pub const UNIT_POINTS: usize = 32;
+
     /// Plans `req`; a request that is not valid or a scene that cannot be evaluated gives the
     /// finished frame (with its `request` or `scene` error) instead.
     // Long by design: every unit of the frame planned in the order compute() runs them, so the
@@ -562,7 +568,10 @@ impl Plan {
                 Err(String::from("failure forced for testing"))
             } else if !speed_is_valid(max) {
                 // A range the models refuse fails the map alone.
-                Err(format!("map_max: {max} m/s is not a speed in (0, 1e6] m/s"))
+                Err(format!(
+                    "map_max: {max} m/s is not a speed in {} m/s",
+                    crate::limits::SPEED_DOMAIN
+                ))
             } else {
                 let mut g = alloc::vec![0.0; req.map_n];
                 crate::sweep::linear_space(max, &mut g);

@@ -1,5 +1,5 @@
-//! Words for every surface: the paper's citation, a short glossary of the symbols a newcomer meets
-//! (ε_N, g_N, g_T, "this scene"), one line of help per parameter and human names for the options
+//! Words for every surface: the paper's citation, the one glossary of the symbols a newcomer meets
+//! (ε_N, g_N, g_T, "this scene", …), the experiments' sources, one line of help per parameter and human names for the options
 //! of choice parameters (`force_zero` reads "force returns to zero (paper)"). Defined once here so
 //! that the terminal's help, the web page and exported captions say the same thing.
 
@@ -30,30 +30,75 @@ pub const PAPER: Citation = Citation {
     pages: "1387–1397",
 };
 
-/// A term of the glossary and what it means.
-pub const GLOSSARY: [(&str, &str); 9] = [
+/// The one glossary of every surface (the terminal's `?` overlay, the page's intro): a term and
+/// what it means, in the order a newcomer meets them.
+pub const GLOSSARY: [(&str, &str); 21] = [
     (
         "ε_N",
-        "normal coefficient of restitution: the speed of separation along the line of centres \
-         divided by the impact speed (1 elastic, 0 the grains stick), Eq. (1)",
+        "normal coefficient of restitution −g'_N/g_N: the speed of separation along the line of \
+         centres divided by the impact speed (1 elastic, 0 the grains stick), Eq. (1)",
     ),
     (
         "ε_T",
-        "tangential coefficient of restitution: the sliding speed of the surfaces after the \
-         collision divided by the one before (negative: the motion reverses, rolling), Eq. (1)",
+        "tangential coefficient of restitution g'_T/g_T, −1 … 1: the sliding speed of the \
+         surfaces after the collision divided by the one before (negative: the motion reverses, \
+         rolling), Eq. (1)",
     ),
     (
         "g_N",
-        "impact speed: the normal component of the relative velocity of the surfaces",
+        "impact speed: the normal component of the relative velocity of the surfaces, along the \
+         line of centres [m/s]",
     ),
     (
         "g_T",
-        "tangential component of the relative surface velocity at impact, Eq. (2)",
+        "tangential component of the relative surface velocity at impact, across the line of \
+         centres, Eq. (2) [m/s]",
     ),
     (
         "g_s",
         "critical speed: below it the grains stick (a soft layer, Eq. (10), or adhesion, Eq. (15)); \
          a threshold on the impact speed",
+    ),
+    (
+        "g_s layer",
+        "impact speed below which the soft layer stops the grains (Eq. (10)); sticking left of \
+         the marker",
+    ),
+    (
+        "g_s adhesion",
+        "a rebound speed (Eq. (15)): the grains stick when their rebound speed without adhesion, \
+         ε_N·g_N, is below it; the chart draws it at g_N = g_s on the impact axis, and sticking \
+         reaches up to where ε_N·g_N = g_s, right of the marker",
+    ),
+    (
+        "δ, δ(g)",
+        "dimensionless damping A α^(2/5) g^(1/5) of one collision, at the cursor's speed g; large \
+         δ: overdamped",
+    ),
+    (
+        "tan ψ₀",
+        "μ/κ (Eq. (25)): impacts with g_T/g_N above it slide, below it roll",
+    ),
+    (
+        "A",
+        "damping time of the viscoelastic bulk (Eq. (4)) [s]; η₁, η₂ give it when set",
+    ),
+    (
+        "R_eff, m_eff",
+        "reduced radius R₁R₂/(R₁+R₂) and reduced mass m₁m₂/(m₁+m₂) of the pair",
+    ),
+    ("t_c", "contact duration of one collision [s]"),
+    (
+        "η*, D",
+        "viscosity and thickness of the soft surface layer (frost, dust; Eq. (6)–(10))",
+    ),
+    (
+        "γ",
+        "surface energy of adhesion (JKR, Eq. (11)–(17)) [J/m²]",
+    ),
+    (
+        "μ, κ",
+        "friction coefficient and reduced moment of inertia (2/7 for solid spheres)",
     ),
     (
         "this scene",
@@ -63,7 +108,7 @@ pub const GLOSSARY: [(&str, &str); 9] = [
     (
         "family",
         "the scene's curve repeated with one parameter varied around its value (η* with a layer, \
-         γ with adhesion, else A); the member equal to the scene is marked",
+         γ with adhesion, else A, or the one chosen); the member equal to the scene is marked",
     ),
     (
         "clean surface",
@@ -71,9 +116,48 @@ pub const GLOSSARY: [(&str, &str); 9] = [
     ),
     (
         "stick map",
-        "which tangential regime each impact ends in, over (g_T across, g_N up), as in Fig. 4 of the paper",
+        "which tangential regime each impact ends in, over (g_T across, g_N up), as in Fig. 4 of \
+         the paper",
+    ),
+    (
+        "pinned",
+        "a curve kept to compare with later edits, drawn dashed",
+    ),
+    (
+        "computed in",
+        "wall time of the last frame at the accuracy level shown",
     ),
 ];
+
+/// The sources of the ε_N chart's experimental context, one line each (`Bridges et al. 1984: ε =
+/// 0.32 (v / 1 cm/s)^−0.234, measured 150 µm/s–20 mm/s`), built from the data atlas and the
+/// Bridges law.
+#[cfg(feature = "alloc")]
+pub fn experiment_sources() -> alloc::vec::Vec<alloc::string::String> {
+    use crate::explorer::format::qty;
+    use alloc::format;
+    let speeds = |[lo, hi]: [f64; 2]| {
+        let (a, b) = (qty(lo, "m/s"), qty(hi, "m/s"));
+        match (a.split_once(' '), b.split_once(' ')) {
+            (Some((na, ua)), Some((_, ub))) if ua == ub => format!("{na}–{b}"),
+            _ => format!("{a}–{b}"),
+        }
+    };
+    let mut out = alloc::vec::Vec::new();
+    if let Some(b) = crate::atlas::find("bridges1984") {
+        let label = crate::fit::BRIDGES_1984_LABEL;
+        out.push(format!("{label}, measured {}", speeds(b.valid_speed)));
+    }
+    for e in crate::atlas::ENTRIES.iter().filter(|e| e.band().is_some()) {
+        out.push(format!(
+            "{} {}: {}",
+            e.citation.short_authors(),
+            e.citation.year,
+            speeds(e.valid_speed)
+        ));
+    }
+    out
+}
 
 /// One line of help for a parameter of [`crate::params::PARAMETERS`] (by path).
 pub fn parameter_help(path: &str) -> Option<&'static str> {
@@ -197,5 +281,28 @@ mod tests {
             }
         }
         assert!(option_label("contact_end", "nope").is_none());
+    }
+
+    /// Issue 36: one glossary — every term once, and the sources say what the atlas says (the
+    /// speeds are the sources' own: Bridges et al. 1984's pendulum 0.15–20 mm/s as tabulated by
+    /// Hill et al. 2015, Heißelmann et al. 2010 6–22 cm/s, Hill et al. 2015 0.27–0.51 m/s).
+    #[test]
+    fn issue_36_one_glossary_and_the_sources_from_the_atlas() {
+        for (i, (term, meaning)) in GLOSSARY.iter().enumerate() {
+            assert!(!meaning.is_empty(), "{term}");
+            assert!(
+                GLOSSARY[i + 1..].iter().all(|(t, _)| t != term),
+                "{term} twice"
+            );
+        }
+        let sources = experiment_sources();
+        assert_eq!(
+            sources,
+            [
+                "Bridges et al. 1984: ε = 0.32 (v / 1 cm/s)^−0.234, measured 150 µm/s–20 mm/s",
+                "Heißelmann et al. 2010: 60–220 mm/s",
+                "Hill et al. 2015: 270–510 mm/s",
+            ]
+        );
     }
 }

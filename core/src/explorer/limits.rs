@@ -1,8 +1,10 @@
 //! Limits every surface enforces on what a user may ask for.
 
-pub use crate::limits::{SPEED_MAX, speed_is_valid};
+pub use crate::limits::{SPEED_DOMAIN, SPEED_MAX, speed_is_valid};
 /// Smallest (positive) speed a chart or a speed list may start at \[m/s\].
 pub const SPEED_MIN: f64 = 1e-12;
+/// The domain of [`chart_speed_is_valid`] as messages write it (unit m/s apart).
+pub const CHART_SPEED_DOMAIN: &str = "[1e-12, 1e6]";
 /// Largest number of points on one curve.
 pub const MAX_CURVE_POINTS: usize = 20_000;
 /// Largest stick-map side (the map has `n²` cells).
@@ -21,6 +23,26 @@ pub fn chart_speed_is_valid(g: f64) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use alloc::format;
+
+    #[test]
+    fn issue_36_the_chart_domain_as_written_is_the_checked_one() {
+        let inner = CHART_SPEED_DOMAIN
+            .trim_start_matches('[')
+            .trim_end_matches(']');
+        let (lo, hi) = inner.split_once(", ").unwrap();
+        assert_eq!(lo.parse::<f64>().unwrap(), SPEED_MIN);
+        assert_eq!(hi.parse::<f64>().unwrap(), SPEED_MAX);
+        let note = crate::explorer::range::MapRange {
+            max: SPEED_MAX,
+            clamped: true,
+        };
+        assert!(note.note().unwrap().contains(&format!("{hi} m/s")));
+        assert_eq!(
+            crate::explorer::request::CHART_SPEED_EXPECTED,
+            format!("a speed in {CHART_SPEED_DOMAIN} m/s")
+        );
+    }
 
     #[test]
     fn the_chart_range_has_a_floor_that_single_speeds_do_not_issue_22() {

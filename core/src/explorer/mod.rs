@@ -28,4 +28,6 @@ pub mod ring;
 #[cfg(feature = "explorer")]
 pub mod thresholds;
 #[cfg(feature = "explorer")]
+pub mod tidal;
+#[cfg(feature = "explorer")]
 pub mod warning;

@@ -229,6 +229,11 @@ pub fn comparison(set: usize, scene: &Scene) -> Vec<Overlay> {
 }
 
 /// An end of a chart's speed range, or an error naming `field` (see [`chart_speed_is_valid`]).
+/// What a chart's speed must be, as errors write it (the test of [`CHART_SPEED_DOMAIN`] checks it).
+///
+/// [`CHART_SPEED_DOMAIN`]: super::limits::CHART_SPEED_DOMAIN
+pub(crate) const CHART_SPEED_EXPECTED: &str = "a speed in [1e-12, 1e6] m/s";
+
 fn check_chart_speed(field: &'static str, g: f64) -> crate::Result<()> {
     if chart_speed_is_valid(g) {
         Ok(())
@@ -236,7 +241,7 @@ fn check_chart_speed(field: &'static str, g: f64) -> crate::Result<()> {
         Err(Error::OutOfRange {
             field,
             value: g,
-            expected: "a speed in [1e-12, 1e6] m/s",
+            expected: CHART_SPEED_EXPECTED,
         })
     }
 }

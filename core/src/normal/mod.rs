@@ -32,6 +32,25 @@ pub enum Status {
 }
 
 impl Status {
+    /// Every status in code order: `Status::ALL[s.code() as usize] == s` (the page's typed arrays
+    /// carry the code).
+    pub const ALL: [Status; 4] = [
+        Status::Rebound,
+        Status::StuckInLayer,
+        Status::StuckByAdhesion,
+        Status::Overdamped,
+    ];
+
+    /// The status's index in [`Status::ALL`].
+    pub const fn code(self) -> u8 {
+        match self {
+            Status::Rebound => 0,
+            Status::StuckInLayer => 1,
+            Status::StuckByAdhesion => 2,
+            Status::Overdamped => 3,
+        }
+    }
+
     /// The snake_case name used in JSON and CSV.
     pub fn name(self) -> &'static str {
         match self {
@@ -311,6 +330,22 @@ impl Contact {
         } else {
             // δ → 0: elastic limit.
             1.0
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Status;
+
+    #[test]
+    fn every_status_sits_at_its_code_and_names_are_distinct() {
+        for (i, s) in Status::ALL.iter().enumerate() {
+            assert_eq!(s.code() as usize, i, "{s:?}");
+        }
+        let names = Status::ALL.map(Status::name);
+        for (i, a) in names.iter().enumerate() {
+            assert!(names[i + 1..].iter().all(|b| b != a), "{a}");
         }
     }
 }

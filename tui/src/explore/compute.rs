@@ -57,11 +57,6 @@ pub fn auto_speeds(data: &Frame) -> (f64, f64) {
 /// Threads a frame uses: the cores this process may use (as the subcommands).
 pub use crate::parallel::threads;
 
-/// Points per curve unit: a 241-point curve is 8 units, so the cores share even a frame whose cost
-/// is one curve (a compared model's), and a unit is long enough (≥ 30 ε_N evaluations) that
-/// handing it out costs nothing.
-const CHUNK: usize = 32;
-
 /// Work a frame does alone before it calls in the other cores: a helper that takes a unit and then
 /// waits for a core on a busy machine holds the frame back by a scheduler slice (milliseconds),
 /// which only a frame longer than that can afford.
@@ -84,7 +79,7 @@ pub fn frame(
         Ok(plan) => plan,
         Err(frame) => return Some(*frame),
     };
-    let units = plan.units(CHUNK);
+    let units = plan.units(Plan::UNIT_POINTS);
     let outputs: Vec<Mutex<Option<Output>>> = units.iter().map(|_| Mutex::new(None)).collect();
     let next = AtomicUsize::new(0);
     let stop = AtomicBool::new(false);

@@ -461,7 +461,7 @@ fn tidal_panel_snapshot() {
     update(&mut app, ch('>'));
     assert!((app.tidal_factor - super::state::TIDAL_STEP).abs() < 1e-12);
     let s = text(&screen(&app, 100, 30));
-    assert!(s.contains("none: outside the Roche zone"), "{s}");
+    assert!(s.contains("none: at or outside d_Roche"), "{s}");
     assert!(s.contains("not comparable"));
     // The scene's adhesion supplies γ.
     update(&mut app, ch('<'));
@@ -2076,4 +2076,34 @@ fn quitting_cancels_the_refinement_issue_26() {
         event_rx.try_recv().is_err(),
         "no refined frame after quitting"
     );
+}
+
+/// Issue 36: the terminal lays out the core's tidal card: every compared row shows the card's own
+/// mark (the page receives the same card, wasm's `tidal_json`), so r_max (Eq. (A.5): 37.72 m
+/// against the printed 37.6 m) reads ⚠ on both, where the terminal said "≈ +0.3 %" and the page ⚠.
+#[test]
+fn issue_36_the_tidal_marks_are_the_cores() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('t'));
+    let s = text(&screen(&app, 100, 30));
+    let card = super::tidal::view(&app.scene, app.tidal_factor)
+        .card
+        .expect("the paper's example evaluates");
+    let mut compared = 0;
+    for row in &card.rows {
+        let Some(c) = &row.comparison else { continue };
+        let name = format!("{} {}", row.short.trim(), row.equation);
+        let line = s
+            .lines()
+            .find(|l| l.contains(name.trim()))
+            .unwrap_or_else(|| panic!("no row {name}\n{s}"));
+        assert!(line.contains(&c.mark), "{name}: {} not in {line}", c.mark);
+        compared += 1;
+    }
+    assert_eq!(
+        compared, 6,
+        "every printed number is compared on the paper's example"
+    );
+    assert!(s.contains("37.6 m      ⚠ +0.32 %"), "{s}");
+    assert!(s.contains(&card.verdict));
 }

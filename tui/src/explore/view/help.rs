@@ -10,76 +10,8 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph};
 use rime_core::StickClass;
 
-/// Sources of the experimental context and the tidal calculator, shown in the help.
-pub const SOURCES: &str = "B84 Bridges et al. 1984: ε = 0.32 (v/1 cm/s)^−0.234 · \
-H10 Heißelmann et al. 2010: 6–22 cm/s · H15 Hill et al. 2015: 0.27–0.51 m/s · \
-citations: docs/physics.md";
-
-/// The symbols on screen and what they mean.
-pub const GLOSSARY: &[(&str, &str)] = &[
-    (
-        "g_N, g_T",
-        "normal and tangential impact speed: the grains' relative speed along and across the line of centres [m/s]",
-    ),
-    (
-        "ε_N",
-        "normal restitution −g'_N/g_N: rebound over impact speed; 0 = the grains stick",
-    ),
-    (
-        "ε_T",
-        "tangential restitution g'_T/g_T, −1 … 1; negative: the tangential motion reverses",
-    ),
-    (
-        "δ, δ(g)",
-        "dimensionless damping A α^(2/5) g^(1/5) of one collision, at the cursor's speed g; large δ: overdamped",
-    ),
-    (
-        "tan ψ₀",
-        "μ/κ (Eq. (25)): impacts with g_T/g_N above it slide, below it roll",
-    ),
-    (
-        "g_s layer",
-        "impact speed below which the soft layer stops the grains (Eq. (10)); sticking left of the marker",
-    ),
-    (
-        "g_s adhesion",
-        "a rebound speed (Eq. (15)): the grains stick when their rebound speed without adhesion, ε_N·g_N, is below it; the chart draws it at g_N = g_s on the impact axis, and sticking reaches up to where ε_N·g_N = g_s, right of the marker",
-    ),
-    (
-        "A",
-        "damping time of the viscoelastic bulk (Eq. (4)) [s]; η₁, η₂ give it when set",
-    ),
-    (
-        "R_eff, m_eff",
-        "reduced radius R₁R₂/(R₁+R₂) and reduced mass of the pair",
-    ),
-    ("t_c", "contact duration of one collision"),
-    (
-        "η*, D",
-        "viscosity and thickness of the soft surface layer (frost, dust; Eq. (6)–(10))",
-    ),
-    (
-        "γ",
-        "surface energy of adhesion (JKR, Eq. (11)–(17)) [J/m²]",
-    ),
-    (
-        "μ, κ",
-        "friction coefficient and reduced moment of inertia (2/7 for solid spheres)",
-    ),
-    (
-        "family",
-        "the same scene with one parameter (s chooses it) varied around its value",
-    ),
-    ("clean surface", "this scene without layer and adhesion"),
-    (
-        "pinned",
-        "a curve kept by P, drawn dashed, to compare with later edits",
-    ),
-    (
-        "computed in",
-        "wall time of the last frame at the accuracy level shown (a: next level)",
-    ),
-];
+/// Where the citations are, after the sources' lines.
+const CITATIONS: &str = "citations: docs/physics.md";
 
 /// What each stick-map class means (the core's words, [`StickClass::meaning`]), and whether it is
 /// an artifact of the printed law rather than a physical regime.
@@ -188,13 +120,13 @@ pub fn content(inner_w: usize) -> Vec<Line<'static>> {
     ));
     lines.push(Line::default());
     lines.push(heading("Glossary"));
-    let gw = GLOSSARY
+    let gw = rime_core::explorer::help::GLOSSARY
         .iter()
         .map(|(n, _)| n.chars().count())
         .max()
         .unwrap_or(8)
         .min(inner_w / 3);
-    for (name, text) in GLOSSARY {
+    for (name, text) in rime_core::explorer::help::GLOSSARY {
         lines.extend(entry(name, keys, text, plain, gw, inner_w));
     }
     lines.push(Line::default());
@@ -212,8 +144,11 @@ pub fn content(inner_w: usize) -> Vec<Line<'static>> {
     }
     lines.push(Line::default());
     lines.push(heading("Sources"));
-    for part in wrap(SOURCES, inner_w) {
-        lines.push(Line::from(Span::styled(part, dim)));
+    let sources = rime_core::explorer::help::experiment_sources();
+    for source in sources.iter().map(String::as_str).chain([CITATIONS]) {
+        for part in wrap(source, inner_w) {
+            lines.push(Line::from(Span::styled(part, dim)));
+        }
     }
     lines
 }

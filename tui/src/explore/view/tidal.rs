@@ -8,7 +8,8 @@ use ratatui::layout::Rect;
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Wrap};
-use rime_core::tidal::{PAPER_QUOTED, TidalInput};
+use rime_core::explorer::tidal::{Comparison, NOT_COMPARABLE, SATURN_RADIUS};
+use rime_core::tidal::TidalInput;
 
 /// A value with its unit in the calculator's format: 4 significant digits, plain SI, powers of ten
 /// outside 0.1 … 1e4 (as the paper prints them).
@@ -27,23 +28,19 @@ fn v(x: f64, unit: &str) -> String {
     }
 }
 
-/// How a computed value compares with the printed one.
-fn compare(computed: f64, printed: f64) -> (String, Color) {
-    let rel = (computed - printed) / printed;
-    if rel.abs() < 0.002 {
-        ("✓".into(), Color::Green)
-    } else if rel.abs() < 0.05 {
-        (format!("≈ {:+.1} %", rel * 100.0), Color::Yellow)
+/// The colour of a comparison's mark: green where the print is reproduced, yellow within 5 %,
+/// red beyond.
+fn mark_color(c: &Comparison) -> Color {
+    if c.agrees {
+        Color::Green
+    } else if c.relative.abs() < 0.05 {
+        Color::Yellow
     } else {
-        (
-            format!("✗ ×{}", sig(computed / printed, 3)),
-            Color::LightRed,
-        )
+        Color::LightRed
     }
 }
 
-/// The calculator's lines.
-// Long by design: the appendix's rows (A.1)–(A.7) in the paper's order, one short block each.
+/// The calculator's lines: the core's card laid out (its rows, marks, notes and verdict).
 pub fn lines(t: &TidalView) -> Vec<Line<'static>> {
     let dim = Style::new().fg(Color::Gray);
     let input = t.input;
@@ -85,19 +82,8 @@ pub fn lines(t: &TidalView) -> Vec<Line<'static>> {
             },
         ]),
     ];
-    if t.inside_planet {
-        out.push(Line::from(Span::styled(
-            format!(
-                "⚠ d is inside Saturn (radius {}): no ring particle orbits there",
-                v(crate::explore::tidal::SATURN_RADIUS, "m")
-            ),
-            Style::new()
-                .fg(Color::LightRed)
-                .add_modifier(Modifier::BOLD),
-        )));
-    }
-    let tidal = match &t.result {
-        Ok(r) => *r,
+    let card = match &t.card {
+        Ok(c) => c,
         Err(e) => {
             out.push(Line::from(Span::styled(
                 format!("cannot evaluate: {e}"),
@@ -106,55 +92,18 @@ pub fn lines(t: &TidalView) -> Vec<Line<'static>> {
             return out;
         }
     };
-    let q = PAPER_QUOTED;
-    // (name, computed, paper's number, note key)
-    let r_max = match tidal.r_max {
-        Some(r) => v(r, "m"),
-        None => "none: outside the Roche zone".to_string(),
-    };
-    let rows: [(&str, String, Option<f64>, &str, &str); 7] = [
-        (
-            "ΔF tide A.1",
-            v(tidal.delta_f, "N"),
-            Some(q.delta_f),
-            "N",
-            "",
-        ),
-        (
-            "F_s adh A.2",
-            v(tidal.surface_force, "N"),
-            Some(q.surface_force),
-            "N",
-            "¹",
-        ),
-        (
-            "  = πγr",
-            v(tidal.surface_force_paper, "N"),
-            Some(q.surface_force),
-            "N",
-            "",
-        ),
-        ("F_g grav A.3", v(tidal.gravity, "N"), None, "", ""),
-        (
-            "d_Roche A.7",
-            v(tidal.d_roche, "m"),
-            Some(q.d_roche),
-            "m",
-            "",
-        ),
-        ("d_min A.6", v(tidal.d_min, "m"), Some(q.d_min), "m", "²"),
-        ("r_max A.5", r_max, Some(q.r_max), "m", "³"),
-    ];
-    let computed_values = [
-        Some(tidal.delta_f),
-        Some(tidal.surface_force),
-        Some(tidal.surface_force_paper),
-        Some(tidal.gravity),
-        Some(tidal.d_roche),
-        Some(tidal.d_min),
-        tidal.r_max,
-    ];
-    let paper_head = if t.paper_inputs {
+    if card.inside_planet {
+        out.push(Line::from(Span::styled(
+            format!(
+                "⚠ d is inside Saturn (radius {}): no ring particle orbits there",
+                v(SATURN_RADIUS, "m")
+            ),
+            Style::new()
+                .fg(Color::LightRed)
+                .add_modifier(Modifier::BOLD),
+        )));
+    }
+    let paper_head = if card.paper_inputs {
         "paper"
     } else {
         "paper (its inputs)"
@@ -163,54 +112,59 @@ pub fn lines(t: &TidalView) -> Vec<Line<'static>> {
         format!("{:<13}{:>12}  {paper_head}", "", "this"),
         dim.add_modifier(Modifier::BOLD),
     )));
-    for ((name, computed, printed, unit, note), value) in rows.into_iter().zip(computed_values) {
+    const SUPERSCRIPTS: [&str; 4] = ["¹", "²", "³", "⁴"];
+    let mut footnotes = Vec::new();
+    for row in &card.rows {
+        let name = if row.equation.is_empty() {
+            row.short.to_string()
+        } else {
+            format!("{} {}", row.short, row.equation)
+        };
         let mut spans = vec![Span::styled(format!("{name:<13}"), dim)];
-        if value.is_none() {
-            spans.push(Span::styled(computed, Style::new().fg(Color::LightYellow)));
+        let Some(value) = row.computed else {
+            spans.push(Span::styled(
+                row.note.to_string(),
+                Style::new().fg(Color::LightYellow),
+            ));
             out.push(Line::from(spans));
             continue;
-        }
+        };
         spans.push(Span::styled(
-            format!("{computed:>12}"),
+            format!("{:>12}", v(value, row.unit)),
             Style::new().fg(Color::LightYellow),
         ));
-        let paper = printed.map_or("—".to_string(), |p| v(p, unit));
+        let paper = row.printed.map_or("—".to_string(), |p| v(p, row.unit));
         spans.push(Span::raw(format!("  {paper:<11}")));
-        if let (true, Some(c), Some(p)) = (t.paper_inputs, value, printed) {
-            let (mark, color) = compare(c, p);
-            spans.push(Span::styled(format!(" {mark}"), Style::new().fg(color)));
-        }
-        if t.paper_inputs && !note.is_empty() {
+        if let Some(c) = &row.comparison {
             spans.push(Span::styled(
-                note.to_string(),
-                Style::new().fg(Color::Yellow),
+                format!(" {}", c.mark),
+                Style::new().fg(mark_color(c)),
             ));
+        }
+        if card.paper_inputs && !row.footnote.is_empty() {
+            let mark = SUPERSCRIPTS[footnotes.len().min(SUPERSCRIPTS.len() - 1)];
+            footnotes.push(format!("{mark} {}", row.footnote));
+            spans.push(Span::styled(mark, Style::new().fg(Color::Yellow)));
         }
         out.push(Line::from(spans));
     }
-    // Verdict: the pair separates where the tidal pull exceeds adhesion plus self-gravity.
     // The core's one verdict (the page and `rime tidal` say the same).
-    let color = if tidal.holds() {
+    let color = if card.holds {
         Color::Green
     } else {
         Color::LightRed
     };
     out.push(Line::from(Span::styled(
-        tidal.verdict(),
+        card.verdict.clone(),
         Style::new().fg(color),
     )));
-    if t.paper_inputs {
-        let notes = [
-            "¹ A.2 is πγR_eff, R_eff = r/2; the print is πγr",
-            "² the printed 5.43e4 m does not follow from A.6",
-            "³ r_max is very sensitive to 4M/d³ − πρ/3",
-        ];
-        for n in notes {
+    if card.paper_inputs {
+        for n in footnotes {
             out.push(Line::from(Span::styled(n, Style::new().fg(Color::Gray))));
         }
     } else {
         out.push(Line::from(Span::styled(
-            "inputs differ from the paper's example (r 2 cm, ρ 900, γ 0.1, Encke): printed numbers not comparable",
+            NOT_COMPARABLE,
             Style::new().fg(Color::Gray),
         )));
     }

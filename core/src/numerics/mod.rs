@@ -1,0 +1,3 @@
+//! Numerical methods shared by the models and the fits.
+
+pub mod lm;
