@@ -1,11 +1,13 @@
-//! Independent work on every core for the scriptable subcommands (issue 26): `rime curve`, `map`
-//! and `compare` split their speeds into chunks that scoped threads take in turn. The chunks'
+//! Independent work on every core, one queue ([`in_turn`]) for the explorer's frames and the
+//! scriptable subcommands (issue 26): `rime curve`, `map` and `compare` split their speeds into
+//! chunks that scoped threads take in turn. The chunks'
 //! results come back in their order, so the output equals the sequential one byte for byte, and
 //! the error reported is the sequential run's first.
 
 use std::ops::Range;
 use std::sync::Mutex;
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::time::{Duration, Instant};
 
 /// Items per chunk below which cheap work is not split further (an ε_N from a table costs ~0.1 µs:
 /// a chunk must outweigh handing it out).
@@ -38,34 +40,74 @@ pub fn chunks<T: Send>(
     if threads == 1 || ranges.len() == 1 {
         return ranges.into_iter().map(f).collect();
     }
-    let slots: Vec<Mutex<Option<T>>> = ranges.iter().map(|_| Mutex::new(None)).collect();
+    in_turn(ranges.len(), threads, None, |k| Some(f(ranges[k].clone()))).unwrap_or_default()
+}
+
+/// The one work queue of the terminal crate: tasks `0..n` taken in turn by `threads` scoped threads
+/// (this one included); their results in task order. A task that returns `None` stops the others
+/// at their next task, and the whole run returns `None` (the explorer's cancelled frame). With
+/// `spawn_after`, the other threads start only once this one has worked that long (a cheap frame
+/// then never waits for a busy machine's scheduler to hand a new thread a core).
+pub fn in_turn<T: Send>(
+    n: usize,
+    threads: usize,
+    spawn_after: Option<Duration>,
+    task: impl Fn(usize) -> Option<T> + Sync,
+) -> Option<Vec<T>> {
+    let slots: Vec<Mutex<Option<T>>> = (0..n).map(|_| Mutex::new(None)).collect();
     let next = AtomicUsize::new(0);
-    let work = || {
-        loop {
-            let k = next.fetch_add(1, Ordering::Relaxed);
-            let Some(range) = ranges.get(k) else {
-                return;
-            };
-            let out = f(range.clone());
-            if let Ok(mut slot) = slots[k].lock() {
-                *slot = Some(out);
+    let stop = AtomicBool::new(false);
+    // Takes the next task and runs it; `false` when none is left or a task stopped the run.
+    let step = || {
+        if stop.load(Ordering::Relaxed) {
+            return false;
+        }
+        let k = next.fetch_add(1, Ordering::Relaxed);
+        if k >= n {
+            return false;
+        }
+        match task(k) {
+            Some(out) => {
+                if let Ok(mut slot) = slots[k].lock() {
+                    *slot = Some(out);
+                }
+                true
+            }
+            None => {
+                stop.store(true, Ordering::Relaxed);
+                false
             }
         }
     };
+    let helpers_wanted = threads.max(1).min(n.max(1)) - 1;
     std::thread::scope(|s| {
-        let helpers: Vec<_> = (1..threads.min(ranges.len()))
-            .map(|_| s.spawn(work))
-            .collect();
-        work();
+        let start = Instant::now();
+        let mut helpers = Vec::new();
+        let spawn = |helpers: &mut Vec<_>| {
+            *helpers = (0..helpers_wanted)
+                .map(|_| s.spawn(|| while step() {}))
+                .collect();
+        };
+        if spawn_after.is_none() {
+            spawn(&mut helpers);
+        }
+        while step() {
+            if helpers.is_empty() && spawn_after.is_some_and(|after| start.elapsed() >= after) {
+                spawn(&mut helpers);
+            }
+        }
         for h in helpers {
             if let Err(panic) = h.join() {
                 std::panic::resume_unwind(panic);
             }
         }
     });
+    if stop.load(Ordering::Relaxed) {
+        return None;
+    }
     slots
         .into_iter()
-        .filter_map(|m| m.into_inner().ok().flatten())
+        .map(|m| m.into_inner().ok().flatten())
         .collect()
 }
 
@@ -125,6 +167,19 @@ mod tests {
         let parts = chunks(5, 2, 1, |r| r);
         assert_eq!(parts, (0..5).map(|i| i..i + 1).collect::<Vec<_>>());
         assert_eq!(each(5, 2, 1, |i| 2 * i), vec![0, 2, 4, 6, 8]);
+    }
+
+    #[test]
+    fn a_task_that_stops_stops_the_run_on_any_thread_count() {
+        for threads in [1, 2, 4] {
+            for after in [None, Some(Duration::ZERO)] {
+                let all = in_turn(50, threads, after, Some);
+                assert_eq!(all, Some((0..50).collect()), "{threads} {after:?}");
+                let stopped = in_turn(50, threads, after, |k| (k != 7).then_some(k));
+                assert_eq!(stopped, None, "{threads} {after:?}");
+            }
+        }
+        assert_eq!(in_turn(0, 3, None, Some), Some(Vec::<usize>::new()));
     }
 
     #[test]

@@ -8,10 +8,8 @@
 //! then the frame at the requested level (issue 26).
 
 use rime_core::Accuracy;
-use rime_core::explorer::frame::{self, Frame, Output, Plan};
+use rime_core::explorer::frame::{self, Frame, Plan};
 use rime_core::normal::memo::LayerMemo;
-use std::sync::Mutex;
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 pub use rime_core::explorer::frame::{SWEEPS, Sweep};
@@ -80,55 +78,10 @@ pub fn frame(
         Err(frame) => return Some(*frame),
     };
     let units = plan.units(Plan::UNIT_POINTS);
-    let outputs: Vec<Mutex<Option<Output>>> = units.iter().map(|_| Mutex::new(None)).collect();
-    let next = AtomicUsize::new(0);
-    let stop = AtomicBool::new(false);
-    // Takes the next unit and runs it; `false` when none is left or the frame was cancelled (a
-    // thread that is cancelled stops the others).
-    let step = || {
-        let stopped = || stop.load(Ordering::Relaxed) || cancelled();
-        let i = next.fetch_add(1, Ordering::Relaxed);
-        let Some(unit) = units.get(i) else {
-            return false;
-        };
-        match plan.run_with(unit, &stopped, memo) {
-            Some(out) => {
-                if let Ok(mut slot) = outputs[i].lock() {
-                    *slot = Some(out);
-                }
-                true
-            }
-            None => {
-                stop.store(true, Ordering::Relaxed);
-                false
-            }
-        }
-    };
-    std::thread::scope(|s| {
-        // Helpers start only once the frame has shown it is not cheap: on a busy machine a new
-        // thread can wait milliseconds for a core, more than a whole `fast` frame takes.
-        let start = Instant::now();
-        let mut helpers = Vec::new();
-        while step() {
-            if helpers.is_empty() && start.elapsed() >= SPAWN_AFTER {
-                helpers = (1..threads)
-                    .map(|_| s.spawn(move || while step() {}))
-                    .collect();
-            }
-        }
-        for h in helpers {
-            if let Err(panic) = h.join() {
-                std::panic::resume_unwind(panic);
-            }
-        }
-    });
-    if stop.load(Ordering::Relaxed) {
-        return None;
-    }
-    let outputs = outputs
-        .into_iter()
-        .map(|m| m.into_inner().ok().flatten())
-        .collect::<Option<Vec<Output>>>()?;
+    // A unit that sees the cancellation returns `None`, which stops the other threads too.
+    let outputs = crate::parallel::in_turn(units.len(), threads, Some(SPAWN_AFTER), |i| {
+        plan.run_with(&units[i], cancelled, memo)
+    })?;
     Some(plan.assemble(&units, outputs))
 }
 
