@@ -16,23 +16,7 @@ pub fn critical_velocity_layer(r_eff: f64, m_eff: f64, thickness: f64, viscosity
     sqrt(r_eff) * viscosity * thickness * sqrt(thickness) / m_eff
 }
 
-/// The constant of Eq. (12): `W_s = 7.09 (γ⁵R_eff⁴/E²)^(1/3)`.
-pub const EQ12_CONSTANT: f64 = 7.09;
-
-/// The constant of Eq. (15): `g_s = (14.18/m_eff)^(1/2) (γ⁵R_eff⁴/E²)^(1/6)`; 14.18 = 2 × 7.09, so
-/// that `½ m_eff g_s² = W_s`.
-pub const EQ15_CONSTANT: f64 = 14.18;
-
-/// The modulus `E` of Eq. (12) and (15) for Young's modulus `youngs` \[Pa\], Poisson's ratio
-/// `poisson` and the scene's reading of it: `Y/(1−ν²)` as printed, or half of it, the value
-/// consistent with the contact's own E* (docs/physics.md#decision-5).
-pub fn adhesion_modulus(youngs: f64, poisson: f64, rule: crate::scene::AdhesionModulus) -> f64 {
-    let printed = youngs / (1.0 - poisson * poisson);
-    match rule {
-        crate::scene::AdhesionModulus::AsPrinted => printed,
-        crate::scene::AdhesionModulus::Consistent => 0.5 * printed,
-    }
-}
+pub use crate::contact::{EQ12_CONSTANT, EQ15_CONSTANT, adhesion_modulus};
 
 /// JKR separation energy, Eq. (12): `W_s = 7.09 (γ⁵R_eff⁴/E²)^(1/3)` \[J\], with surface energy `γ`
 /// \[J/m²\], `R_eff` \[m\] and modulus `E` \[Pa\] (`Y/(1−ν²)` as printed, docs/physics.md#decision-5).

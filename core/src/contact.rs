@@ -2,7 +2,7 @@
 
 use crate::error::{Error, Result};
 use crate::math::{powf, sqrt};
-use crate::scene::{ContactEnd, Friction, LayerReading, Scene};
+use crate::scene::{AdhesionModulus, ContactEnd, Friction, LayerReading, Scene};
 
 /// Constants of the soft layer model, Eq. (8)–(10).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -28,6 +28,24 @@ pub struct AdhesionConstants {
     pub separation_energy: f64,
     /// Critical rebound velocity `g_s` \[m/s\], Eq. (15).
     pub critical_velocity: f64,
+}
+
+/// The constant of Eq. (12): `W_s = 7.09 (γ⁵R_eff⁴/E²)^(1/3)`.
+pub const EQ12_CONSTANT: f64 = 7.09;
+
+/// The constant of Eq. (15): `g_s = (14.18/m_eff)^(1/2) (γ⁵R_eff⁴/E²)^(1/6)`; 14.18 = 2 × 7.09, so
+/// that `½ m_eff g_s² = W_s`.
+pub const EQ15_CONSTANT: f64 = 14.18;
+
+/// The modulus `E` of Eq. (12) and (15) for Young's modulus `youngs` \[Pa\], Poisson's ratio
+/// `poisson` and the scene's reading of it: `Y/(1−ν²)` as printed, or half of it, the value
+/// consistent with the contact's own E* (docs/physics.md#decision-5).
+pub fn adhesion_modulus(youngs: f64, poisson: f64, rule: AdhesionModulus) -> f64 {
+    let printed = youngs / (1.0 - poisson * poisson);
+    match rule {
+        AdhesionModulus::AsPrinted => printed,
+        AdhesionModulus::Consistent => 0.5 * printed,
+    }
 }
 
 /// Everything a collision needs, derived once from a [`Scene`].
@@ -158,14 +176,14 @@ impl Contact {
         let adhesion = match &scene.adhesion {
             None => None,
             Some(a) => {
-                let modulus = crate::analytic::adhesion_modulus(y, nu, a.modulus);
+                let modulus = adhesion_modulus(y, nu, a.modulus);
                 let gamma = a.surface_energy;
                 // (γ⁵R⁴/E²)^(1/3), evaluated factor by factor so that no power overflows.
                 let k13 =
                     powf(gamma, 5.0 / 3.0) * powf(r_eff, 4.0 / 3.0) * powf(modulus, -2.0 / 3.0);
                 // Eq. (12) and Eq. (15); note 14.18 = 2 × 7.09, i.e. ½ m_eff g_s² = W_s.
-                let separation_energy = crate::analytic::EQ12_CONSTANT * k13;
-                let critical_velocity = sqrt(crate::analytic::EQ15_CONSTANT / m_eff) * sqrt(k13);
+                let separation_energy = EQ12_CONSTANT * k13;
+                let critical_velocity = sqrt(EQ15_CONSTANT / m_eff) * sqrt(k13);
                 if !(separation_energy.is_finite() && critical_velocity.is_finite()) {
                     return Err(Error::DerivedOutOfRange {
                         quantity: "g_s (adhesion)",

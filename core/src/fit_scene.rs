@@ -18,7 +18,7 @@
 use crate::accuracy::Accuracy;
 use crate::contact::Contact;
 use crate::error::Number;
-use crate::explorer::format::sig;
+use crate::figure::format::sig;
 use crate::math::{exp, ln, sqrt};
 use crate::numerics::lm::{LeastSquares, Schedule, damped_diagonal, minimise};
 use crate::params::{Kind, Value, parameter};

@@ -48,7 +48,6 @@ pub mod collision;
 pub mod contact;
 pub mod error;
 pub mod explorer;
-#[cfg(feature = "alloc")]
 pub mod figure;
 pub mod fit;
 #[cfg(feature = "alloc")]

@@ -335,7 +335,7 @@ impl RingPatch {
     /// `scale_damping=True`).
     #[cfg(feature = "alloc")]
     pub fn damping_note(&self, rec: &RingRecord, flag: &str) -> Option<alloc::string::String> {
-        use crate::explorer::format::shortest as num;
+        use crate::figure::format::shortest as num;
         if self.scaled {
             Some(alloc::format!(
                 "A scaled to {} s = A·R/R_set for R = {} m (A was set for {} m grains): this keeps \

@@ -296,7 +296,7 @@ impl ThresholdTable {
 
     /// What `v_stick` uses from the scene, for its column header: `A = 1e-4 s` (and the layer).
     pub fn v_stick_note(&self) -> alloc::string::String {
-        let a = crate::explorer::format::qty3(self.damping_time, "s");
+        let a = crate::figure::format::qty3(self.damping_time, "s");
         if self.layer {
             alloc::format!("the scene's A = {a} and layer")
         } else {

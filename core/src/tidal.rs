@@ -143,7 +143,7 @@ impl Tidal {
         if self.holds() {
             alloc::format!(
                 "ΔF < F_s + F_g (×{}): the pair stays in contact",
-                crate::explorer::format::sig(self.margin(), 2)
+                crate::figure::format::sig(self.margin(), 2)
             )
         } else {
             alloc::string::String::from("ΔF ≥ F_s + F_g: the tide pulls the pair apart")

@@ -10,13 +10,13 @@
 #[cfg(feature = "explorer")]
 pub mod figures;
 #[cfg(feature = "alloc")]
-pub mod format;
+pub use crate::figure::format;
 #[cfg(feature = "explorer")]
 pub mod frame;
-pub mod help;
+pub use crate::figure::words as help;
 #[cfg(feature = "explorer")]
 pub mod limits;
-pub mod palette;
+pub use crate::figure::palette;
 #[cfg(feature = "explorer")]
 pub mod range;
 #[cfg(feature = "explorer")]

@@ -43,7 +43,7 @@ impl Corner {
 }
 
 /// `n`·10^`e` written exactly: plain between 0.01 and 1e5 (`0.25`, `1500`), else with an
-/// exponent (`2.5e-9`, `1e-3`, `1e6`), as [`crate::explorer::format::decade`] writes decades. Built from the digits of `n`, so no float noise can appear.
+/// exponent (`2.5e-9`, `1e-3`, `1e6`), as [`crate::figure::format::decade`] writes decades. Built from the digits of `n`, so no float noise can appear.
 pub fn decimal_label(n: i64, e: i32) -> String {
     if n == 0 {
         return "0".to_string();

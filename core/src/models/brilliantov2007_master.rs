@@ -33,7 +33,7 @@
 //! live outcome).
 
 #[cfg(feature = "std")]
-use super::brilliantov2007::{Outcome, energy_margin};
+use super::brilliantov2007_motion::{Outcome, energy_margin};
 use crate::master::Resolution;
 use crate::math::{cbrt, clenshaw, exp, log10, powf};
 use crate::scene::{ContactEnd, JkrEnd};

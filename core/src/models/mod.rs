@@ -7,6 +7,7 @@
 pub mod approximants;
 pub mod brilliantov2007;
 pub mod brilliantov2007_master;
+mod brilliantov2007_motion;
 // Generated (`generate_brilliantov_table`): long literals, no docs of its own.
 #[allow(clippy::all, missing_docs)]
 #[rustfmt::skip]

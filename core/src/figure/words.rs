@@ -134,7 +134,7 @@ pub const GLOSSARY: [(&str, &str); 21] = [
 /// Bridges law.
 #[cfg(feature = "alloc")]
 pub fn experiment_sources() -> alloc::vec::Vec<alloc::string::String> {
-    use crate::explorer::format::qty;
+    use crate::figure::format::qty;
     use alloc::format;
     let speeds = |[lo, hi]: [f64; 2]| {
         let (a, b) = (qty(lo, "m/s"), qty(hi, "m/s"));
