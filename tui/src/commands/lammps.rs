@@ -147,7 +147,7 @@ variable t_hertz equal {:e}*v_tau  # undamped Hertz contact duration [s]
 # is 1.5 δ √x. The step resolves both the Hertz duration and the viscous time (strong damping).
 variable x_bound equal v_delta^(-2/3)
 variable xi_bound equal v_xi_star*ternary(v_x_bound<{:e},v_x_bound,{:e})
-variable rate_load equal v_eta_n0*sqrt(v_r_eff*v_xi_bound)*v_tau
+variable rate_load equal v_eta_n0*sqrt(v_r_eff*v_xi_bound)*v_tau*{:e}  # × 4000/steps per contact (JKR: 1/16)
 variable dt equal v_t_hertz/(v_steps_per_contact*ternary(v_rate_load>1,v_rate_load,1))
 variable t_run equal {}  # time limit [s]: {}",
         m.steps_per_contact,
@@ -161,6 +161,7 @@ variable t_run equal {}  # time limit [s]: {}",
         rime_core::analytic::HERTZ_CONTACT_TIME,
         rime_core::analytic::HERTZ_MAX_COMPRESSION,
         rime_core::analytic::HERTZ_MAX_COMPRESSION,
+        f64::from(rime_core::dem::STEPS_PER_CONTACT) / f64::from(m.steps_per_contact),
         if jkr {
             "200*v_t_hertz".to_string()
         } else if m.limit_damping {
@@ -245,11 +246,12 @@ variable creep_step equal v_vrel*v_dt_now/(2.2e-16*abs(x[2]))  # step in roundin
         w,
         "# After the grains turn apart the step follows the current overlap (a creeping contact runs
 # at the Hertz step once its viscous rate has fallen).
-variable rate_now equal v_eta_n0*sqrt(v_r_eff*ternary(v_gap<0,-v_gap,0))*v_tau
+variable rate_now equal v_eta_n0*sqrt(v_r_eff*ternary(v_gap<0,-v_gap,0))*v_tau*{:e}
 variable dt_now equal v_t_hertz/(v_steps_per_contact*ternary(v_rate_now>1,v_rate_now,1))
 variable separating equal 0
 variable status string running
-variable chunk equal ceil(v_steps_per_contact/4)"
+variable chunk equal ceil(v_steps_per_contact/4)",
+        f64::from(rime_core::dem::STEPS_PER_CONTACT) / f64::from(m.steps_per_contact)
     );
     let _ = writeln!(
         w,
@@ -449,8 +451,8 @@ printed as a number only in [0, 1]. `reference.tsv` holds what rime computes for
     );
     let _ = writeln!(
         s,
-        "| `timestep` | t_H / (steps_per_contact · max(1, η_n0 a τ)) | Hertz duration t_H = 3.21807 α^(−2/5) g^(−1/5), the viscous rate η_n0 a = 1.5 δ √x / τ | LAMMPS's velocity Verlet with a velocity-dependent force is explicit and first order in dt: ε_N needs thousands of steps per contact duration and, at strong damping, per viscous time (this deck: {}; a JKR deck's force jumps at pull-off, misplacing up to F_p dt/(m_eff g) of ε in a way not smooth in dt, so it takes more). Until the grains turn apart `a` is taken at the bound ξ* min(x_H, δ^(−2/3)) of the maximum compression, then at the current overlap. The error halves with dt, so two runs (dt, dt/2) and Richardson `2ε(dt/2) − ε(dt)` give rime's value to ≤ 1e-5 |",
-        m.steps_per_contact
+        "| `timestep` | t_H / (steps_per_contact · max(1, η_n0 a τ · 4000/N₀)), N₀ = {} | Hertz duration t_H = 3.21807 α^(−2/5) g^(−1/5), the viscous rate η_n0 a = 1.5 δ √x / τ | LAMMPS's velocity Verlet with a velocity-dependent force is explicit and first order in dt: ε_N needs thousands of steps per contact duration and, at strong damping, per viscous time (this deck: {}; a JKR deck's force jumps at pull-off, misplacing up to F_p dt/(m_eff g) of ε in a way not smooth in dt, so it takes more, and its finer step resolves the viscous time 16× better already). Until the grains turn apart `a` is taken at the bound ξ* min(x_H, δ^(−2/3)) of the maximum compression, then at the current overlap. The error halves with dt, so two runs (dt, dt/2) and Richardson `2ε(dt/2) − ε(dt)` give rime's value to ≤ 1e-5 |",
+        m.steps_per_contact, m.steps_per_contact
     );
     let _ = writeln!(
         s,
