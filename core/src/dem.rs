@@ -88,15 +88,15 @@ impl AdhesionMapping {
 /// Every number of a LAMMPS two-grain deck, from a scene.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LammpsMapping {
-    /// LAMMPS `E` [Pa]: the scene's Young's modulus (LAMMPS mixes it to [`Self::e_star`]).
+    /// LAMMPS `E` \[Pa\]: the scene's Young's modulus (LAMMPS mixes it to [`Self::e_star`]).
     pub youngs_modulus: f64,
     /// LAMMPS `ν`.
     pub poisson_ratio: f64,
-    /// The contact modulus E* = E/(2(1−ν²)) [Pa].
+    /// The contact modulus E* = E/(2(1−ν²)) \[Pa\].
     pub e_star: f64,
-    /// LAMMPS `η_n0` of `damping viscoelastic` = 2E*A/m_eff [1/(m s)].
+    /// LAMMPS `η_n0` of `damping viscoelastic` = 2E*A/m_eff \[1/(m s)\].
     pub eta_n0: f64,
-    /// LAMMPS `jkr` surface energy γ = w/2 [J/m²] (`None`: `hertz/material`).
+    /// LAMMPS `jkr` surface energy γ = w/2 \[J/m²\] (`None`: `hertz/material`).
     pub jkr_gamma: Option<f64>,
     /// Whether the deck uses `limit_damping` (rime's `force_zero`).
     pub limit_damping: bool,
@@ -104,19 +104,19 @@ pub struct LammpsMapping {
     pub model: Model,
     /// The JKR end the reference values use (`None` without adhesion).
     pub jkr_end: Option<JkrEnd>,
-    /// LAMMPS's JKR pull-off force 3πγR_eff [N] (0 without adhesion).
+    /// LAMMPS's JKR pull-off force 3πγR_eff \[N\] (0 without adhesion).
     pub pull_off_force: f64,
-    /// Separation beyond touching at which LAMMPS's JKR contact ends [m] (0 without adhesion).
+    /// Separation beyond touching at which LAMMPS's JKR contact ends \[m\] (0 without adhesion).
     pub pull_off_separation: f64,
-    /// m₁m₂/(m₁+m₂) [kg].
+    /// m₁m₂/(m₁+m₂) \[kg\].
     pub m_eff: f64,
-    /// R₁R₂/(R₁+R₂) [m].
+    /// R₁R₂/(R₁+R₂) \[m\].
     pub r_eff: f64,
-    /// The damping time A [s].
+    /// The damping time A \[s\].
     pub damping_time: f64,
-    /// τ = `time_coefficient` · g^(−1/5) [s] (τ = ξ*/g).
+    /// τ = `time_coefficient` · g^(−1/5) \[s\] (τ = ξ*/g).
     pub time_coefficient: f64,
-    /// ξ* = `length_coefficient` · g^(4/5) [m].
+    /// ξ* = `length_coefficient` · g^(4/5) \[m\].
     pub length_coefficient: f64,
     /// δ = `delta_coefficient` · g^(1/5).
     pub delta_coefficient: f64,
@@ -205,7 +205,7 @@ impl LammpsMapping {
         Ok(mapping)
     }
 
-    /// τ = ξ*/g [s].
+    /// τ = ξ*/g \[s\].
     pub fn time_scale(&self, g: f64) -> f64 {
         self.time_coefficient * powf(g, -0.2)
     }
@@ -215,12 +215,12 @@ impl LammpsMapping {
         self.delta_coefficient * powf(g, 0.2)
     }
 
-    /// The elastic Hertz contact duration `HERTZ_CONTACT_TIME · τ` [s] (3.21806546 α^(−2/5) g^(−1/5)).
+    /// The elastic Hertz contact duration `HERTZ_CONTACT_TIME · τ` \[s\] (3.21806546 α^(−2/5) g^(−1/5)).
     pub fn hertz_duration(&self, g: f64) -> f64 {
         HERTZ_CONTACT_TIME * self.time_scale(g)
     }
 
-    /// A bound of the maximum compression [m]: `ξ* min(x_H, δ^(−2/3))`. Damping only takes energy
+    /// A bound of the maximum compression \[m\]: `ξ* min(x_H, δ^(−2/3))`. Damping only takes energy
     /// away (≤ the Hertz x_H), and integrating Eq. (4) once, `x' = 1 − δ x^(3/2) − ∫x^(3/2) ds ≤
     /// 1 − δ x^(3/2)`, so x stops growing before δ x^(3/2) = 1.
     pub fn compression_bound(&self, g: f64) -> f64 {
@@ -233,12 +233,12 @@ impl LammpsMapping {
         x * self.length_coefficient * powf(g, 0.8)
     }
 
-    /// The viscous relaxation rate `η_n0 a` at overlap `xi` [m], in units of 1/τ (`1.5 δ √x`).
+    /// The viscous relaxation rate `η_n0 a` at overlap `xi` \[m\], in units of 1/τ (`1.5 δ √x`).
     pub fn viscous_rate(&self, g: f64, xi: f64) -> f64 {
         self.eta_n0 * sqrt(self.r_eff * xi.max(0.0)) * self.time_scale(g)
     }
 
-    /// The time step [s] at impact speed `g` and overlap `xi` [m] with `steps` per contact:
+    /// The time step \[s\] at impact speed `g` and overlap `xi` \[m\] with `steps` per contact:
     /// `t_Hertz / (steps · max(1, η_n0 a τ · STEPS_PER_CONTACT / steps_per_contact))`: as many
     /// steps per viscous time η_n0 a as a Hertz deck takes per contact (a JKR deck's 16× finer
     /// step, set by its pull-off jump, resolves the viscous time 16× better already).
@@ -253,7 +253,7 @@ impl LammpsMapping {
         self.time_step(g, self.compression_bound(g), steps)
     }
 
-    /// The run-time guard [s]: [`RUN_TIME_FACTOR`] × a bound of rime's contact duration
+    /// The run-time guard \[s\]: [`RUN_TIME_FACTOR`] × a bound of rime's contact duration
     /// (τ (3.218 + [`ZERO_OVERLAP_DURATION_SLOPE`] δ) for zero overlap, the Hertz duration for force
     /// zero, whose contacts damping only shortens), or 200 Hertz durations for JKR (an adhesive
     /// contact may oscillate several times before it is caught).
@@ -305,19 +305,19 @@ impl LammpsMapping {
 /// rime's values at one speed, with the deck's loading time step and run-time guard there.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Reference {
-    /// Impact speed [m/s].
+    /// Impact speed \[m/s\].
     pub g: f64,
     /// ε_N (0 when stuck; the raw tiny value when overdamped).
     pub eps: f64,
     /// How the collision ends.
     pub status: ModelStatus,
-    /// Contact duration [s] (infinite when unresolved or stuck).
+    /// Contact duration \[s\] (infinite when unresolved or stuck).
     pub t_c: f64,
-    /// Maximum compression [m].
+    /// Maximum compression \[m\].
     pub xi_max: f64,
-    /// The deck's time step until the grains turn apart [s].
+    /// The deck's time step until the grains turn apart \[s\].
     pub time_step: f64,
-    /// The deck's run-time guard [s].
+    /// The deck's run-time guard \[s\].
     pub run_time: f64,
 }
 
