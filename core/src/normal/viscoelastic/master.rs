@@ -588,6 +588,40 @@ mod tests {
         }
     }
 
+    #[test]
+    fn issue_35_max_compression_of_the_issue_scene_is_the_force_zero_one_at_every_level() {
+        // `rime eps --set bulk.damping.time=4004.4 --g 0.01 --set contact_end=zero_overlap`
+        // gave ξ_max = 1.37932e-11 m; the force-zero rule's (and the true) value is 1.38248e-11 m.
+        let mut scene = crate::scene::Preset::Ice.scene();
+        scene.set("bulk.damping.time", "4004.4").unwrap();
+        let at = |end: ContactEnd, accuracy: crate::Accuracy| {
+            let mut s = scene;
+            s.contact_end = end;
+            crate::Contact::new(&s)
+                .unwrap()
+                .normal(0.01, accuracy)
+                .unwrap()
+                .xi_max
+        };
+        for accuracy in [
+            crate::Accuracy::Fast,
+            crate::Accuracy::Precise,
+            crate::Accuracy::Balanced,
+            crate::Accuracy::Tolerance(1e-8),
+        ] {
+            let force_zero = at(ContactEnd::ForceZero, accuracy);
+            let zero_overlap = at(ContactEnd::ZeroOverlap, accuracy);
+            assert!(
+                rel(zero_overlap, force_zero) <= accuracy.error_bound(),
+                "{accuracy:?}: {zero_overlap:e} vs {force_zero:e}"
+            );
+            assert!(
+                (force_zero / 1.38248e-11 - 1.0).abs() < 5e-6,
+                "{force_zero:e}"
+            );
+        }
+    }
+
     #[cfg(feature = "std")]
     #[test]
     fn master_table_matches_a_fresh_generation() {
