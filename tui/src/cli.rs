@@ -32,7 +32,7 @@ pub enum Command {
     /// `rime export --from G --to G --points N --out DIR [--runtime-params true]`.
     Export(Common, f64, f64, usize, PathBuf, bool),
     /// `export --lammps DIR`: a LAMMPS deck, its reference values and README.
-    ExportLammps(Common, PathBuf),
+    ExportLammps(Common, PathBuf, Option<rime_core::dem::AdhesionMapping>),
     /// `rime fit (--data FILE.csv | --law ID) [--param A,B]`.
     Fit(Common, crate::commands::fit::Args),
     /// `rime data [--law ID --g LIST [--radius R]]`.
@@ -334,14 +334,29 @@ fn export_lammps(common: Common, flags: &Flags) -> CliResult<Command> {
             return err(format!("{flag}: not used with --lammps"));
         }
     }
+    // An adhesive scene maps only onto a named model (issue 35); the name is checked here, its
+    // fit with the scene by the export.
+    let adhesion = match flags.get("--lammps-adhesion") {
+        None => None,
+        Some(name) => Some(rime_core::dem::AdhesionMapping::parse(name).map_err(|_| {
+            CliError::input(format!(
+                "--lammps-adhesion: '{name}' is not a mapping; the one LAMMPS has is jkr \
+                 (pair granular jkr = brilliantov2007)"
+            ))
+        })?),
+    };
     Ok(Command::ExportLammps(
         common,
         PathBuf::from(flags.require("--lammps")?),
+        adhesion,
     ))
 }
 
 /// `export --out DIR [--from G --to G --points N] [--runtime-params]`.
 fn export(common: Common, flags: &Flags) -> CliResult<Command> {
+    if flags.get("--lammps-adhesion").is_some() {
+        return err("--lammps-adhesion: only with --lammps DIR");
+    }
     let from = speed("--from", flags.get("--from").unwrap_or("1e-6"), false)?;
     let to = speed("--to", flags.get("--to").unwrap_or("1"), false)?;
     if to <= from {

@@ -38,7 +38,7 @@ fn run(command: Command) -> CliResult<Option<String>> {
         Command::Map(c, max, n) => map::run(&c, max, n)?,
         Command::Tidal(c, input) => tidal::run(&c, &input)?,
         Command::Export(c, from, to, n, out, rt) => export::run(&c, from, to, n, &out, rt)?,
-        Command::ExportLammps(c, dir) => lammps::run(&c, &dir)?,
+        Command::ExportLammps(c, dir, adhesion) => lammps::run(&c, &dir, adhesion)?,
         Command::Fit(c, a) => fit::run(&c, &a)?,
         Command::Data(c, a) => data::run(&c, &a)?,
         Command::Stick(c, a) => stick::run(&c, &a)?,

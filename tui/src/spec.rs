@@ -249,7 +249,7 @@ pub const SUBS: &[Sub] = &[
     },
     Sub {
         name: "export",
-        usage: "export (--out DIR [--from G --to G --points N] [--runtime-params] | --lammps DIR) [OPTIONS]",
+        usage: "export (--out DIR [--from G --to G --points N] [--runtime-params] | --lammps DIR [--lammps-adhesion jkr]) [OPTIONS]",
         about: "Write ε_N tables (CSV, JSON), fitted Eq. (27) and power laws, C99 and no_std Rust ε_N, ε_T and \
                 collision kinematics (fast: 1e-6, precise: 1e-10 at every speed), and a REBOUND collision \
                 handler with its Python recipe into DIR. With --lammps DIR instead: a LAMMPS input deck for two \
@@ -265,6 +265,11 @@ pub const SUBS: &[Sub] = &[
                 "--lammps",
                 "DIR",
                 "write a LAMMPS deck (in.rime), reference.tsv and README.md into DIR instead",
+            ),
+            f(
+                "--lammps-adhesion",
+                "MAP",
+                "with --lammps, for an adhesive scene: the model to export (jkr: LAMMPS's jkr = brilliantov2007)",
             ),
             f(
                 "--from",

@@ -226,14 +226,16 @@ impl<const D: usize> Table<D> {
     /// ε, s_c and x_max beyond the table's upper end: the strong-damping asymptotes.
     ///
     /// ε: `(2/3) δ^(−5/3)` continued from the end (force zero) or `K δ⁻⁵` (zero overlap).
-    /// x_max: the maximum compression comes before either end rule applies, so both rules share it;
+    /// x_max: the maximum compression comes before either end rule applies, so both rules share it
+    /// and a zero-overlap contact takes the force-zero value at every δ (issue 35: continuing the
+    /// zero-overlap table's own end, at δ ≈ 75, as δ^(−2/3) left ξ_max 0.2283 % low past 1e7);
     /// past the force-zero table (δ > 1e7) it scales as δ^(−2/3). s_c: for force zero the closed
     /// form [`strong_damping_duration`] (it grows with ln δ: both the approach to the turning point
     /// and the relaxation of the force after it are exponential, docs/physics.md#decision-2); for
     /// zero overlap it is unresolved (ε < 1e-9 beyond the table).
     fn tail(&self, delta: f64, u: f64) -> Dimensionless {
         let eps = self.tail_eps(delta, u - self.u_max);
-        let (x_max, s_c) = if self.end == ContactEnd::ZeroOverlap && u < FORCE_ZERO_FINE.u_max {
+        let (x_max, s_c) = if self.end == ContactEnd::ZeroOverlap {
             (FORCE_ZERO_FINE.lookup(delta).x_max, f64::INFINITY)
         } else {
             let shrink = powf(10.0, -2.0 / 3.0 * (u - self.u_max));
@@ -546,6 +548,78 @@ mod tests {
         )
         .eps;
         assert!(rel(inside, creep(end)) < 1e-8, "{inside} vs {}", creep(end));
+    }
+
+    #[test]
+    fn issue_35_max_compression_agrees_between_the_end_rules_up_to_1e12() {
+        // Why ξ_max cannot depend on the end rule: both rules integrate the same Eq. (4),
+        // x'' + x^(3/2) + 1.5 δ √x x' = 0, and differ only in when they stop. The maximum is where
+        // x' = 0; up to it x' ≥ 0, so the total force √x (x + 1.5 δ x') > 0 and x > 0: neither the
+        // force-zero end (total force = 0) nor the zero-overlap end (x = 0) can come first. So the
+        // two trajectories are the same function up to and past x_max, and the force-zero value
+        // (the longer table, to δ = 1e7) is the zero-overlap one too.
+        //
+        // Independently, for strong damping: integrating once, x' = 1 − δ x^(3/2) − ∫x^(3/2) ds,
+        // and the elastic integral is at most s·x^(3/2) ≤ s/δ over the approach time s ~ ln δ
+        // δ^(−2/3), so x_max = δ^(−2/3) (1 + O(δ^(−5/3) ln δ)): δ^(2/3) x_max → 1, to < 1e-10
+        // from δ = 1e7 on (δ^(−5/3) ln δ = 3.5e-11 there).
+        for (resolution, bound) in [
+            (Resolution::Fine, crate::Accuracy::Precise.error_bound()),
+            (Resolution::Coarse, crate::Accuracy::Fast.error_bound()),
+        ] {
+            let mut u = -3.0 + 0.0173;
+            while u <= 12.0 {
+                let delta = powf(10.0, u);
+                let force_zero = lookup(delta, ContactEnd::ForceZero, resolution).x_max;
+                let zero_overlap = lookup(delta, ContactEnd::ZeroOverlap, resolution).x_max;
+                assert!(
+                    rel(zero_overlap, force_zero) <= bound,
+                    "{resolution:?} δ = {delta:e}: zero overlap {zero_overlap:e}, force zero {force_zero:e}"
+                );
+                if delta >= 1e7 {
+                    let asymptote = powf(delta, -2.0 / 3.0);
+                    assert!(
+                        rel(force_zero, asymptote) <= bound,
+                        "{resolution:?} δ = {delta:e}: force zero {force_zero:e} vs δ^(−2/3) {asymptote:e}"
+                    );
+                }
+                u += 0.0731;
+            }
+        }
+    }
+
+    #[test]
+    fn issue_35_max_compression_of_the_issue_scene_is_the_force_zero_one_at_every_level() {
+        // `rime eps --set bulk.damping.time=4004.4 --g 0.01 --set contact_end=zero_overlap`
+        // gave ξ_max = 1.37932e-11 m; the force-zero rule's (and the true) value is 1.38248e-11 m.
+        let mut scene = crate::scene::Preset::Ice.scene();
+        scene.set("bulk.damping.time", "4004.4").unwrap();
+        let at = |end: ContactEnd, accuracy: crate::Accuracy| {
+            let mut s = scene;
+            s.contact_end = end;
+            crate::Contact::new(&s)
+                .unwrap()
+                .normal(0.01, accuracy)
+                .unwrap()
+                .xi_max
+        };
+        for accuracy in [
+            crate::Accuracy::Fast,
+            crate::Accuracy::Precise,
+            crate::Accuracy::Balanced,
+            crate::Accuracy::Tolerance(1e-8),
+        ] {
+            let force_zero = at(ContactEnd::ForceZero, accuracy);
+            let zero_overlap = at(ContactEnd::ZeroOverlap, accuracy);
+            assert!(
+                rel(zero_overlap, force_zero) <= accuracy.error_bound(),
+                "{accuracy:?}: {zero_overlap:e} vs {force_zero:e}"
+            );
+            assert!(
+                (force_zero / 1.38248e-11 - 1.0).abs() < 5e-6,
+                "{force_zero:e}"
+            );
+        }
     }
 
     #[cfg(feature = "std")]
