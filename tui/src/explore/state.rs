@@ -306,6 +306,15 @@ impl App {
             .is_some_and(|d| d.generation == self.generation && d.preview)
     }
 
+    /// The ring card drawn over the ε_N chart: only while the card is open (`r`) and computed. The
+    /// chart and `x` both ask here, so the export draws the ring exactly when the screen does.
+    pub fn ring_on_chart(&self) -> Option<&rime_core::explorer::ring::RingCard> {
+        self.ring
+            .then_some(self.ring_card.as_ref())
+            .flatten()
+            .and_then(|c| c.as_ref().ok())
+    }
+
     pub(crate) fn info(&mut self, text: impl Into<String>) {
         self.message = Some((text.into(), Tone::Info));
     }

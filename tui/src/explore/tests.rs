@@ -2077,3 +2077,223 @@ fn quitting_cancels_the_refinement_issue_26() {
         "no refined frame after quitting"
     );
 }
+
+/// Exports the frame with `x` into a fresh folder and returns the folder's files by name.
+fn exported_files(app: &mut App, tag: &str) -> std::collections::BTreeMap<String, String> {
+    let dir = std::env::temp_dir().join(format!("rime-tui-test-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("tmp");
+    app.out_dir = dir.clone();
+    update(app, ch('x'));
+    let export = std::fs::read_dir(&dir)
+        .expect("read")
+        .filter_map(|e| e.ok())
+        .find(|e| e.file_name().to_string_lossy().starts_with("rime-export-"))
+        .unwrap_or_else(|| panic!("no export folder: {:?}", app.message))
+        .path();
+    let files = std::fs::read_dir(&export)
+        .expect("read")
+        .filter_map(|e| e.ok())
+        .filter(|e| !e.file_name().to_string_lossy().ends_with(".png"))
+        .map(|e| {
+            let name = e.file_name().to_string_lossy().into_owned();
+            (name, std::fs::read_to_string(e.path()).expect("text"))
+        })
+        .collect();
+    let _ = std::fs::remove_dir_all(&dir);
+    files
+}
+
+/// Issue 37 item 7: the export is the screen. With the ring card open, `x` draws its ε_cr line
+/// and the √π c marker; once the card is closed (`r` again) neither is on screen nor in the
+/// exported figure.
+#[test]
+fn issue_37_a_closed_ring_card_is_not_exported() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('r'));
+    let card = match app.ring_card.clone() {
+        Some(Ok(card)) => card,
+        other => panic!("no ring card: {other:?}"),
+    };
+    let open = exported_files(&mut app, "ring-open");
+    let svg = &open["eps_n.svg"];
+    assert!(
+        svg.contains("of the ring at τ"),
+        "ε_cr line exported while open"
+    );
+    assert!(
+        svg.contains("mean impact speed"),
+        "√π c marker in the legend while open"
+    );
+    update(&mut app, ch('r'));
+    assert!(!app.ring);
+    let on_screen = text(&screen(&app, 160, 45));
+    assert!(!on_screen.contains(&card.eps_cr_line.short), "{on_screen}");
+    let closed = exported_files(&mut app, "ring-closed");
+    let svg = &closed["eps_n.svg"];
+    for ring_text in ["of the ring", "ε_cr", "mean impact speed", "√π"] {
+        assert!(
+            !svg.contains(ring_text),
+            "{ring_text} exported after r closed the card"
+        );
+    }
+}
+
+/// Issue 37 item 7: `eps_family.csv` has every curve the exported figure draws, the pinned one
+/// included; pinned, then zoomed (other speeds), its own speeds are rows of their own and every
+/// one of its values is in the table.
+#[test]
+fn issue_37_the_family_table_has_the_pinned_curve() {
+    let mut app = app_on(Preset::IceFrost.scene());
+    update(&mut app, ch('P'));
+    let pinned = app.pinned.clone().expect("pinned");
+    let rows = |files: &std::collections::BTreeMap<String, String>| -> Vec<Vec<String>> {
+        files["eps_family.csv"]
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .map(|l| l.split(',').map(String::from).collect())
+            .collect()
+    };
+    let same = rows(&exported_files(&mut app, "pinned-same"));
+    let last = same[0].len() - 1;
+    assert_eq!(same[0][last], format!("eps_n [pinned: {}]", pinned.label));
+    assert_eq!(
+        same.len() - 1,
+        pinned.g.len(),
+        "one row per speed when the speeds agree"
+    );
+    for (row, (g, e)) in same[1..].iter().zip(pinned.g.iter().zip(&pinned.eps)) {
+        assert_eq!(row[0].parse::<f64>().expect("g"), *g);
+        assert_eq!(row[last].parse::<f64>().expect("eps"), *e);
+        // The pinned curve is this scene's: the same numbers in the scene's column.
+        assert_eq!(row[1], row[last]);
+    }
+    // Zoomed in: the frame's speeds change, the pinned curve keeps its own.
+    update(&mut app, ch('+'));
+    settle(&mut app);
+    assert_ne!(app.data.as_ref().expect("frame").g, pinned.g);
+    let zoomed = rows(&exported_files(&mut app, "pinned-zoomed"));
+    let g_col: Vec<f64> = zoomed[1..]
+        .iter()
+        .map(|r| r[0].parse().expect("g"))
+        .collect();
+    assert!(
+        g_col.windows(2).all(|w| w[0] < w[1]),
+        "rows in order of speed"
+    );
+    let pinned_cells: Vec<(f64, f64)> = zoomed[1..]
+        .iter()
+        .filter(|r| !r[last].is_empty())
+        .map(|r| (r[0].parse().expect("g"), r[last].parse().expect("eps")))
+        .collect();
+    let expected: Vec<(f64, f64)> = pinned
+        .g
+        .iter()
+        .copied()
+        .zip(pinned.eps.iter().copied())
+        .collect();
+    assert_eq!(pinned_cells, expected);
+    let frame_rows = zoomed[1..].iter().filter(|r| !r[1].is_empty()).count();
+    assert_eq!(frame_rows, app.data.as_ref().expect("frame").g.len());
+}
+
+/// Issue 37 item 9: the chart's cursor readout at 80 columns drops fields whole: with A = 3 s,
+/// δ is 2.25e4 and the readout showed `δ 2.`; now δ is either whole or absent.
+#[test]
+fn issue_37_the_cursor_readout_is_never_cut_mid_number() {
+    let mut scene = Scene::default();
+    scene.set_number("bulk.damping.time", 3.0).expect("set");
+    let app = app_on(scene);
+    let data = app.data.as_ref().expect("frame");
+    let g = data.g[app.cursor];
+    let delta = super::format::num3(data.contact.expect("contact").delta(g));
+    assert!(delta.len() > 3, "a long δ: {delta}");
+    for (w, h) in [(80, 24), (100, 30), (160, 45)] {
+        let s = text(&screen(&app, w, h));
+        let line = s
+            .lines()
+            .find(|l| l.contains('▸') && l.contains("ε_N"))
+            .unwrap_or_else(|| panic!("no readout at {w}×{h}\n{s}"));
+        if let Some((_, after)) = line.split_once("δ ") {
+            assert!(after.starts_with(&delta), "δ cut at {w}×{h}: {line}");
+        }
+        if w >= 160 {
+            assert!(line.contains(&format!("δ {delta}")), "{line}");
+        }
+    }
+}
+
+/// Issue 37 item 9: at 80×24 the ring card does not fit; its last row says how many lines are
+/// left out instead of ending mid-card with no hint.
+#[test]
+fn issue_37_a_cut_ring_card_says_so() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('r'));
+    let card = match app.ring_card.clone() {
+        Some(Ok(card)) => card,
+        other => panic!("no ring card: {other:?}"),
+    };
+    let small = text(&screen(&app, 80, 24));
+    let sentence_start: String = card.sentence.chars().take(20).collect();
+    assert!(
+        small.contains("more lines") || small.contains(&sentence_start),
+        "the card is cut without a hint\n{small}"
+    );
+    assert!(
+        small.contains("more lines"),
+        "80×24 is too small for the card\n{small}"
+    );
+    let large = text(&screen(&app, 160, 45));
+    assert!(!large.contains("more lines"), "{large}");
+}
+
+/// Issue 37 item 9: the export message puts the folder first, so an 80-column status row shows
+/// it whole.
+#[test]
+fn issue_37_the_export_message_shows_the_folder_at_80_columns() {
+    let dir = std::env::temp_dir().join(format!("rime-tui-test-msg-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("tmp");
+    let mut app = app_on(Scene::default());
+    app.out_dir = dir.clone();
+    update(&mut app, ch('x'));
+    let (msg, _) = app.message.clone().expect("message");
+    let folder = msg
+        .split_whitespace()
+        .find(|w| w.contains("rime-export-"))
+        .expect("folder in the message")
+        .to_string();
+    let s = text(&screen(&app, 80, 24));
+    assert!(s.contains(&folder), "{folder} not whole on screen\n{s}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 37 item 9: the `i` panel's phase line keeps whole phases (each `name time`) and counts
+/// the ones left out, at 80 and 120 columns.
+#[test]
+fn issue_37_the_phase_line_keeps_whole_phases() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('i'));
+    for (w, h) in [(80, 24), (120, 40), (200, 60)] {
+        let s = text(&screen(&app, w, h));
+        let Some(line) = s.lines().find(|l| l.contains("ξ_max")) else {
+            continue;
+        };
+        let (_, after) = line.split_once("ξ_max").expect("ξ_max");
+        let (_, phases) = after.split_once('│').expect("phases after │");
+        // The panel's border closes the row.
+        let phases = phases.trim().trim_end_matches(['│', '┃', '║']).trim();
+        for part in phases.split(" · ") {
+            let part = part.trim();
+            let more =
+                part.starts_with('+') && (part.ends_with("more") || part.ends_with("phases"));
+            assert!(
+                part.is_empty() || more || part.ends_with('s'),
+                "a phase cut at {w}×{h}: {part:?} in {line}"
+            );
+        }
+        if w >= 200 {
+            assert!(!phases.contains("more"), "{line}");
+        }
+    }
+}

@@ -92,11 +92,7 @@ pub fn render(app: &App, frame: &mut Frame) {
                 pinned: app.pinned.as_ref(),
                 shared: l.shared,
                 colors: app.colors,
-                ring: app
-                    .ring
-                    .then_some(app.ring_card.as_ref())
-                    .flatten()
-                    .and_then(|c| c.as_ref().ok()),
+                ring: app.ring_on_chart(),
             },
         );
     }
