@@ -634,11 +634,11 @@ fn help_names_new_keys_and_sources() {
             assert!(s.contains(&head), "{w}×{h}: missing '{}'\n{s}", row.does);
         }
         assert!(s.contains("quit") && s.contains("Hill"), "{w}×{h}\n{s}");
-        // The first page says how to scroll and that q quits.
+        // The first page says how to scroll and that q closes it (issue 37: it quit).
         update(&mut app, ch('?'));
         let first = text(&screen(&app, w, h));
         assert!(
-            first.contains("scroll") && first.contains("q quits"),
+            first.contains("scroll") && first.contains("q Esc or any other key closes"),
             "{first}"
         );
         update(&mut app, ch('x'));
@@ -1928,7 +1928,9 @@ fn parallel_frames_are_cancellable_issue_26() {
 fn worker_frames(app: &mut App) -> Vec<super::compute::Computed> {
     let job = app.take_request().expect("a request");
     let mut frames = Vec::new();
-    super::compute::progressive(&job, &|| false, 2, &NoMemo, &mut |c| {
+    // A fresh rule: the kind is new, so a level other than `fast` gets its preview.
+    let mut rule = super::compute::PreviewRule::default();
+    super::compute::progressive(&job, &|| false, 2, &NoMemo, &mut rule, &mut |c| {
         frames.push(c);
         true
     });
@@ -2295,5 +2297,199 @@ fn issue_37_the_phase_line_keeps_whole_phases() {
         if w >= 200 {
             assert!(!phases.contains("more"), "{line}");
         }
+    }
+}
+
+/// Issue 37 item 10: `f` fits A to the measured law the chart shows; with none shown (no
+/// comparison and the experiments off, or the other models) it says so and keeps the scene.
+#[test]
+fn issue_37_f_fits_only_to_a_law_on_the_chart() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('b'));
+    assert!(!app.experiments);
+    let before = app.scene;
+    update(&mut app, ch('f'));
+    assert_eq!(app.scene, before, "fitted to a law not on the chart");
+    assert!(app.undo.is_empty());
+    let (msg, _) = app.message.clone().expect("message");
+    assert!(msg.contains("none is shown"), "{msg}");
+    // The other models: no measured law either.
+    update(&mut app, ch('c'));
+    update(&mut app, ch('c'));
+    assert_eq!(app.overlay_set, 2);
+    update(&mut app, ch('f'));
+    assert_eq!(app.scene, before);
+    // Measured ice: the fit runs (Bridges et al. 1984, the set's first law).
+    update(&mut app, ch('c'));
+    update(&mut app, ch('c'));
+    assert_eq!(app.overlay_set, 1);
+    update(&mut app, ch('f'));
+    let (msg, _) = app.message.clone().expect("message");
+    assert!(msg.contains("A fitted to bridges1984"), "{msg}");
+    assert_ne!(app.scene, before);
+    // With the experiments on and no comparison, the Bridges law is on the chart: f fits to it.
+    let mut app = app_on(Scene::default());
+    assert!(app.experiments && app.overlay_set == 0);
+    update(&mut app, ch('f'));
+    let (msg, _) = app.message.clone().expect("message");
+    assert!(msg.contains("A fitted to bridges1984"), "{msg}");
+}
+
+/// Issue 37 item 10: a fit that lands on the scene's A (the same fit twice) is no undo step.
+#[test]
+fn issue_37_a_fit_that_changes_nothing_is_no_undo_step() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('f'));
+    assert_eq!(app.undo.len(), 1);
+    let fitted = app.scene;
+    update(&mut app, ch('f'));
+    assert_eq!(
+        app.undo.len(),
+        1,
+        "a second, identical fit added an undo step"
+    );
+    assert_eq!(app.scene, fitted);
+    let (msg, _) = app.message.clone().expect("message");
+    assert!(msg.contains("unchanged"), "{msg}");
+}
+
+/// Issue 37 item 10: undo and redo say what they undid (`A 100 µs → 2 ms`).
+#[test]
+fn issue_37_undo_says_what_it_undid() {
+    let mut app = app_on(Scene::default());
+    select(&mut app, "bulk.damping.time");
+    let before = super::format::qty3(number(&app, "bulk.damping.time"), "s");
+    update(&mut app, key(KeyCode::Right));
+    let after = super::format::qty3(number(&app, "bulk.damping.time"), "s");
+    assert_ne!(before, after);
+    update(&mut app, ch('u'));
+    let (msg, _) = app.message.clone().expect("message");
+    assert!(
+        msg.contains(&format!("undone: A {after} → {before}")),
+        "{msg}"
+    );
+    update(&mut app, ch('U'));
+    let (msg, _) = app.message.clone().expect("message");
+    assert!(
+        msg.contains(&format!("redone: A {before} → {after}")),
+        "{msg}"
+    );
+}
+
+/// Issue 37 item 10: `q` inside the `?` overlay closes it (it quit the program).
+#[test]
+fn issue_37_q_closes_the_help() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('?'));
+    assert!(app.help);
+    update(&mut app, ch('q'));
+    assert!(!app.help, "q left the help open");
+    assert!(!app.quit && app.confirm.is_none(), "q in the help quit");
+    update(&mut app, ch('?'));
+    update(&mut app, key(KeyCode::Esc));
+    assert!(!app.help && !app.quit && app.confirm.is_none());
+    let s = text(&screen(&app, 80, 24));
+    assert!(!s.contains("Glossary"), "{s}");
+}
+
+/// Issue 37 item 10: a second Esc no longer drops a pin, a zoom or a comparison silently: it
+/// asks, names what would go, and `n` keeps it all; Esc closes the ring card first.
+#[test]
+fn issue_37_esc_asks_before_dropping_the_view() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('P'));
+    update(&mut app, ch('+'));
+    settle(&mut app);
+    update(&mut app, ch('c'));
+    settle(&mut app);
+    update(&mut app, ch('r'));
+    update(&mut app, key(KeyCode::Esc));
+    assert!(!app.ring, "Esc closes the ring card first");
+    assert!(!app.quit && app.confirm.is_none());
+    update(&mut app, key(KeyCode::Esc));
+    assert!(!app.quit, "Esc dropped the pin, zoom and comparison");
+    assert_eq!(app.confirm, Some(Confirm::Leave));
+    let s = text(&screen(&app, 120, 40));
+    for lost in ["pinned curve", "zoom", "comparison"] {
+        assert!(
+            s.contains(lost),
+            "{lost} not named
+{s}"
+        );
+    }
+    update(&mut app, ch('n'));
+    assert!(!app.quit && app.pinned.is_some() && app.speeds.is_some() && app.overlay_set == 1);
+    update(&mut app, key(KeyCode::Esc));
+    update(&mut app, ch('y'));
+    assert!(app.quit);
+    // Nothing to lose: Esc quits at once, as before.
+    let mut plain = app_on(Scene::default());
+    update(&mut plain, key(KeyCode::Esc));
+    assert!(plain.quit);
+}
+
+/// Issue 37 item 10: the page's preview rule in the terminal. A frame of a kind not seen yet, or
+/// whose last frame took longer than `PREVIEW_SLOW`, gets a `fast` preview; one whose last frame
+/// was quick does not (its first frame is its final one).
+#[test]
+fn issue_37_a_preview_only_when_the_last_frame_of_its_kind_was_dear() {
+    use super::compute::{Job, PREVIEW_SLOW, PreviewRule, progressive};
+    let mut rule = PreviewRule::default();
+    let request = rime_core::explorer::frame::Request::new(Scene::default(), Accuracy::Precise);
+    let kind = rule.kind(&request);
+    assert!(rule.wants_preview(&kind), "a new kind");
+    rule.record(kind.clone(), PREVIEW_SLOW / 8);
+    assert!(!rule.wants_preview(&kind), "a quick kind");
+    rule.record(kind.clone(), PREVIEW_SLOW * 3);
+    assert!(rule.wants_preview(&kind), "a dear kind");
+    // Another level, another scene shape: other kinds.
+    let mut fast_rule = PreviewRule::default();
+    let fast = rime_core::explorer::frame::Request::new(Scene::default(), Accuracy::Fast);
+    assert_ne!(fast_rule.kind(&fast), kind);
+    let frost =
+        rime_core::explorer::frame::Request::new(Preset::IceFrost.scene(), Accuracy::Precise);
+    assert_ne!(PreviewRule::default().kind(&frost), kind);
+    // The worker: with the kind known to be quick, one frame (the requested level), no preview.
+    let mut rule = PreviewRule::default();
+    let job = Job {
+        generation: 1,
+        request: request.clone(),
+    };
+    let mut first = Vec::new();
+    progressive(&job, &|| false, 2, &NoMemo, &mut rule, &mut |c| {
+        first.push(c.preview);
+        true
+    });
+    assert_eq!(first, [true, false], "a new kind: preview, then the frame");
+    let kind = rule.kind(&request);
+    rule.record(kind, PREVIEW_SLOW / 8);
+    let mut second = Vec::new();
+    progressive(&job, &|| false, 2, &NoMemo, &mut rule, &mut |c| {
+        second.push((c.preview, c.request.accuracy));
+        true
+    });
+    assert_eq!(second, [(false, Accuracy::Precise)]);
+}
+
+/// Issue 37 item 10: a measured range the scene lies within does not read "rms 0" (a perfect
+/// fit); it says the scene is within it.
+#[test]
+fn issue_37_measured_ranges_do_not_show_rms_0() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('c'));
+    settle(&mut app);
+    let s = text(&screen(&app, 200, 60));
+    for (k, _) in s.match_indices("rms 0") {
+        assert!(s[k + 5..].starts_with('.'), "a bare rms 0\n{s}");
+    }
+    let fig = rime_core::explorer::figures::eps_figure(
+        &app.data.as_ref().expect("frame").frame,
+        &rime_core::explorer::figures::View::default(),
+        "test",
+    );
+    let ranges: Vec<&str> = fig.bands.iter().map(|b| b.short.as_str()).collect();
+    assert!(!ranges.is_empty(), "measured ranges on the chart");
+    for r in ranges {
+        assert!(!r.ends_with("rms 0"), "{r}");
     }
 }
