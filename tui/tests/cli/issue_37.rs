@@ -1,0 +1,267 @@
+//! Issue 37, the command line: tables for people (4–6 significant digits with prefixed units,
+//! JSON and CSV with every digit), `ring`'s "heats" line, units on `collision`'s tangential rows,
+//! `tidal`'s verdict, did-you-mean, `--set` on an absent section, underflow, help width, exit codes.
+
+use crate::bin::rime_binary;
+use std::process::Command;
+
+fn rime(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(rime_binary()).args(args).output().unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).to_string(),
+        String::from_utf8_lossy(&out.stderr).to_string(),
+    )
+}
+
+fn ok(args: &[&str]) -> String {
+    let (code, out, err) = rime(args);
+    assert_eq!(code, 0, "{args:?}: {err}");
+    out
+}
+
+/// A table cell `605.2 µs` (or `605.2` with `µs` in a unit column) back in SI: the number times
+/// its prefix. Written here, independent of the formatter, from the SI prefixes.
+fn si(value: &str, unit: &str) -> Option<f64> {
+    let v: f64 = value.parse().ok()?;
+    let prefixes = [
+        ("T", 1e12),
+        ("G", 1e9),
+        ("M", 1e6),
+        ("k", 1e3),
+        ("m", 1e-3),
+        ("µ", 1e-6),
+        ("n", 1e-9),
+        ("p", 1e-12),
+    ];
+    for base in ["m/s", "Pa s", "Pa", "s", "m", "J", "N", "g"] {
+        if let Some(p) = unit.strip_suffix(base) {
+            let scale = if p.is_empty() {
+                1.0
+            } else {
+                prefixes.iter().find(|(s, _)| *s == p)?.1
+            };
+            // Masses are printed in g, kg and below; the records are in kg.
+            let to_si = if base == "g" { 1e-3 } else { 1.0 };
+            return Some(v * scale * to_si);
+        }
+    }
+    Some(v)
+}
+
+/// Significant digits of a printed number (`605.2` → 4, `1e-10` → 1, `0.4954` → 4).
+fn digits(value: &str) -> usize {
+    let mantissa = value.split(['e', 'E']).next().unwrap_or(value);
+    mantissa
+        .chars()
+        .filter(char::is_ascii_digit)
+        .collect::<String>()
+        .trim_start_matches('0')
+        .len()
+}
+
+/// Issue 37 item 11: `rime eps --format table` prints each number to at most 6 significant digits
+/// with a prefixed unit, within 80 columns, and agrees with the JSON to those digits; the CSV keeps
+/// every digit of the JSON.
+#[test]
+fn issue_37_the_eps_table_is_for_people_and_the_csv_keeps_every_digit() {
+    let g = "1 mm/s,1 cm/s,0.1";
+    let json: serde_json::Value =
+        serde_json::from_str(&ok(&["eps", "--g", g, "--format", "json"])).unwrap();
+    let table = ok(&["eps", "--g", g, "--format", "table"]);
+    let csv = ok(&["eps", "--g", g, "--format", "csv"]);
+    for line in table.lines() {
+        assert!(line.chars().count() <= 80, "wider than 80 columns: {line}");
+    }
+    let rows: Vec<&str> = table.lines().skip(1).collect();
+    let records = json.as_array().unwrap();
+    assert_eq!(rows.len(), records.len());
+    for (row, rec) in rows.iter().zip(records) {
+        // Cells: g (value unit), eps_n, status, t_c (value unit), xi_max (value unit), error.
+        let cells: Vec<&str> = row.split_whitespace().collect();
+        assert_eq!(cells.len(), 9, "{row}");
+        let checks = [
+            (cells[0], cells[1], "g_n"),
+            (cells[2], "", "eps_n"),
+            (cells[4], cells[5], "t_c"),
+            (cells[6], cells[7], "xi_max"),
+        ];
+        for (value, unit, key) in checks {
+            let exact = rec[key].as_f64().unwrap();
+            let shown = si(value, unit).unwrap_or_else(|| panic!("{value} {unit}"));
+            assert!(digits(value) <= 6, "{key}: {value} has more than 6 digits");
+            assert!(
+                (shown - exact).abs() <= 5e-4 * exact.abs(),
+                "{key}: table {value} {unit} vs {exact}"
+            );
+        }
+    }
+    // The CSV: every digit (it reads back as the JSON's very numbers).
+    for (line, rec) in csv.lines().skip(1).zip(records) {
+        let cells: Vec<&str> = line.split(',').collect();
+        assert_eq!(
+            cells[1].parse::<f64>().unwrap(),
+            rec["eps_n"].as_f64().unwrap()
+        );
+        assert_eq!(
+            cells[3].parse::<f64>().unwrap(),
+            rec["t_c"].as_f64().unwrap()
+        );
+    }
+}
+
+/// Issue 37 item 11: the `name value unit` tables (`tidal`, `ring`, `collision`) and
+/// `tangential` print at most 6 significant digits; every value agrees with the JSON to them.
+#[test]
+fn issue_37_name_value_tables_are_for_people() {
+    let cases: [&[&str]; 3] = [
+        &["tidal"],
+        &[
+            "ring",
+            "--preset",
+            "ice",
+            "--tau",
+            "0.5",
+            "--omega",
+            "1.3143527e-4",
+        ],
+        &["collision", "--g", "0.01"],
+    ];
+    for args in cases {
+        let table = ok(&[args, &["--format", "table"]].concat());
+        let mut numbers = 0;
+        for line in table.lines().skip(1) {
+            let cells: Vec<&str> = line.split_whitespace().collect();
+            if cells.len() >= 2 && cells[1].parse::<f64>().is_ok() {
+                numbers += 1;
+                assert!(digits(cells[1]) <= 6, "{args:?}: {line}");
+            }
+        }
+        assert!(numbers > 3, "{args:?}\n{table}");
+    }
+    let tangential = ok(&[
+        "tangential",
+        "--gn",
+        "0.01",
+        "--gt",
+        "0.01",
+        "--format",
+        "table",
+    ]);
+    for cell in tangential.lines().skip(1).flat_map(str::split_whitespace) {
+        if cell.parse::<f64>().is_ok() {
+            assert!(digits(cell) <= 6, "{cell}\n{tangential}");
+        }
+    }
+}
+
+/// Issue 37 item 11: `ring`'s summary line carries 4 digits and prefixed units (was
+/// `c = 5.257410800000001e-6 m/s`, `H = 0.03563071337723164 m`), the same numbers as the JSON.
+#[test]
+fn issue_37_the_ring_summary_line_is_for_people() {
+    let args = [
+        "ring",
+        "--preset",
+        "ice",
+        "--tau",
+        "0.5",
+        "--omega",
+        "1.3143527e-4",
+    ];
+    let table = ok(&[&args[..], &["--format", "table"]].concat());
+    let json: serde_json::Value =
+        serde_json::from_str(&ok(&[&args[..], &["--format", "json"]].concat())).unwrap();
+    let last = table.lines().last().unwrap();
+    let c = json["values"]["velocity_dispersion"].as_f64();
+    let c = c.or_else(|| json["rough"]["velocity_dispersion"].as_f64());
+    let text = |key: &str| -> (String, String) {
+        let (_, rest) = last
+            .split_once(key)
+            .unwrap_or_else(|| panic!("{key} in {last}"));
+        let mut words = rest.split_whitespace();
+        let v = words.next().unwrap().to_string();
+        let u = words.next().unwrap().trim_end_matches(',').to_string();
+        (v, u)
+    };
+    let (cv, cu) = text("c = ");
+    assert!(digits(&cv) <= 4, "{last}");
+    assert_eq!(cu, "µm/s", "{last}");
+    let (hv, hu) = text("H = ");
+    assert!(digits(&hv) <= 4 && hu == "mm", "{last}");
+    if let Some(c) = c {
+        let shown = si(&cv, &cu).unwrap();
+        assert!((shown - c).abs() <= 5e-4 * c, "{shown} vs {c}");
+    }
+}
+
+/// Issue 37 item 12: a ring that `heats` says what its c and H are (the balance outside the
+/// slow-collision regime, and why), not a bare "heats" beside finite numbers.
+#[test]
+fn issue_37_heats_says_what_the_numbers_are() {
+    let table = ok(&[
+        "ring",
+        "--preset",
+        "ice",
+        "--tau",
+        "0.5",
+        "--radius",
+        "1",
+        "--omega",
+        "1.3143527e-4",
+        "--format",
+        "table",
+    ]);
+    let last = table.lines().last().unwrap();
+    assert!(last.starts_with("heats: "), "{last}");
+    assert!(last.contains("outside"), "{last}");
+    assert!(last.contains("slow-collision regime"), "{last}");
+    assert!(last.contains("not a prediction"), "{last}");
+}
+
+/// Issue 37 item 14: `collision --format table`'s tangential rows have units (J, rad/s), as
+/// docs/cli.md gives them; the CSV's comment lines too.
+#[test]
+fn issue_37_collision_tangential_rows_have_units() {
+    let args = [
+        "collision",
+        "--g",
+        "0.01",
+        "--gt",
+        "0.01",
+        "--set",
+        "friction=on",
+    ];
+    let table = ok(&[&args[..], &["--format", "table"]].concat());
+    let unit = |name: &str| -> String {
+        let line = table
+            .lines()
+            .find(|l| l.split_whitespace().next() == Some(name))
+            .unwrap_or_else(|| panic!("{name}\n{table}"));
+        line.split_whitespace().nth(2).unwrap_or("").to_string()
+    };
+    for name in ["energy_before", "energy_after", "friction_work"] {
+        assert!(unit(name).ends_with('J'), "{name}: {}\n{table}", unit(name));
+    }
+    for name in ["spin_change_1", "spin_change_2"] {
+        assert_eq!(unit(name), "rad/s", "{table}");
+    }
+    let csv = ok(&[&args[..], &["--format", "csv"]].concat());
+    assert!(
+        csv.contains("# tangential.friction_work,") && csv.contains(",J\n"),
+        "{csv}"
+    );
+    assert!(
+        csv.lines()
+            .any(|l| l.starts_with("# tangential.spin_change_1,") && l.ends_with(",rad/s"))
+    );
+}
+
+/// Issue 37 item 14: `tidal --format table` ends with the core's verdict (it was only in JSON).
+#[test]
+fn issue_37_the_tidal_table_has_the_verdict() {
+    let json: serde_json::Value =
+        serde_json::from_str(&ok(&["tidal", "--format", "json"])).unwrap();
+    let verdict = json["verdict"].as_str().unwrap();
+    let table = ok(&["tidal", "--format", "table"]);
+    assert_eq!(table.lines().last().unwrap(), verdict);
+}
