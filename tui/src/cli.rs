@@ -96,7 +96,10 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
         rest = &args[1..];
     }
     let Some(sub) = spec::find(name) else {
-        return err(format!("{name}: unknown subcommand (see rime --help)"));
+        let hint = crate::suggest::hint(name, spec::SUBS.iter().map(|s| s.name));
+        return err(format!(
+            "{name}: unknown subcommand{hint} (see rime --help)"
+        ));
     };
     // Positional arguments of `help` and `completions`.
     let mut positional: Option<&str> = None;
@@ -116,7 +119,10 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
                 None => Ok(Command::Help(None)),
                 Some(p) => match spec::find(p).filter(|s| !s.name.is_empty()) {
                     Some(s) => Ok(Command::Help(Some(s))),
-                    None => err(format!("help {p}: unknown subcommand (see rime --help)")),
+                    None => err(format!(
+                        "help {p}: unknown subcommand{} (see rime --help)",
+                        crate::suggest::hint(p, spec::SUBS.iter().map(|s| s.name))
+                    )),
                 },
             };
         }
@@ -207,8 +213,9 @@ fn read_flags(sub: &'static Sub, rest: &[String]) -> CliResult<Read> {
                 format_of(sub, "")?;
             }
             return err(format!(
-                "{name}: not an option of `{}` (see {} --help)",
+                "{name}: not an option of `{}`{} (see {} --help)",
                 sub.command(),
+                crate::suggest::hint(name, accepted.iter().map(|f| f.name)),
                 sub.command()
             ));
         };

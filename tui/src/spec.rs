@@ -646,6 +646,13 @@ fn value_words(flag: &str) -> Option<String> {
         "--accuracy" => "fast precise integrated".to_string(),
         "--format" => "json csv table".to_string(),
         "--gamma" => "surface adhesion".to_string(),
+        // Parameter paths, each ready for its value (issue 37: flags were offered after --set).
+        "--set" => rime_core::params::PARAMETERS
+            .iter()
+            .chain(rime_core::params::MODEL_PARAMETERS)
+            .map(|p| format!("{}=", p.path))
+            .collect::<Vec<_>>()
+            .join(" "),
         _ => return None,
     })
 }
@@ -658,7 +665,7 @@ const PATH_FLAGS: [&str; 4] = ["--scene", "--data", "--out", "--g-file"];
 // table.
 pub fn completions(shell: &str) -> Option<String> {
     let names = sub_names();
-    let valued = ["--preset", "--accuracy", "--format", "--gamma"];
+    let valued = ["--preset", "--accuracy", "--format", "--gamma", "--set"];
     Some(match shell {
         "bash" => {
             let mut s = String::from(
@@ -674,8 +681,14 @@ pub fn completions(shell: &str) -> Option<String> {
             s.push_str("  case \"${COMP_WORDS[COMP_CWORD-1]}\" in\n");
             for flag in valued {
                 if let Some(words) = value_words(flag) {
+                    // A path= waits for its value: no space after it.
+                    let nospace = if flag == "--set" {
+                        "compopt -o nospace 2>/dev/null; "
+                    } else {
+                        ""
+                    };
                     s.push_str(&format!(
-                        "    {flag}) COMPREPLY=($(compgen -W \"{words}\" -- \"$cur\")); return ;;\n"
+                        "    {flag}) {nospace}COMPREPLY=($(compgen -W \"{words}\" -- \"$cur\")); return ;;\n"
                     ));
                 }
             }

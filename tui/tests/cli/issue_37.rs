@@ -265,3 +265,95 @@ fn issue_37_the_tidal_table_has_the_verdict() {
     let table = ok(&["tidal", "--format", "table"]);
     assert_eq!(table.lines().last().unwrap(), verdict);
 }
+
+/// Issue 37 item 13: a mistyped subcommand, flag, `--set` path, model or preset gets "did you
+/// mean" (exit 2, one line); a path with nothing close lists its section's paths or the sections,
+/// never all 24 paths on one line.
+#[test]
+fn issue_37_did_you_mean() {
+    let cases: [(&[&str], &str); 6] = [
+        (&["esp", "--g", "0.1"], "did you mean `eps`?"),
+        (&["eps", "--gg", "0.1"], "did you mean `--g`?"),
+        (
+            &["eps", "--set", "bulk.dampin.time=1e-3"],
+            "did you mean `bulk.damping.time`?",
+        ),
+        (
+            &["compare", "--models", "brilianov2007"],
+            "did you mean `brilliantov2007`?",
+        ),
+        (
+            &["eps", "--preset", "ice-frots"],
+            "did you mean `ice-frost`?",
+        ),
+        (&["help", "rign"], "did you mean `ring`?"),
+    ];
+    for (args, expected) in cases {
+        let (code, out, err) = rime(args);
+        assert_eq!(code, 2, "{args:?}: {out}{err}");
+        assert!(err.contains(expected), "{args:?}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    }
+    // Nothing close: the section's paths (friction.mu → friction.coefficient), else the sections.
+    let (code, _, err) = rime(&["eps", "--set", "friction.mu=0.3"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("friction.coefficient"), "{err}");
+    assert!(!err.contains("grains.radius_1"), "the whole list: {err}");
+    let (code, _, err) = rime(&["eps", "--set", "nothing.like.it=1"]);
+    assert_eq!(code, 2);
+    assert!(
+        err.chars().count() < 200,
+        "{} characters: {err}",
+        err.chars().count()
+    );
+    assert!(err.contains("grains") && err.contains("friction"), "{err}");
+    // Far from every name: no suggestion.
+    let (_, _, err) = rime(&["zzzzzz"]);
+    assert!(!err.contains("did you mean"), "{err}");
+}
+
+/// Issue 37 item 13: bash completes parameter paths after `--set` (it offered flags), in a real
+/// bash with the generated script; zsh and fish list them too.
+#[test]
+fn issue_37_completion_offers_parameter_paths_after_set() {
+    let script = ok(&["completions", "bash"]);
+    let probe = format!(
+        "{script}\nCOMP_WORDS=(rime eps --set bulk.damping.t); COMP_CWORD=3; _rime; echo \"${{COMPREPLY[*]}}\"\n\
+         COMP_WORDS=(rime --set lay); COMP_CWORD=2; _rime; echo \"${{COMPREPLY[*]}}\"\n"
+    );
+    let out = Command::new("bash")
+        .arg("-c")
+        .arg(&probe)
+        .output()
+        .expect("bash is needed for this test");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "bulk.damping.time=", "{text}");
+    let layer: Vec<&str> = rime_core::params::PARAMETERS
+        .iter()
+        .map(|p| p.path)
+        .filter(|p| p.starts_with("lay"))
+        .collect();
+    assert!(!layer.is_empty());
+    for p in &layer {
+        assert!(
+            lines[1].split(' ').any(|w| w == format!("{p}=")),
+            "{p}: {text}"
+        );
+    }
+    assert!(
+        !lines[1].contains("--"),
+        "flags offered after --set: {text}"
+    );
+    for sh in ["zsh", "fish"] {
+        assert!(
+            ok(&["completions", sh]).contains("bulk.damping.time="),
+            "{sh}"
+        );
+    }
+}
