@@ -264,8 +264,26 @@ fn common_options(sub: &Sub, given: &Given) -> CliResult<Common> {
         (None, Some(p)) => preset(p)?,
         (None, None) => Scene::default(),
     };
+    // An effect switched on by setting one of its fields (`--set layer.thickness=2um` on a scene
+    // without a layer) takes defaults for the fields not given: a note says which (issue 37: it
+    // happened silently).
+    let mut switched_on: Vec<&str> = Vec::new();
     for s in &given.sets {
+        let path = s.split_once('=').map_or(s.as_str(), |(p, _)| p.trim());
+        let section = path.split_once('.').map(|(sec, _)| sec);
+        let off = |scene: &Scene, sec: &str| {
+            scene.get(sec) == Ok(rime_core::params::Value::Enabled(false))
+        };
+        let was_off = section.is_some_and(|sec| off(&scene, sec));
         apply_set(&mut scene, s)?;
+        if let Some(sec) = section.filter(|sec| was_off && !off(&scene, sec)) {
+            switched_on.push(sec);
+        }
+    }
+    for sec in switched_on {
+        if let Some(note) = switched_on_note(&scene, sec, &given.sets) {
+            eprintln!("{note}");
+        }
     }
     let terminal_default = if std::io::stdout().is_terminal() {
         Format::Table
@@ -281,6 +299,37 @@ fn common_options(sub: &Sub, given: &Given) -> CliResult<Common> {
         scene,
         accuracy: given.accuracy,
         format,
+    })
+}
+
+/// The note for effect `section` switched on by a `--set` of one of its fields: the fields the
+/// user did not set and the defaults they took; `None` when every field was given.
+fn switched_on_note(scene: &Scene, section: &str, sets: &[String]) -> Option<String> {
+    let given: Vec<&str> = sets
+        .iter()
+        .map(|s| s.split_once('=').map_or(s.as_str(), |(p, _)| p.trim()))
+        .collect();
+    let prefix = format!("{section}.");
+    let defaults: Vec<String> = rime_core::params::PARAMETERS
+        .iter()
+        .filter(|p| p.path.starts_with(&prefix) && !given.contains(&p.path))
+        .filter_map(|p| match scene.get(p.path) {
+            Ok(rime_core::params::Value::Number(v)) => Some(format!(
+                "{} = {}",
+                p.path,
+                rime_core::explorer::format::qty(v, p.unit)
+            )),
+            Ok(rime_core::params::Value::Choice(c)) => Some(format!("{} = {c}", p.path)),
+            _ => None,
+        })
+        .collect();
+    let first = given.iter().find(|p| p.starts_with(&prefix))?;
+    (!defaults.is_empty()).then(|| {
+        format!(
+            "note: --set {first}: the scene had no {section}; it is switched on, with the defaults {} \
+             (--set them too, or --set {section}=off)",
+            defaults.join(", ")
+        )
     })
 }
 

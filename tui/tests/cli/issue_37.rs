@@ -357,3 +357,137 @@ fn issue_37_completion_offers_parameter_paths_after_set() {
         );
     }
 }
+
+/// Issue 37 item 14: `--set layer.thickness=2um` on a scene without a layer says on stderr that
+/// the layer is switched on and which defaults the other fields took; with every field given, or a
+/// scene that has a layer, nothing is said.
+#[test]
+fn issue_37_setting_a_field_of_an_absent_effect_says_so() {
+    let (code, _, err) = rime(&[
+        "eps",
+        "--g",
+        "0.01",
+        "--set",
+        "layer.thickness=2um",
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        err.contains("no layer") && err.contains("switched on"),
+        "{err}"
+    );
+    assert!(err.contains("layer.viscosity = 1 kPa s"), "{err}");
+    assert!(err.contains("--set layer=off"), "{err}");
+    for quiet in [
+        &[
+            "--set",
+            "layer.thickness=2um",
+            "--set",
+            "layer.viscosity=500",
+            "--set",
+            "layer.reading=offset",
+        ][..],
+        &["--preset", "ice-frost", "--set", "layer.thickness=2um"][..],
+        &["--set", "layer=on", "--set", "layer.thickness=2um"][..],
+    ] {
+        let (code, _, err) =
+            rime(&[&["eps", "--g", "0.01", "--format", "csv"][..], quiet].concat());
+        assert_eq!(code, 0, "{err}");
+        assert!(err.is_empty(), "{quiet:?}: {err}");
+    }
+}
+
+/// Issue 37 item 14: a number below a double's range is refused as such (it was read as 0 and
+/// refused as "speed 0"), for speeds and `--set` alike; a true zero keeps its own message.
+#[test]
+fn issue_37_an_underflowing_number_says_so() {
+    for args in [
+        &["eps", "--g", "1e-400"][..],
+        &["eps", "--g", "0.01", "--set", "grains.radius_1=1e-400"][..],
+        &["eps", "--g", "2.5e-999 m/s"][..],
+    ] {
+        let (code, _, err) = rime(args);
+        assert_eq!(code, 2, "{args:?}");
+        assert!(err.contains("underflows to 0"), "{args:?}: {err}");
+    }
+    let (code, _, err) = rime(&["eps", "--g", "0e-400"]);
+    assert_eq!(code, 2);
+    assert!(!err.contains("underflows"), "{err}");
+    // The smallest subnormal is a number like any other.
+    let (code, _, err) = rime(&["eps", "--g", "5e-324"]);
+    assert!(!err.contains("underflows"), "{code} {err}");
+}
+
+/// Issue 37 item 14: `tangential`'s ε_N takes the stick maps' path and `eps` its own (docs/cli.md):
+/// they agree to the documented 1e-14 relative at `fast` and `precise`, bit for bit at
+/// `integrated`.
+#[test]
+fn issue_37_eps_and_tangential_agree_to_the_documented_digits() {
+    let g = "1e-5,3e-4,0.01,0.3,10";
+    for (level, bound) in [("fast", 1e-14), ("precise", 1e-14), ("integrated", 0.0)] {
+        let eps: serde_json::Value = serde_json::from_str(&ok(&[
+            "eps",
+            "--g",
+            g,
+            "--accuracy",
+            level,
+            "--format",
+            "json",
+        ]))
+        .unwrap();
+        let tan: serde_json::Value = serde_json::from_str(&ok(&[
+            "tangential",
+            "--gn",
+            g,
+            "--gt",
+            "0.001",
+            "--set",
+            "friction=on",
+            "--accuracy",
+            level,
+            "--format",
+            "json",
+        ]))
+        .unwrap();
+        for (a, b) in eps.as_array().unwrap().iter().zip(tan.as_array().unwrap()) {
+            let (x, y) = (a["eps_n"].as_f64().unwrap(), b["eps_n"].as_f64().unwrap());
+            assert!((x - y).abs() <= bound * x.abs(), "{level}: {x} vs {y}");
+        }
+    }
+}
+
+/// Issue 37 item 14: every help page fits 80 columns, and says what the exit codes are (2 bad
+/// input, 1 a failed computation), as docs/cli.md does.
+#[test]
+fn issue_37_help_fits_80_columns_and_tells_the_exit_codes() {
+    let overview = ok(&["--help"]);
+    let subs: Vec<String> = overview
+        .lines()
+        .skip_while(|l| !l.starts_with("SUBCOMMANDS"))
+        .skip(1)
+        .take_while(|l| !l.is_empty())
+        .filter(|l| l.starts_with("  ") && !l.starts_with("   "))
+        .filter_map(|l| l.split_whitespace().next().map(String::from))
+        .collect();
+    assert!(subs.len() > 10, "{overview}");
+    let mut pages = vec![("rime".to_string(), overview)];
+    for s in &subs {
+        pages.push((s.clone(), ok(&[s.as_str(), "--help"])));
+    }
+    for (name, page) in &pages {
+        for line in page.lines() {
+            assert!(
+                line.chars().count() <= 80,
+                "{name}: {} columns: {line}",
+                line.chars().count()
+            );
+        }
+        let flat = page.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(flat.contains("2 bad input"), "{name}: {flat}");
+        assert!(flat.contains("1 a computation that failed"), "{name}");
+    }
+    // fit names its own formats only.
+    let fit = ok(&["fit", "--help"]);
+    assert!(!fit.contains("json | csv | table"), "{fit}");
+}
