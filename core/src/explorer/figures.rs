@@ -128,8 +128,8 @@ fn overlay_short(o: &super::frame::OverlayCurve) -> String {
     // A measured range's score is the distance to its band, 0 inside it: "rms 0" read as a
     // perfect fit (issue 37), so a range says whether this scene lies within it.
     let score = match o.score {
-        Some(r) if o.band && r == 0.0 => " this scene within it".to_string(),
-        Some(r) if o.band => format!(" rms off it {}", super::format::sig(r, 2)),
+        Some(r) if o.band && r == 0.0 => " scene in range".to_string(),
+        Some(r) if o.band => format!(" rms off range {}", super::format::sig(r, 2)),
         Some(r) => format!(" rms {}", super::format::sig(r, 2)),
         None => String::new(),
     };

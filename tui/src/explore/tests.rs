@@ -2312,7 +2312,7 @@ fn issue_37_f_fits_only_to_a_law_on_the_chart() {
     assert_eq!(app.scene, before, "fitted to a law not on the chart");
     assert!(app.undo.is_empty());
     let (msg, _) = app.message.clone().expect("message");
-    assert!(msg.contains("none is shown"), "{msg}");
+    assert!(msg.contains("no measured law on the chart"), "{msg}");
     // The other models: no measured law either.
     update(&mut app, ch('c'));
     update(&mut app, ch('c'));

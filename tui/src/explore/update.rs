@@ -569,9 +569,7 @@ impl App {
                 lo.max(a) < hi.min(b)
             });
         let Some(id) = compared.or(bridges_drawn.then_some("bridges1984")) else {
-            self.info(
-                "f fits A to the measured law on the chart, and none is shown: c shows measured ice",
-            );
+            self.info("f: no measured law on the chart to fit A to · c shows measured ice");
             return;
         };
         let Some(entry) = rime_core::atlas::find(id) else {

@@ -285,7 +285,14 @@ fn put_entry(buf: &mut Buffer, x: u16, y: u16, e: &Entry, max_x: u16, colors: Co
         if x >= max_x {
             break;
         }
-        let (nx, _) = buf.set_stringn(x, y, text, (max_x - x) as usize, st);
+        let room = (max_x - x) as usize;
+        // A text cut at the pane's edge ends in `…` (issue 37: legends were cut silently).
+        let (nx, _) = if text.chars().count() > room && room > 1 {
+            let cut: String = text.chars().take(room - 1).collect();
+            buf.set_stringn(x, y, cut + "…", room, st)
+        } else {
+            buf.set_stringn(x, y, text, room, st)
+        };
         x = nx;
     }
     for (text, rgb) in &e.more {

@@ -96,11 +96,15 @@ fn fit_rows(text: Text<'static>, width: u16, height: u16) -> Text<'static> {
     }
     let left = text.lines.len() - keep;
     let mut lines: Vec<Line<'static>> = text.lines.into_iter().take(keep).collect();
-    let note = if width >= 40 {
-        format!("… {left} more lines: a taller terminal shows them (rime ring prints all)")
-    } else {
-        format!("… {left} more lines")
-    };
+    // The longest wording that fits the one row kept for it.
+    let note = [
+        format!("… {left} more lines: a taller terminal shows them (rime ring prints all)"),
+        format!("… {left} more lines: a taller terminal shows them"),
+        format!("… {left} more lines"),
+    ]
+    .into_iter()
+    .find(|n| n.chars().count() <= usize::from(width))
+    .unwrap_or_else(|| format!("… +{left}"));
     lines.push(Line::from(Span::styled(
         note,
         Style::new().fg(Color::Yellow),
