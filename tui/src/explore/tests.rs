@@ -2493,3 +2493,74 @@ fn issue_37_measured_ranges_do_not_show_rms_0() {
         assert!(!r.ends_with("rms 0"), "{r}");
     }
 }
+
+/// The hue angle of a terminal colour (24-bit), in degrees.
+fn hue_of(c: ratatui::style::Color) -> Option<f64> {
+    let ratatui::style::Color::Rgb(r, g, b) = c else {
+        return None;
+    };
+    let (r, g, b) = (f64::from(r), f64::from(g), f64::from(b));
+    let (max, min) = (r.max(g).max(b), r.min(g).min(b));
+    let d = max - min;
+    if d == 0.0 {
+        return None;
+    }
+    let h = if max == r {
+        60.0 * ((g - b) / d)
+    } else if max == g {
+        60.0 * ((b - r) / d + 2.0)
+    } else {
+        60.0 * ((r - g) / d + 4.0)
+    };
+    Some((h + 360.0) % 360.0)
+}
+
+/// Issue 37 item 8: with the other models compared, no model's colour on screen shares a hue
+/// with a family member's (`muller_poschel2011` was #0072B2 beside the family's #3A7DC9): read
+/// from the terminal's cells, at 80×24 and 200×60.
+#[test]
+fn issue_37_no_compared_model_shares_a_hue_with_the_family_on_screen() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('c'));
+    update(&mut app, ch('c'));
+    settle(&mut app);
+    assert_eq!(app.overlay_set, 2, "other models");
+    for (w, h) in [(200, 60), (120, 40)] {
+        let t = screen(&app, w, h);
+        let buf = t.backend().buffer();
+        let rows: Vec<String> = text(&t).lines().map(String::from).collect();
+        // The colour of the cells under `needle` on the first row that has it.
+        let colours_of = |needle: &str, span: usize| -> Vec<ratatui::style::Color> {
+            let Some((y, row)) = rows.iter().enumerate().find(|(_, r)| r.contains(needle)) else {
+                return Vec::new();
+            };
+            let byte = row.find(needle).unwrap_or(0);
+            let x0 = row[..byte].chars().count();
+            (x0..x0 + span)
+                .map(|x| buf[(x as u16, y as u16)].fg)
+                .filter(|c| hue_of(*c).is_some())
+                .collect()
+        };
+        let models: Vec<_> = ["brilliantov2007", "muller_poschel2011"]
+            .iter()
+            .flat_map(|m| colours_of(m, m.chars().count()))
+            .collect();
+        // The family entry: `A = 10 µs 30 µs …`, each value in its member's colour.
+        let family = colours_of("A = ", 40);
+        assert!(
+            !models.is_empty() && !family.is_empty(),
+            "{w}×{h}\n{}",
+            rows.join("\n")
+        );
+        for m in &models {
+            for f in &family {
+                let (a, b) = (hue_of(*m).unwrap_or(0.0), hue_of(*f).unwrap_or(0.0));
+                let gap = (a - b).abs().min(360.0 - (a - b).abs());
+                assert!(
+                    gap >= 20.0,
+                    "{w}×{h}: model {m:?} vs family {f:?}: {gap:.0}°"
+                );
+            }
+        }
+    }
+}
