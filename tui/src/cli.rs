@@ -245,10 +245,25 @@ fn read_flags(sub: &'static Sub, rest: &[String]) -> CliResult<Read> {
             "--preset" => given.preset_name = Some(value),
             "--set" => given.sets.push(value),
             "--accuracy" => {
-                given.accuracy = Accuracy::parse(&value)
-                    .map_err(|e| CliError::input(format!("--accuracy {value}: {e}")))?
+                given.accuracy = Accuracy::parse(&value).map_err(|e| {
+                    // The flag names the field once (it read "--accuracy x: accuracy: …").
+                    let text = e.to_string();
+                    let text = text.strip_prefix("accuracy: ").unwrap_or(&text);
+                    let hint = crate::suggest::hint(&value, ["fast", "precise", "integrated"]);
+                    CliError::input(format!("--accuracy {value}: {text}{hint}"))
+                })?
             }
-            "--format" => given.format = Some(format_of(sub, &value)?),
+            "--format" => {
+                let format = format_of(sub, &value)?;
+                // Two different formats: one would be ignored silently (the same one twice is
+                // harmless, as scripts that append `--format json` give it).
+                if given.format.is_some_and(|f| f != format) {
+                    return err(format!(
+                        "--format {value}: a different --format was given before (one only)"
+                    ));
+                }
+                given.format = Some(format);
+            }
             _ => given.flags.0.push((flag.name, value)),
         }
         i += 1;

@@ -491,3 +491,24 @@ fn issue_37_help_fits_80_columns_and_tells_the_exit_codes() {
     let fit = ok(&["fit", "--help"]);
     assert!(!fit.contains("json | csv | table"), "{fit}");
 }
+
+/// Issue 37 (review F12, C1): `--accuracy` errors name the field once and suggest the level;
+/// a second, different `--format` is refused (the last one won silently); `fit --law` says its speeds are the
+/// law's, not "from the header" (a law has none).
+#[test]
+fn issue_37_small_error_texts() {
+    let (code, _, err) = rime(&["eps", "--g", "0.1", "--accuracy", "precse"]);
+    assert_eq!(code, 2);
+    assert_eq!(err.matches("accuracy").count(), 1, "{err}");
+    assert!(err.contains("did you mean `precise`?"), "{err}");
+    let (code, out, err) = rime(&["eps", "--g", "0.1", "--format", "json", "--format", "csv"]);
+    assert_eq!(code, 2, "{out}");
+    assert!(
+        err.contains("--format") && err.contains("different"),
+        "{err}"
+    );
+    ok(&["eps", "--g", "0.1", "--format", "json", "--format", "json"]);
+    let fit = ok(&["fit", "--law", "bridges1984", "--format", "table"]);
+    assert!(!fit.contains("from the header"), "{fit}");
+    assert!(fit.contains("the law's measured speeds"), "{fit}");
+}
