@@ -2564,3 +2564,37 @@ fn issue_37_no_compared_model_shares_a_hue_with_the_family_on_screen() {
         }
     }
 }
+
+/// Issue 37 (review E11, E17): at 80 and 100 columns, without colour, the legend's count of left
+/// out entries is whole (`+1 more`, `+1`), never `+1 m`; an entry cut at the edge ends in `…`.
+#[test]
+fn issue_37_the_legend_is_never_cut_mid_word() {
+    for (w, h, scene) in [
+        (80, 24, Scene::default()),
+        (100, 30, Preset::IceFrost.scene()),
+    ] {
+        let mut app = app_on(scene);
+        app.colors = super::colors::Colors::None;
+        for sets in 0..3 {
+            let s = text(&screen(&app, w, h));
+            for line in s.lines() {
+                if let Some((_, tail)) = line.split_once(" +") {
+                    let count: String = tail.chars().take_while(char::is_ascii_digit).collect();
+                    if count.is_empty() {
+                        continue;
+                    }
+                    let rest = tail[count.len()..].trim_end();
+                    let rest = rest.split(" ─").next().unwrap_or(rest).trim_end();
+                    assert!(
+                        rest.is_empty()
+                            || rest.starts_with(" more")
+                                && (rest == " more" || rest.ends_with("(x exports all)")),
+                        "{w}×{h}, set {sets}: cut count in {line:?}"
+                    );
+                }
+            }
+            update(&mut app, ch('c'));
+            settle(&mut app);
+        }
+    }
+}

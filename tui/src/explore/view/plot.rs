@@ -437,7 +437,16 @@ fn legend_above(buf: &mut Buffer, f: &Frame, entries: &[Entry], colors: Colors) 
         }
         if r + 1 == rows.len() && *left_out > 0 {
             let room = f.area.right().saturating_sub(x) as usize;
-            buf.set_stringn(x, y, format!("+{left_out} more (x exports all)"), room, DIM);
+            // The longest wording that fits, never one cut mid-word (issue 37: `+1 m`).
+            let more = [
+                format!("+{left_out} more (x exports all)"),
+                format!("+{left_out} more"),
+                format!("+{left_out}"),
+            ]
+            .into_iter()
+            .find(|t| t.chars().count() <= room)
+            .unwrap_or_default();
+            buf.set_stringn(x, y, more, room, DIM);
         }
     }
 }
