@@ -226,8 +226,8 @@ fn chart_readout(
         }
         None => spans.push(Span::raw("ε_N — ")),
     }
-    // The title sits inside the block's corners: two cells fewer than the area.
-    let room = usize::from(width.saturating_sub(2));
+    // The block has top and bottom borders only: the title may take the whole width.
+    let room = usize::from(width);
     let len = |spans: &[Span]| {
         spans
             .iter()
@@ -235,10 +235,12 @@ fn chart_readout(
             .sum::<usize>()
     };
     let mut keep = optional.len();
-    while keep > 0 && len(&spans) + len(&optional[..keep]) + 1 > room {
+    while keep > 0 && len(&spans) + len(&optional[..keep]) > room {
         keep -= 1;
     }
     spans.extend(optional.into_iter().take(keep));
-    spans.push(Span::raw(" "));
+    if len(&spans) < room {
+        spans.push(Span::raw(" "));
+    }
     super::lines::fit(spans, room, "…")
 }
