@@ -45,8 +45,21 @@ fn normalise(unit: &str, out: &mut [u8; 32]) -> Option<usize> {
     Some(len)
 }
 
+/// What a number too small for a double reads as (issue 37: `1e-400` became 0 and was refused
+/// as "speed 0").
+pub const UNDERFLOW: &str =
+    "a number a double can hold: it underflows to 0 (the smallest is about 4.9e-324)";
+
+/// Whether the decimal text `number` names a nonzero value that parsed to `value` = 0: a mantissa
+/// with a nonzero digit whose exponent is below a double's range.
+pub fn underflows(number: &str, value: f64) -> bool {
+    let mantissa = number.split(['e', 'E']).next().unwrap_or(number);
+    value == 0.0 && mantissa.chars().any(|c| matches!(c, '1'..='9'))
+}
+
 /// Parses `text` as a number with an optional unit compatible with `unit` (the SI unit of the
 /// field, as written in [`crate::params::PARAMETERS`]); returns the value in that SI unit.
+/// A nonzero number below a double's range is refused ([`UNDERFLOW`]), not read as 0.
 pub fn parse_quantity(field: &'static str, text: &str, unit: &str) -> Result<f64> {
     let text = text.trim();
     let split = text
@@ -74,6 +87,12 @@ pub fn parse_quantity(field: &'static str, text: &str, unit: &str) -> Result<f64
             field,
             value,
             expected: "must be finite",
+        });
+    }
+    if underflows(number, value) {
+        return Err(Error::InvalidValue {
+            field,
+            expected: UNDERFLOW,
         });
     }
     let suffix = suffix.trim();

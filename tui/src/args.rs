@@ -99,6 +99,11 @@ pub(crate) fn explorer_request(
 
 pub(crate) fn number(flag: &str, text: &str) -> CliResult<f64> {
     match text.trim().parse::<f64>() {
+        Ok(v) if rime_core::units::underflows(text.trim(), v) => err(format!(
+            "{flag} {}: expected {}",
+            text.trim(),
+            rime_core::units::UNDERFLOW
+        )),
         Ok(v) if v.is_finite() => Ok(v),
         Ok(v) => err(format!("{flag}: {v} is not a finite number")),
         Err(_) => err(format!("{flag}: '{text}' is not a number")),

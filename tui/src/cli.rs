@@ -96,7 +96,10 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
         rest = &args[1..];
     }
     let Some(sub) = spec::find(name) else {
-        return err(format!("{name}: unknown subcommand (see rime --help)"));
+        let hint = crate::suggest::hint(name, spec::SUBS.iter().map(|s| s.name));
+        return err(format!(
+            "{name}: unknown subcommand{hint} (see rime --help)"
+        ));
     };
     // Positional arguments of `help` and `completions`.
     let mut positional: Option<&str> = None;
@@ -116,7 +119,10 @@ pub fn parse(args: &[String]) -> CliResult<Command> {
                 None => Ok(Command::Help(None)),
                 Some(p) => match spec::find(p).filter(|s| !s.name.is_empty()) {
                     Some(s) => Ok(Command::Help(Some(s))),
-                    None => err(format!("help {p}: unknown subcommand (see rime --help)")),
+                    None => err(format!(
+                        "help {p}: unknown subcommand{} (see rime --help)",
+                        crate::suggest::hint(p, spec::SUBS.iter().map(|s| s.name))
+                    )),
                 },
             };
         }
@@ -207,8 +213,9 @@ fn read_flags(sub: &'static Sub, rest: &[String]) -> CliResult<Read> {
                 format_of(sub, "")?;
             }
             return err(format!(
-                "{name}: not an option of `{}` (see {} --help)",
+                "{name}: not an option of `{}`{} (see {} --help)",
                 sub.command(),
+                crate::suggest::hint(name, accepted.iter().map(|f| f.name)),
                 sub.command()
             ));
         };
@@ -238,10 +245,25 @@ fn read_flags(sub: &'static Sub, rest: &[String]) -> CliResult<Read> {
             "--preset" => given.preset_name = Some(value),
             "--set" => given.sets.push(value),
             "--accuracy" => {
-                given.accuracy = Accuracy::parse(&value)
-                    .map_err(|e| CliError::input(format!("--accuracy {value}: {e}")))?
+                given.accuracy = Accuracy::parse(&value).map_err(|e| {
+                    // The flag names the field once (it read "--accuracy x: accuracy: …").
+                    let text = e.to_string();
+                    let text = text.strip_prefix("accuracy: ").unwrap_or(&text);
+                    let hint = crate::suggest::hint(&value, ["fast", "precise", "integrated"]);
+                    CliError::input(format!("--accuracy {value}: {text}{hint}"))
+                })?
             }
-            "--format" => given.format = Some(format_of(sub, &value)?),
+            "--format" => {
+                let format = format_of(sub, &value)?;
+                // Two different formats: one would be ignored silently (the same one twice is
+                // harmless, as scripts that append `--format json` give it).
+                if given.format.is_some_and(|f| f != format) {
+                    return err(format!(
+                        "--format {value}: a different --format was given before (one only)"
+                    ));
+                }
+                given.format = Some(format);
+            }
             _ => given.flags.0.push((flag.name, value)),
         }
         i += 1;
@@ -257,8 +279,26 @@ fn common_options(sub: &Sub, given: &Given) -> CliResult<Common> {
         (None, Some(p)) => preset(p)?,
         (None, None) => Scene::default(),
     };
+    // An effect switched on by setting one of its fields (`--set layer.thickness=2um` on a scene
+    // without a layer) takes defaults for the fields not given: a note says which (issue 37: it
+    // happened silently).
+    let mut switched_on: Vec<&str> = Vec::new();
     for s in &given.sets {
+        let path = s.split_once('=').map_or(s.as_str(), |(p, _)| p.trim());
+        let section = path.split_once('.').map(|(sec, _)| sec);
+        let off = |scene: &Scene, sec: &str| {
+            scene.get(sec) == Ok(rime_core::params::Value::Enabled(false))
+        };
+        let was_off = section.is_some_and(|sec| off(&scene, sec));
         apply_set(&mut scene, s)?;
+        if let Some(sec) = section.filter(|sec| was_off && !off(&scene, sec)) {
+            switched_on.push(sec);
+        }
+    }
+    for sec in switched_on {
+        if let Some(note) = switched_on_note(&scene, sec, &given.sets) {
+            eprintln!("{note}");
+        }
     }
     let terminal_default = if std::io::stdout().is_terminal() {
         Format::Table
@@ -274,6 +314,37 @@ fn common_options(sub: &Sub, given: &Given) -> CliResult<Common> {
         scene,
         accuracy: given.accuracy,
         format,
+    })
+}
+
+/// The note for effect `section` switched on by a `--set` of one of its fields: the fields the
+/// user did not set and the defaults they took; `None` when every field was given.
+fn switched_on_note(scene: &Scene, section: &str, sets: &[String]) -> Option<String> {
+    let given: Vec<&str> = sets
+        .iter()
+        .map(|s| s.split_once('=').map_or(s.as_str(), |(p, _)| p.trim()))
+        .collect();
+    let prefix = format!("{section}.");
+    let defaults: Vec<String> = rime_core::params::PARAMETERS
+        .iter()
+        .filter(|p| p.path.starts_with(&prefix) && !given.contains(&p.path))
+        .filter_map(|p| match scene.get(p.path) {
+            Ok(rime_core::params::Value::Number(v)) => Some(format!(
+                "{} = {}",
+                p.path,
+                rime_core::explorer::format::qty(v, p.unit)
+            )),
+            Ok(rime_core::params::Value::Choice(c)) => Some(format!("{} = {c}", p.path)),
+            _ => None,
+        })
+        .collect();
+    let first = given.iter().find(|p| p.starts_with(&prefix))?;
+    (!defaults.is_empty()).then(|| {
+        format!(
+            "note: --set {first}: the scene had no {section}; it is switched on, with the defaults {} \
+             (--set them too, or --set {section}=off)",
+            defaults.join(", ")
+        )
     })
 }
 

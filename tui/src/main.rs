@@ -14,6 +14,7 @@ mod parallel;
 mod progress;
 mod scene_io;
 mod spec;
+mod suggest;
 mod takeaway;
 
 use cli::Command;

@@ -16,6 +16,76 @@ pub fn num(v: f64) -> String {
     rime_core::explorer::records::cell(v)
 }
 
+/// A number as a table for people prints it (issue 37: tables carried 17 digits): the core's
+/// [`qty`](rime_core::explorer::format::qty), 4 significant digits with an SI prefix where the
+/// unit takes one, split into the value and its (prefixed) unit: `(5.257, µm/s)`, `(30.16, g)`.
+/// JSON and CSV keep every digit ([`num`]).
+pub fn human(v: f64, unit: &str) -> (String, String) {
+    let unit = if unit == "1" { "" } else { unit };
+    // A mass of a kilogram and more reads in kg (a planet is not 5.688e29 g).
+    if unit == "kg" && v.abs() >= 1.0 {
+        return (rime_core::explorer::format::sig(v, 4), unit.to_string());
+    }
+    let text = rime_core::explorer::format::qty(v, unit);
+    match text.split_once(' ') {
+        Some((value, unit)) if v.is_finite() => (value.to_string(), unit.to_string()),
+        _ => (text, unit.to_string()),
+    }
+}
+
+/// A record table's header and rows for people: each numeric cell to 4 significant digits; where
+/// the column's unit (`name [unit]`) takes an SI prefix, each cell carries its prefixed unit and
+/// the header drops it (`t_c` · `605.2 µs`), else the header keeps it. Cells that are not numbers
+/// (`rebound`, empty) are kept.
+pub fn human_table(header: &[&str], rows: &[Vec<String>]) -> String {
+    let units: Vec<(&str, &str)> = header
+        .iter()
+        .map(|h| match h.split_once(" [") {
+            Some((name, rest)) => (name, rest.trim_end_matches(']')),
+            None => (*h, ""),
+        })
+        .collect();
+    let with_unit = |u: &str| !u.is_empty() && rime_core::explorer::format::prefixable(u);
+    let head: Vec<&str> = header
+        .iter()
+        .zip(&units)
+        .map(|(h, (name, u))| if with_unit(u) { *name } else { *h })
+        .collect();
+    let rows: Vec<Vec<String>> = rows
+        .iter()
+        .map(|r| {
+            r.iter()
+                .zip(&units)
+                .map(|(c, (_, u))| match c.parse::<f64>() {
+                    Ok(v) if v.is_finite() && with_unit(u) => {
+                        rime_core::explorer::format::qty(v, u)
+                    }
+                    Ok(v) if v.is_finite() => rime_core::explorer::format::sig(v, 4),
+                    _ => c.clone(),
+                })
+                .collect()
+        })
+        .collect();
+    table(&head, &rows)
+}
+
+/// A `name value unit` table for people: each value as [`human`] prints it, its prefixed unit in
+/// the unit column; values that are not numbers (`rebound`, `none`) kept.
+pub fn human_value_rows(rows: Vec<Vec<String>>) -> Vec<Vec<String>> {
+    rows.into_iter()
+        .map(|r| match (r.first(), r.get(1), r.get(2)) {
+            (Some(k), Some(v), Some(u)) => match v.parse::<f64>() {
+                Ok(x) if x.is_finite() => {
+                    let (value, unit) = human(x, u);
+                    vec![k.clone(), value, unit]
+                }
+                _ => r,
+            },
+            _ => r,
+        })
+        .collect()
+}
+
 /// Prints records in the chosen format.
 pub trait Rows {
     /// Column names of CSV and tables: the JSON names, with units in brackets.
@@ -78,7 +148,7 @@ pub fn render<T: Rows + Serialize>(records: &[T], format: Format) -> Result<Stri
         }
         Format::Table => {
             let rows: Vec<Vec<String>> = records.iter().map(|r| r.cells()).collect();
-            let mut out = table(T::header(), &rows);
+            let mut out = human_table(T::header(), &rows);
             if let Some(note) = T::note(records) {
                 out.push_str(note);
                 out.push('\n');

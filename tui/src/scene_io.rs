@@ -223,19 +223,42 @@ pub fn apply_set(scene: &mut Scene, assignment: &str) -> CliResult<()> {
     let path = path.trim();
     match scene.set(path, value) {
         Ok(()) => Ok(()),
-        Err(rime_core::Error::UnknownParameter) => {
-            let known: Vec<&str> = rime_core::params::PARAMETERS
-                .iter()
-                .chain(rime_core::params::MODEL_PARAMETERS)
-                .map(|p| p.path)
-                .collect();
-            err(format!(
-                "--set {path}: unknown parameter (known: {})",
-                known.join(", ")
-            ))
-        }
+        Err(rime_core::Error::UnknownParameter) => err(unknown_path(path)),
         Err(e) => err(format!("--set {path}={value}: {e}")),
     }
+}
+
+/// The error for an unknown `--set` path, short (issue 37: it listed all 24 paths on one
+/// 518-character line): the close path (`did you mean`), else the paths of its section
+/// (`friction.mu` → `friction.coefficient, …`), else the sections and where every path is listed.
+fn unknown_path(path: &str) -> String {
+    let known: Vec<&str> = rime_core::params::PARAMETERS
+        .iter()
+        .chain(rime_core::params::MODEL_PARAMETERS)
+        .map(|p| p.path)
+        .collect();
+    if let Some(close) = crate::suggest::closest(path, known.iter().copied()) {
+        return format!("--set {path}: unknown parameter (did you mean `{close}`?)");
+    }
+    let section = |p: &str| p.split_once('.').map_or(p, |(s, _)| s).to_string();
+    let mut sections: Vec<String> = known.iter().map(|p| section(p)).collect();
+    sections.dedup();
+    let given = section(path);
+    let same: Vec<&str> = known
+        .iter()
+        .copied()
+        .filter(|p| p.contains('.') && section(p) == given)
+        .collect();
+    if !same.is_empty() {
+        return format!(
+            "--set {path}: unknown parameter; {given} has {}",
+            same.join(", ")
+        );
+    }
+    format!(
+        "--set {path}: unknown parameter; the sections are {} (`rime scene` prints the scene: its keys are the paths)",
+        sections.join(", ")
+    )
 }
 
 /// The scene as pretty JSON.
@@ -250,7 +273,8 @@ pub fn preset(name: &str) -> CliResult<Scene> {
         None => {
             let names: Vec<&str> = Preset::ALL.iter().map(|p| p.name()).collect();
             err(format!(
-                "--preset {name}: unknown preset (known: {})",
+                "--preset {name}: unknown preset{} (known: {})",
+                crate::suggest::hint(name, names.iter().copied()),
                 names.join(", ")
             ))
         }

@@ -546,14 +546,18 @@ fn flag_line(fl: &Flag) -> String {
     wrap(&format!("  {left:<24} "), fl.help, 27) + "\n"
 }
 
-/// Wraps `text` after the verbatim `prefix` at 96 columns, continuation lines indented by
-/// `indent` spaces.
+/// The width help pages wrap to: an 80-column terminal shows them without its own wrapping
+/// mid-phrase (issue 37: lines of 93–105 columns).
+pub const HELP_WIDTH: usize = 80;
+
+/// Wraps `text` after the verbatim `prefix` at [`HELP_WIDTH`] columns, continuation lines indented
+/// by `indent` spaces.
 fn wrap(prefix: &str, text: &str, indent: usize) -> String {
     let mut out = prefix.to_string();
     let mut width = prefix.chars().count();
     for (k, word) in text.split_whitespace().enumerate() {
         let n = word.chars().count();
-        if k > 0 && width + 1 + n > 96 {
+        if k > 0 && width + 1 + n > HELP_WIDTH {
             out.push('\n');
             out.push_str(&" ".repeat(indent));
             width = indent;
@@ -582,30 +586,48 @@ impl Sub {
 /// `rime <sub> --help`.
 pub fn sub_help(sub: &Sub) -> String {
     let mut s = format!(
-        "{}\n\nUSAGE:\n  rime {}\n\n",
+        "{}\n\nUSAGE:\n{}\n\n",
         wrap(&format!("{} — ", sub.command()), sub.about, 2),
-        sub.usage
+        wrap("  rime ", sub.usage, 4)
     );
     s.push_str("OPTIONS:\n");
+    let restricted = !sub.formats.is_empty() && sub.formats.len() < ALL_FORMATS.len();
+    let own_formats = format!("{} only", sub.formats.join(" | "));
     for fl in sub.accepted().iter().chain(GLOBAL_FLAGS) {
-        s.push_str(&flag_line(fl));
+        // A subcommand with fewer formats names its own (issue 37: `fit --help` said
+        // "json | csv | table" and then "json or table only").
+        if fl.name == FORMAT_FLAG.name && restricted {
+            s.push_str(&wrap(
+                &format!("  {:<24} ", "--format FORMAT"),
+                &own_formats,
+                27,
+            ));
+            s.push('\n');
+        } else {
+            s.push_str(&flag_line(fl));
+        }
     }
-    if !sub.formats.is_empty() && sub.formats.len() < ALL_FORMATS.len() {
-        s.push_str(&format!(
-            "  (--format: {} only)\n",
-            sub.formats.join(" or ")
-        ));
-    }
-    s.push_str(&format!("\nEXAMPLE:\n  rime {}\n", sub.example));
-    s.push_str("\nErrors are one line naming the flag, with exit code 2 (docs/cli.md).\n");
+    s.push_str(&format!(
+        "\nEXAMPLE:\n{}\n",
+        wrap("  rime ", sub.example, 4)
+    ));
+    s.push('\n');
+    s.push_str(EXIT_CODES);
     s
 }
+
+/// What every help page says about errors, as docs/cli.md does: 2 for bad input, 1 for a failed
+/// computation (issue 37: the help said every error exits 2).
+pub const EXIT_CODES: &str = "Errors are one line naming the flag. Exit codes: 0 success; 2 bad input (a flag,\n\
+     a value, a scene field, a file); 1 a computation that failed on valid input\n\
+     (docs/cli.md).\n";
 
 /// `rime --help`: the overview.
 pub fn usage() -> String {
     let mut s = String::from("rime — slow collisions of icy grains (Hertzsch 2002)\n\nUSAGE:\n");
     for sub in SUBS {
-        s.push_str(&format!("  rime {}\n", sub.usage));
+        s.push_str(&wrap("  rime ", sub.usage, 4));
+        s.push('\n');
     }
     s.push_str("\nSUBCOMMANDS:\n");
     for sub in SUBS.iter().filter(|s| !s.name.is_empty()) {
@@ -620,10 +642,8 @@ pub fn usage() -> String {
     {
         s.push_str(&flag_line(fl));
     }
-    s.push_str(
-        "\nrime help SUB (or rime SUB --help) shows a subcommand's flags and an example.\n\
-         Errors are one line naming the flag, with exit code 2.\n",
-    );
+    s.push_str("\nrime help SUB (or rime SUB --help) shows a subcommand's flags and an example.\n");
+    s.push_str(EXIT_CODES);
     s
 }
 
@@ -651,6 +671,13 @@ fn value_words(flag: &str) -> Option<String> {
         "--accuracy" => "fast precise integrated".to_string(),
         "--format" => "json csv table".to_string(),
         "--gamma" => "surface adhesion".to_string(),
+        // Parameter paths, each ready for its value (issue 37: flags were offered after --set).
+        "--set" => rime_core::params::PARAMETERS
+            .iter()
+            .chain(rime_core::params::MODEL_PARAMETERS)
+            .map(|p| format!("{}=", p.path))
+            .collect::<Vec<_>>()
+            .join(" "),
         _ => return None,
     })
 }
@@ -663,7 +690,7 @@ const PATH_FLAGS: [&str; 4] = ["--scene", "--data", "--out", "--g-file"];
 // table.
 pub fn completions(shell: &str) -> Option<String> {
     let names = sub_names();
-    let valued = ["--preset", "--accuracy", "--format", "--gamma"];
+    let valued = ["--preset", "--accuracy", "--format", "--gamma", "--set"];
     Some(match shell {
         "bash" => {
             let mut s = String::from(
@@ -679,8 +706,14 @@ pub fn completions(shell: &str) -> Option<String> {
             s.push_str("  case \"${COMP_WORDS[COMP_CWORD-1]}\" in\n");
             for flag in valued {
                 if let Some(words) = value_words(flag) {
+                    // A path= waits for its value: no space after it.
+                    let nospace = if flag == "--set" {
+                        "compopt -o nospace 2>/dev/null; "
+                    } else {
+                        ""
+                    };
                     s.push_str(&format!(
-                        "    {flag}) COMPREPLY=($(compgen -W \"{words}\" -- \"$cur\")); return ;;\n"
+                        "    {flag}) {nospace}COMPREPLY=($(compgen -W \"{words}\" -- \"$cur\")); return ;;\n"
                     ));
                 }
             }

@@ -98,7 +98,8 @@ fn member_name(frame: &Frame, value: f64, is_scene: bool) -> String {
 }
 
 /// A comparison's legend entry on small surfaces: its key's name, temperature and geometry for
-/// measured data (docs/physics.md#data-atlas), and the scene's rms against it.
+/// measured data (docs/physics.md#data-atlas), and the scene's rms against it (for a measured
+/// range: whether the scene lies within it, else its rms distance from it).
 /// Whether an overlay model's `g_cr` is the status "always sticks" (a value of `+∞`,
 /// [`crate::models::SpeedStatus::AlwaysSticks`]): it has no marker, so its legend says it.
 fn always_sticks(o: &super::frame::OverlayCurve) -> bool {
@@ -124,10 +125,14 @@ fn overlay_short(o: &super::frame::OverlayCurve) -> String {
         super::frame::Overlay::Model(_) if always_sticks(o) => " (always sticks)".to_string(),
         super::frame::Overlay::Model(_) => String::new(),
     };
-    let score = o
-        .score
-        .map(|r| format!(" rms {}", super::format::sig(r, 2)))
-        .unwrap_or_default();
+    // A measured range's score is the distance to its band, 0 inside it: "rms 0" read as a
+    // perfect fit (issue 37), so a range says whether this scene lies within it.
+    let score = match o.score {
+        Some(r) if o.band && r == 0.0 => " scene in range".to_string(),
+        Some(r) if o.band => format!(" rms off range {}", super::format::sig(r, 2)),
+        Some(r) => format!(" rms {}", super::format::sig(r, 2)),
+        None => String::new(),
+    };
     format!("{name}{context}{score}")
 }
 

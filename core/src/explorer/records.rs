@@ -867,6 +867,15 @@ pub fn frame_map_csv(frame: &Frame) -> Option<String> {
 /// member (`this scene` marked) and one `eps_n:KEY` per overlay drawn on the frame's speeds
 /// ([`overlay_column`]). Empty cells where a value is missing.
 pub fn family_csv(frame: &Frame) -> String {
+    family_csv_pinned(frame, None)
+}
+
+/// [`family_csv`] with the pinned curve a surface draws (the terminal's `P`, the page's pin) as
+/// its last column, `eps_n [pinned: <label>]`: the table has every curve the figure draws. When
+/// the pinned curve was computed over other speeds (the range moved since it was pinned), its
+/// speeds are rows of their own, merged in order, with the frame's cells empty there (and its cell
+/// empty on the frame's rows): nothing interpolated.
+pub fn family_csv_pinned(frame: &Frame, pinned: Option<&super::figures::Pinned>) -> String {
     let sweep = SWEEPS.get(frame.sweep).map_or("p", |s| s.symbol);
     let unit = SWEEPS.get(frame.sweep).map_or("", |s| s.unit);
     let mut s = String::from("g_n [m/s],eps_n");
@@ -892,24 +901,56 @@ pub fn family_csv(frame: &Frame) -> String {
     for o in &overlays {
         let _ = write!(s, ",{}", overlay_column(&o.overlay));
     }
+    if let Some(p) = pinned {
+        // A comma in the label would split the column.
+        let _ = write!(s, ",eps_n [pinned: {}]", p.label.replace(',', ";"));
+    }
     s.push('\n');
     let eps = frame.curve.as_ref().map(|c| c.eps());
     let at = |v: Option<&alloc::vec::Vec<f64>>, k: usize| {
         v.and_then(|v| v.get(k)).map_or(String::new(), |e| cell(*e))
     };
-    for (k, &g) in frame.g.iter().enumerate() {
+    // Rows: the frame's speeds (index into its curves) and the pinned curve's speeds (index into
+    // it), merged by speed; one row where both have the same speed.
+    let none: &[f64] = &[];
+    let pinned_g = pinned.map_or(none, |p| p.g.as_slice());
+    let (mut i, mut j) = (0, 0);
+    while i < frame.g.len() || j < pinned_g.len() {
+        let (gi, gj) = (frame.g.get(i).copied(), pinned_g.get(j).copied());
+        let (row_frame, row_pinned) = match (gi, gj) {
+            (Some(a), Some(b)) if a == b => (Some(i), Some(j)),
+            (Some(a), Some(b)) if b < a => (None, Some(j)),
+            (Some(_), _) => (Some(i), None),
+            (None, _) => (None, Some(j)),
+        };
+        let g = row_frame
+            .and_then(|k| frame.g.get(k))
+            .or_else(|| row_pinned.and_then(|k| pinned_g.get(k)))
+            .copied()
+            .unwrap_or(f64::NAN);
         s.push_str(&cell(g));
-        let _ = write!(s, ",{}", at(eps.as_ref(), k));
+        let frame_cell =
+            |v: Option<&alloc::vec::Vec<f64>>| row_frame.map_or(String::new(), |k| at(v, k));
+        let _ = write!(s, ",{}", frame_cell(eps.as_ref()));
         if clean.is_some() {
-            let _ = write!(s, ",{}", at(clean.as_ref(), k));
+            let _ = write!(s, ",{}", frame_cell(clean.as_ref()));
         }
         for (_, e) in &members {
-            let _ = write!(s, ",{}", at(Some(e), k));
+            let _ = write!(s, ",{}", frame_cell(Some(e)));
         }
         for o in &overlays {
-            let _ = write!(s, ",{}", at(Some(&o.eps), k));
+            let _ = write!(s, ",{}", frame_cell(Some(&o.eps)));
+        }
+        if let Some(p) = pinned {
+            let _ = write!(
+                s,
+                ",{}",
+                row_pinned.map_or(String::new(), |k| at(Some(&p.eps), k))
+            );
         }
         s.push('\n');
+        i += usize::from(row_frame.is_some());
+        j += usize::from(row_pinned.is_some());
     }
     s
 }

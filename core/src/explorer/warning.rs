@@ -89,13 +89,11 @@ impl Warning {
     pub fn text(&self) -> String {
         match self {
             Warning::Overdamped { all, damping_time } => {
-                let a = if damping_time.is_finite() {
-                    format!("{damping_time:.3e}")
-                } else {
-                    String::from("?")
-                };
+                // The one formatter of numbers people read (`404.4 s`, `100 µs`; it wrote
+                // `4.044e2 s`); `—` where A is not finite.
+                let a = super::format::qty(*damping_time, "s");
                 format!(
-                    "overdamped: ε_N < 1e-9 over {} of the plotted range (A = {a} s); Eq. (4) never \
+                    "overdamped: ε_N < 1e-9 over {} of the plotted range (A = {a}); Eq. (4) never \
                      sticks, the rebound is negligible (the stick map counts it as a rebound)",
                     if *all { "all" } else { "part" }
                 )
@@ -212,7 +210,18 @@ mod tests {
         let keys: Vec<&str> = w.iter().map(Warning::key).collect();
         assert_eq!(keys, ["overdamped", "zero_overlap", "layer_literal"]);
         assert_eq!(w[0].short(), "overdamped in part");
-        assert!(w[0].text().contains("A = 1.000e0 s"), "{}", w[0].text());
+        // Issue 37 (review C7): A as people read numbers (it was `1.000e0 s`, `4.044e2 s`).
+        assert!(w[0].text().contains("(A = 1 s)"), "{}", w[0].text());
+        let paper = Warning::Overdamped {
+            all: true,
+            damping_time: 404.4,
+        };
+        assert!(paper.text().contains("(A = 404.4 s)"), "{}", paper.text());
+        let short = Warning::Overdamped {
+            all: true,
+            damping_time: 2e-4,
+        };
+        assert!(short.text().contains("(A = 200 µs)"), "{}", short.text());
         // Every kind has its words and an equation of the paper.
         for k in Warning::ALL {
             assert!(!k.short().is_empty() && !k.help().is_empty() && !k.text().is_empty());

@@ -122,8 +122,9 @@ pub fn editable(v: f64, unit: &str) -> String {
     }
 }
 
-/// Whether [`qty`] writes `unit` with an SI prefix.
-fn prefixable(unit: &str) -> bool {
+/// Whether [`qty`] writes `unit` with an SI prefix (a table keeps any other unit in its header
+/// and prints plain numbers).
+pub fn prefixable(unit: &str) -> bool {
     matches!(
         unit,
         "m" | "s" | "m/s" | "Pa" | "Pa s" | "g" | "kg" | "J" | "N"

@@ -21,7 +21,13 @@
 //!
 //! A comparison (`explorer::figures::overlay_style`) takes a hue and a stroke of its own: five hues by three broken
 //! strokes give fifteen pairs, more than the comparisons offered (thirteen), so no two series of a
-//! figure share both colour and stroke (issue 21, 22).
+//! figure share both colour and stroke (issue 21, 22). The comparisons' five hues are their own:
+//! none is a family member's or this scene's hue (at least 20° of hue apart), because a family and
+//! comparisons are drawn together and on a terminal's braille cells the stroke barely shows (issue
+//! 37: `muller_poschel2011` was Okabe–Ito blue beside the family's mid blue, and three comparisons
+//! had the family's very colours). Okabe–Ito has eight colours for ten roles, so the comparisons
+//! take red, lime, cyan, violet and magenta, placed between the family's hues; the strokes keep
+//! them apart where colour vision does not.
 
 use crate::tangential::StickClass;
 
@@ -107,8 +113,20 @@ pub const MID_BLUE: Rgb = Rgb::hex(0x3A7DC9);
 /// Ochre `#A08C00`: yellow darkened to read on white (3.4:1) and on black (6.3:1).
 pub const OCHRE: Rgb = Rgb::hex(0xA08C00);
 
+/// Red `#D93A2B`: the first comparison hue (between the family's reddish purple and this scene's
+/// orange).
+pub const RED: Rgb = Rgb::hex(0xD93A2B);
+/// Lime `#5F9E20`: a comparison hue between ochre and bluish green.
+pub const LIME: Rgb = Rgb::hex(0x5F9E20);
+/// Cyan `#0098A8`: a comparison hue between bluish green and mid blue.
+pub const CYAN: Rgb = Rgb::hex(0x0098A8);
+/// Violet `#8A6BE0`: a comparison hue between mid blue and reddish purple.
+pub const VIOLET: Rgb = Rgb::hex(0x8A6BE0);
+/// Magenta `#B455C8`: a comparison hue between violet and reddish purple.
+pub const MAGENTA: Rgb = Rgb::hex(0xB455C8);
+
 /// The palette's colours with the word a caption uses for them.
-const NAMES: [(Rgb, &str); 13] = [
+const NAMES: [(Rgb, &str); 18] = [
     (BLACK, "black"),
     (ORANGE, "orange"),
     (SKY_BLUE, "sky-blue"),
@@ -122,6 +140,11 @@ const NAMES: [(Rgb, &str); 13] = [
     (WHITE, "white"),
     (MID_BLUE, "mid blue"),
     (OCHRE, "ochre"),
+    (RED, "red"),
+    (LIME, "lime"),
+    (CYAN, "cyan"),
+    (VIOLET, "violet"),
+    (MAGENTA, "magenta"),
 ];
 
 impl Rgb {
@@ -148,8 +171,8 @@ pub const EXPERIMENT: Rgb = VERMILLION;
 
 /// The hues of the comparisons drawn over the ε_N chart (measured laws and other models), in
 /// order; with three broken strokes they give each comparison its own style
-/// (`explorer::figures::overlay_style`).
-pub const OVERLAYS: [Rgb; 5] = [VERMILLION, BLUE, BLUISH_GREEN, REDDISH_PURPLE, OCHRE];
+/// (`explorer::figures::overlay_style`). None shares a hue with the family or this scene.
+pub const OVERLAYS: [Rgb; 5] = [RED, CYAN, VIOLET, LIME, MAGENTA];
 /// A curve pinned to compare with later edits.
 pub const PINNED: Rgb = GREY_DARK;
 
@@ -343,6 +366,54 @@ mod tests {
                 let d = dist(deuteranopia(*a), deuteranopia(*b));
                 assert!(d > 40.0, "{a:?} vs {b:?}: {d}");
             }
+        }
+    }
+
+    /// The hue angle of `c` in degrees (HSL/HSV hue, 0…360).
+    fn hue(c: Rgb) -> f64 {
+        let (r, g, b) = (f64::from(c.r), f64::from(c.g), f64::from(c.b));
+        let max = r.max(g).max(b);
+        let min = r.min(g).min(b);
+        let d = max - min;
+        let h = if d == 0.0 {
+            0.0
+        } else if max == r {
+            60.0 * ((g - b) / d)
+        } else if max == g {
+            60.0 * ((b - r) / d + 2.0)
+        } else {
+            60.0 * ((r - g) / d + 4.0)
+        };
+        (h + 360.0) % 360.0
+    }
+
+    fn hue_gap(a: Rgb, b: Rgb) -> f64 {
+        let d = (hue(a) - hue(b)).abs();
+        d.min(360.0 - d)
+    }
+
+    /// Issue 37 item 8: no comparison shares a hue with a family member or with this scene (the
+    /// family and the comparisons are on one chart; on a terminal the stroke barely shows), and the
+    /// comparisons' hues stay apart from each other.
+    #[test]
+    fn issue_37_no_comparison_shares_a_hue_with_the_family() {
+        for o in OVERLAYS {
+            for f in FAMILY.into_iter().chain([SCENE]) {
+                let gap = hue_gap(o, f);
+                assert!(gap >= 20.0, "{o:?} vs {f:?}: {gap:.0}°");
+            }
+        }
+        for (i, a) in OVERLAYS.iter().enumerate() {
+            for b in &OVERLAYS[i + 1..] {
+                let gap = hue_gap(*a, *b);
+                assert!(gap >= 30.0, "{a:?} vs {b:?}: {gap:.0}°");
+            }
+        }
+        // The check can fail: the old comparison blue beside the family's mid blue (10°).
+        assert!(hue_gap(BLUE, MID_BLUE) < 20.0);
+        // Every comparison hue has a caption word.
+        for o in OVERLAYS {
+            assert_ne!(o.name(), "colour", "{o:?}");
         }
     }
 

@@ -122,6 +122,8 @@ enum Swatch {
     Box(RGBColor, f64),
     /// A line drawn with its stroke.
     Line(RGBColor, Stroke),
+    /// A marker: the short vertical dashed line the plot draws at its speed.
+    Marker(RGBColor),
 }
 
 /// The legend's entries in drawing order: map classes present, measured ranges, curves; each with
@@ -159,6 +161,15 @@ fn legend_entries(fig: &Figure) -> Vec<(String, String, Swatch)> {
                 Swatch::Line(color, s.stroke),
             ));
         }
+    }
+    // Every marker the plot draws (those inside the x range) is explained, as on screen.
+    for m in fig
+        .markers
+        .iter()
+        .filter(|m| m.x > fig.x.min && m.x < fig.x.max)
+    {
+        let color = rgb(PALETTE[m.color % PALETTE.len()]);
+        out.push((m.label.clone(), m.short.clone(), Swatch::Marker(color)));
     }
     out
 }
@@ -228,6 +239,19 @@ fn wrap_legend(
     (widest, lines)
 }
 
+/// The legend's sample of `stroke` as segments, offsets from the line's left end and middle
+/// \[px\]: a line, dashes, dots, or for points the diagonal cross the plot draws at each point.
+fn legend_sample(stroke: Stroke) -> Vec<[(i32, i32); 2]> {
+    let flat = |parts: &[[i32; 2]]| parts.iter().map(|&[a, b]| [(a, 0), (b, 0)]).collect();
+    match stroke {
+        Stroke::Solid => flat(&[[2, 22]]),
+        Stroke::Dashed => flat(&[[2, 8], [11, 17], [20, 24]]),
+        Stroke::Dotted => flat(&[[2, 4], [7, 9], [12, 14], [17, 19], [22, 24]]),
+        Stroke::Points => vec![[(8, -4), (16, 4)], [(8, 4), (16, -4)]],
+        Stroke::LongDash => flat(&[[2, 16], [20, 24]]),
+    }
+}
+
 fn draw_legend<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     lines: &[(String, Option<Swatch>)],
@@ -245,21 +269,22 @@ fn draw_legend<DB: DrawingBackend>(
             }
             Some(Swatch::Line(color, stroke)) => {
                 let style = color.stroke_width(if *stroke == Stroke::Solid { 2 } else { 1 });
-                // A sample of the stroke: a line, dashes, dots, or a small cross for points.
-                let parts: &[[i32; 2]] = match stroke {
-                    Stroke::Solid => &[[2, 22]],
-                    Stroke::Dashed => &[[2, 8], [11, 17], [20, 24]],
-                    Stroke::Dotted => &[[2, 4], [7, 9], [12, 14], [17, 19], [22, 24]],
-                    Stroke::Points => &[[8, 16]],
-                    Stroke::LongDash => &[[2, 16], [20, 24]],
-                };
-                for [a, b] in parts {
-                    area.draw(&PathElement::new(vec![(*a, y), (*b, y)], style))
+                // A sample of the stroke: a line, dashes, dots, or for points the plot's own
+                // glyph, a diagonal cross × (plotters' `Cross`), never an upright +.
+                for segment in legend_sample(*stroke) {
+                    let path: Vec<(i32, i32)> =
+                        segment.iter().map(|&(dx, dy)| (dx, y + dy)).collect();
+                    area.draw(&PathElement::new(path, style))
                         .map_err(plot_err)?;
                 }
-                if *stroke == Stroke::Points {
-                    area.draw(&PathElement::new(vec![(12, y - 4), (12, y + 4)], style))
-                        .map_err(plot_err)?;
+            }
+            Some(Swatch::Marker(color)) => {
+                for (a, b) in [(-7, -4), (-1, 2), (5, 8)] {
+                    area.draw(&PathElement::new(
+                        vec![(12, y + a), (12, y + b)],
+                        color.stroke_width(1),
+                    ))
+                    .map_err(plot_err)?;
                 }
             }
             None => {}
@@ -434,10 +459,9 @@ fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Resul
             }
         }
         let stroke = s.stroke;
-        let mut first = true;
         let min_len = if stroke == Stroke::Points { 1 } else { 2 };
         for seg in segments.into_iter().filter(|seg| seg.len() >= min_len) {
-            let drawn = match stroke {
+            match stroke {
                 Stroke::Solid => chart
                     .draw_series(LineSeries::new(seg, style))
                     .map_err(plot_err)?,
@@ -454,43 +478,6 @@ fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Resul
                     .draw_series(DashedLineSeries::new(seg, 14, 4, style))
                     .map_err(plot_err)?,
             };
-            if first {
-                // The legend's sample of the stroke: a line, dashes, dots or a dot.
-                drawn.label(s.name.as_str()).legend(move |(x, y)| {
-                    // Four strokes (one element type for every kind): a line, dashes, dots, or a
-                    // small cross for points.
-                    let parts: [[(i32, i32); 2]; 4] = match stroke {
-                        Stroke::Solid => [[(0, 0), (18, 0)]; 4],
-                        Stroke::Dashed => [
-                            [(0, 0), (6, 0)],
-                            [(10, 0), (18, 0)],
-                            [(0, 0), (6, 0)],
-                            [(10, 0), (18, 0)],
-                        ],
-                        Stroke::Dotted => [
-                            [(0, 0), (2, 0)],
-                            [(5, 0), (7, 0)],
-                            [(10, 0), (12, 0)],
-                            [(15, 0), (17, 0)],
-                        ],
-                        Stroke::LongDash => [
-                            [(0, 0), (13, 0)],
-                            [(16, 0), (18, 0)],
-                            [(0, 0), (13, 0)],
-                            [(16, 0), (18, 0)],
-                        ],
-                        Stroke::Points => [
-                            [(5, -4), (13, 4)],
-                            [(5, 4), (13, -4)],
-                            [(9, -4), (9, 4)],
-                            [(5, 0), (13, 0)],
-                        ],
-                    };
-                    let path = |k: usize| PathElement::new(parts[k].to_vec(), style);
-                    EmptyElement::at((x, y)) + path(0) + path(1) + path(2) + path(3)
-                });
-                first = false;
-            }
         }
     }
 
@@ -541,4 +528,65 @@ pub fn render_png(fig: &Figure, path: &std::path::Path, width: u32, height: u32)
     ensure_font()?;
     let root = BitMapBackend::new(path, (width, height)).into_drawing_area();
     draw(fig, root)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::string::ToString;
+
+    /// Issue 37 item 7: the legend's sample of a point series is the glyph the plot draws at each
+    /// point, plotters' `Cross`: two diagonals of equal slope magnitude through one centre (an
+    /// upright `+` has a horizontal and a vertical stroke).
+    #[test]
+    fn issue_37_the_points_legend_is_the_plotted_cross() {
+        let sample = legend_sample(Stroke::Points);
+        assert_eq!(sample.len(), 2);
+        let centre = |[(x0, y0), (x1, y1)]: [(i32, i32); 2]| (x0 + x1, y0 + y1);
+        assert_eq!(centre(sample[0]), centre(sample[1]));
+        let mut slopes = Vec::new();
+        for [(x0, y0), (x1, y1)] in sample {
+            let (dx, dy) = (x1 - x0, y1 - y0);
+            assert!(dx != 0 && dy != 0, "a horizontal or vertical stroke: not ×");
+            assert_eq!(dx.abs(), dy.abs(), "a 45° diagonal, as Cross draws");
+            slopes.push(dx.signum() * dy.signum());
+        }
+        assert_ne!(slopes[0], slopes[1], "the two diagonals cross");
+    }
+
+    /// Issue 37 item 7: every marker the plot draws (inside the x range) has a legend entry.
+    #[test]
+    fn issue_37_markers_are_in_the_legend() {
+        let axis = |label: &str| super::super::Axis {
+            label: label.to_string(),
+            log: false,
+            min: 1.0,
+            max: 10.0,
+        };
+        let mut fig = Figure {
+            name: "t".to_string(),
+            title: String::new(),
+            caption: String::new(),
+            x: axis("x"),
+            y: axis("y"),
+            series: Vec::new(),
+            markers: Vec::new(),
+            bands: Vec::new(),
+            map: None,
+        };
+        fig.markers.push(super::super::Marker {
+            x: 3.0,
+            label: "g_s inside".to_string(),
+            short: "g_s".to_string(),
+            color: 1,
+        });
+        fig.markers.push(super::super::Marker {
+            x: 30.0,
+            label: "outside the axis".to_string(),
+            short: "out".to_string(),
+            color: 1,
+        });
+        let names: Vec<String> = legend_entries(&fig).into_iter().map(|e| e.0).collect();
+        assert_eq!(names, ["g_s inside"]);
+    }
 }

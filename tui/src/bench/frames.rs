@@ -165,14 +165,16 @@ fn draw(app: &App, terminal: &mut Terminal<TestBackend>) -> CliResult<()> {
         .map_err(|e| CliError::input(format!("bench --frames: drawing failed: {e}")))
 }
 
-/// One edit: the key's state change, then the worker's frames (a `fast` preview, then the requested
-/// level, as [`compute::progressive`] sends them), each drawn as it arrives.
+/// One edit: the key's state change, then the worker's frames (a `fast` preview where `rule` asks
+/// for one, then the requested level, as [`compute::progressive`] sends them), each drawn as it
+/// arrives.
 fn edit(
     app: &mut App,
     terminal: &mut Terminal<TestBackend>,
     next: Scene,
     mode: Mode,
     memo: &SharedLayerMemo,
+    rule: &mut compute::PreviewRule,
 ) -> CliResult<Edit> {
     let start = Instant::now();
     app.scene_changed(next);
@@ -186,7 +188,7 @@ fn edit(
     let mut first = None;
     let mut compute_ms = 0.0;
     let mut drawn = Ok(());
-    compute::progressive(&job, &|| false, threads, memo, &mut |c: Computed| {
+    compute::progressive(&job, &|| false, threads, memo, rule, &mut |c: Computed| {
         if !c.preview {
             compute_ms = c.elapsed.as_secs_f64() * 1e3;
         }
@@ -248,6 +250,12 @@ fn case(c: &Case, level: Accuracy, size: (u16, u16), runs: usize) -> CliResult<R
     };
     let load = load_average();
     let mut by_mode = [Vec::new(), Vec::new()];
+    // Each mode a session of its own: a preview only where the last frame of its kind was dear
+    // (the terminal's rule), so a cheap level's first frame is its final one.
+    let mut rules = [
+        compute::PreviewRule::default(),
+        compute::PreviewRule::default(),
+    ];
     let mut edits = 0_u32;
     for _ in 0..runs {
         for (k, mode) in [Mode::Parallel, Mode::Sequential].into_iter().enumerate() {
@@ -256,7 +264,14 @@ fn case(c: &Case, level: Accuracy, size: (u16, u16), runs: usize) -> CliResult<R
             edits += 1;
             let factor = if edits % 2 == 1 { 1.1 } else { 1.0 } + 1e-3 * f64::from(edits);
             let next = set(factor * value)?;
-            by_mode[k].push(edit(&mut app, &mut terminal, next, mode, &memo)?);
+            by_mode[k].push(edit(
+                &mut app,
+                &mut terminal,
+                next,
+                mode,
+                &memo,
+                &mut rules[k],
+            )?);
         }
     }
     let [par, seq] = by_mode;

@@ -76,13 +76,14 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         ("closure", l.closure, "1"),
     ];
     let tangential = oblique.map(|o| {
+        // Units as docs/cli.md gives them (issue 37: the table's tangential rows had none).
         [
-            ("eps_t", o.eps_t),
-            ("energy_before", o.energy_before),
-            ("energy_after", o.energy_after),
-            ("friction_work", o.friction_work),
-            ("spin_change_1", o.spin_change[0]),
-            ("spin_change_2", o.spin_change[1]),
+            ("eps_t", o.eps_t, ""),
+            ("energy_before", o.energy_before, "J"),
+            ("energy_after", o.energy_after, "J"),
+            ("friction_work", o.friction_work, "J"),
+            ("spin_change_1", o.spin_change[0], "rad/s"),
+            ("spin_change_2", o.spin_change[1], "rad/s"),
         ]
     });
     Ok(match common.format {
@@ -117,8 +118,8 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
             }
             if let (Some(t), Some(o)) = (tangential, oblique) {
                 s.push_str(&format!("# tangential.class,{},\n", o.class.name()));
-                for (k, v) in t {
-                    s.push_str(&format!("# tangential.{k},{},\n", num(v)));
+                for (k, v, u) in t {
+                    s.push_str(&format!("# tangential.{k},{},{u}\n", num(v)));
                 }
             }
             s
@@ -144,10 +145,13 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                 rows.push(vec!["class".into(), o.class.name().into(), String::new()]);
                 rows.extend(
                     t.iter()
-                        .map(|(k, v)| vec![k.to_string(), num(*v), String::new()]),
+                        .map(|(k, v, u)| vec![k.to_string(), num(*v), u.to_string()]),
                 );
             }
-            table(&["quantity", "value", "unit"], &rows)
+            table(
+                &["quantity", "value", "unit"],
+                &crate::output::human_value_rows(rows),
+            )
         }
     })
 }

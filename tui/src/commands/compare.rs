@@ -61,10 +61,13 @@ pub fn parse_subjects(text: &str) -> CliResult<Vec<Subject>> {
             Some(s) if !out.contains(&s) => out.push(s),
             Some(_) => {}
             None => {
-                return err(format!(
-                    "--models: unknown model '{name}' (valid: {})",
-                    names()
-                ));
+                let all = names();
+                return match crate::suggest::closest(name, all.split(", ")) {
+                    Some(close) => err(format!(
+                        "--models: unknown model '{name}' (did you mean `{close}`?)"
+                    )),
+                    None => err(format!("--models: unknown model '{name}' (valid: {all})")),
+                };
             }
         }
     }

@@ -100,6 +100,9 @@ fn render(common: &Common, f: &SceneFit, points: &Points, what: &str) -> CliResu
                 ", unweighted)\n"
             });
             s.push_str(&match (&points.g_unit, &points.header) {
+                // A law's points have no header: its speeds are in m/s (issue 37 review: it said
+                // "from the header").
+                (Some(_), None) => "g in m/s (the law's measured speeds)\n".to_string(),
                 (Some(u), _) if u == "m/s" => "g in m/s (from the header)\n".to_string(),
                 (Some(u), _) => format!("g in {u} (from the header), converted to m/s\n"),
                 (None, Some(_)) => "g taken in m/s: the header gives no unit\n".to_string(),

@@ -152,7 +152,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                     u.to_string(),
                 ]
             }));
-            let mut s = output::table(&["name", "value", "unit"], &rows);
+            let mut s = output::table(&["name", "value", "unit"], &output::human_value_rows(rows));
             if let Some(n) = note {
                 s.push_str(&format!("note: {n}\n"));
             }
@@ -162,13 +162,37 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     })
 }
 
+/// The table's last line, for people (issue 37): the verdict, c, H and the mean impact speed in
+/// 4 significant digits with prefixed units. For `heats` the numbers are the balance outside the
+/// slow-collision regime (docs/physics.md#ring), which the line says, with the reason.
 fn summary(p: &Prediction, r_omega: f64) -> String {
+    use rime_core::explorer::format::{qty, sig};
+    use rime_core::ring::{HOT_IN_R_OMEGA, SLOW_EQUILIBRATION_ORBITS, SLOW_REGIME_LIMIT, Verdict};
+    let numbers = format!(
+        "c = {} ({} RΩ), H = {}, mean impact speed {}",
+        qty(p.velocity_dispersion, "m/s"),
+        sig(p.velocity_dispersion / r_omega, 4),
+        qty(p.thickness, "m"),
+        qty(p.mean_impact_speed, "m/s")
+    );
+    if p.verdict != Verdict::Heats {
+        return format!("{}: {numbers}\n", p.verdict.words());
+    }
+    let why = if p.mean_impact_speed > SLOW_REGIME_LIMIT {
+        format!(
+            "its mean impact speed is above the slow-collision regime's {}",
+            qty(SLOW_REGIME_LIMIT, "m/s")
+        )
+    } else {
+        format!(
+            "c > {} RΩ is reached only after {} orbits (over {})",
+            sig(HOT_IN_R_OMEGA, 3),
+            sig(p.equilibration_orbits, 4),
+            sig(SLOW_EQUILIBRATION_ORBITS, 3)
+        )
+    };
     format!(
-        "{}: c = {} m/s ({:.1} RΩ), H = {} m, mean impact speed {} m/s\n",
-        p.verdict.words(),
-        output::num(p.velocity_dispersion),
-        p.velocity_dispersion / r_omega,
-        output::num(p.thickness),
-        output::num(p.mean_impact_speed)
+        "heats: no balance in the slow-collision regime; the balance the law gives, {numbers}, lies \
+         outside it ({why}): beyond what the model covers, not a prediction\n"
     )
 }

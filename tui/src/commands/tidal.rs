@@ -30,7 +30,8 @@ pub fn run(common: &Common, input: &TidalInput) -> CliResult<String> {
                 .into_iter()
                 .map(|[k, v, u]| vec![k, if v.is_empty() { "none".into() } else { v }, u])
                 .collect();
-            output::table(&TIDAL_HEADER, &rows)
+            // The core's verdict closes the table, as `rime ring`'s summary line does.
+            output::table(&TIDAL_HEADER, &output::human_value_rows(rows)) + &record.verdict + "\n"
         }
     })
 }

@@ -120,18 +120,81 @@ pub fn preview_request(req: &frame::Request) -> Option<frame::Request> {
     })
 }
 
-/// What the worker does with a job: a `fast` preview first (when the job asks for another level),
-/// handed to `deliver` marked as a preview, then the frame at the job's level. Stops as soon as
-/// `cancelled()` (a newer edit, or quitting) or when `deliver` returns `false` (the receiver is
-/// gone); returns `false` in that last case.
+/// A frame gets a `fast` preview first only when the last frame of its kind took longer than this
+/// to compute, or its kind is new: a quicker one is on screen as soon as its preview would be, and
+/// the preview only puts it a frame later (issue 37; the page's rule, `SLOW_MS` in www/app.js).
+pub const PREVIEW_SLOW: Duration = Duration::from_millis(8);
+
+/// The page's preview rule for the terminal's worker: what the last frame of each kind cost.
+/// A frame's kind is what its cost depends on: its level, the compared overlays, the family's
+/// sweep, the parameters whose edit asked for it (the literal layer reading's memo answers an edit
+/// of μ and not one of E) and the scene with every number blanked.
+#[derive(Debug, Default)]
+pub struct PreviewRule {
+    costs: std::collections::HashMap<String, Duration>,
+    last_scene: Option<rime_core::Scene>,
+}
+
+impl PreviewRule {
+    /// The kind of `req`, after the request before it (whose scene tells what was edited).
+    pub fn kind(&mut self, req: &frame::Request) -> String {
+        use rime_core::params::{PARAMETERS, Value};
+        let edited: Vec<&str> = match &self.last_scene {
+            Some(last) => PARAMETERS
+                .iter()
+                .filter(|p| last.get(p.path) != req.scene.get(p.path))
+                .map(|p| p.path)
+                .collect(),
+            None => Vec::new(),
+        };
+        self.last_scene = Some(req.scene);
+        let shape: Vec<String> = PARAMETERS
+            .iter()
+            .map(|p| match req.scene.get(p.path) {
+                Ok(Value::Number(_)) => "#".to_string(),
+                Ok(Value::Choice(c)) => c.to_string(),
+                Ok(Value::Enabled(b)) => b.to_string(),
+                Ok(Value::Inactive) | Err(_) => "-".to_string(),
+            })
+            .collect();
+        format!(
+            "{}|{:?}|{:?}|{}|{}|{}",
+            req.accuracy.name(),
+            req.overlays,
+            req.sweep,
+            req.family,
+            edited.join(","),
+            shape.join(",")
+        )
+    }
+
+    /// Whether a frame of `kind` gets a preview: its kind is new, or its last frame was dear.
+    pub fn wants_preview(&self, kind: &str) -> bool {
+        self.costs.get(kind).is_none_or(|cost| *cost > PREVIEW_SLOW)
+    }
+
+    /// Remembers what a frame of `kind` cost.
+    pub fn record(&mut self, kind: String, cost: Duration) {
+        self.costs.insert(kind, cost);
+    }
+}
+
+/// What the worker does with a job: a `fast` preview first (when the job asks for another level
+/// and `rule` says its kind is dear or new), handed to `deliver` marked as a preview, then the
+/// frame at the job's level, whose cost `rule` remembers. Stops as soon as `cancelled()` (a newer
+/// edit, or quitting) or when `deliver` returns `false` (the receiver is gone); returns `false` in
+/// that last case.
 pub fn progressive(
     job: &Job,
     cancelled: &(dyn Fn() -> bool + Sync),
     threads: usize,
     memo: &dyn LayerMemo,
+    rule: &mut PreviewRule,
     deliver: &mut dyn FnMut(Computed) -> bool,
 ) -> bool {
-    if let Some(request) = preview_request(&job.request) {
+    let kind = rule.kind(&job.request);
+    let preview = preview_request(&job.request).filter(|_| rule.wants_preview(&kind));
+    if let Some(request) = preview {
         let start = Instant::now();
         let Some(frame) = frame(&request, cancelled, threads, memo) else {
             return true;
@@ -147,7 +210,10 @@ pub fn progressive(
         }
     }
     match compute_on(job, cancelled, threads, memo) {
-        Some(done) => deliver(done),
+        Some(done) => {
+            rule.record(kind, done.elapsed);
+            deliver(done)
+        }
         None => true,
     }
 }

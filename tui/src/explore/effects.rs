@@ -60,10 +60,10 @@ impl App {
             experiments: self.experiments,
             pinned: self.pinned.clone(),
         };
-        let ring = self.ring_card.as_ref().and_then(|c| c.as_ref().ok());
-        match frame_export::export(&self.out_dir, data, &view, ring) {
+        match frame_export::export(&self.out_dir, data, &view, self.ring_on_chart()) {
+            // The folder first: a narrow terminal cuts the end of the line (issue 37).
             Ok(dir) => self.info(format!(
-                "exported scene.json, CSV tables, SVG + PNG figures to {}/",
+                "exported to {}/ : scene.json, CSV tables, SVG + PNG figures",
                 dir.display()
             )),
             Err(e) => self.error(format!("export failed: {e}")),

@@ -56,7 +56,7 @@ pub fn write_frame(
         ),
         (
             "eps_family.csv".to_string(),
-            context(records::FAMILY_WHAT) + &records::family_csv(f),
+            context(records::FAMILY_WHAT) + &records::family_csv_pinned(f, view.pinned.as_ref()),
         ),
     ];
     if let Some(map) = records::frame_map_csv(f) {

@@ -366,7 +366,7 @@ pub const KEYMAP: &[Row] = &[
     },
     Row {
         keys: "?  /  q Esc Ctrl-C",
-        does: "this help (↑↓ scroll) / quit (asks if edits are unsaved)",
+        does: "this help (↑↓ scroll; q Esc close it) / quit (asks if edits are unsaved); Esc closes a panel first and asks before a pin, zoom or comparison goes",
         bindings: &[
             (Key::Char('?'), Action::Help),
             (Key::Char('q'), Action::Quit),

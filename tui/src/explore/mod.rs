@@ -42,6 +42,8 @@ fn worker(requests: Receiver<Job>, events: Sender<Event>, latest: Arc<AtomicU64>
     // The session's literal-layer outcomes: an edit that leaves the layer stage's inputs unchanged
     // (adhesion, friction, overlays, ...) is answered without integrating again.
     let memo = rime_core::normal::memo::SharedLayerMemo::new();
+    // A preview only for frames whose kind was dear (or is new): the page's rule.
+    let mut rule = compute::PreviewRule::default();
     while let Ok(mut req) = requests.recv() {
         while let Ok(newer) = requests.try_recv() {
             req = newer;
@@ -49,7 +51,7 @@ fn worker(requests: Receiver<Job>, events: Sender<Event>, latest: Arc<AtomicU64>
         let generation = req.generation;
         let cancelled = || latest.load(Ordering::Relaxed) != generation;
         let mut deliver = |data| events.send(Event::Computed(Box::new(data))).is_ok();
-        if !compute::progressive(&req, &cancelled, threads, &memo, &mut deliver) {
+        if !compute::progressive(&req, &cancelled, threads, &memo, &mut rule, &mut deliver) {
             return;
         }
     }

@@ -158,6 +158,9 @@ pub struct SceneState {
 pub enum Confirm {
     /// Quit although the scene has unsaved edits.
     Quit,
+    /// Esc on the main view: quit although the view (pin, zoom, comparison, ring τ) would be
+    /// lost with it.
+    Leave,
     /// Overwrite the existing scene file.
     Overwrite,
 }
@@ -306,6 +309,15 @@ impl App {
             .is_some_and(|d| d.generation == self.generation && d.preview)
     }
 
+    /// The ring card drawn over the ε_N chart: only while the card is open (`r`) and computed. The
+    /// chart and `x` both ask here, so the export draws the ring exactly when the screen does.
+    pub fn ring_on_chart(&self) -> Option<&rime_core::explorer::ring::RingCard> {
+        self.ring
+            .then_some(self.ring_card.as_ref())
+            .flatten()
+            .and_then(|c| c.as_ref().ok())
+    }
+
     pub(crate) fn info(&mut self, text: impl Into<String>) {
         self.message = Some((text.into(), Tone::Info));
     }
@@ -335,6 +347,37 @@ impl App {
     pub(crate) fn ask_quit(&mut self) {
         if self.unsaved() {
             self.confirm = Some(Confirm::Quit);
+        } else {
+            self.quit = true;
+        }
+    }
+
+    /// What quitting now loses besides the scene: the view the user set up (a pinned curve, a
+    /// zoom, a comparison, the ring card's τ), in words; empty when the view is the default one.
+    pub fn view_to_lose(&self) -> Vec<&'static str> {
+        let mut lost = Vec::new();
+        if self.pinned.is_some() {
+            lost.push("the pinned curve");
+        }
+        if self.speeds.is_some() {
+            lost.push("the zoom");
+        }
+        if self.overlay_set != 0 {
+            lost.push("the comparison");
+        }
+        if self.ring_tau != RING_TAU {
+            lost.push("the ring's τ");
+        }
+        lost
+    }
+
+    /// Esc on the main view: asks before quitting when unsaved edits or the view would be lost
+    /// (a second Esc used to drop a pin, zoom and comparison silently); else quits.
+    pub(crate) fn ask_leave(&mut self) {
+        if self.unsaved() {
+            self.confirm = Some(Confirm::Quit);
+        } else if !self.view_to_lose().is_empty() {
+            self.confirm = Some(Confirm::Leave);
         } else {
             self.quit = true;
         }

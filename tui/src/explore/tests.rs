@@ -634,11 +634,11 @@ fn help_names_new_keys_and_sources() {
             assert!(s.contains(&head), "{w}×{h}: missing '{}'\n{s}", row.does);
         }
         assert!(s.contains("quit") && s.contains("Hill"), "{w}×{h}\n{s}");
-        // The first page says how to scroll and that q quits.
+        // The first page says how to scroll and that q closes it (issue 37: it quit).
         update(&mut app, ch('?'));
         let first = text(&screen(&app, w, h));
         assert!(
-            first.contains("scroll") && first.contains("q quits"),
+            first.contains("scroll") && first.contains("q Esc or any other key closes"),
             "{first}"
         );
         update(&mut app, ch('x'));
@@ -1928,7 +1928,9 @@ fn parallel_frames_are_cancellable_issue_26() {
 fn worker_frames(app: &mut App) -> Vec<super::compute::Computed> {
     let job = app.take_request().expect("a request");
     let mut frames = Vec::new();
-    super::compute::progressive(&job, &|| false, 2, &NoMemo, &mut |c| {
+    // A fresh rule: the kind is new, so a level other than `fast` gets its preview.
+    let mut rule = super::compute::PreviewRule::default();
+    super::compute::progressive(&job, &|| false, 2, &NoMemo, &mut rule, &mut |c| {
         frames.push(c);
         true
     });
@@ -2106,4 +2108,522 @@ fn issue_36_the_tidal_marks_are_the_cores() {
     );
     assert!(s.contains("37.6 m      ⚠ +0.32 %"), "{s}");
     assert!(s.contains(&card.verdict));
+
+/// Exports the frame with `x` into a fresh folder and returns the folder's files by name.
+fn exported_files(app: &mut App, tag: &str) -> std::collections::BTreeMap<String, String> {
+    let dir = std::env::temp_dir().join(format!("rime-tui-test-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("tmp");
+    app.out_dir = dir.clone();
+    update(app, ch('x'));
+    let export = std::fs::read_dir(&dir)
+        .expect("read")
+        .filter_map(|e| e.ok())
+        .find(|e| e.file_name().to_string_lossy().starts_with("rime-export-"))
+        .unwrap_or_else(|| panic!("no export folder: {:?}", app.message))
+        .path();
+    let files = std::fs::read_dir(&export)
+        .expect("read")
+        .filter_map(|e| e.ok())
+        .filter(|e| !e.file_name().to_string_lossy().ends_with(".png"))
+        .map(|e| {
+            let name = e.file_name().to_string_lossy().into_owned();
+            (name, std::fs::read_to_string(e.path()).expect("text"))
+        })
+        .collect();
+    let _ = std::fs::remove_dir_all(&dir);
+    files
+}
+
+/// Issue 37 item 7: the export is the screen. With the ring card open, `x` draws its ε_cr line
+/// and the √π c marker; once the card is closed (`r` again) neither is on screen nor in the
+/// exported figure.
+#[test]
+fn issue_37_a_closed_ring_card_is_not_exported() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('r'));
+    let card = match app.ring_card.clone() {
+        Some(Ok(card)) => card,
+        other => panic!("no ring card: {other:?}"),
+    };
+    let open = exported_files(&mut app, "ring-open");
+    let svg = &open["eps_n.svg"];
+    assert!(
+        svg.contains("of the ring at τ"),
+        "ε_cr line exported while open"
+    );
+    assert!(
+        svg.contains("mean impact speed"),
+        "√π c marker in the legend while open"
+    );
+    update(&mut app, ch('r'));
+    assert!(!app.ring);
+    let on_screen = text(&screen(&app, 160, 45));
+    assert!(!on_screen.contains(&card.eps_cr_line.short), "{on_screen}");
+    let closed = exported_files(&mut app, "ring-closed");
+    let svg = &closed["eps_n.svg"];
+    for ring_text in ["of the ring", "ε_cr", "mean impact speed", "√π"] {
+        assert!(
+            !svg.contains(ring_text),
+            "{ring_text} exported after r closed the card"
+        );
+    }
+}
+
+/// Issue 37 item 7: `eps_family.csv` has every curve the exported figure draws, the pinned one
+/// included; pinned, then zoomed (other speeds), its own speeds are rows of their own and every
+/// one of its values is in the table.
+#[test]
+fn issue_37_the_family_table_has_the_pinned_curve() {
+    let mut app = app_on(Preset::IceFrost.scene());
+    update(&mut app, ch('P'));
+    let pinned = app.pinned.clone().expect("pinned");
+    let rows = |files: &std::collections::BTreeMap<String, String>| -> Vec<Vec<String>> {
+        files["eps_family.csv"]
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .map(|l| l.split(',').map(String::from).collect())
+            .collect()
+    };
+    let same = rows(&exported_files(&mut app, "pinned-same"));
+    let last = same[0].len() - 1;
+    assert_eq!(same[0][last], format!("eps_n [pinned: {}]", pinned.label));
+    assert_eq!(
+        same.len() - 1,
+        pinned.g.len(),
+        "one row per speed when the speeds agree"
+    );
+    for (row, (g, e)) in same[1..].iter().zip(pinned.g.iter().zip(&pinned.eps)) {
+        assert_eq!(row[0].parse::<f64>().expect("g"), *g);
+        assert_eq!(row[last].parse::<f64>().expect("eps"), *e);
+        // The pinned curve is this scene's: the same numbers in the scene's column.
+        assert_eq!(row[1], row[last]);
+    }
+    // Zoomed in: the frame's speeds change, the pinned curve keeps its own.
+    update(&mut app, ch('+'));
+    settle(&mut app);
+    assert_ne!(app.data.as_ref().expect("frame").g, pinned.g);
+    let zoomed = rows(&exported_files(&mut app, "pinned-zoomed"));
+    let g_col: Vec<f64> = zoomed[1..]
+        .iter()
+        .map(|r| r[0].parse().expect("g"))
+        .collect();
+    assert!(
+        g_col.windows(2).all(|w| w[0] < w[1]),
+        "rows in order of speed"
+    );
+    let pinned_cells: Vec<(f64, f64)> = zoomed[1..]
+        .iter()
+        .filter(|r| !r[last].is_empty())
+        .map(|r| (r[0].parse().expect("g"), r[last].parse().expect("eps")))
+        .collect();
+    let expected: Vec<(f64, f64)> = pinned
+        .g
+        .iter()
+        .copied()
+        .zip(pinned.eps.iter().copied())
+        .collect();
+    assert_eq!(pinned_cells, expected);
+    let frame_rows = zoomed[1..].iter().filter(|r| !r[1].is_empty()).count();
+    assert_eq!(frame_rows, app.data.as_ref().expect("frame").g.len());
+}
+
+/// Issue 37 item 9: the chart's cursor readout at 80 columns drops fields whole: with A = 3 s,
+/// δ is 2.25e4 and the readout showed `δ 2.`; now δ is either whole or absent.
+#[test]
+fn issue_37_the_cursor_readout_is_never_cut_mid_number() {
+    let mut scene = Scene::default();
+    scene.set_number("bulk.damping.time", 3.0).expect("set");
+    let app = app_on(scene);
+    let data = app.data.as_ref().expect("frame");
+    let g = data.g[app.cursor];
+    let delta = super::format::num3(data.contact.expect("contact").delta(g));
+    assert!(delta.len() > 3, "a long δ: {delta}");
+    for (w, h) in [(80, 24), (100, 30), (160, 45)] {
+        let s = text(&screen(&app, w, h));
+        let line = s
+            .lines()
+            .find(|l| l.contains('▸') && l.contains("ε_N"))
+            .unwrap_or_else(|| panic!("no readout at {w}×{h}\n{s}"));
+        if let Some((_, after)) = line.split_once("δ ") {
+            assert!(after.starts_with(&delta), "δ cut at {w}×{h}: {line}");
+        }
+        if w >= 160 {
+            assert!(line.contains(&format!("δ {delta}")), "{line}");
+        }
+    }
+}
+
+/// Issue 37 item 9: at 80×24 the ring card does not fit; its last row says how many lines are
+/// left out instead of ending mid-card with no hint.
+#[test]
+fn issue_37_a_cut_ring_card_says_so() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('r'));
+    let card = match app.ring_card.clone() {
+        Some(Ok(card)) => card,
+        other => panic!("no ring card: {other:?}"),
+    };
+    let small = text(&screen(&app, 80, 24));
+    let sentence_start: String = card.sentence.chars().take(20).collect();
+    assert!(
+        small.contains("more lines") || small.contains(&sentence_start),
+        "the card is cut without a hint\n{small}"
+    );
+    assert!(
+        small.contains("more lines"),
+        "80×24 is too small for the card\n{small}"
+    );
+    let large = text(&screen(&app, 160, 45));
+    assert!(!large.contains("more lines"), "{large}");
+}
+
+/// Issue 37 item 9: the export message puts the folder first, so an 80-column status row shows
+/// it whole.
+#[test]
+fn issue_37_the_export_message_shows_the_folder_at_80_columns() {
+    let dir = std::env::temp_dir().join(format!("rime-tui-test-msg-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("tmp");
+    let mut app = app_on(Scene::default());
+    app.out_dir = dir.clone();
+    update(&mut app, ch('x'));
+    let (msg, _) = app.message.clone().expect("message");
+    let folder = msg
+        .split_whitespace()
+        .find(|w| w.contains("rime-export-"))
+        .expect("folder in the message")
+        .to_string();
+    let s = text(&screen(&app, 80, 24));
+    assert!(s.contains(&folder), "{folder} not whole on screen\n{s}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 37 item 9: the `i` panel's phase line keeps whole phases (each `name time`) and counts
+/// the ones left out, at 80 and 120 columns.
+#[test]
+fn issue_37_the_phase_line_keeps_whole_phases() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('i'));
+    for (w, h) in [(80, 24), (120, 40), (200, 60)] {
+        let s = text(&screen(&app, w, h));
+        let Some(line) = s.lines().find(|l| l.contains("ξ_max")) else {
+            continue;
+        };
+        let (_, after) = line.split_once("ξ_max").expect("ξ_max");
+        let (_, phases) = after.split_once('│').expect("phases after │");
+        // The panel's border closes the row.
+        let phases = phases.trim().trim_end_matches(['│', '┃', '║']).trim();
+        for part in phases.split(" · ") {
+            let part = part.trim();
+            let more =
+                part.starts_with('+') && (part.ends_with("more") || part.ends_with("phases"));
+            assert!(
+                part.is_empty() || more || part.ends_with('s'),
+                "a phase cut at {w}×{h}: {part:?} in {line}"
+            );
+        }
+        if w >= 200 {
+            assert!(!phases.contains("more"), "{line}");
+        }
+    }
+}
+
+/// Issue 37 item 10: `f` fits A to the measured law the chart shows; with none shown (no
+/// comparison and the experiments off, or the other models) it says so and keeps the scene.
+#[test]
+fn issue_37_f_fits_only_to_a_law_on_the_chart() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('b'));
+    assert!(!app.experiments);
+    let before = app.scene;
+    update(&mut app, ch('f'));
+    assert_eq!(app.scene, before, "fitted to a law not on the chart");
+    assert!(app.undo.is_empty());
+    let (msg, _) = app.message.clone().expect("message");
+    assert!(msg.contains("no measured law on the chart"), "{msg}");
+    // The other models: no measured law either.
+    update(&mut app, ch('c'));
+    update(&mut app, ch('c'));
+    assert_eq!(app.overlay_set, 2);
+    update(&mut app, ch('f'));
+    assert_eq!(app.scene, before);
+    // Measured ice: the fit runs (Bridges et al. 1984, the set's first law).
+    update(&mut app, ch('c'));
+    update(&mut app, ch('c'));
+    assert_eq!(app.overlay_set, 1);
+    update(&mut app, ch('f'));
+    let (msg, _) = app.message.clone().expect("message");
+    assert!(msg.contains("A fitted to bridges1984"), "{msg}");
+    assert_ne!(app.scene, before);
+    // With the experiments on and no comparison, the Bridges law is on the chart: f fits to it.
+    let mut app = app_on(Scene::default());
+    assert!(app.experiments && app.overlay_set == 0);
+    update(&mut app, ch('f'));
+    let (msg, _) = app.message.clone().expect("message");
+    assert!(msg.contains("A fitted to bridges1984"), "{msg}");
+}
+
+/// Issue 37 item 10: a fit that lands on the scene's A (the same fit twice) is no undo step.
+#[test]
+fn issue_37_a_fit_that_changes_nothing_is_no_undo_step() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('f'));
+    assert_eq!(app.undo.len(), 1);
+    let fitted = app.scene;
+    update(&mut app, ch('f'));
+    assert_eq!(
+        app.undo.len(),
+        1,
+        "a second, identical fit added an undo step"
+    );
+    assert_eq!(app.scene, fitted);
+    let (msg, _) = app.message.clone().expect("message");
+    assert!(msg.contains("unchanged"), "{msg}");
+}
+
+/// Issue 37 item 10: undo and redo say what they undid (`A 100 µs → 2 ms`).
+#[test]
+fn issue_37_undo_says_what_it_undid() {
+    let mut app = app_on(Scene::default());
+    select(&mut app, "bulk.damping.time");
+    let before = super::format::qty3(number(&app, "bulk.damping.time"), "s");
+    update(&mut app, key(KeyCode::Right));
+    let after = super::format::qty3(number(&app, "bulk.damping.time"), "s");
+    assert_ne!(before, after);
+    update(&mut app, ch('u'));
+    let (msg, _) = app.message.clone().expect("message");
+    assert!(
+        msg.contains(&format!("undone: A {after} → {before}")),
+        "{msg}"
+    );
+    update(&mut app, ch('U'));
+    let (msg, _) = app.message.clone().expect("message");
+    assert!(
+        msg.contains(&format!("redone: A {before} → {after}")),
+        "{msg}"
+    );
+}
+
+/// Issue 37 item 10: `q` inside the `?` overlay closes it (it quit the program).
+#[test]
+fn issue_37_q_closes_the_help() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('?'));
+    assert!(app.help);
+    update(&mut app, ch('q'));
+    assert!(!app.help, "q left the help open");
+    assert!(!app.quit && app.confirm.is_none(), "q in the help quit");
+    update(&mut app, ch('?'));
+    update(&mut app, key(KeyCode::Esc));
+    assert!(!app.help && !app.quit && app.confirm.is_none());
+    let s = text(&screen(&app, 80, 24));
+    assert!(!s.contains("Glossary"), "{s}");
+}
+
+/// Issue 37 item 10: a second Esc no longer drops a pin, a zoom or a comparison silently: it
+/// asks, names what would go, and `n` keeps it all; Esc closes the ring card first.
+#[test]
+fn issue_37_esc_asks_before_dropping_the_view() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('P'));
+    update(&mut app, ch('+'));
+    settle(&mut app);
+    update(&mut app, ch('c'));
+    settle(&mut app);
+    update(&mut app, ch('r'));
+    update(&mut app, key(KeyCode::Esc));
+    assert!(!app.ring, "Esc closes the ring card first");
+    assert!(!app.quit && app.confirm.is_none());
+    update(&mut app, key(KeyCode::Esc));
+    assert!(!app.quit, "Esc dropped the pin, zoom and comparison");
+    assert_eq!(app.confirm, Some(Confirm::Leave));
+    let s = text(&screen(&app, 120, 40));
+    for lost in ["pinned curve", "zoom", "comparison"] {
+        assert!(
+            s.contains(lost),
+            "{lost} not named
+{s}"
+        );
+    }
+    update(&mut app, ch('n'));
+    assert!(!app.quit && app.pinned.is_some() && app.speeds.is_some() && app.overlay_set == 1);
+    update(&mut app, key(KeyCode::Esc));
+    update(&mut app, ch('y'));
+    assert!(app.quit);
+    // Nothing to lose: Esc quits at once, as before.
+    let mut plain = app_on(Scene::default());
+    update(&mut plain, key(KeyCode::Esc));
+    assert!(plain.quit);
+}
+
+/// Issue 37 item 10: the page's preview rule in the terminal. A frame of a kind not seen yet, or
+/// whose last frame took longer than `PREVIEW_SLOW`, gets a `fast` preview; one whose last frame
+/// was quick does not (its first frame is its final one).
+#[test]
+fn issue_37_a_preview_only_when_the_last_frame_of_its_kind_was_dear() {
+    use super::compute::{Job, PREVIEW_SLOW, PreviewRule, progressive};
+    let mut rule = PreviewRule::default();
+    let request = rime_core::explorer::frame::Request::new(Scene::default(), Accuracy::Precise);
+    let kind = rule.kind(&request);
+    assert!(rule.wants_preview(&kind), "a new kind");
+    rule.record(kind.clone(), PREVIEW_SLOW / 8);
+    assert!(!rule.wants_preview(&kind), "a quick kind");
+    rule.record(kind.clone(), PREVIEW_SLOW * 3);
+    assert!(rule.wants_preview(&kind), "a dear kind");
+    // Another level, another scene shape: other kinds.
+    let mut fast_rule = PreviewRule::default();
+    let fast = rime_core::explorer::frame::Request::new(Scene::default(), Accuracy::Fast);
+    assert_ne!(fast_rule.kind(&fast), kind);
+    let frost =
+        rime_core::explorer::frame::Request::new(Preset::IceFrost.scene(), Accuracy::Precise);
+    assert_ne!(PreviewRule::default().kind(&frost), kind);
+    // The worker: with the kind known to be quick, one frame (the requested level), no preview.
+    let mut rule = PreviewRule::default();
+    let job = Job {
+        generation: 1,
+        request: request.clone(),
+    };
+    let mut first = Vec::new();
+    progressive(&job, &|| false, 2, &NoMemo, &mut rule, &mut |c| {
+        first.push(c.preview);
+        true
+    });
+    assert_eq!(first, [true, false], "a new kind: preview, then the frame");
+    let kind = rule.kind(&request);
+    rule.record(kind, PREVIEW_SLOW / 8);
+    let mut second = Vec::new();
+    progressive(&job, &|| false, 2, &NoMemo, &mut rule, &mut |c| {
+        second.push((c.preview, c.request.accuracy));
+        true
+    });
+    assert_eq!(second, [(false, Accuracy::Precise)]);
+}
+
+/// Issue 37 item 10: a measured range the scene lies within does not read "rms 0" (a perfect
+/// fit); it says the scene is within it.
+#[test]
+fn issue_37_measured_ranges_do_not_show_rms_0() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('c'));
+    settle(&mut app);
+    let s = text(&screen(&app, 200, 60));
+    for (k, _) in s.match_indices("rms 0") {
+        assert!(s[k + 5..].starts_with('.'), "a bare rms 0\n{s}");
+    }
+    let fig = rime_core::explorer::figures::eps_figure(
+        &app.data.as_ref().expect("frame").frame,
+        &rime_core::explorer::figures::View::default(),
+        "test",
+    );
+    let ranges: Vec<&str> = fig.bands.iter().map(|b| b.short.as_str()).collect();
+    assert!(!ranges.is_empty(), "measured ranges on the chart");
+    for r in ranges {
+        assert!(!r.ends_with("rms 0"), "{r}");
+    }
+}
+
+/// The hue angle of a terminal colour (24-bit), in degrees.
+fn hue_of(c: ratatui::style::Color) -> Option<f64> {
+    let ratatui::style::Color::Rgb(r, g, b) = c else {
+        return None;
+    };
+    let (r, g, b) = (f64::from(r), f64::from(g), f64::from(b));
+    let (max, min) = (r.max(g).max(b), r.min(g).min(b));
+    let d = max - min;
+    if d == 0.0 {
+        return None;
+    }
+    let h = if max == r {
+        60.0 * ((g - b) / d)
+    } else if max == g {
+        60.0 * ((b - r) / d + 2.0)
+    } else {
+        60.0 * ((r - g) / d + 4.0)
+    };
+    Some((h + 360.0) % 360.0)
+}
+
+/// Issue 37 item 8: with the other models compared, no model's colour on screen shares a hue
+/// with a family member's (`muller_poschel2011` was #0072B2 beside the family's #3A7DC9): read
+/// from the terminal's cells, at 80×24 and 200×60.
+#[test]
+fn issue_37_no_compared_model_shares_a_hue_with_the_family_on_screen() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('c'));
+    update(&mut app, ch('c'));
+    settle(&mut app);
+    assert_eq!(app.overlay_set, 2, "other models");
+    for (w, h) in [(200, 60), (120, 40)] {
+        let t = screen(&app, w, h);
+        let buf = t.backend().buffer();
+        let rows: Vec<String> = text(&t).lines().map(String::from).collect();
+        // The colour of the cells under `needle` on the first row that has it.
+        let colours_of = |needle: &str, span: usize| -> Vec<ratatui::style::Color> {
+            let Some((y, row)) = rows.iter().enumerate().find(|(_, r)| r.contains(needle)) else {
+                return Vec::new();
+            };
+            let byte = row.find(needle).unwrap_or(0);
+            let x0 = row[..byte].chars().count();
+            (x0..x0 + span)
+                .map(|x| buf[(x as u16, y as u16)].fg)
+                .filter(|c| hue_of(*c).is_some())
+                .collect()
+        };
+        let models: Vec<_> = ["brilliantov2007", "muller_poschel2011"]
+            .iter()
+            .flat_map(|m| colours_of(m, m.chars().count()))
+            .collect();
+        // The family entry: `A = 10 µs 30 µs …`, each value in its member's colour.
+        let family = colours_of("A = ", 40);
+        assert!(
+            !models.is_empty() && !family.is_empty(),
+            "{w}×{h}\n{}",
+            rows.join("\n")
+        );
+        for m in &models {
+            for f in &family {
+                let (a, b) = (hue_of(*m).unwrap_or(0.0), hue_of(*f).unwrap_or(0.0));
+                let gap = (a - b).abs().min(360.0 - (a - b).abs());
+                assert!(
+                    gap >= 20.0,
+                    "{w}×{h}: model {m:?} vs family {f:?}: {gap:.0}°"
+                );
+            }
+        }
+    }
+}
+
+/// Issue 37 (review E11, E17): at 80 and 100 columns, without colour, the legend's count of left
+/// out entries is whole (`+1 more`, `+1`), never `+1 m`; an entry cut at the edge ends in `…`.
+#[test]
+fn issue_37_the_legend_is_never_cut_mid_word() {
+    for (w, h, scene) in [
+        (80, 24, Scene::default()),
+        (100, 30, Preset::IceFrost.scene()),
+    ] {
+        let mut app = app_on(scene);
+        app.colors = super::colors::Colors::None;
+        for sets in 0..3 {
+            let s = text(&screen(&app, w, h));
+            for line in s.lines() {
+                if let Some((_, tail)) = line.split_once(" +") {
+                    let count: String = tail.chars().take_while(char::is_ascii_digit).collect();
+                    if count.is_empty() {
+                        continue;
+                    }
+                    let rest = tail[count.len()..].trim_end();
+                    let rest = rest.split(" ─").next().unwrap_or(rest).trim_end();
+                    assert!(
+                        rest.is_empty()
+                            || rest.starts_with(" more")
+                                && (rest == " more" || rest.ends_with("(x exports all)")),
+                        "{w}×{h}, set {sets}: cut count in {line:?}"
+                    );
+                }
+            }
+            update(&mut app, ch('c'));
+            settle(&mut app);
+        }
+    }
 }

@@ -76,6 +76,7 @@ impl App {
             scene: self.scene,
             preset: self.preset,
         });
+        let what = scene_change(&self.scene, &state.scene);
         self.scene = state.scene;
         self.preset = state.preset;
         self.fix_sweep();
@@ -86,7 +87,7 @@ impl App {
             self.redo.len()
         };
         self.info(format!(
-            "{} ({left} more) · {}",
+            "{}: {what} ({left} more) · {}",
             if back { "undone" } else { "redone" },
             if back { "U redoes" } else { "u undoes" }
         ));
@@ -290,12 +291,15 @@ impl App {
         match question {
             Confirm::Quit if yes || ctrl_c => self.quit = true,
             Confirm::Quit => self.info("not quitting · w saves the scene"),
+            Confirm::Leave if yes || ctrl_c => self.quit = true,
+            Confirm::Leave => self.info("not quitting · q quits"),
             Confirm::Overwrite if yes => self.write_scene(),
             Confirm::Overwrite => self.info(format!("{SCENE_FILE} kept, scene not saved")),
         }
     }
 
-    /// Keys while the help is open: arrows and pages scroll, `q` quits, any other key closes.
+    /// Keys while the help is open: arrows and pages scroll, any other key (`q` and Esc too)
+    /// closes it; only Ctrl-C, handled before, asks to quit (issue 37: `q` in the overlay quit).
     pub(crate) fn handle_help_key(&mut self, key: KeyEvent) {
         let (w, h) = self.size;
         let max = super::view::help::max_scroll(w, h);
@@ -310,9 +314,7 @@ impl App {
             KeyCode::End => max,
             _ => {
                 self.help = false;
-                if keymap::action(key) == Some(Action::Quit) {
-                    self.ask_quit();
-                }
+                self.info("help closed · ? opens it again · q quits");
                 return;
             }
         };
@@ -357,9 +359,13 @@ impl App {
             // panels at once).
             (Action::Back, _) if self.stick.is_some() => self.close_stick(),
             (Action::Back, _) if self.inside.is_some() => self.close_inside(),
+            (Action::Back, _) if self.ring => self.toggle_ring(),
+            // Esc with nothing to close: it asks when the view (pin, zoom, comparison, ring τ)
+            // or unsaved edits would be lost, rather than dropping them (issue 37).
+            (Action::Back, _) => self.ask_leave(),
             // Ctrl-C acts as q: it asks before dropping unsaved edits (issue 22 item 8).
             (Action::Interrupt, _) => self.ask_quit(),
-            (Action::Quit | Action::Back, _) => self.ask_quit(),
+            (Action::Quit, _) => self.ask_quit(),
             (Action::Help, _) => self.open_help(),
             (Action::FocusNext, _) => self.focus_next(),
             (Action::FocusPrev, _) => self.focus_prev(),
@@ -428,17 +434,17 @@ impl App {
 
     pub(crate) fn close_tidal(&mut self) {
         self.tidal = false;
-        self.info("tidal appendix closed (Esc again quits)");
+        self.info("tidal appendix closed · q quits");
     }
 
     pub(crate) fn close_stick(&mut self) {
         self.stick = None;
-        self.info("sticking thresholds closed (Esc again quits)");
+        self.info("sticking thresholds closed · q quits");
     }
 
     pub(crate) fn close_inside(&mut self) {
         self.inside = None;
-        self.info("collision panel closed (Esc again quits)");
+        self.info("collision panel closed · q quits");
     }
 
     pub(crate) fn open_help(&mut self) {
@@ -546,15 +552,26 @@ impl App {
     }
 
     pub(crate) fn fit_to_law(&mut self) {
-        // The first law of the comparison shown (measured ice), else Bridges et al. 1984.
-        let id = frame::COMPARISONS[self.overlay_set]
+        // The first law of the comparison shown (measured ice), else Bridges et al. 1984 where
+        // the experiments draw it on the chart; with no measured law on the chart, nothing is
+        // fitted (issue 37: `f` fitted to Bridges while the chart showed no comparison).
+        let compared = frame::COMPARISONS[self.overlay_set]
             .1
             .iter()
             .filter_map(|k| k.strip_prefix("atlas:"))
             .find(|id| {
                 rime_core::atlas::find(id).is_some_and(|e| e.kind == rime_core::atlas::Kind::Law)
-            })
-            .unwrap_or("bridges1984");
+            });
+        let bridges_drawn = self.overlay_set == 0
+            && self.experiments
+            && self.speed_range().is_some_and(|(lo, hi)| {
+                let [a, b] = rime_core::atlas::PENDULUM_SPEED;
+                lo.max(a) < hi.min(b)
+            });
+        let Some(id) = compared.or(bridges_drawn.then_some("bridges1984")) else {
+            self.info("f: no measured law on the chart to fit A to · c shows measured ice");
+            return;
+        };
         let Some(entry) = rime_core::atlas::find(id) else {
             return;
         };
@@ -566,13 +583,22 @@ impl App {
         ) {
             Ok(f) => {
                 let before = self.scene.damping_time();
-                // An edit like any other: `u` undoes it.
-                self.replace_scene(f.scene, None);
                 let p = &f.params[0];
+                // An edit like any other: `u` undoes it. A fit that lands on the scene's A (the
+                // same fit twice moves it by float noise, far below its standard error and the
+                // digits shown) keeps the scene and is no undo step.
+                let unchanged = (p.value - before).abs() <= 1e-6 * before.abs();
+                if !unchanged {
+                    self.replace_scene(f.scene, None);
+                }
                 self.info(format!(
-                    "A fitted to {id}: {} (was {}){}, rms {} over its measured speeds",
+                    "A fitted to {id}: {} ({}){}, rms {} over its measured speeds",
                     super::format::qty3(p.value, "s"),
-                    super::format::qty3(before, "s"),
+                    if unchanged {
+                        "unchanged: already the fit, no undo step".to_string()
+                    } else {
+                        format!("was {}", super::format::qty3(before, "s"))
+                    },
                     p.standard_error
                         .map(|e| format!(" ± {}", super::format::qty3(e, "s")))
                         .unwrap_or_default(),
@@ -918,5 +944,27 @@ impl App {
             "ring: optical depth τ = {}",
             super::format::sig(self.ring_tau, 3)
         ));
+    }
+}
+
+/// What changes from `from` to `to`, as a person reads it: `A 2 ms → 100 µs`, each changed
+/// parameter (symbol, old value, new value); the first three and how many more (issue 37: undo
+/// said only "undone").
+pub(crate) fn scene_change(from: &rime_core::Scene, to: &rime_core::Scene) -> String {
+    use super::view::panel::value_text;
+    let changed: Vec<String> = PARAMETERS
+        .iter()
+        .filter(|p| from.get(p.path) != to.get(p.path))
+        .map(|p| {
+            let symbol = p.label.split_whitespace().next().unwrap_or(p.path);
+            let (a, _) = value_text(from, p.path, p.unit);
+            let (b, _) = value_text(to, p.path, p.unit);
+            format!("{symbol} {a} → {b}")
+        })
+        .collect();
+    match changed.len() {
+        0 => "no parameter changed".to_string(),
+        1..=3 => changed.join(", "),
+        n => format!("{} and {} more", changed[..3].join(", "), n - 3),
     }
 }

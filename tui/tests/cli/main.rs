@@ -15,6 +15,7 @@ mod collision;
 mod exit_codes;
 mod explorer_model;
 mod exported;
+mod issue_37;
 mod lammps;
 mod measured;
 mod models;

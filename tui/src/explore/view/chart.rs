@@ -107,7 +107,7 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) -> Option<LogAxis> 
         .border_type(kind)
         .border_style(border_style)
         .title(Line::from(title_spans))
-        .title_bottom(chart_readout(app.data, app.cursor, app.colors));
+        .title_bottom(chart_readout(app.data, app.cursor, app.colors, area.width));
     let inner = block.inner(area);
     frame.render_widget(block, area);
     let Some(data) = app.data else {
@@ -178,8 +178,16 @@ pub fn chart(frame: &mut Frame, area: Rect, app: &ChartView) -> Option<LogAxis> 
     Some(drawn.x_axis)
 }
 
-/// The chart's readout at the cursor: speed, ε_N, status, contact time and δ.
-fn chart_readout(data: Option<&Computed>, cursor: usize, colors: Colors) -> Line<'static> {
+/// The chart's readout at the cursor: speed, ε_N, status, contact time and δ, within `width`
+/// cells: fields are dropped whole from the end (δ, then t_c; δ is also on the derived line when
+/// there is room), never cut mid-number (issue 37: `δ 2.` for 2.25e4 at 80 columns); what still
+/// does not fit ends in `…`.
+fn chart_readout(
+    data: Option<&Computed>,
+    cursor: usize,
+    colors: Colors,
+    width: u16,
+) -> Line<'static> {
     let Some(data) = data else {
         return Line::default();
     };
@@ -190,6 +198,8 @@ fn chart_readout(data: Option<&Computed>, cursor: usize, colors: Colors) -> Line
         Span::styled(" ▸ ", Style::new().fg(Color::White)),
         Span::raw(format!("{}  ", qty3(g, "m/s"))),
     ];
+    // Fields that may be dropped whole, most telling first.
+    let mut optional = Vec::new();
     match data.point(cursor) {
         Some(n) => {
             let eps = match n.status {
@@ -211,9 +221,26 @@ fn chart_readout(data: Option<&Computed>, cursor: usize, colors: Colors) -> Line
                 "— (stuck)".into()
             };
             let delta = data.contact.map_or("—".to_string(), |c| num3(c.delta(g)));
-            spans.push(Span::raw(format!("  t_c {t_c}  δ {delta} ")));
+            optional.push(Span::raw(format!("  t_c {t_c}")));
+            optional.push(Span::raw(format!("  δ {delta}")));
         }
         None => spans.push(Span::raw("ε_N — ")),
     }
-    Line::from(spans)
+    // The block has top and bottom borders only: the title may take the whole width.
+    let room = usize::from(width);
+    let len = |spans: &[Span]| {
+        spans
+            .iter()
+            .map(|s| s.content.chars().count())
+            .sum::<usize>()
+    };
+    let mut keep = optional.len();
+    while keep > 0 && len(&spans) + len(&optional[..keep]) > room {
+        keep -= 1;
+    }
+    spans.extend(optional.into_iter().take(keep));
+    if len(&spans) < room {
+        spans.push(Span::raw(" "));
+    }
+    super::lines::fit(spans, room, "…")
 }

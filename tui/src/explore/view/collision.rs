@@ -93,20 +93,27 @@ pub fn render(frame: &mut Frame, area: Rect, view: &CollisionView) {
         .iter()
         .map(|p| format!("{} {}", p.name.replace('_', " "), qty3(p.t, "s")))
         .collect();
+    let summary = format!(
+        "ε_N {} {} · t_c {} · ξ_max {} │ ",
+        sig(t.eps_n, 4),
+        t.status.label(),
+        if t.t_c.is_finite() {
+            qty3(t.t_c, "s")
+        } else {
+            "—".into()
+        },
+        qty3(t.xi_max, "m")
+    );
     frame.render_widget(
         Paragraph::new(Line::from(vec![
-            Span::raw(format!(
-                "ε_N {} {} · t_c {} · ξ_max {} │ ",
-                sig(t.eps_n, 4),
-                t.status.label(),
-                if t.t_c.is_finite() {
-                    qty3(t.t_c, "s")
-                } else {
-                    "—".into()
-                },
-                qty3(t.xi_max, "m")
-            )),
-            Span::styled(phases.join(" · "), Style::new().fg(Color::Gray)),
+            Span::raw(summary.clone()),
+            Span::styled(
+                whole_phases(
+                    &phases,
+                    usize::from(head.width).saturating_sub(summary.chars().count()),
+                ),
+                Style::new().fg(Color::Gray),
+            ),
         ])),
         head,
     );
@@ -128,4 +135,42 @@ pub fn render(frame: &mut Frame, area: Rect, view: &CollisionView) {
         Paragraph::new(ledger_lines(t, ledger.width, view.colors)),
         ledger,
     );
+}
+
+/// The phase instants that fit `room` cells, whole ones only, joined by ` · `; the ones left out
+/// are counted (`· +2 more: a wider terminal`) instead of a phase cut mid-word (issue 37).
+fn whole_phases(phases: &[String], room: usize) -> String {
+    let all = phases.join(" · ");
+    if all.chars().count() <= room {
+        return all;
+    }
+    let mut shown = String::new();
+    for (k, p) in phases.iter().enumerate() {
+        let left = phases.len() - k - 1;
+        let candidate = if shown.is_empty() {
+            p.clone()
+        } else {
+            format!("{shown} · {p}")
+        };
+        let tail = if left == 0 {
+            String::new()
+        } else {
+            format!(" · +{left} more")
+        };
+        if candidate.chars().count() + tail.chars().count() > room {
+            let left = phases.len() - k;
+            return if shown.is_empty() {
+                let count = format!("+{left} phases");
+                if count.chars().count() <= room {
+                    count
+                } else {
+                    String::new()
+                }
+            } else {
+                format!("{shown} · +{left} more")
+            };
+        }
+        shown = candidate;
+    }
+    shown
 }

@@ -189,12 +189,12 @@ pub fn help(frame: &mut Frame, area: Rect, scroll: u16) {
         .collect();
     let footer = if total > page {
         format!(
-            " ↑↓ PgDn scroll {}–{}/{total} · q quits · other keys close ",
+            " ↑↓ PgDn scroll {}–{}/{total} · q Esc or any other key closes ",
             scroll + 1,
             (scroll + page).min(total)
         )
     } else {
-        " q quits · any other key closes ".to_string()
+        " q Esc or any other key closes ".to_string()
     };
     frame.render_widget(Clear, r);
     frame.render_widget(

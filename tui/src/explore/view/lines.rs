@@ -178,6 +178,8 @@ pub struct MessageView<'a> {
     pub selected: usize,
     /// Last status message.
     pub message: Option<&'a (String, Tone)>,
+    /// What Esc's quit would lose of the view ([`Confirm::Leave`]).
+    pub view_to_lose: &'a [&'static str],
 }
 
 /// Appends spans to a line.
@@ -224,6 +226,15 @@ pub fn message_line(app: &MessageView) -> Line<'static> {
             return Line::from(vec![
                 Span::styled(" unsaved edits: quit anyway? ", ask),
                 Span::raw(" y quits · n stays (w saves, u undoes)"),
+            ]);
+        }
+        Some(Confirm::Leave) => {
+            return Line::from(vec![
+                Span::styled(" Esc quits rime? ", ask),
+                Span::raw(format!(
+                    " {} would go · y quits · n stays",
+                    app.view_to_lose.join(", ")
+                )),
             ]);
         }
         Some(Confirm::Overwrite) => {

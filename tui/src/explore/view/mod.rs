@@ -92,11 +92,7 @@ pub fn render(app: &App, frame: &mut Frame) {
                 pinned: app.pinned.as_ref(),
                 shared: l.shared,
                 colors: app.colors,
-                ring: app
-                    .ring
-                    .then_some(app.ring_card.as_ref())
-                    .flatten()
-                    .and_then(|c| c.as_ref().ok()),
+                ring: app.ring_on_chart(),
             },
         );
     }
@@ -123,12 +119,14 @@ pub fn render(app: &App, frame: &mut Frame) {
         computing: app.computing(),
         cursor: app.cursor,
     };
+    let view_to_lose = app.view_to_lose();
     let message = lines::message_line(&lines::MessageView {
         confirm: app.confirm,
         open: app.open.as_ref(),
         input: app.input.as_ref(),
         selected: app.selected,
         message: app.message.as_ref(),
+        view_to_lose: &view_to_lose,
     });
     match l.message {
         Some(r) => {

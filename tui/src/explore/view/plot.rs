@@ -285,7 +285,14 @@ fn put_entry(buf: &mut Buffer, x: u16, y: u16, e: &Entry, max_x: u16, colors: Co
         if x >= max_x {
             break;
         }
-        let (nx, _) = buf.set_stringn(x, y, text, (max_x - x) as usize, st);
+        let room = (max_x - x) as usize;
+        // A text cut at the pane's edge ends in `…` (issue 37: legends were cut silently).
+        let (nx, _) = if text.chars().count() > room && room > 1 {
+            let cut: String = text.chars().take(room - 1).collect();
+            buf.set_stringn(x, y, cut + "…", room, st)
+        } else {
+            buf.set_stringn(x, y, text, room, st)
+        };
         x = nx;
     }
     for (text, rgb) in &e.more {
@@ -430,7 +437,16 @@ fn legend_above(buf: &mut Buffer, f: &Frame, entries: &[Entry], colors: Colors) 
         }
         if r + 1 == rows.len() && *left_out > 0 {
             let room = f.area.right().saturating_sub(x) as usize;
-            buf.set_stringn(x, y, format!("+{left_out} more (x exports all)"), room, DIM);
+            // The longest wording that fits, never one cut mid-word (issue 37: `+1 m`).
+            let more = [
+                format!("+{left_out} more (x exports all)"),
+                format!("+{left_out} more"),
+                format!("+{left_out}"),
+            ]
+            .into_iter()
+            .find(|t| t.chars().count() <= room)
+            .unwrap_or_default();
+            buf.set_stringn(x, y, more, room, DIM);
         }
     }
 }

@@ -57,7 +57,59 @@ fn draw(frame: &mut Frame, area: Rect, text: Text<'static>) {
         "ring: what the law does to it",
         "( ) τ · < > planet distance · r closes",
     );
+    let text = fit_rows(text, inner.width, inner.height);
     frame.render_widget(Paragraph::new(text).wrap(Wrap { trim: false }), inner);
+}
+
+/// How many rows `line` takes wrapped at word boundaries into `width` cells (as [`Wrap`] does).
+fn wrapped_rows(line: &Line, width: u16) -> usize {
+    let width = usize::from(width.max(1));
+    let text: String = line.spans.iter().map(|s| s.content.as_ref()).collect();
+    let (mut rows, mut used) = (1, 0);
+    for word in text.split(' ') {
+        let n = word.chars().count();
+        let need = if used == 0 { n } else { used + 1 + n };
+        if need <= width {
+            used = need;
+        } else {
+            rows += 1;
+            // A word longer than the row is broken over rows of its own.
+            used = n % width;
+            rows += n.saturating_sub(1) / width;
+        }
+    }
+    rows
+}
+
+/// The lines of `text` that fit `height` rows of `width` cells, whole lines only; when some are
+/// left out, the last row says how many (issue 37: at 80×24 the card ended mid-way with no hint).
+fn fit_rows(text: Text<'static>, width: u16, height: u16) -> Text<'static> {
+    let rows: Vec<usize> = text.lines.iter().map(|l| wrapped_rows(l, width)).collect();
+    if rows.iter().sum::<usize>() <= usize::from(height) {
+        return text;
+    }
+    let room = usize::from(height.saturating_sub(1));
+    let (mut used, mut keep) = (0, 0);
+    while keep < rows.len() && used + rows[keep] <= room {
+        used += rows[keep];
+        keep += 1;
+    }
+    let left = text.lines.len() - keep;
+    let mut lines: Vec<Line<'static>> = text.lines.into_iter().take(keep).collect();
+    // The longest wording that fits the one row kept for it.
+    let note = [
+        format!("… {left} more lines: a taller terminal shows them (rime ring prints all)"),
+        format!("… {left} more lines: a taller terminal shows them"),
+        format!("… {left} more lines"),
+    ]
+    .into_iter()
+    .find(|n| n.chars().count() <= usize::from(width))
+    .unwrap_or_else(|| format!("… +{left}"));
+    lines.push(Line::from(Span::styled(
+        note,
+        Style::new().fg(Color::Yellow),
+    )));
+    lines.into()
 }
 
 /// Draws the card where it leaves the ε_N chart (and its ε_cr line) in view: over the stick map's
@@ -80,7 +132,14 @@ pub fn render_over(
         None => Line::from(Span::styled("computing…", Style::new().fg(Color::Gray))).into(),
     };
     let area = if shared {
-        let h = (text.height() as u16 + 2).min(views.height / 2).max(3);
+        let rows: usize = text
+            .lines
+            .iter()
+            .map(|l| wrapped_rows(l, views.width.saturating_sub(2)))
+            .sum();
+        let h = (u16::try_from(rows).unwrap_or(u16::MAX).saturating_add(2))
+            .min(views.height / 2)
+            .max(3);
         Rect::new(views.x, views.y + views.height - h, views.width, h)
     } else {
         map
