@@ -33,16 +33,7 @@ pub const fn overlay_style(k: usize) -> (usize, Stroke) {
     )
 }
 
-/// A curve the user pinned to compare with later edits.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Pinned {
-    /// Legend text (e.g. what the scene was).
-    pub label: String,
-    /// Speeds \[m/s\].
-    pub g: Vec<f64>,
-    /// ε_N at `g`.
-    pub eps: Vec<f64>,
-}
+pub use super::frame::Pinned;
 
 /// How a surface shows the frame; exports take the same value, so they show what the screen shows.
 #[derive(Debug, Clone, PartialEq)]

@@ -929,6 +929,17 @@ pub fn compute_with(
     Some(plan.assemble(&units, outputs))
 }
 
+/// A curve the user pinned to compare with later edits.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Pinned {
+    /// Legend text (e.g. what the scene was).
+    pub label: String,
+    /// Speeds \[m/s\].
+    pub g: Vec<f64>,
+    /// ε_N at `g`.
+    pub eps: Vec<f64>,
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -875,7 +875,7 @@ pub fn family_csv(frame: &Frame) -> String {
 /// the pinned curve was computed over other speeds (the range moved since it was pinned), its
 /// speeds are rows of their own, merged in order, with the frame's cells empty there (and its cell
 /// empty on the frame's rows): nothing interpolated.
-pub fn family_csv_pinned(frame: &Frame, pinned: Option<&super::figures::Pinned>) -> String {
+pub fn family_csv_pinned(frame: &Frame, pinned: Option<&super::frame::Pinned>) -> String {
     let sweep = SWEEPS.get(frame.sweep).map_or("p", |s| s.symbol);
     let unit = SWEEPS.get(frame.sweep).map_or("", |s| s.unit);
     let mut s = String::from("g_n [m/s],eps_n");
