@@ -2108,6 +2108,7 @@ fn issue_36_the_tidal_marks_are_the_cores() {
     );
     assert!(s.contains("37.6 m      ⚠ +0.32 %"), "{s}");
     assert!(s.contains(&card.verdict));
+}
 
 /// Exports the frame with `x` into a fresh folder and returns the folder's files by name.
 fn exported_files(app: &mut App, tag: &str) -> std::collections::BTreeMap<String, String> {
