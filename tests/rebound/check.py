@@ -64,9 +64,10 @@ def state(sim, recipe):
     return [(list(p.xyz), list(p.vxyz), list(recipe.spin(sim, k)), p.m, p.r) for k, p in enumerate(sim.particles)]
 
 
-def surface_velocity(s1, s2, n):
-    """Eq. (2): g = (v_i - w_i x n a_i) - (v_j + w_j x n a_j)."""
-    return sub(sub(s1[1], scale(cross(s1[2], n), s1[4])), add(s2[1], scale(cross(s2[2], n), s2[4])))
+def surface_velocity(s1, s2, n, arms):
+    """Eq. (2) at the contact point: g = (v_i - w_i x n l_i) - (v_j + w_j x n l_j), with the lever
+    arms l = a d/(a_i + a_j) of a pair found overlapping at centre distance d (a at touching)."""
+    return sub(sub(s1[1], scale(cross(s1[2], n), arms[0])), add(s2[1], scale(cross(s2[2], n), arms[1])))
 
 
 def bounce(name, preset, directory, x1, v1, w1, x2, v2, w2):
@@ -84,7 +85,8 @@ def bounce(name, preset, directory, x1, v1, w1, x2, v2, w2):
     # REBOUND resolves at the end of the step: the normal is that of the positions there.
     d = sub(after[0][0], after[1][0])
     n = scale(d, 1.0 / norm(d))
-    g0, g1 = surface_velocity(before[0], before[1], n), surface_velocity(after[0], after[1], n)
+    arms = [after[k][4] * norm(d) / (after[0][4] + after[1][4]) for k in (0, 1)]
+    g0, g1 = surface_velocity(before[0], before[1], n, arms), surface_velocity(after[0], after[1], n, arms)
     gn0, gn1 = dot(g0, n), dot(g1, n)
     gt0, gt1 = sub(g0, scale(n, gn0)), sub(g1, scale(n, gn1))
     expected = rime_tangential(preset, abs(gn0), norm(gt0))
@@ -93,8 +95,9 @@ def bounce(name, preset, directory, x1, v1, w1, x2, v2, w2):
     if norm(gt0) > 0:
         check(f"{name}: g'_T = eps_T g_T against rime (eps_T = {expected['eps_t']:.12f}, {expected['class']})",
               norm(sub(gt1, scale(gt0, expected["eps_t"]))) / norm(gt0), 1e-9)
-    # Spins: the torque of the contact impulse, I dw = (-a_i n) x m_i dv_i, (+a_j n) x m_j dv_j.
-    for k, arm in ((0, -RADIUS), (1, RADIUS)):
+    # Spins: the torque of the contact impulse at the contact point, I dw = (-l_i n) x m_i dv_i,
+    # (+l_j n) x m_j dv_j, with I = 2/5 m a^2 of the grain.
+    for k, arm in ((0, -arms[0]), (1, arms[1])):
         inertia = 0.4 * MASS * RADIUS**2
         dv = sub(after[k][1], before[k][1])
         want = add(before[k][2], scale(cross(scale(n, arm), scale(dv, MASS)), 1.0 / inertia))
@@ -106,6 +109,13 @@ def bounce(name, preset, directory, x1, v1, w1, x2, v2, w2):
     p1 = add(scale(after[0][1], MASS), scale(after[1][1], MASS))
     check(f"{name}: momentum (relative to m |v1 - v2|)",
           norm(sub(p1, p0)) / (MASS * norm(sub(before[0][1], before[1][1]))), 1e-14)
+    # Angular momentum about the origin, orbital plus spins: the impulse at the contact point keeps
+    # it exactly (with the radii as arms it would change by ~ the overlap over the radius).
+    def ang(st):
+        return add(add(scale(cross(st[0][0], st[0][1]), MASS), scale(cross(st[1][0], st[1][1]), MASS)),
+                   scale(add(st[0][2], st[1][2]), 0.4 * MASS * RADIUS**2))
+    scale_l = MASS * RADIUS * norm(sub(before[0][1], before[1][1]))
+    check(f"{name}: angular momentum (relative to m a |v1 - v2|)", norm(sub(ang(after), ang(before))) / scale_l, 1e-12)
     del spins
 
 
@@ -216,6 +226,7 @@ enum REB_COLLISION_RESOLVE_OUTCOME {
     REB_COLLISION_RESOLVE_OUTCOME_REMOVE_P2 = 2, REB_COLLISION_RESOLVE_OUTCOME_REMOVE_BOTH = 3 };
 enum REB_STATUS { REB_STATUS_RUNNING = -1, REB_STATUS_SUCCESS = 0, REB_STATUS_GENERIC_ERROR = 1 };
 struct reb_simulation { struct reb_particle *particles; size_t N; volatile enum REB_STATUS status;
+    double minimum_collision_velocity;
     enum REB_COLLISION_RESOLVE_OUTCOME (*collision_resolve)(struct reb_simulation *const r,
                                                              struct reb_collision); };
 #endif
