@@ -347,6 +347,22 @@ def issue_35_reboundx_beside_the_handler_in_either_order():
             print(f"ok: REBOUNDx {order}: the spins of the grains that did not collide are kept exactly")
 
 
+def issue_35_minimum_collision_velocity_is_a_floor_on_the_separation_speed():
+    """REBOUND's minimum_collision_velocity, as the Python handler reads it: a bounce separates at
+    max(eps_N |g_N|, v_min); here eps_N |g_N| = 3.6 mm/s < v_min = 5 mm/s."""
+    recipe = load(ICE)
+    for v_min, want in ((5e-3, 5e-3), (1e-3, None)):
+        sim, _ = pair(recipe, [-0.021, 0, 0], [0.005, 0, 0], [0, 0, 0], [0.021, 0, 0], [-0.005, 0, 0], [0, 0, 0])
+        sim.minimum_collision_velocity = v_min
+        sim.integrate(10.0)
+        apart = sim.particles[1].vx - sim.particles[0].vx
+        if want is None:
+            want = json.loads(subprocess.run([RIME, "eps", "--preset", "ice", "--g", "0.01", "--format", "json"],
+                                             check=True, capture_output=True, text=True).stdout)[0]["eps_n"] * 0.01
+        check(f"minimum_collision_velocity {v_min} m/s: separation speed {want:.6e} m/s, relative",
+              abs(apart - want) / want, 1e-12)
+
+
 def issue_35_spins_follow_a_merge_and_particles_added_later():
     """The spin table follows REBOUND's array: a merge of particles 0 and 1 removes 1 (the ones
     after it shift down), particles added after attach start at 0."""
@@ -407,5 +423,6 @@ bounce("oblique, sliding", "ice", ICE, [-0.04, 0.0, 0.0], [0.002, 0.02, 0.004],
 sticky()
 ring()
 issue_35_reboundx_beside_the_handler_in_either_order()
+issue_35_minimum_collision_velocity_is_a_floor_on_the_separation_speed()
 issue_35_spins_follow_a_merge_and_particles_added_later()
 issue_35_a_removal_behind_the_handlers_back_stops_with_a_message()
