@@ -363,6 +363,40 @@ def issue_35_minimum_collision_velocity_is_a_floor_on_the_separation_speed():
               abs(apart - want) / want, 1e-12)
 
 
+def issue_35_reattach_keeps_the_spins_and_a_reload_must_give_them():
+    import os
+    import tempfile
+    recipe = load(ICE)
+    sim, _ = pair(recipe, [-0.021, 0.012, 0.003], [0.004, -0.0015, 0.0005], [0.02, -0.01, 0.03],
+                  [0.021, 0, 0], [-0.003, 0.001, 0.0], [-0.01, 0.04, 0.005])
+    sim.integrate(10.0)
+    w = recipe.spins(sim)
+    recipe.attach(sim, damping_time=1e-4)
+    if recipe.spins(sim) != w:
+        sys.exit(f"FAILED: attaching again changed the spins: {w} -> {recipe.spins(sim)}")
+    print("ok: attaching again (new parameters) keeps the spins")
+    with tempfile.TemporaryDirectory() as d:
+        path = os.path.join(d, "sim.bin")
+        sim.save_to_file(path)
+        import warnings
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)  # "reset function pointers": attach does
+            reloaded = rebound.Simulation(path)
+        try:
+            recipe.attach(reloaded)
+        except ValueError as e:
+            print(f"ok: a reloaded simulation without spins= is refused: {e}")
+        else:
+            sys.exit("FAILED: a reloaded simulation was attached with its spins silently at 0")
+        recipe.attach(reloaded, spins=w)
+        if recipe.spins(reloaded) != w:
+            sys.exit("FAILED: spins= of a reloaded simulation not taken")
+        recipe.forget(reloaded)
+    recipe.attach(sim)  # back to the scene's values (one set per library)
+    recipe.forget(sim)
+    print("ok: spins= restores a reloaded simulation's spins")
+
+
 def issue_35_spins_follow_a_merge_and_particles_added_later():
     """The spin table follows REBOUND's array: a merge of particles 0 and 1 removes 1 (the ones
     after it shift down), particles added after attach start at 0."""
@@ -424,5 +458,6 @@ sticky()
 ring()
 issue_35_reboundx_beside_the_handler_in_either_order()
 issue_35_minimum_collision_velocity_is_a_floor_on_the_separation_speed()
+issue_35_reattach_keeps_the_spins_and_a_reload_must_give_them()
 issue_35_spins_follow_a_merge_and_particles_added_later()
 issue_35_a_removal_behind_the_handlers_back_stops_with_a_message()
