@@ -286,6 +286,10 @@ impl Law {
     pub fn rebound_c(&self) -> String {
         let d = self.runtime_defaults();
         self.fill(include_str!("codegen/rime_rebound.c.in"), " * ")
+            .replace(
+                "@SOLID_SPHERE@",
+                &format!("{:?}", rime_core::kinematics::SOLID_SPHERE),
+            )
             .replace("@DEFAULT_A@", &format!("{:?}", d[0]))
             .replace("@DEFAULT_D@", &format!("{:?}", d[3]))
             .replace("@DEFAULT_ETA@", &format!("{:?}", d[4]))
