@@ -210,6 +210,52 @@ pub fn parameter(path: &str) -> Option<&'static Parameter> {
         .find(|p| p.path == path)
 }
 
+/// Factor of one notch of a logarithmic parameter (coarse, fine): ×1.25 or ×1.02.
+pub const LOG_NOTCH: (f64, f64) = (1.25, 1.02);
+
+/// One notch of a linear parameter as a fraction of its range (coarse, fine), the range counted at
+/// most 1: 5 % and 1 %, i.e. steps of at most 0.05 and 0.01, steps a physicist can use for μ, κ, ν.
+pub const LINEAR_NOTCH: (f64, f64) = (0.05, 0.01);
+
+/// Why a notch cannot be taken.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum NotchError {
+    /// The path is not a number parameter.
+    NotANumber,
+    /// A logarithmic parameter at 0 cannot be stepped up (a factor keeps 0).
+    LogFromZero,
+}
+
+/// The value one notch up (`up`) or down from `value` for the number parameter `kind`, fine or
+/// coarse, clamped to its limits: the one rule of every surface (the terminal's ←/→, the page's
+/// arrow keys on a slider). A logarithmic parameter at 0 stays there going down.
+pub fn notch(
+    kind: Kind,
+    value: f64,
+    up: bool,
+    fine: bool,
+) -> core::result::Result<f64, NotchError> {
+    let Kind::Number { min, max, log } = kind else {
+        return Err(NotchError::NotANumber);
+    };
+    let dir = if up { 1.0 } else { -1.0 };
+    let next = if log {
+        let f = if fine { LOG_NOTCH.1 } else { LOG_NOTCH.0 };
+        if value > 0.0 {
+            value * crate::math::powf(f, dir)
+        } else if up && min <= 0.0 {
+            return Err(NotchError::LogFromZero);
+        } else {
+            value
+        }
+    } else {
+        let span = (max - min).min(1.0);
+        let fraction = if fine { LINEAR_NOTCH.1 } else { LINEAR_NOTCH.0 };
+        value + dir * span * fraction
+    };
+    Ok(next.clamp(min, max))
+}
+
 /// Parameters read only by the alternative models of `rime compare` (docs/physics.md#models): settable
 /// with `--set` and in scene files, but not part of the explorer's panel ([`PARAMETERS`]).
 pub static MODEL_PARAMETERS: &[Parameter] = &[
@@ -510,6 +556,42 @@ impl NumberText {
 
 #[cfg(test)]
 mod tests {
+
+    /// Issue 36: one notch rule. A log parameter moves by ×1.25 (×1.02 fine) and back to where it
+    /// was; a linear one by 5 % (1 %) of its range, at most 0.05 (0.01); both stay in their limits.
+    #[test]
+    fn issue_36_one_notch_of_every_kind() {
+        let log = Kind::Number {
+            min: 0.0,
+            max: 1e3,
+            log: true,
+        };
+        let up = notch(log, 2.0, true, false).unwrap();
+        assert!((up - 2.5).abs() < 1e-15);
+        assert!((notch(log, up, false, false).unwrap() - 2.0).abs() < 1e-15);
+        assert!((notch(log, 2.0, true, true).unwrap() - 2.04).abs() < 1e-15);
+        assert_eq!(notch(log, 0.0, true, false), Err(NotchError::LogFromZero));
+        assert_eq!(notch(log, 0.0, false, false), Ok(0.0));
+        assert_eq!(notch(log, 900.0, true, false), Ok(1e3));
+        let nu = Kind::Number {
+            min: -1.0,
+            max: 0.5,
+            log: false,
+        };
+        assert!((notch(nu, 0.3, true, false).unwrap() - 0.35).abs() < 1e-15);
+        assert!((notch(nu, 0.3, false, true).unwrap() - 0.29).abs() < 1e-15);
+        let narrow = Kind::Number {
+            min: 0.0,
+            max: 0.2,
+            log: false,
+        };
+        assert!((notch(narrow, 0.1, true, false).unwrap() - 0.11).abs() < 1e-15);
+        assert_eq!(notch(narrow, 0.2, true, false), Ok(0.2));
+        assert_eq!(
+            notch(Kind::Toggle, 1.0, true, false),
+            Err(NotchError::NotANumber)
+        );
+    }
     use super::*;
 
     #[test]

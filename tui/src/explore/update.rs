@@ -119,27 +119,18 @@ impl App {
             return;
         };
         match (p.kind, self.scene.get(p.path)) {
-            (Kind::Number { min, max, log }, Ok(Value::Number(v))) => {
-                let next = if log {
-                    let f: f64 = if fine { 1.02 } else { 1.25 };
-                    if v > 0.0 {
-                        v * f.powf(dir)
-                    } else if dir > 0.0 && min <= 0.0 {
+            (Kind::Number { .. }, Ok(Value::Number(v))) => {
+                // The core's one notch rule (the page's arrow keys take the same steps).
+                let next = match rime_core::params::notch(p.kind, v, dir > 0.0, fine) {
+                    Ok(next) => next,
+                    Err(_) => {
                         self.error(format!(
                             "{}: is 0; press e to type a value (log steps cannot leave 0)",
                             p.path
                         ));
                         return;
-                    } else {
-                        v
                     }
-                } else {
-                    // 5 % of the range (1 % fine), at most 0.05 (0.01): steps a physicist can use
-                    // for μ, κ and ν.
-                    let span = (max - min).min(1.0);
-                    v + dir * span * if fine { 0.01 } else { 0.05 }
                 };
-                let next = next.clamp(min, max);
                 let mut s = self.scene;
                 match s.set_number(p.path, next) {
                     Ok(()) => self.scene_changed(s),
