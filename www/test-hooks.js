@@ -24,7 +24,8 @@
 //
 // A held timer never starts: it is parked at once, and `fire(name)` runs it now (a debounce fired
 // at once), `release(name)` runs it and stops holding; a cancelled one (a debounce called again)
-// leaves the queue. `parked(name)` counts what waits. `events` lists what happened that a check
+// leaves the queue. `parked(name)` counts what waits; `releaseAll()` lets go of every hold (the
+// end-to-end test does after each check, so that a failed one leaves nothing held). `events` lists what happened that a check
 // may wait for (`restart`: a frame worker restarted). Other hooks: parts of a frame to fail on
 // purpose (`fail`, see the view's `fail` in wasm/src/frame.rs), the family's swept parameter
 // (`sweep`, a path of the core's sweeps: the frame benchmark's swept family), frames asked
@@ -65,6 +66,8 @@ export const testHooks = {
     for (const e of q) e.run();
     return q.length;
   },
+  /** Stops every hold, running what was parked (a check's cleanup). */
+  releaseAll() { for (const name of [...held.keys()]) testHooks.release(name); },
   /** How many events of `name` are parked. */
   parked(name) { return (held.get(name) || []).length; },
 };

@@ -51,6 +51,9 @@ async function check(name, fn) {
   } catch (e) {
     report(name, false, String(e && e.stack ? e.stack.split('\n').slice(0, 3).join(' | ') : e));
   }
+  // Whatever a check held (www/test-hooks.js) is let go, so that a failed check leaves no page
+  // holding its events for the next.
+  for (const p of context.pages()) await p.evaluate(() => window.rimeTest && window.rimeTest.releaseAll()).catch(() => {});
 }
 function assert(cond, msg) {
   if (!cond) throw new Error(msg);
@@ -130,6 +133,7 @@ async function stepE(page, d) {
 /** `stepE(page, d)` with the edit's requested frame held at the page until its preview is drawn
  *  (asked first, or asked late: compute.js LATE_MS), then let go. */
 async function stepPreviewed(page, d) {
+  await noneOnItsWay(page);
   await hold(page, 'answer:frame');
   const p0 = await page.evaluate(() => window.rimeState.previews || 0);
   const u = await updates(page);
@@ -159,6 +163,10 @@ async function resized(page, width, height) {
   await page.setViewportSize({ width, height });
   await page.waitForFunction((w) => window.innerWidth === w, width, { timeout: GUARD_MS });
   await settled(page);
+}
+/** Waits until the newest request's frame is drawn (none is on its way). */
+async function noneOnItsWay(page) {
+  await page.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
 }
 /** Holds the page's events of `name` (www/test-hooks.js: a worker's answer, a timer). */
 const hold = (page, name) => page.evaluate((n) => window.rimeTest.hold(n), name);
@@ -591,7 +599,8 @@ try {
     await pf.waitForFunction(() => JSON.parse(window.rimeState.sceneJson).layer.thickness === 1e-6, null, { timeout: GUARD_MS });
     await pf.selectOption('[id="p-layer.reading"]', 'literal');
     await pf.selectOption('#accuracy', 'precise');
-    await pf.waitForFunction(() => window.rimeState.view.accuracy === 'precise' && JSON.parse(window.rimeState.sceneJson).layer.reading === 'literal', null, { timeout: GUARD_MS });
+    // (The newest request's frame: none is on its way when the hold starts.)
+    await pf.waitForFunction(() => window.rimeState.gen === window.rimeState.asked && window.rimeState.view.accuracy === 'precise' && JSON.parse(window.rimeState.sceneJson).layer.reading === 'literal', null, { timeout: GUARD_MS });
     const u = await updates(pf);
     // The literal reading with A from viscosities used to take a minute per frame; it is fast now
     // (issue 10), so the check keeps the frame's worker busy on purpose: its answer is held at the
@@ -1452,6 +1461,7 @@ try {
       await page.waitForFunction(() => window.rimeState.view.accuracy === 'precise', null, { timeout: GUARD_MS });
     }
     // The refinement is held at the page (www/test-hooks.js), so the preview is on screen while we look.
+    await noneOnItsWay(page);
     await hold(page, 'answer:frame');
     const u = await updates(page);
     const p0 = await page.evaluate(() => window.rimeState.previews || 0);
@@ -1525,6 +1535,7 @@ try {
         await agrees(await readout(), 'precise');
         const inkBefore = await inked(q, 'chart');
         // A refinement held at the page keeps the preview on screen.
+        await noneOnItsWay(q);
         await hold(q, 'answer:frame');
         const u = await updates(q);
         const p0 = await q.evaluate(() => window.rimeState.previews || 0);
