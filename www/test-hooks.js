@@ -1,7 +1,6 @@
 // Test hooks of the page, in one place (`window.rimeTest`): how an end-to-end check
 // (tests/e2e/*.mjs) or a benchmark sets up a case, and how it controls the order of the page's
-// events instead of waiting for time. Inert unless a check uses them; the page behaves the same
-// with or without this module's hooks touched.
+// events instead of waiting for time. Inert until a check sets one.
 //
 // Holding an event. The page passes each event a check may want to order through a named gate
 // (`gate`, `later` below). A check holds a name, makes its edits, waits for what it wants to see,
@@ -25,17 +24,20 @@
 // A held timer never starts: it is parked at once, and `fire(name)` runs it now (a debounce fired
 // at once), `release(name)` runs it and stops holding; a cancelled one (a debounce called again)
 // leaves the queue. `parked(name)` counts what waits; `releaseAll()` lets go of every hold (the
-// end-to-end test does after each check, so that a failed one leaves nothing held). `events` lists what happened that a check
-// may wait for (`restart`: a frame worker restarted). Other hooks: parts of a frame to fail on
-// purpose (`fail`, see the view's `fail` in wasm/src/frame.rs), the family's swept parameter
-// (`sweep`, a path of the core's sweeps: the frame benchmark's swept family), frames asked
-// without a preview whatever they cost (`noPreview`) or with one (`alwaysPreview`), the next request's preview at the finest
-// level (`finestPreview`), a preview's time in the worker made longer (`previewExtraMs`, so that
-// it counts as slow whatever the machine: the preview-level rule reads the measured time, which
-// only grows), the next refinement paused in its worker after its first unit until
-// `resumeRefinement()` (`pauseRefinement`; the event `refinement paused` says it waits), an input
-// landing just before a frame is drawn (`beforeFrame`), and a canvas's
-// pixels wherever it is drawn (`layers`, set by app.js).
+// end-to-end test does after each check, so that a failed one leaves nothing held). `events`
+// lists what happened that a check may wait for (`restart`: a frame worker restarted;
+// `refinement paused`, see `pauseRefinement`).
+//
+// Other hooks: parts of a frame to fail on purpose (`fail`, see the view's `fail` in
+// wasm/src/frame.rs); the family's swept parameter (`sweep`, a path of the core's sweeps: the
+// frame benchmark's swept family); frames asked without a preview whatever they cost
+// (`noPreview`) or always with one (`alwaysPreview`); the next request's preview at the finest
+// level (`finestPreview`); a preview's time in the worker counted `previewExtraMs` longer (a test
+// clock, no wait: it counts as slow on any machine, and the check reads the time the page read);
+// the next refinement paused in its worker after its first unit, where it would look for a newer
+// request, until `resumeRefinement()` (`pauseRefinement`, once); an input landing just before a
+// frame is drawn (`beforeFrame`); and a canvas's pixels wherever it is drawn (`layers`, set by
+// app.js).
 
 const held = new Map(); // name -> parked entries [{run}], while the name is held
 
