@@ -18,17 +18,10 @@ import { buildCompare } from './compare.js';
 import { intro, showBanner, showNotice, showPartNotes, showWarnings, wireBanner } from './messages.js';
 import { loadHash, writeHash } from './url.js';
 import { chartSvg, curvesCsv, familyCsv, mapCsv, mapSvg, setVersion, wireDownloads } from './downloads.js';
+import { testHooks, testPreview, testView } from './test-hooks.js';
 
-// Exposed for tests and curious users.
+// Exposed for tests and curious users (the test hooks, window.rimeTest: www/test-hooks.js).
 window.rimeState = { ready: false, errors: [] };
-// Test hooks: parts of the frame to fail on purpose (see the view's `fail` in wasm/src/frame.rs),
-// a slow computation (`delayMs`), a slow refinement after the preview (`refineDelayMs`), a slow
-// preview (`previewDelayMs`, counted in the preview's time in the worker; `finestPreview` puts the
-// next request's preview back at the finest level), an input landing just
-// before a frame is drawn (`beforeFrame`) and the family's swept parameter (`sweep`, a path of the
-// core's sweeps; the page offers no choice of it: the frame benchmark's swept family) and frames
-// asked without a preview whatever they cost (`noPreview`).
-window.rimeTest = { fail: [], delayMs: 0, refineDelayMs: 0, previewDelayMs: 0, beforeFrame: null, sweep: null, noPreview: false };
 
 let pending = false;
 
@@ -111,21 +104,17 @@ function request() {
     tidal: app.tidalIn, overlays: [...v.overlays], yLog: v.yScale === 'log', experiments: v.experiments,
     pinned: pinnedForRequest(app.wantScene), date: new Date().toISOString().slice(0, 19) + 'Z',
   };
-  if (window.rimeTest.fail.length) view.fail = [...window.rimeTest.fail];
-  if (window.rimeTest.delayMs > 0) view.testDelayMs = window.rimeTest.delayMs;
-  if (window.rimeTest.refineDelayMs > 0) view.testRefineDelayMs = window.rimeTest.refineDelayMs;
-  if (window.rimeTest.sweep) view.sweep = window.rimeTest.sweep;
+  testView(view);
   const kind = frameKind(app.wantScene, view, app.edited);
   app.edited = '';
   // Main-thread calls across the wasm boundary made for this request (edits since the last one).
   const page = { view: { ...v, overlays: [...v.overlays] }, tidal: app.tidalIn, t0: performance.now(), calls: calls.compute, format: calls.format, kind };
   calls.compute = 0;
   calls.format = 0;
-  if (window.rimeTest.finestPreview) { previewLevel = 0; window.rimeTest.finestPreview = false; }
-  const preview = { ...view, accuracy: 'fast', ...PREVIEWS[previewLevel] };
-  if (window.rimeTest.previewDelayMs > 0) preview.testPreviewMs = window.rimeTest.previewDelayMs;
+  if (testHooks.finestPreview) { previewLevel = 0; testHooks.finestPreview = false; }
+  const preview = testPreview({ ...view, accuracy: 'fast', ...PREVIEWS[previewLevel] });
   const cost = frameCost.get(kind);
-  const quick = window.rimeTest.noPreview || (cost !== undefined && cost <= SLOW_MS);
+  const quick = testHooks.noPreview || (!testHooks.alwaysPreview && cost !== undefined && cost <= SLOW_MS);
   // Whether this request asked for a preview first (the end-to-end test checks the rule).
   window.rimeState.previewAsked = !quick;
   // The newest request (tests wait for its frame: `rimeState.gen === rimeState.asked`).
@@ -284,8 +273,8 @@ function onFrame(msg, req) {
   }
   app.preview = false;
   // Test hook: an input that lands while this (now older) frame was on its way.
-  const racing = window.rimeTest.beforeFrame;
-  if (racing) { window.rimeTest.beforeFrame = null; racing(); }
+  const racing = testHooks.beforeFrame;
+  if (racing) { testHooks.beforeFrame = null; racing(); }
   const res = decode(msg, req.page);
   if (frameCost.size > 200) frameCost.clear();
   if (req.page.kind) frameCost.set(req.page.kind, msg.ms);
@@ -344,11 +333,11 @@ function onFrame(msg, req) {
 
 /** The timing line (in the footer, for developers) is written once the frames pause, as the text
  *  alternatives are: formatting it cost each frame about 0.15 ms of the page's thread. */
-const timingLater = debounced(DESCRIBE_AFTER_MS);
+const timingLater = debounced(DESCRIBE_AFTER_MS, 'timer:describe');
 
 /** How long after the newest frame the secondary cards are computed, if no edit came [ms]. */
 const SECONDARY_AFTER_MS = 100;
-const secondaryLater = debounced(SECONDARY_AFTER_MS);
+const secondaryLater = debounced(SECONDARY_AFTER_MS, 'timer:secondary');
 /** Runs `fn` SECONDARY_AFTER_MS after now unless a request is made meanwhile (request() cancels). */
 function afterEdits(fn) {
   const gen = app.computer.gen;
@@ -622,7 +611,7 @@ window.rimeExports = {
 
 /** Test hook: the pixels of a canvas and of its data layer (`${id}-fg`, when it has one), as
  *  [{width, height, data}], wherever they are drawn. */
-window.rimeTest.layers = async (id) => {
+testHooks.layers = async (id) => {
   if (app.painter && ['chart', 'map', 'eps-t'].includes(id)) return app.painter.pixels(id === 'chart' ? ['chart', 'chart-fg'] : [id]);
   return [id, `${id}-fg`].map((k) => document.getElementById(k)).filter(Boolean)
     .map((c) => ({ width: c.width, height: c.height, data: c.getContext('2d').getImageData(0, 0, c.width, c.height).data }));

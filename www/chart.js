@@ -97,7 +97,7 @@ export function drawChartCanvas(width) {
   readout();
 }
 
-const describeLater = debounced(DESCRIBE_AFTER_MS);
+const describeLater = debounced(DESCRIBE_AFTER_MS, 'timer:describe');
 /** The text alternative follows once the frames pause (it also saves each frame its formatting). */
 function describeSoon() {
   describeLater(() => { if (app.res && app.drawn) describe(app.res); });

@@ -1,5 +1,6 @@
 // The page's side of the workers: posts requests, drops stale answers by generation, and restarts
 // a worker when a newer request waits behind a slow one (a computation cannot be interrupted).
+import { gate, happened, later, testHooks } from './test-hooks.js';
 
 /** How long a running request may hold up a newer one before its worker is restarted [ms]. */
 const RESTART_AFTER_MS = 150;
@@ -37,8 +38,10 @@ class Lane {
   }
 
   spawn() {
-    this.worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
-    this.worker.onmessage = (ev) => this.answer(ev.data);
+    const worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+    this.worker = worker;
+    // (An answer a check holds, www/test-hooks.js, is dropped if its worker was restarted meanwhile.)
+    worker.onmessage = (ev) => gate(answerKind(ev.data), () => { if (this.worker === worker) this.answer(ev.data); });
     this.worker.onerror = (ev) => {
       ev.preventDefault();
       const req = this.running && this.running.req;
@@ -53,6 +56,7 @@ class Lane {
   restart() {
     this.worker.terminate();
     this.restarts++;
+    happened('restart');
     this.spawn();
     this.pump();
   }
@@ -63,7 +67,7 @@ class Lane {
     if (!run) { this.pump(); return; }
     // The running request is stale: if it is slow, drop it with its worker.
     const wait = Math.max(0, RESTART_AFTER_MS - (performance.now() - run.since));
-    setTimeout(() => {
+    later('timer:restart', () => {
       if (this.running === run && this.queued) {
         this.running = null;
         this.restart();
@@ -84,6 +88,7 @@ class Lane {
 
   answer(msg) {
     if (msg.type === 'ready') return;
+    if (msg.type === 'test-paused') { happened('refinement paused'); return; }
     const run = this.running;
     if (msg.type === 'fatal') { this.onMessage({ ...msg, last: true }, run ? run.req : null); return; }
     // A request's last frame frees the worker for the queued one.
@@ -91,6 +96,9 @@ class Lane {
     if (run) this.onMessage(msg, run.req);
   }
 }
+
+/** What a worker's answer is, for a check that holds it (www/test-hooks.js). */
+const answerKind = (msg) => `answer:${msg.type === 'frame' && msg.preview ? 'preview' : msg.type}`;
 
 /** Workers the page computes frames with: one where the browser reports one core; else two, one
  *  for the `fast` previews (and frames asked at `fast`) and one for the refinements, so that a
@@ -137,6 +145,8 @@ export class Computer {
     this.lastWork = 0;
     // Refinements stopped at a unit because a newer request came (no restart needed).
     this.stopped = 0;
+    // A refinement paused for a check (testPauseRefinement in its view) goes on.
+    testHooks.resumeRefinement = () => { for (const lane of this.lanes) lane.worker.postMessage({ type: 'test-resume' }); };
   }
 
   /** Gives the two workers of the pool a channel of their own (again after a restart): a dear
@@ -185,7 +195,7 @@ export class Computer {
         };
         if (HOLD_REFINEMENT) {
           this.held = { gen, post: refine };
-          setTimeout(() => this.release(gen, 'cap'), HOLD_AT_MOST_MS);
+          later('timer:cap', () => this.release(gen, 'cap'), HOLD_AT_MOST_MS);
         } else refine('now');
       }
     } else {
@@ -194,7 +204,7 @@ export class Computer {
       lane.post({ ...req, frames: [final] });
       const other = this.lanes.find((l) => l !== lane);
       if (latePreview && other) {
-        setTimeout(() => {
+        later('timer:late', () => {
           if (this.gen === gen && this.shown < gen) other.post({ ...req, frames: [{ view: latePreview, preview: true }] });
         }, LATE_MS);
       }

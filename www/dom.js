@@ -1,5 +1,6 @@
 // Small DOM helpers shared by the page's modules (no state, no physics).
 import { equationAnchor, physicsUrl } from './core.js';
+import { later } from './test-hooks.js';
 
 export const $ = (id) => document.getElementById(id);
 
@@ -31,15 +32,16 @@ export function setText(e, text) {
 export const DESCRIBE_AFTER_MS = 100;
 
 /** A function that runs the `fn` of its newest call `ms` after that call (earlier ones are
- *  dropped); its `cancel()` drops the one waiting. */
-export function debounced(ms) {
+ *  dropped); its `cancel()` drops the one waiting. `name`: the timer's name for a check that holds
+ *  it (www/test-hooks.js). */
+export function debounced(ms, name) {
   let timer = null;
-  const later = (fn) => {
-    clearTimeout(timer);
-    timer = setTimeout(() => { timer = null; fn(); }, ms);
+  const run = (fn) => {
+    if (timer) timer.cancel();
+    timer = later(name, () => { timer = null; fn(); }, ms);
   };
-  later.cancel = () => { clearTimeout(timer); timer = null; };
-  return later;
+  run.cancel = () => { if (timer) timer.cancel(); timer = null; };
+  return run;
 }
 
 /** A card or list being recomputed greys only once that has lasted this long [ms]: a flash at
@@ -73,7 +75,7 @@ const follows = new WeakMap();
 export function followLater(e, key, write) {
   let f = follows.get(e);
   if (!f) {
-    f = { key: undefined, pending: false, later: debounced(DESCRIBE_AFTER_MS) };
+    f = { key: undefined, pending: false, later: debounced(DESCRIBE_AFTER_MS, 'timer:describe') };
     follows.set(e, f);
   }
   if (key === f.key && !f.pending) return;

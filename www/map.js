@@ -136,7 +136,7 @@ export function drawLegend(res) {
   // box is never laid out alone: writing it laid out the page on every frame).
   describeLater(() => setText($('map-desc'), desc));
 }
-const describeLater = debounced(DESCRIBE_AFTER_MS);
+const describeLater = debounced(DESCRIBE_AFTER_MS, 'timer:describe');
 
 
 function cellAt(ev) {

@@ -29,6 +29,13 @@ const yieldNow = () => new Promise((resolve) => { yielded.push(resolve); yielder
 /** A refinement computes this long between two turns of the event loop [ms] (a cheap frame never
  *  waits for one). */
 const SLICE_MS = 4;
+/** The end-to-end test's pause (www/test-hooks.js `pauseRefinement`): a refinement waits after its
+ *  first unit, as at a turn of the event loop, until the page says `test-resume`. */
+let resumeTest = null;
+const pausedForTest = (gen) => new Promise((resolve) => {
+  resumeTest = resolve;
+  self.postMessage({ type: 'test-paused', gen });
+});
 
 function onPeer(m) {
   if (m.type === 'done') { doneGen = Math.max(doneGen, m.gen); return; }
@@ -53,7 +60,7 @@ function takeShare(gen, waitMs) {
  *  cancelled when the next edit arrives, and the worker keeps its memo); with `split`, the peer's
  *  share, waited for as long as this worker's own units took (computing the rest here takes about
  *  that long); then whatever did not come. The frame `computeFrame` gives, bit for bit. */
-async function refine(gen, scene, view, split) {
+async function refine(gen, scene, view, split, pause) {
   const p = new PendingFrame(scene, view, split ? 2 : 1);
   try {
     const t0 = performance.now();
@@ -61,9 +68,10 @@ async function refine(gen, scene, view, split) {
     // Time spent waiting (turns of the event loop, the peer's share), not computing.
     let waited = 0;
     while (p.runNext()) {
-      if (performance.now() - slice > SLICE_MS) {
+      // (A check's pause, www/test-hooks.js, stands for a long slice: it ends at this turn.)
+      if (pause || performance.now() - slice > SLICE_MS) {
         const tw = performance.now();
-        await yieldNow();
+        if (pause) { pause = false; await pausedForTest(gen); } else await yieldNow();
         waited += performance.now() - tw;
         if (latestGen > gen) return null;
         slice = performance.now();
@@ -114,12 +122,11 @@ async function help(gen, scene, view) {
 let explorer = null; // the collision card's scene (one per worker)
 const ringMemo = { key: '', out: null };
 
-const busyWait = (ms) => { const until = performance.now() + ms; while (performance.now() < until) { /* busy */ } };
 /** An exception's message for the page. */
 const message = (e) => String(e && e.message ? e.message : e);
-/** A view without the end-to-end test's stand-ins (`testDelayMs`, `testRefineDelayMs`,
- *  `testPreviewMs`), and them. */
-const splitTestKeys = ({ testDelayMs, testRefineDelayMs, testPreviewMs, ...view }) => ({ view, testDelayMs, testRefineDelayMs, testPreviewMs });
+/** A view without the end-to-end test's stand-ins (`testPreviewExtraMs`, `testPauseRefinement`;
+ *  www/test-hooks.js), and them. */
+const splitTestKeys = ({ testPreviewExtraMs, testPauseRefinement, ...view }) => ({ view, testPreviewExtraMs, testPauseRefinement });
 
 /** The ring card of `scene` for the inputs `r` over the chart's speeds `chart` ([from, to]),
  *  with the tidal card's planet and distance `tidal` (or null; memoised). */
@@ -152,6 +159,12 @@ self.onmessage = async (ev) => {
     const h = helpLater;
     helpLater = null;
     if (h && h.gen === msg.gen && h.gen >= latestGen && h.gen > doneGen) help(h.gen, h.scene, h.view);
+    return;
+  }
+  if (msg.type === 'test-resume') {
+    const r = resumeTest;
+    resumeTest = null;
+    if (r) r();
     return;
   }
   if (msg.type === 'peer') {
@@ -195,13 +208,9 @@ self.onmessage = async (ev) => {
     const last = k === n - 1;
     const t0 = performance.now();
     try {
-      // The end-to-end test's stand-ins: a slow computation (the worker is busy, the page is
-      // not), a slow refinement (the preview stays on screen) and a slow preview (its time counts).
-      const { view, testDelayMs, testRefineDelayMs, testPreviewMs } = splitTestKeys(full);
-      if (testDelayMs > 0 && (k === 0 || !preview)) busyWait(testDelayMs);
-      if (testRefineDelayMs > 0 && !preview) busyWait(testRefineDelayMs);
+      // The end-to-end test's stand-in: a preview's time counted longer (a test clock, no wait).
+      const { view, testPreviewExtraMs, testPauseRefinement } = splitTestKeys(full);
       const t1 = performance.now();
-      if (testPreviewMs > 0 && preview) busyWait(testPreviewMs);
       // A preview is never exported: it goes without records (issue 26).
       const viewJson = JSON.stringify(preview ? { ...view, records: false } : view);
       let f;
@@ -209,7 +218,7 @@ self.onmessage = async (ev) => {
       let waited = 0;
       if (preview) f = computeFrame(msg.scene, viewJson);
       else {
-        const done = await refine(msg.gen, msg.scene, viewJson, Boolean(split && peer));
+        const done = await refine(msg.gen, msg.scene, viewJson, Boolean(split && peer), Boolean(testPauseRefinement));
         if (!done) {
           self.postMessage({ type: 'frame', gen: msg.gen, preview, last: true, stale: true, ms: performance.now() - t0 });
           return;
@@ -223,7 +232,7 @@ self.onmessage = async (ev) => {
       // read only when a download asks for them (issue 26).
       const records = f.records();
       f.free();
-      const ms = performance.now() - t1;
+      const ms = performance.now() - t1 + (preview && testPreviewExtraMs > 0 ? testPreviewExtraMs : 0);
       // The ring card when it is drawn on the chart (with a preview too); else the page asks.
       let r = null;
       if (msg.ring && msg.ring.onChart) {

@@ -39,16 +39,21 @@ function report(name, ok, detail = '') {
   if (!ok) failures++;
   console.log(`${ok ? 'PASS' : 'FAIL'} ${name}${detail ? ` — ${detail}` : ''}`);
 }
-// `E2E_ONLY=text`: only the checks whose name contains it (while working on them; make test runs all).
+// `E2E_ONLY=text`: only the checks whose name contains it, or one of its `|`-separated parts
+// (while working on them; make test runs all). A check may need an earlier one's page: the main
+// page is opened by the first check, the failure page by 'stick-map auto range'.
 const only = process.env.E2E_ONLY;
 async function check(name, fn) {
-  if (only && !name.includes(only)) return;
+  if (only && !only.split('|').some((part) => name.includes(part))) return;
   try {
     const detail = await fn();
     report(name, true, detail || '');
   } catch (e) {
     report(name, false, String(e && e.stack ? e.stack.split('\n').slice(0, 3).join(' | ') : e));
   }
+  // Whatever a check held (www/test-hooks.js) is let go, so that a failed check leaves no page
+  // holding its events for the next.
+  for (const p of context.pages()) await p.evaluate(() => window.rimeTest && window.rimeTest.releaseAll()).catch(() => {});
 }
 function assert(cond, msg) {
   if (!cond) throw new Error(msg);
@@ -109,9 +114,11 @@ async function openAtPrecise(context, name) {
   }
   return page;
 }
+/** Waits for a frame drawn after `before` frames that is the newest request's (an older request's
+ *  frame may be drawn first, as it comes: the screen follows a drag). */
 async function waitUpdate(page, before) {
   const t0 = Date.now();
-  await page.waitForFunction((b) => window.rimeState.updates > b, before, { timeout: GUARD_MS });
+  await page.waitForFunction((b) => window.rimeState.updates > b && window.rimeState.gen === window.rimeState.asked, before, { timeout: GUARD_MS });
   notedWait('a frame after an edit', t0);
 }
 /** `nudgeE(page, d)`, then waits for the edit's own frame (not only a frame after it). Resolves
@@ -123,6 +130,20 @@ async function stepE(page, d) {
   await page.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
   return asked;
 }
+/** `stepE(page, d)` with the edit's requested frame held at the page until its preview is drawn
+ *  (asked first, or asked late: compute.js LATE_MS), then let go. */
+async function stepPreviewed(page, d) {
+  await noneOnItsWay(page);
+  await hold(page, 'answer:frame');
+  const p0 = await page.evaluate(() => window.rimeState.previews || 0);
+  const u = await updates(page);
+  await nudgeE(page, d);
+  await page.waitForFunction((p) => (window.rimeState.previews || 0) > p, p0, { timeout: GUARD_MS });
+  assert((await updates(page)) === u, 'a frame was drawn while it was held');
+  await release(page, 'answer:frame');
+  await waitUpdate(page, u);
+  await page.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
+}
 /** A new page (watched as `name`) on preset `preset` at `accuracy`, with `query` (`?workers=1`) in
  *  its address, its first frame drawn. */
 async function openPreset(context, name, preset, accuracy, query = '') {
@@ -131,6 +152,29 @@ async function openPreset(context, name, preset, accuracy, query = '') {
   await page.goto(new URL(`${query}#s=${encodeURIComponent(scene)}&v=${encodeURIComponent(JSON.stringify({ accuracy }))}`, url).href, { waitUntil: 'load' });
   await ready(page);
   return page;
+}
+/** Waits for two animation frames of `page`: what a resize or a pointer move queued is drawn by
+ *  then (the page redraws in an animation frame; a media query's change is reported before it). */
+async function settled(page) {
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+}
+/** Sets the viewport of `page` and waits until the page has laid itself out at that width. */
+async function resized(page, width, height) {
+  await page.setViewportSize({ width, height });
+  await page.waitForFunction((w) => window.innerWidth === w, width, { timeout: GUARD_MS });
+  await settled(page);
+}
+/** Waits until the newest request's frame is drawn (none is on its way). */
+async function noneOnItsWay(page) {
+  await page.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
+}
+/** Holds the page's events of `name` (www/test-hooks.js: a worker's answer, a timer). */
+const hold = (page, name) => page.evaluate((n) => window.rimeTest.hold(n), name);
+/** Releases what `hold` parked, in order; resolves with how many events ran. */
+const release = (page, name) => page.evaluate((n) => window.rimeTest.release(n), name);
+/** Waits until `count` events of `name` are parked. */
+async function parked(page, name, count = 1) {
+  await page.waitForFunction(([n, c]) => window.rimeTest.parked(n) >= c, [name, count], { timeout: GUARD_MS });
 }
 /** Number of non-white pixels of a canvas (is anything drawn?); the chart counts both its layers
  *  (background and data canvas, as they are seen on top of each other), read through the page's
@@ -384,6 +428,7 @@ try {
     assert(/0\.006283 N/.test(fs2) && /0\.00628 N ✓/.test(fs2), `πγr row: ${fs2}`);
     const dist = page.locator('#t-distance');
     const err = page.locator('.tparam[data-field="distance"] .err');
+    const askedBefore = await page.evaluate(() => window.rimeState.asked);
     let lastErr = '';
     for (const bad of ['-5 m', 'far', '3 parsecs']) {
       await dist.fill(bad);
@@ -393,7 +438,8 @@ try {
       if (bad === '-5 m') lastErr = e;
       assert((await dist.inputValue()) === bad, 'typed text not kept');
     }
-    await page.waitForTimeout(100);
+    // No request was made for a refused value (an edit's request leaves in a microtask of its event).
+    assert((await page.evaluate(() => window.rimeState.asked)) === askedBefore, 'a frame was asked for after invalid input');
     const t1 = await page.evaluate(() => window.rimeState.tidal);
     assert(t1.input.distance === t0.input.distance && t1.result.d_min === t0.result.d_min, 'distance changed after invalid input');
     const u = await updates(page);
@@ -498,8 +544,7 @@ try {
     // Screenshots with the banner showing.
     await pf.evaluate(() => window.scrollTo(0, 0));
     await pf.screenshot({ path: path.join(outDir, 'www-screenshot-banner.png'), fullPage: true });
-    await pf.setViewportSize({ width: 375, height: 800 });
-    await pf.waitForTimeout(300);
+    await resized(pf, 375, 800);
     await pf.screenshot({ path: path.join(outDir, 'www-screenshot-banner-375.png'), fullPage: true });
     await pf.screenshot({ path: path.join(outDir, 'www-screenshot-banner-375-top.png') });
     await pf.locator('.map-card').screenshot({ path: path.join(outDir, 'www-screenshot-banner-375-map.png') });
@@ -525,51 +570,65 @@ try {
     // The drag's next step lands just before the previous step's frame is drawn (the race a slow
     // drag hits between an answer and the next animation frame's request).
     await slider.evaluate((e, v) => {
-      // The newer step's frame is held 2 s in the worker, so the older frame's drawing is what is read.
-      window.rimeTest.beforeFrame = () => { window.rimeTest.delayMs = 2000; e.value = String(v - 80); e.dispatchEvent(new Event('input', { bubbles: true })); };
+      // The newer step's answers are held at the page until the check has read the slider, so the
+      // older frame's drawing is what is read.
+      window.rimeTest.beforeFrame = () => {
+        window.rimeTest.hold('answer:preview');
+        window.rimeTest.hold('answer:frame');
+        e.value = String(v - 80);
+        e.dispatchEvent(new Event('input', { bubbles: true }));
+      };
       e.value = String(v - 40);
       e.dispatchEvent(new Event('input', { bubbles: true }));
     }, start);
     await pf.waitForFunction((n) => window.rimeState.updates > n, u, { timeout: GUARD_MS });
     const during = Number(await slider.inputValue());
-    await pf.evaluate(() => { window.rimeTest.delayMs = 0; });
-    await pf.waitForFunction((n) => window.rimeState.updates > n + 1, u, { timeout: GUARD_MS });
+    const drawnDuring = await updates(pf);
+    await release(pf, 'answer:preview');
+    await release(pf, 'answer:frame');
+    await pf.waitForFunction((n) => window.rimeState.updates > n + 1 && window.rimeState.gen === window.rimeState.asked, u, { timeout: GUARD_MS });
+    assert(drawnDuring === u + 1, `${drawnDuring - u} frames drawn before the slider was read`);
     const after = Number(await slider.inputValue());
     assert(during === start - 80, `the thumb jumped to ${during} when the older frame arrived (the user put it at ${start - 80})`);
     assert(after === start - 80, `the newest frame moved the thumb to ${after}`);
     return `thumb kept at ${during} while the frame of ${start - 40} was drawn`;
   });
 
-  await check('the worker: during a slow computation (a frame held 20 s in the worker) typing is handled at once; a newer edit supersedes it', async () => {
+  await check('the worker: during a slow computation (a frame held until the check lets it go) typing is handled at once; a newer edit supersedes it', async () => {
     await pf.selectOption('#preset', 'ice-frost');
     await pf.waitForFunction(() => JSON.parse(window.rimeState.sceneJson).layer.thickness === 1e-6, null, { timeout: GUARD_MS });
     await pf.selectOption('[id="p-layer.reading"]', 'literal');
     await pf.selectOption('#accuracy', 'precise');
-    await pf.waitForFunction(() => window.rimeState.view.accuracy === 'precise' && JSON.parse(window.rimeState.sceneJson).layer.reading === 'literal', null, { timeout: GUARD_MS });
+    // (The newest request's frame: none is on its way when the hold starts.)
+    await pf.waitForFunction(() => window.rimeState.gen === window.rimeState.asked && window.rimeState.view.accuracy === 'precise' && JSON.parse(window.rimeState.sceneJson).layer.reading === 'literal', null, { timeout: GUARD_MS });
     const u = await updates(pf);
     // The literal reading with A from viscosities used to take a minute per frame; it is fast now
-    // (issue 10), so the test holds the worker busy on purpose.
-    await pf.evaluate(() => { window.rimeTest.delayMs = 20000; });
+    // (issue 10), so the check keeps the frame's worker busy on purpose: its answer is held at the
+    // page (www/test-hooks.js), which keeps the worker busy for the page as a slow computation would.
+    await hold(pf, 'answer:frame');
+    const restarts0 = await pf.evaluate(() => window.rimeTest.events.filter((e) => e === 'restart').length);
     await pf.selectOption('#damping-form', 'viscosities');
-    await pf.waitForTimeout(400);
+    await parked(pf, 'answer:frame');
     const density = pf.locator('[id="p-grains.density"]');
     const t0 = Date.now();
     await density.fill('917');
     const shown = await density.inputValue();
     const dt = Date.now() - t0;
     const still = await updates(pf);
-    const busy = await pf.locator('#timing').evaluate((e) => e.classList.contains('busy'));
-    assert(still === u, 'the slow frame already arrived: pick a slower scene for this check');
-    // The value shows while the slow frame is still on its way (held for 20 s on purpose): the
-    // order is the check; the time it took is only reported.
+    // The page says it is computing (at once with a preview on screen, else after 120 ms).
+    await pf.waitForFunction(() => document.getElementById('timing').classList.contains('busy'), null, { timeout: GUARD_MS });
+    assert(still === u, 'the slow frame was drawn although it was held');
+    // The value shows while the slow frame is still on its way: the order is the check; the time
+    // it took is only reported.
     assert(shown === '917', `typed value not shown while the worker computed: "${shown}"`);
-    assert(busy, 'the page does not say it is computing');
-    // Newer edits supersede the slow request (the worker restarts) and are drawn promptly.
-    await pf.evaluate(() => { window.rimeTest.delayMs = 0; });
+    // Newer edits supersede the slow request: its worker is restarted (its answer dropped with
+    // it), and they are drawn.
     await density.press('Enter');
     await pf.selectOption('[id="p-layer.reading"]', 'offset');
     await pf.selectOption('#damping-form', 'time');
     await pf.selectOption('#accuracy', 'fast');
+    await pf.waitForFunction((n) => window.rimeTest.events.filter((e) => e === 'restart').length > n, restarts0, { timeout: GUARD_MS });
+    await release(pf, 'answer:frame');
     await pf.waitForFunction(() => {
       const s = window.rimeState;
       const sc = JSON.parse(s.sceneJson);
@@ -761,20 +820,30 @@ try {
 
   await check('issue 26: with one frame worker (a one-core browser), edits during a refinement stop it without a restart, and the last edit\'s frame is `rime curve`\'s', async () => {
     const p1 = await openPreset(context, 'one-worker', 'ice-sticky', 'integrated', '?workers=1');
-    // Three edits 15 ms apart: each refinement at `integrated` takes longer than that.
-    await p1.evaluate(() => new Promise((resolve) => {
+    // The first edit's refinement pauses in the worker after its first unit (www/test-hooks.js);
+    // two more edits are made while it waits, then it goes on. The worker restart the page makes
+    // when a request holds up a newer one for RESTART_AFTER_MS is held: on a busy machine the
+    // preview before the refinement may take that long, and the check is about the refinement.
+    await hold(p1, 'timer:restart');
+    const paused = () => p1.evaluate(() => window.rimeTest.events.filter((e) => e === 'refinement paused').length);
+    const paused0 = await paused();
+    const edit = () => p1.evaluate(() => new Promise((resolve) => {
       const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
-      let k = 0;
-      const edit = () => {
-        e.value = String(Number(e.value) + 9);
-        e.dispatchEvent(new Event('input', { bubbles: true }));
-        if (++k < 3) setTimeout(edit, 15); else resolve();
-      };
-      edit();
+      e.value = String(Number(e.value) + 9);
+      e.dispatchEvent(new Event('input', { bubbles: true }));
+      queueMicrotask(resolve); // after the edit's request left
     }));
+    await p1.evaluate(() => { window.rimeTest.pauseRefinement = true; });
+    await edit();
+    await p1.waitForFunction((n) => window.rimeTest.events.filter((e) => e === 'refinement paused').length > n, paused0, { timeout: GUARD_MS });
+    await edit();
+    await edit();
+    await p1.evaluate(() => window.rimeTest.resumeRefinement());
     // The frame drawn is the last edit's (`asked`: the newest request; older ones stopped or dropped).
     await p1.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
-    const s = await p1.evaluate(() => ({ csv: window.rimeExports.curvesCsv(), scene: window.rimeState.sceneJson, view: window.rimeState.view, n: window.rimeState.g.length, restarts: window.rimeState.workerRestarts, stopped: window.rimeState.refinementsStopped, workers: window.rimeState.workers }));
+    // The restarts held meanwhile run now: none is needed (the requests they were for are done).
+    await release(p1, 'timer:restart');
+    const s = await p1.evaluate(() => ({ csv: window.rimeExports.curvesCsv(), scene: window.rimeState.sceneJson, view: window.rimeState.view, n: window.rimeState.g.length, restarts: window.rimeTest.events.filter((e) => e === 'restart').length, stopped: window.rimeState.refinementsStopped, workers: window.rimeState.workers }));
     assert(s.workers === 1, `a pool of ${s.workers}`);
     assert(s.stopped >= 1 && s.restarts === 0, `${s.stopped} refinements stopped, ${s.restarts} worker restarts (a stale refinement should stop by itself)`);
     const sceneFile = path.join(os.tmpdir(), `rime-e2e-one-${process.pid}.json`);
@@ -783,6 +852,7 @@ try {
     fs.rmSync(sceneFile);
     const page = s.csv.split('\n').filter((l) => !l.startsWith('#')).join('\n');
     assert(page === cli, 'the refined frame differs from rime curve');
+    assert((await paused()) === paused0 + 1, 'a refinement paused that was not asked to');
     await p1.close();
     return `one worker: ${s.stopped} stale refinements stopped, ${s.restarts} restarts; ${cli.split('\n').length - 2} records identical`;
   });
@@ -976,8 +1046,7 @@ try {
     const v1 = await runAxe(p);
     await p.evaluate(() => document.querySelectorAll('details').forEach((d) => { d.open = true; }));
     const v2 = await runAxe(p);
-    await p.setViewportSize({ width: 375, height: 700 });
-    await p.waitForTimeout(200);
+    await resized(p, 375, 700);
     const v3 = await runAxe(p);
     // The dark theme (issue 22) keeps every contrast: the same audit with the system set to dark.
     await p.emulateMedia({ colorScheme: 'dark' });
@@ -1003,10 +1072,9 @@ try {
       return { g: (t.match(/g_N = ([^·]+)/) || [])[1], previews: window.rimeState.previews || 0 };
     });
     const start = await at();
-    // A quick refinement needs no preview; held up 40 ms in the worker, each edit's is late and
-    // gets one (compute.js LATE_MS).
-    await pc.evaluate(() => { window.rimeTest.refineDelayMs = 40; });
-    for (let k = 0; k < 4; k++) await stepE(pc, 17 + k);
+    // A quick refinement needs no preview; held at the page, each edit's is late and gets one
+    // (compute.js LATE_MS).
+    for (let k = 0; k < 4; k++) await stepPreviewed(pc, 17 + k);
     const end = await at();
     await pc.close();
     assert(start.g && end.g === start.g && end.previews > start.previews, `cursor at g_N ${start.g} → ${end.g} after ${end.previews - start.previews} previews`);
@@ -1015,22 +1083,22 @@ try {
 
   await check('issue 26: previews get coarser while they are slow (over 5 ms in the worker), at once to the finest level whose time scaled by its points is within 5 ms, never below 16 points', async () => {
     const pv = await openAtPrecise(context, 'coarser');
-    // Each refinement held up 40 ms (late: its preview is asked after 12 ms, compute.js LATE_MS),
-    // each preview 10 ms (counted in its time in the worker, so slower than 5 ms).
-    // From the finest level (the page's first previews may have moved it already).
-    await pv.evaluate(() => { window.rimeTest.refineDelayMs = 40; window.rimeTest.previewDelayMs = 10; window.rimeTest.finestPreview = true; });
+    // Each refinement held at the page until its preview is drawn (late: its preview is asked after
+    // 12 ms, compute.js LATE_MS), each preview's time in the worker counted 10 ms longer (a test
+    // clock: slower than 5 ms whatever the machine; the rule reads the measured time, which the
+    // check reads too). From the finest level (the page's first previews may have moved it already).
+    await pv.evaluate(() => { window.rimeTest.previewExtraMs = 10; window.rimeTest.finestPreview = true; });
     const levels = [121, 61, 31, 16];
     const seen = [];
     for (let k = 0; k < 6; k++) {
       const p0 = await pv.evaluate(() => window.rimeState.previews || 0);
-      await stepE(pv, 3 + k);
+      await stepPreviewed(pv, 3 + k);
       const s = await pv.evaluate(() => ({ n: window.rimeState.previews || 0, points: window.rimeState.previewPoints, ms: window.rimeState.previewWorkerMs }));
       if (s.n > p0) seen.push(s);
     }
-    await pv.evaluate(() => { window.rimeTest.refineDelayMs = 0; window.rimeTest.previewDelayMs = 0; });
     await pv.close();
     const text = seen.map((x) => `${x.points} (${x.ms.toFixed(1)} ms)`).join(', ');
-    assert(seen.length >= 5, `only ${seen.length} previews in 6 edits whose refinements were held up 40 ms: ${text}`);
+    assert(seen.length === 6, `only ${seen.length} previews in 6 edits whose refinements were held: ${text}`);
     assert(seen[0].points === 121, `the first preview after finestPreview had ${seen[0].points} points: ${text}`);
     for (let k = 1; k < seen.length; k++) {
       const [a, b] = [seen[k - 1], seen[k]];
@@ -1050,28 +1118,43 @@ try {
   await check('issue 26: on fewer than four cores a refinement after a preview is posted once the preview is on screen, or by the 40 ms cap (and at once with ?hold=0)', async () => {
     const seen = [];
     let cores = 0;
+    const posted = (q) => q.evaluate(() => ({ gen: window.rimeState.asked, posted: window.rimeState.refinementPosted, drawn: window.rimeState.previewDrawnAt, workers: window.rimeState.workers }));
     for (const query of ['', '?hold=0']) {
       const ph = await openPreset(context, `hold${query}`, 'ice', 'integrated', query);
       cores = await ph.evaluate(() => navigator.hardwareConcurrency);
+      const want = query === '' && cores < 4;
+      // Every edit asks for a preview first (the rule has its own check), and the 40 ms cap
+      // (compute.js HOLD_AT_MOST_MS) is held: a held refinement can only be released by its preview.
+      await ph.evaluate(() => { window.rimeTest.alwaysPreview = true; });
+      await hold(ph, 'timer:cap');
       for (let k = 0; k < 3; k++) {
-        const asked = await stepE(ph, 3 + k);
-        const r = await ph.evaluate(() => ({ gen: window.rimeState.asked, posted: window.rimeState.refinementPosted, drawn: window.rimeState.previewDrawnAt, workers: window.rimeState.workers }));
-        // At `integrated` on ice every frame is dear: a preview first (the rule has its own check).
-        if (!asked || r.workers !== 2) continue;
+        await stepE(ph, 3 + k);
+        const r = await posted(ph);
+        assert(r.workers === 2, `a pool of ${r.workers} on ${cores} cores`);
         assert(r.posted && r.posted.gen === r.gen, `the refinement of request ${r.gen} was not recorded as posted (${JSON.stringify(r.posted)})`);
-        const want = query === '' && cores < 4;
         const after = (r.posted.at - r.drawn).toFixed(1);
-        // Held: posted once the preview is on screen (after it was drawn), or by the 40 ms cap
-        // (compute.js HOLD_AT_MOST_MS) when the preview is not on screen by then; else at once.
-        if (want) assert(r.posted.by === 'cap' || (r.posted.by === 'preview' && r.posted.at >= r.drawn), `default on ${cores} cores: the refinement was posted (${r.posted.by}) ${after} ms after the preview was drawn`);
+        // Held: posted once the preview is on screen (after it was drawn); else at once.
+        if (want) assert(r.posted.by === 'preview' && r.posted.at >= r.drawn, `default on ${cores} cores: the refinement was posted (${r.posted.by}) ${after} ms after the preview was drawn`);
         else assert(r.posted.by === 'now' && r.posted.at < r.drawn, `${query || 'default'} on ${cores} cores: the refinement was posted (${r.posted.by}) ${after} ms after the preview was drawn`);
         seen.push(`${query || 'default'}: ${r.posted.by}, ${after} ms`);
       }
+      if (want) {
+        // The cap: with the preview's answer held, the refinement waits until the cap's timer
+        // runs (the check runs it), and is posted by it before any preview is drawn.
+        await hold(ph, 'answer:preview');
+        const p0 = await ph.evaluate(() => window.rimeState.previews);
+        const asked = await nudgeE(ph, 7);
+        await parked(ph, 'answer:preview');
+        await ph.evaluate(() => window.rimeTest.fire('timer:cap'));
+        await ph.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
+        const r = await posted(ph);
+        const p1 = await ph.evaluate(() => window.rimeState.previews);
+        await release(ph, 'answer:preview');
+        assert(asked && r.posted.gen === r.gen && r.posted.by === 'cap' && p1 === p0, `with the preview held, the refinement was posted by ${r.posted.by} (${p1 - p0} previews drawn)`);
+        seen.push('default, preview held: cap');
+      }
       await ph.close();
     }
-    assert(seen.length >= 4, `too few edits with a preview on two workers: ${seen.join(', ')}`);
-    // On this machine at least one preview is on screen within the cap (each takes a few ms).
-    if (cores < 4) assert(seen.some((x) => x.startsWith('default: preview')), `no held refinement was released by its preview: ${seen.join(', ')}`);
     return `refinement posted relative to the preview drawn: ${seen.join(', ')}`;
   });
 
@@ -1098,85 +1181,73 @@ try {
     await pq.waitForFunction(() => window.rimeState.gen === window.rimeState.asked, null, { timeout: GUARD_MS });
     const other = await step(4);
     assert(other.asked === true, 'the first edit of E at integrated asked for no preview');
-    // Back to the quick kind, the refinement held up 300 ms: whether asked at once or, late, after
-    // 12 ms, a preview is drawn before the refined frame.
+    // Back to the quick kind, the refinement held at the page: whether asked at once or, late,
+    // after 12 ms, a preview is drawn before the refined frame.
     await pq.selectOption('#accuracy', 'precise');
     await pq.waitForFunction(() => window.rimeState.gen === window.rimeState.asked && window.rimeState.view.accuracy === 'precise', null, { timeout: GUARD_MS });
     await step(6);
-    await pq.evaluate(() => { window.rimeTest.refineDelayMs = 300; });
+    await hold(pq, 'answer:frame');
     const u2 = await updates(pq);
     const p2 = await pq.evaluate(() => window.rimeState.previews || 0);
     const asked = await nudgeE(pq, 9);
     await pq.waitForFunction((p) => (window.rimeState.previews || 0) > p, p2, { timeout: GUARD_MS });
     assert((await updates(pq)) === u2, 'the refined frame came before the preview');
-    await pq.evaluate(() => { window.rimeTest.refineDelayMs = 0; });
+    await release(pq, 'answer:frame');
     await waitUpdate(pq, u2);
     await pq.close();
-    return `E at precise: ${seen.join(', ')}; at integrated: preview; held up 300 ms: preview ${asked ? 'asked at once' : 'asked late'}`;
+    return `E at precise: ${seen.join(', ')}; at integrated: preview; refinement held: preview ${asked ? 'asked at once' : 'asked late'}`;
   });
 
   await check('issue 26: with no preview, an older edit\'s frame newer than the screen is drawn as it comes (the screen follows a drag)', async () => {
-    // One worker, so the edits queue behind each other; each refinement held up 60 ms in the worker
-    // and asked without a preview (on a busy machine a frame may take over 8 ms and get one). At
-    // `fast` (under a millisecond of compute): a refinement that computes longer than SLICE_MS
-    // (worker.js) yields, sees the newer edits and stops as stale, and at `precise` on a busy
-    // machine the first edit's did (a fresh clone's make test drew only the last frame).
+    // One worker, so the edits queue behind each other; frames asked without a preview. The first
+    // edit's frame is computed and held at the page (www/test-hooks.js), so its worker is busy
+    // for the page; two more edits are made meanwhile (the second waits in the queue and the
+    // third replaces it); the restart of a worker held up by a stale request is held too. Then the
+    // first frame is let go: it is older than the newest request and newer than the screen.
     const pd = await openPreset(context, 'follow', 'ice-sticky', 'fast', '?workers=1');
     // Two edits of E first, so that the kind's cost is known.
     for (const d of [3, 4]) await stepE(pd, d);
-    const out = await pd.evaluate(() => new Promise((resolve) => {
-      window.rimeTest.refineDelayMs = 60;
+    await pd.evaluate(() => {
       window.rimeTest.noPreview = true;
-      const s = window.rimeState;
-      const drawn = [];
-      const onDrawn = (ev) => {
-        drawn.push(ev.detail.preview ? `preview ${ev.detail.gen}` : ev.detail.gen);
-        if (ev.detail.preview) return;
-        if (ev.detail.gen === asked[2]) { window.removeEventListener('rime:drawn', onDrawn); Object.assign(window.rimeTest, { refineDelayMs: 0, noPreview: false }); resolve({ drawn, asked, previews: s.previews }); }
-      };
-      window.addEventListener('rime:drawn', onDrawn);
+      window.drawnForCheck = [];
+      window.addEventListener('rime:drawn', (ev) => window.drawnForCheck.push(ev.detail.preview ? `preview ${ev.detail.gen}` : ev.detail.gen));
+    });
+    await hold(pd, 'answer:frame');
+    await hold(pd, 'timer:restart');
+    const edit = () => pd.evaluate(() => new Promise((resolve) => {
       const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
-      const asked = [];
-      const step = (k) => {
-        e.value = String(Number(e.value) + 5);
-        e.dispatchEvent(new Event('input', { bubbles: true }));
-        queueMicrotask(() => { asked.push(s.asked); if (k < 2) setTimeout(() => step(k + 1), 10); });
-      };
-      step(0);
+      e.value = String(Number(e.value) + 5);
+      e.dispatchEvent(new Event('input', { bubbles: true }));
+      queueMicrotask(() => resolve(window.rimeState.asked)); // after the edit's request left
     }));
+    const asked = [await edit()];
+    await parked(pd, 'answer:frame');
+    asked.push(await edit(), await edit());
+    await release(pd, 'answer:frame');
+    await pd.waitForFunction((g) => window.rimeState.gen === g, asked[2], { timeout: GUARD_MS });
+    const drawn = await pd.evaluate(() => window.drawnForCheck);
+    await release(pd, 'timer:restart');
     await pd.close();
-    const [g1, , g3] = out.asked;
-    assert(out.drawn[0] === g1 && out.drawn.at(-1) === g3, `edits ${out.asked.join(', ')}: frames drawn ${out.drawn.join(', ')}`);
-    return `edits ${out.asked.join(', ')} (one worker, the second dropped in the queue): frames drawn ${out.drawn.join(', ')}`;
+    const [g1, , g3] = asked;
+    assert(drawn.length === 2 && drawn[0] === g1 && drawn[1] === g3, `edits ${asked.join(', ')}: frames drawn ${drawn.join(', ')}`);
+    return `edits ${asked.join(', ')} (one worker, the second dropped in the queue): frames drawn ${drawn.join(', ')}`;
   });
 
   await check('issue 26: the map legend\'s shares are marked busy while edits stream and are the newest frame\'s once they pause', async () => {
     const pl = watch(await context.newPage(), 'legend');
     await pl.goto(url, { waitUntil: 'load' });
     await ready(pl);
-    // Whether the legend is marked busy at any time from the first edit until its shares are
-    // written (a busy machine may draw no frame before the last edit); the first frame's shares
-    // written first.
+    // The legend's shares of the first frame written first; then the text alternatives' timer
+    // (dom.js DESCRIBE_AFTER_MS) is held while edits stream, each edit's frame drawn: the legend
+    // is marked busy and keeps what it wrote; the held timer is then run (the edits paused).
     await pl.waitForFunction(() => document.getElementById('legend').getAttribute('aria-busy') === 'false', null, { timeout: GUARD_MS });
-    await pl.evaluate(() => {
-      const legend = document.getElementById('legend');
-      window.legendBusySeen = false;
-      new MutationObserver(() => { if (legend.getAttribute('aria-busy') === 'true') window.legendBusySeen = true; })
-        .observe(legend, { attributes: true, attributeFilter: ['aria-busy'] });
-    });
-    await pl.evaluate(() => new Promise((resolve) => {
-      const e = document.querySelector('input[type=range][data-path="bulk.youngs_modulus"]');
-      let n = 0;
-      const tick = () => {
-        e.value = String(Number(e.value) + (n % 2 ? 3 : -2));
-        e.dispatchEvent(new Event('input', { bubbles: true }));
-        if (++n < 12) setTimeout(tick, 16);
-        else resolve();
-      };
-      tick();
-    }));
-    await pl.waitForFunction(() => window.rimeState.gen === window.rimeState.asked && window.legendBusySeen && document.getElementById('legend').getAttribute('aria-busy') === 'false', null, { timeout: GUARD_MS }).catch(() => {});
-    const out = await pl.evaluate(() => window.legendBusySeen);
+    const shownBefore = await pl.evaluate(() => [...document.querySelectorAll('#legend .count')].map((c) => c.textContent).join(' '));
+    await hold(pl, 'timer:describe');
+    for (let k = 0; k < 6; k++) await stepE(pl, k % 2 ? 3 : -2);
+    const during = await pl.evaluate(() => ({ busy: document.getElementById('legend').getAttribute('aria-busy'), shown: [...document.querySelectorAll('#legend .count')].map((c) => c.textContent).join(' ') }));
+    await release(pl, 'timer:describe');
+    await pl.waitForFunction(() => document.getElementById('legend').getAttribute('aria-busy') === 'false', null, { timeout: GUARD_MS });
+    const out = during.busy === 'true' && during.shown === shownBefore;
     const got = await pl.evaluate(() => {
       const codes = window.rimeState.mapClasses;
       const n = document.querySelectorAll('#legend .count').length;
@@ -1185,14 +1256,14 @@ try {
       return { shares: counts.map((k) => (100 * k) / codes.length), shown: [...document.querySelectorAll('#legend .count')].map((c) => c.textContent) };
     });
     await pl.close();
-    assert(out, 'the legend was never marked busy while the edits streamed');
+    assert(out, `while the edits streamed the legend was marked aria-busy=${during.busy} and showed "${during.shown}" (before: "${shownBefore}")`);
     // Each share as shown ("(21.8 %)", three significant digits) against the frame's own classes.
     const bad = got.shares.map((x, k) => [x, got.shown[k]]).filter(([x, t]) => {
       const v = Number((t.match(/\(([^ ]+) %\)/) || [])[1]);
       return !(Number.isFinite(v) && Math.abs(v - x) <= 6e-3 * x + 1e-12);
     });
     assert(bad.length === 0, `shares shown vs the frame's: ${JSON.stringify(bad)}`);
-    return `marked busy while 12 edits streamed; then ${got.shown.join(' ')}, the newest frame's`;
+    return `marked busy while 6 edits streamed; then ${got.shown.join(' ')}, the newest frame's`;
   });
 
   await check('issue 12 item 18: readouts follow the drawn scene at the chosen level; greyed sliders disabled; tidal inputs in the link; one bad field named, the rest kept; huge numbers stay short; speed fields take units', async () => {
@@ -1389,8 +1460,9 @@ try {
       await page.selectOption('#accuracy', 'precise');
       await page.waitForFunction(() => window.rimeState.view.accuracy === 'precise', null, { timeout: GUARD_MS });
     }
-    // The refinement is held up 3 s in the worker, so the preview is on screen while we look.
-    await page.evaluate(() => { window.rimeTest.refineDelayMs = 3000; });
+    // The refinement is held at the page (www/test-hooks.js), so the preview is on screen while we look.
+    await noneOnItsWay(page);
+    await hold(page, 'answer:frame');
     const u = await updates(page);
     const p0 = await page.evaluate(() => window.rimeState.previews || 0);
     let downloads = 0;
@@ -1412,6 +1484,7 @@ try {
       const inkPreview = await inked(page, 'chart');
       await page.locator('#chart').screenshot({ path: path.join(outDir, 'www-preview-26.png') });
       await page.click('#dl-curves'); // refused: a preview is on screen
+      await release(page, 'answer:frame');
       await waitUpdate(page, u);
       await page.locator('#chart').screenshot({ path: path.join(outDir, 'www-refined-26.png') });
       const inkRefined = await inked(page, 'chart');
@@ -1422,7 +1495,7 @@ try {
       assert(downloads === 0, 'a download was made from the preview');
     } finally {
       page.off('download', counted);
-      await page.evaluate(() => { window.rimeTest.refineDelayMs = 0; });
+      await release(page, 'answer:frame');
     }
     const [dl] = await Promise.all([page.waitForEvent('download', { timeout: GUARD_MS }), page.click('#dl-curves')]);
     assert(/rime-curve\.csv/.test(dl.suggestedFilename()), dl.suggestedFilename());
@@ -1461,8 +1534,9 @@ try {
         await q.waitForFunction(() => /^g_N = /.test(document.getElementById('chart-readout').textContent), null, { timeout: GUARD_MS });
         await agrees(await readout(), 'precise');
         const inkBefore = await inked(q, 'chart');
-        // A held-up refinement keeps the preview on screen.
-        await q.evaluate(() => { window.rimeTest.refineDelayMs = 2000; });
+        // A refinement held at the page keeps the preview on screen.
+        await noneOnItsWay(q);
+        await hold(q, 'answer:frame');
         const u = await updates(q);
         const p0 = await q.evaluate(() => window.rimeState.previews || 0);
         await nudgeE(q, 5);
@@ -1472,8 +1546,8 @@ try {
         const inkPreview = await inked(q, 'chart');
         const mapPreview = await inked(q, 'map');
         await q.locator('#chart').screenshot({ path: path.join(outDir, `www-preview-26-${mode}.png`) });
+        await release(q, 'answer:frame');
         await waitUpdate(q, u);
-        await q.evaluate(() => { window.rimeTest.refineDelayMs = 0; });
         await agrees(await readout(), 'precise');
         const inkRefined = await inked(q, 'chart');
         const mapRefined = await inked(q, 'map');
@@ -1518,14 +1592,14 @@ try {
     await page.evaluate(() => window.scrollTo(0, 0));
     const box = await page.locator('#chart').boundingBox();
     await page.mouse.move(box.x + box.width * 0.6, box.y + box.height * 0.5);
-    await page.waitForTimeout(100);
+    await page.waitForFunction(() => /^g_N = /.test(document.getElementById('chart-readout').textContent), null, { timeout: GUARD_MS });
+    await settled(page);
     await page.screenshot({ path: path.join(outDir, 'www-screenshot.png'), fullPage: true });
-    await page.waitForTimeout(300);
     const p4 = watch(await context.newPage(), 'narrow');
     await p4.setViewportSize({ width: 375, height: 800 });
     await p4.goto(page.url(), { waitUntil: 'load' });
     await ready(p4);
-    await p4.waitForTimeout(200);
+    await settled(p4);
     const overflow = await p4.evaluate(() => document.documentElement.scrollWidth);
     const ink = await inked(p4, 'chart');
     // Every card takes the phone's width (the map card shrank to an 18 px column).
@@ -1711,9 +1785,10 @@ try {
     for (let k = 1; k <= 30; k++) await q.mouse.move(box.x + box.width * (0.3 + 0.4 * k / 30), box.y + box.height / 2);
     await q.mouse.up();
     const dragMs = Date.now() - t0;
-    // Until the last edit's frame and the collision that follows it are drawn.
-    await q.waitForFunction(() => !window.rimeState.busy && document.getElementById('busy').hidden, null, { timeout: GUARD_MS }).catch(() => {});
-    await q.waitForTimeout(1500);
+    // Until the last edit's frame and the collision that follows it (the edits paused) are drawn.
+    await q.waitForFunction(() => window.rimeState.gen === window.rimeState.asked && document.getElementById('busy').hidden, null, { timeout: GUARD_MS });
+    // (The collision card is aria-busy from an edit until the replay of the drawn scene arrives.)
+    await q.waitForFunction(() => document.getElementById('collision-card').getAttribute('aria-busy') === 'false', null, { timeout: GUARD_MS });
     const d = await q.evaluate(() => ({ long: window.__long, collisionMs: window.rimeState.collision && window.rimeState.collision.ms, frames: window.rimeState.updates }));
     await cdp.send('Emulation.setCPUThrottlingRate', { rate: 1 });
     await q.close();

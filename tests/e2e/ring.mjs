@@ -49,7 +49,7 @@ page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); }
 page.on('pageerror', (e) => problems.push(e.message));
 const updates = () => page.evaluate(() => window.rimeState.updates);
 // A frame drawn and its ring card in (issue 26: the card is computed once the frame is on screen).
-const waitUpdate = (before) => page.waitForFunction((b) => window.rimeState.updates > b && window.rimeState.ringOf === window.rimeState.gen, before, { timeout: GUARD_MS });
+const waitUpdate = (before) => page.waitForFunction((b) => window.rimeState.updates > b && window.rimeState.gen === window.rimeState.asked && window.rimeState.ringOf === window.rimeState.gen, before, { timeout: GUARD_MS });
 
 /** Types τ into the ring card and presses Enter (a refused value draws no frame: no wait here). */
 async function enterTau(value) {
@@ -167,8 +167,12 @@ try {
     const u = await updates();
     await enterTau('0.3');
     await waitUpdate(u);
-    // The link is written once the edits have stopped (about a second).
-    await page.waitForFunction(() => /(^|&)r=/.test(location.hash.slice(1)), null, { timeout: GUARD_MS });
+    // The link is written once the edits have stopped (about a second): wait for the one with this
+    // τ (the link of the τ before may be there still).
+    await page.waitForFunction(() => {
+      const r = new URLSearchParams(location.hash.slice(1)).get('r');
+      return r !== null && JSON.parse(r).tau === 0.3;
+    }, null, { timeout: GUARD_MS });
     const link = await page.evaluate(() => location.href);
     const before = await page.evaluate(() => window.rimeState.ring.record);
     const again = await context.newPage();
