@@ -50,6 +50,12 @@ export const speed = (v, digits = 3) => qty(v, 'm/s', digits);
 export const shortest = (v) => cached(`r|${num(v)}`, () => wasm.fmtShortest(num(v)));
 /** The value a user edits (no float noise, SI prefix where the unit takes one). */
 export const editable = (v, unit) => cached(`e|${unit}|${num(v)}`, () => wasm.fmtEditable(num(v), unit));
+/** The core's ticks of an axis (`Axis::ticks`, as the terminal and the exported figures draw them):
+ *  {values, labels} with `null` for a minor tick. */
+export const axisTicks = (min, max, log, maxLabels) => cached(`t|${min}|${max}|${log}|${maxLabels}`, () => {
+  const [values, labels] = JSON.parse(wasm.axisTicks(min, max, log, maxLabels));
+  return { values, labels };
+});
 /** The label of the decade 10^k on a log axis. */
 export const decade = (k) => cached(`d|${k}`, () => wasm.fmtDecade(k));
 /** The significant digits a printed number has. */

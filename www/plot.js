@@ -2,7 +2,7 @@
 // download), so that a download shows what the screen shows. Colours and labels come in the
 // description (the core's palette and formatters); this module has none of its own.
 // Coordinates are CSS pixels; the canvas painter scales by devicePixelRatio.
-import { decade, qty, sig } from './core.js';
+import { axisTicks, qty, sig } from './core.js';
 
 const FONT = 'system-ui, -apple-system, "Segoe UI", Roboto, sans-serif';
 const INK = '#222222';
@@ -264,46 +264,30 @@ export function drawChartBack(p, spec, g = chartGeometry(p, spec)) {
     else p.line([[e.x, y], [e.x + 30, y]], { color: e.color, width: Math.max(1.5, e.width || 1.5), dash: e.dash });
     e.lines.forEach((line, k) => p.text(e.x + 36, y + 4 + k * 14, line, { size: 11 }));
   }));
-  // x: decades at their values, minor ticks at 2…9 × 10^k; labels thinned to fit.
+  // x and y: the core's ticks (the terminal and the exported SVG/PNG draw the same), as many
+  // labels as fit; a labelled tick carries a grid line, a minor one a short mark.
   const decadesX = lx[1] - lx[0];
-  const stepX = Math.max(1, Math.ceil(46 / ((box.r - box.l) / Math.max(decadesX, 1e-9))));
-  for (let k = Math.floor(lx[0]); k <= Math.ceil(lx[1]); k++) {
-    for (let m = 2; m < 10; m++) {
-      const v = m * 10 ** k;
-      if (v > spec.xMin && v < spec.xMax) { const xm = X(v); p.line([[xm, box.b], [xm, box.b - 4]], { color: TICK }); }
-    }
-    const v = 10 ** k;
-    if (v < spec.xMin * (1 - 1e-9) || v > spec.xMax * (1 + 1e-9)) continue;
+  const xt = axisTicks(spec.xMin, spec.xMax, true, Math.max(2, Math.floor((box.r - box.l) / 46)));
+  xt.values.forEach((v, i) => {
     const x = X(v);
+    if (xt.labels[i] === null) { p.line([[x, box.b], [x, box.b - 4]], { color: TICK }); return; }
     p.line([[x, box.t], [x, box.b]], { color: GRID });
     p.line([[x, box.b], [x, box.b + 5]], { color: AXIS });
-    if (((k % stepX) + stepX) % stepX === 0) p.text(x, box.b + 17, decade(k), { size: 11, align: 'center' });
-  }
+    p.text(x, box.b + 17, xt.labels[i], { size: 11, align: 'center' });
+  });
   if (decadesX < 1.5) {
     // Less than two decades in view: label the edges too, so that the scale can be read.
     p.text(box.l, box.b + 30, qty(spec.xMin, 'm/s', 3), { size: 10, align: 'left', color: '#555' });
     p.text(box.r, box.b + 30, qty(spec.xMax, 'm/s', 3), { size: 10, align: 'right', color: '#555' });
   }
-  if (log) {
-    const stepY = Math.max(1, Math.ceil(18 / ((box.b - box.t) / (ly[1] - ly[0]))));
-    for (let k = Math.ceil(ly[0] - 1e-9); k <= ly[1] + 1e-9; k++) {
-      const y = Y(10 ** k);
-      p.line([[box.l, y], [box.r, y]], { color: GRID });
-      for (let m = 2; m < 10 && k + Math.log10(m) < ly[1]; m++) {
-        const ym = Y(m * 10 ** k);
-        if (ym < box.b) p.line([[box.l, ym], [box.l + 4, ym]], { color: TICK });
-      }
-      p.line([[box.l - 5, y], [box.l, y]], { color: AXIS });
-      if (((k % stepY) + stepY) % stepY === 0) p.text(box.l - 8, y + 4, decade(k), { size: 11, align: 'right' });
-    }
-  } else {
-    for (const t of niceTicks(spec.yMin, spec.yMax, Math.max(3, Math.floor((box.b - box.t) / 40)))) {
-      const y = Y(t);
-      p.line([[box.l, y], [box.r, y]], { color: GRID });
-      p.line([[box.l - 5, y], [box.l, y]], { color: AXIS });
-      p.text(box.l - 8, y + 4, sig(t, 3), { size: 11, align: 'right' });
-    }
-  }
+  const yt = axisTicks(spec.yMin, spec.yMax, log, log ? Math.max(2, Math.floor((box.b - box.t) / 18)) : Math.max(3, Math.floor((box.b - box.t) / 40)));
+  yt.values.forEach((v, i) => {
+    const y = Y(v);
+    if (yt.labels[i] === null) { if (y < box.b) p.line([[box.l, y], [box.l + 4, y]], { color: TICK }); return; }
+    p.line([[box.l, y], [box.r, y]], { color: GRID });
+    p.line([[box.l - 5, y], [box.l, y]], { color: AXIS });
+    p.text(box.l - 8, y + 4, yt.labels[i], { size: 11, align: 'right' });
+  });
   p.text((box.l + box.r) / 2, H - 8, spec.xLabel, { size: 12, align: 'center' });
   // Rotated, centred on the plot (never on the figure with its caption), inside the canvas.
   yLines.forEach((line, k) => p.text(16 + 14 * k, (box.t + box.b) / 2, line, { size: 12, align: 'center', rotate: -Math.PI / 2 }));

@@ -22,7 +22,7 @@ pub use description::*;
 #[cfg(feature = "alloc")]
 mod ticks;
 #[cfg(feature = "alloc")]
-pub use ticks::{Corner, Tick, decimal_label};
+pub use ticks::{Corner, IMAGE_LABELS, Tick, decimal_label};
 
 #[cfg(feature = "plot")]
 #[cfg_attr(docsrs, doc(cfg(feature = "plot")))]

@@ -378,6 +378,31 @@ try {
     return `${d.curves.length - 1} curve rows, ${d.mapLines - 1} map rows`;
   });
 
+  await check('issue 36: the page draws the core\'s ticks: over two decades (0.1–10 mm/s) its speed labels are those of the exported SVG of `rime figures --explorer` (2 and 5 × 10^k too)', async () => {
+    const numeric = (texts, lo, hi) => [...new Set(texts.filter((t) => /^[0-9.]+(e-?[0-9]+)?$/.test(t)).filter((t) => Number(t) >= lo * 0.999 && Number(t) <= hi * 1.001))].sort((a, b) => Number(a) - Number(b));
+    // A page of its own: the range typed here stays out of the other checks' page.
+    const q = await openPreset(context, 'ticks', 'ice-sticky', 'fast');
+    const u = await updates(q);
+    await q.fill('#view-from', '1e-4');
+    await q.fill('#view-to', '1e-2');
+    await q.press('#view-to', 'Enter');
+    await waitUpdate(q, u);
+    const pageTexts = await q.evaluate(() => {
+      const svg = new DOMParser().parseFromString(window.rimeExports.chartSvg(), 'image/svg+xml');
+      return [...svg.querySelectorAll('text')].map((t) => t.textContent.trim());
+    });
+    const dir = fs.mkdtempSync(path.join(outDir, 'ticks-'));
+    execFileSync(rime, ['figures', '--explorer', '--preset', 'ice-sticky', '--from', '1e-4', '--to', '1e-2', '--out', dir], { encoding: 'utf8' });
+    const svgFile = fs.readdirSync(dir, { recursive: true }).map(String).find((f) => /eps_n\.svg$/.test(f));
+    assert(svgFile, `no eps_n.svg in ${fs.readdirSync(dir, { recursive: true })}`);
+    const coreTexts = [...fs.readFileSync(path.join(dir, svgFile), 'utf8').matchAll(/<text[^>]*>([^<]*)<\/text>/g)].map((m) => m[1].trim());
+    const shown = numeric(pageTexts, 1e-4, 1e-2), exported = numeric(coreTexts, 1e-4, 1e-2);
+    assert(shown.includes('2e-4') && shown.includes('5e-3'), `the page labels no 2 or 5 × 10^k over two decades: ${shown}`);
+    assert(JSON.stringify(shown) === JSON.stringify(exported), `page ${shown} vs exported ${exported}`);
+    await q.close();
+    return `speed labels ${shown.join(' ')}`;
+  });
+
   await check('experimental context: the Bridges law drawn over its measured speeds only (0.15–20 mm/s, ε = 0.32 (g / 1 cm/s)^−0.234 there, never clamped), experiment boxes, toggle (issue 12 item 3)', async () => {
     const s = await page.evaluate(() => window.rimeState);
     assert(s.experiments && s.experiments.bridges, 'no Bridges law in rimeState');

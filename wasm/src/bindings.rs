@@ -203,6 +203,24 @@ pub fn fmt_decade(k: i32) -> String {
     rime_core::explorer::format::decade(k)
 }
 
+/// The ticks of an axis from `min` to `max` (log or linear) with at most `max_labels` labels, by
+/// the core's one axis rule (`rime_core::figure::Axis::ticks`, which the terminal and the exported
+/// SVG/PNG draw too; at most [`rime_core::figure::IMAGE_LABELS`] labels, the images' count) as
+/// JSON `[[value, …], [label | null, …]]`.
+#[wasm_bindgen(js_name = axisTicks)]
+pub fn axis_ticks(min: f64, max: f64, log: bool, max_labels: usize) -> String {
+    let axis = rime_core::figure::Axis {
+        label: String::new(),
+        log,
+        min,
+        max,
+    };
+    let ticks = axis.ticks(max_labels.min(rime_core::figure::IMAGE_LABELS));
+    let values: Vec<f64> = ticks.iter().map(|t| t.value).collect();
+    let labels: Vec<Option<&str>> = ticks.iter().map(|t| t.label.as_deref()).collect();
+    serde_json::to_string(&(values, labels)).unwrap_or_default()
+}
+
 /// Whether `computed` reproduces `printed` to its printed digits
 /// (`rime_core::explorer::format::agrees_to_printed`).
 #[wasm_bindgen(js_name = agreesToPrinted)]

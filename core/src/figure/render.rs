@@ -44,8 +44,7 @@ fn to_axis(v: f64, log: bool) -> f64 {
     if log { v.log10() } else { v }
 }
 
-/// Labels an image axis carries at most (a terminal passes fewer; its labels are a subset).
-pub const IMAGE_LABELS: usize = 11;
+pub use super::IMAGE_LABELS;
 
 /// The axis' key points in drawing coordinates (log₁₀ on log axes) and their labels, from the
 /// core's one axis description ([`super::Axis::ticks`]).

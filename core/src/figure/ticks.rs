@@ -19,6 +19,9 @@ pub struct Tick {
     pub label: Option<String>,
 }
 
+/// Labels an image axis carries at most (a terminal passes fewer; its labels are a subset).
+pub const IMAGE_LABELS: usize = 11;
+
 /// A corner of a figure's plot area.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Corner {
