@@ -12,14 +12,6 @@ use serde_json::{Value as Json, json};
 
 pub use rime_core::explorer::limits::{MAX_CURVE_POINTS, MAX_MAP_SIDE, MAX_SCENE_BYTES};
 
-/// The code of a stick class (its index in [`StickClass::ALL`]).
-pub fn class_code(c: StickClass) -> u8 {
-    StickClass::ALL
-        .iter()
-        .position(|x| *x == c)
-        .map_or(u8::MAX, |i| i as u8)
-}
-
 /// The stick map's records (`rime map --format csv`) from the frame's arrays: `g` (n speeds),
 /// `eps_t` and class codes (n² each, row-major). Formatted only when the page downloads them:
 /// 14 400 rows cost ~40 ms, too much for every frame.
