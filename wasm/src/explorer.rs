@@ -12,6 +12,27 @@ use serde_json::{Value as Json, json};
 
 pub use rime_core::explorer::limits::{MAX_CURVE_POINTS, MAX_MAP_SIDE, MAX_SCENE_BYTES};
 
+/// The collision record the page's collision card reads: the core's trajectory (its serde form:
+/// `t`, `xi`, `xi_dot`, `force`, `phases`, `t_c` — `null` when unresolved —, `xi_max`, `eps_n`,
+/// `status`, `ledger`, `resolved`, `rhs_evaluations`) with the impact speed, the radii and, with
+/// adhesion, the dynamic JKR model's loop.
+#[derive(serde::Serialize)]
+struct CollisionRecord<'a> {
+    g: f64,
+    #[serde(flatten)]
+    trajectory: &'a rime_core::collision::Trajectory,
+    radius_1: f64,
+    radius_2: f64,
+    dynamic: Option<ForceLoop>,
+}
+
+/// The dynamic JKR model's force loop (`Dynamic::force_loop`) as two arrays.
+#[derive(serde::Serialize)]
+struct ForceLoop {
+    xi: Vec<f64>,
+    force: Vec<f64>,
+}
+
 /// The stick map's records (`rime map --format csv`) from the frame's arrays: `g` (n speeds),
 /// `eps_t` and class codes (n² each, row-major). Formatted only when the page downloads them:
 /// 14 400 rows cost ~40 ms, too much for every frame.
@@ -309,40 +330,24 @@ impl Explorer {
         let t = contact
             .collision(g, points, parse_accuracy(accuracy)?)
             .map_err(core_err)?;
-        let l = t.ledger;
-        let finite = |v: f64| {
-            if v.is_finite() {
-                Json::from(v)
-            } else {
-                Json::Null
-            }
-        };
-        let phases: Vec<Json> = t
-            .phases
-            .iter()
-            .map(|p| json!({"name": p.name, "t": p.t}))
-            .collect();
+        // The dynamic JKR model's loop, as two arrays.
         let dynamic = self.scene.adhesion.and_then(|a| {
             rime_core::models::brilliantov2007::Dynamic::new(&contact, a.surface_energy, a.jkr_end)
                 .and_then(|d| d.force_loop(g, 1e-9))
                 .ok()
-                .map(|p| {
-                    json!({"xi": p.iter().map(|q| q.xi).collect::<Vec<_>>(),
-                           "force": p.iter().map(|q| q.force).collect::<Vec<_>>()})
+                .map(|p| ForceLoop {
+                    xi: p.iter().map(|q| q.xi).collect(),
+                    force: p.iter().map(|q| q.force).collect(),
                 })
         });
-        Ok(json!({
-            "g": g, "t": t.t, "xi": t.xi, "xi_dot": t.xi_dot, "force": t.force, "phases": phases,
-            "t_c": finite(t.t_c), "xi_max": t.xi_max, "eps_n": t.eps_n, "status": t.status.name(),
-            "resolved": t.resolved,
-            "ledger": {"kinetic_in": l.kinetic_in, "kinetic_out": l.kinetic_out,
-                       "dissipated_bulk": l.dissipated_bulk, "dissipated_layer": l.dissipated_layer,
-                       "elastic_retained": l.elastic_retained, "adhesion": l.adhesion,
-                       "closure": l.closure},
-            "radius_1": self.scene.grains.radius_1, "radius_2": self.scene.grains.radius_2,
-            "dynamic": dynamic,
-        })
-        .to_string())
+        let record = CollisionRecord {
+            g,
+            trajectory: &t,
+            radius_1: self.scene.grains.radius_1,
+            radius_2: self.scene.grains.radius_2,
+            dynamic,
+        };
+        serde_json::to_string(&record).map_err(|e| format!("collision: {e}"))
     }
 
     /// Fits the damping time A of the current scene to a measured law of the atlas (`id`) over the

@@ -4,7 +4,7 @@
 //! Every part fails on its own: a part that errors is left out and its message is listed in
 //! `errors` (`{part, message}`), the other parts are still computed. A speed on a curve whose ε_N
 //! fails becomes a gap (NaN, status code [`FAILED`]), not a failed frame. The frame is the core's
-//! frame's serde form with what only the page shows beside it ([`PageFrame`]), in its wire form
+//! frame's serde form with what only the page shows beside it (`PageFrame`), in its wire form
 //! (`rime_core::explorer::wire`): the number arrays in two flat buffers (`f64` and `u8`), the JSON
 //! giving each as `{"$f64": [at, len]}` or `{"$u8": [at, len]}`.
 

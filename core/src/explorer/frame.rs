@@ -198,7 +198,8 @@ pub struct MapPart {
     pub map: Option<StickMap>,
 }
 
-/// Everything one frame shows.
+/// Everything one frame shows. With `serde`, its serde form is what the page receives (through
+/// [`super::wire`], its number arrays as typed buffers); the request and the contact stay behind.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Frame {
