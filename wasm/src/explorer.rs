@@ -270,6 +270,15 @@ impl Explorer {
         self.check(path, before)
     }
 
+    /// The preset whose scene this is, if any (the page's preset menu names it on every edit
+    /// without reading the scene's text back).
+    pub fn preset(&self) -> Option<&'static str> {
+        Preset::ALL
+            .into_iter()
+            .find(|p| p.scene() == self.scene)
+            .map(Preset::name)
+    }
+
     /// A parameter's value as JSON: a number, a choice name, a boolean for effects, `null` when
     /// inactive.
     pub fn get(&self, path: &str) -> Result<String, String> {
@@ -623,6 +632,30 @@ pub fn parse_quantity(field: &str, text: &str, unit: &str) -> Result<f64, String
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn issue_36_the_preset_is_named_by_the_scene_not_its_text() {
+        let mut e = Explorer::new();
+        for p in Preset::ALL {
+            e.load_preset(p.name()).unwrap();
+            assert_eq!(e.preset(), Some(p.name()));
+        }
+        // Back from its text (as a link brings it), still that preset.
+        let text = e.to_json().unwrap();
+        let e2 = Explorer::from_json(&text).unwrap();
+        assert_eq!(e2.preset(), e.preset());
+        // One parameter changed: no preset; changed back: the preset again.
+        e.load_preset("ice-frost").unwrap();
+        let eta = e.get("layer.viscosity").unwrap();
+        e.set("layer.viscosity", "2500").unwrap();
+        assert_eq!(e.preset(), None);
+        e.set("layer.viscosity", &eta).unwrap();
+        assert_eq!(e.preset(), Some("ice-frost"));
+        // The Compare list asks whether a section is there the same way (`get` of its toggle).
+        assert_eq!(e.get("plasticity").unwrap(), "false");
+        e.set("plasticity", "true").unwrap();
+        assert_eq!(e.get("plasticity").unwrap(), "true");
+    }
 
     #[test]
     fn json_round_trips_and_errors_name_the_field() {
