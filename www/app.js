@@ -172,32 +172,46 @@ function afterPresented(fn) {
   setTimeout(once, 50);
 }
 
-/** The frame's parts as typed-array views into its two flat arrays. */
+/** A value in the core's wire form (rime_core::explorer::wire) read back: its JSON with each
+ * `{"$f64": [at, len]}` / `{"$u8": [at, len]}` as a view into `numbers` / `codes`. */
+function readWire(json, numbers, codes) {
+  return JSON.parse(json, (_, v) => {
+    if (v === null || typeof v !== 'object' || Array.isArray(v)) return v;
+    if (v.$f64) return numbers.subarray(v.$f64[0], v.$f64[0] + v.$f64[1]);
+    return v.$u8 ? codes.subarray(v.$u8[0], v.$u8[0] + v.$u8[1]) : v;
+  });
+}
+
+/** The frame (the core frame's serde form and the page's keys, snake_case) as the page's parts. */
 function decode(msg, page) {
-  const j = JSON.parse(msg.json);
-  const F = (r) => msg.numbers.subarray(r.at, r.at + r.len);
-  const U = (r) => msg.codes.subarray(r.at, r.at + r.len);
+  const j = readWire(msg.json, msg.numbers, msg.codes);
   const m = j.map;
+  const note = m && m.auto ? m.auto.note : null;
+  const mapError = () => (j.errors.find((e) => e.part === 'stick map') || { message: '' }).message;
+  const members = j.family;
   const res = {
     accuracy: page.view.accuracy,
     values: j.values,
-    g: F(j.g),
-    eps: j.curve ? F(j.curve.eps) : null,
-    status: j.curve ? U(j.curve.status) : null,
+    g: j.g,
+    eps: j.curve ? j.curve.eps : null,
+    status: j.curve ? j.curve.status : null,
     gaps: j.curve ? j.curve.failed : 0,
-    clean: j.clean ? F(j.clean.eps) : null,
-    family: j.family && { ...j.family, curves: j.family.curves.map((c) => (c ? F(c.eps) : null)) },
-    crit: j.critical,
-    warnings: j.warnings,
-    warningDetails: j.warningDetails,
-    friction: j.friction,
-    map: m && !m.error ? { n: m.n, max: m.max, note: m.note, codes: U(m.class), epsT: F(m.epsT), epsN: F(m.epsN), g: F(m.g) } : null,
-    mapFailed: m && m.error ? m : null,
-    mapNote: m ? m.note : null,
+    clean: j.clean ? j.clean.eps : null,
+    family: members.length ? {
+      path: j.sweep.path, sym: j.sweep.symbol, unit: j.sweep.unit, values: members.map((x) => x.value),
+      isScene: members.map((x) => x.is_scene), curves: members.map((x) => (x.curve ? x.curve.eps : null)),
+    } : null,
+    crit: j.markers,
+    warnings: j.warnings.map((w) => w.text),
+    warningDetails: j.warnings,
+    friction: j.values.friction === true,
+    map: m && m.map ? { n: j.map_n, max: m.max, note, codes: m.map.class, epsT: m.map.eps_t, epsN: m.map.eps_n, g: m.map.g } : null,
+    mapFailed: m && !m.map ? { n: j.map_n, max: m.max, note, error: mapError() } : null,
+    mapNote: note,
     tidal: j.tidal.error ? null : j.tidal,
-    overlays: (j.overlays || []).map((o) => ({ ...o, g: F(o.g), eps: F(o.eps) })),
-    figures: j.figures.map((f) => ({ ...f, series: f.series.map((s) => ({ ...s, x: F(s.x), y: F(s.y) })) })),
-    errors: j.errors,
+    overlays: j.overlays,
+    figures: j.figures,
+    errors: j.tidal.error ? [...j.errors, { part: 'tidal', message: j.tidal.error }] : j.errors,
   };
   // The records (UTF-8 JSON from the worker) are read when a download first asks for them.
   let records = null;
@@ -214,8 +228,8 @@ function onFrame(msg, req) {
   if (req && req.page.pin) {
     // The link's pinned curve: kept as the pin, then the page's own frame.
     app.pinRequest = null;
-    const j = msg.error ? null : JSON.parse(msg.json);
-    if (j && j.curve) restorePin(req.page.pin, msg.numbers.subarray(j.g.at, j.g.at + j.g.len), msg.numbers.subarray(j.curve.eps.at, j.curve.eps.at + j.curve.eps.len));
+    const j = msg.error ? null : readWire(msg.json, msg.numbers, msg.codes);
+    if (j && j.curve) restorePin(req.page.pin, j.g, j.curve.eps);
     else {
       const why = msg.error || (j.errors[0] && j.errors[0].message) || 'no curve';
       console.error(`rime: link: pinned: ${why}`);

@@ -27,10 +27,10 @@ export function buildCompare(h) {
 /** A model that needs a scene section the scene lacks (thornton1997: plasticity) is not offered: its
  *  box is disabled and says what it needs, instead of failing with a red banner once checked.
  *  Called with every scene the editor holds (controls.js `reflectScene`). */
-export function syncCompare(scene) {
+export function syncCompare(has) {
   for (const hint of document.querySelectorAll('#overlay-list .needs')) {
     const box = hint.parentElement.querySelector('input');
-    const lacking = !(scene && scene[hint.dataset.needs]);
+    const lacking = !has(hint.dataset.needs);
     // Written only when it changes (issue 26: this runs on every slider step).
     const off = lacking && !box.checked;
     if (box.disabled !== off) box.disabled = off;

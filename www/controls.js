@@ -59,23 +59,15 @@ function changed() {
   hooks.schedule();
 }
 
-let presetList = [];
-const sameJson = (a, b) => {
-  if (a === b) return true;
-  if (typeof a !== 'object' || typeof b !== 'object' || a === null || b === null) return false;
-  const ka = Object.keys(a).filter((k) => a[k] !== null), kb = Object.keys(b).filter((k) => b[k] !== null);
-  return ka.length === kb.length && ka.every((k) => sameJson(a[k], b[k]));
-};
 /** What follows the scene outside its own controls: the preset menu names it (a preset's name, or
  *  "edited" once it differs from all) and Compare offers only the models it can run. */
 export function reflectScene() {
-  let scene = null;
-  try { scene = JSON.parse(app.wantScene || app.ex.toJson()); } catch { /* shown as edited */ }
-  syncCompare(scene);
+  // Asked of the scene in the core, not of its text read back (issue 36: every slider step passes here).
+  syncCompare((section) => app.ex.get(section) === 'true');
   const first = $('preset').options[0];
   if (!first) return;
-  const match = presetList.find((p) => scene && sameJson(p.scene, scene));
-  setText(first, match ? `${match.name} (this scene) — load a preset` : 'an edited scene — load a preset');
+  const match = app.ex.preset();
+  setText(first, match ? `${match} (this scene) — load a preset` : 'an edited scene — load a preset');
 }
 
 /** Applies one edit (`fn` on app.ex) of `key` through the core; records it for undo. A value the
@@ -265,7 +257,6 @@ function historyButtons() {
 }
 
 export function wireToolbar(presets) {
-  presetList = presets;
   $('preset').replaceChildren(el('option', { value: '' }, '— load a preset —'),
     ...presets.map((p) => el('option', { value: p.name }, `${p.name}: ${p.description}`)));
   reflectScene();

@@ -49,6 +49,14 @@ pub enum StickClass {
 }
 
 impl StickClass {
+    /// The class's index in [`StickClass::ALL`] (its code on the page's wire).
+    pub fn code(self) -> u8 {
+        StickClass::ALL
+            .iter()
+            .position(|x| *x == self)
+            .map_or(u8::MAX, |i| i as u8)
+    }
+
     /// Every class, in legend order.
     pub const ALL: [StickClass; 7] = [
         StickClass::Rolling,

@@ -300,6 +300,11 @@ impl Explorer {
         self.inner.set_number(path, value).map_err(js)
     }
 
+    /// The name of the preset whose scene this is, or `undefined`.
+    pub fn preset(&self) -> Option<String> {
+        self.inner.preset().map(String::from)
+    }
+
     /// A parameter's value as JSON text (number, choice name, boolean, or `null` when inactive).
     pub fn get(&self, path: &str) -> Result<String, JsError> {
         self.inner.get(path).map_err(js)

@@ -12,12 +12,25 @@ use serde_json::{Value as Json, json};
 
 pub use rime_core::explorer::limits::{MAX_CURVE_POINTS, MAX_MAP_SIDE, MAX_SCENE_BYTES};
 
-/// The code of a stick class (its index in [`StickClass::ALL`]).
-pub fn class_code(c: StickClass) -> u8 {
-    StickClass::ALL
-        .iter()
-        .position(|x| *x == c)
-        .map_or(u8::MAX, |i| i as u8)
+/// The collision record the page's collision card reads: the core's trajectory (its serde form:
+/// `t`, `xi`, `xi_dot`, `force`, `phases`, `t_c` — `null` when unresolved —, `xi_max`, `eps_n`,
+/// `status`, `ledger`, `resolved`, `rhs_evaluations`) with the impact speed, the radii and, with
+/// adhesion, the dynamic JKR model's loop.
+#[derive(serde::Serialize)]
+struct CollisionRecord<'a> {
+    g: f64,
+    #[serde(flatten)]
+    trajectory: &'a rime_core::collision::Trajectory,
+    radius_1: f64,
+    radius_2: f64,
+    dynamic: Option<ForceLoop>,
+}
+
+/// The dynamic JKR model's force loop (`Dynamic::force_loop`) as two arrays.
+#[derive(serde::Serialize)]
+struct ForceLoop {
+    xi: Vec<f64>,
+    force: Vec<f64>,
 }
 
 /// The stick map's records (`rime map --format csv`) from the frame's arrays: `g` (n speeds),
@@ -257,6 +270,15 @@ impl Explorer {
         self.check(path, before)
     }
 
+    /// The preset whose scene this is, if any (the page's preset menu names it on every edit
+    /// without reading the scene's text back).
+    pub fn preset(&self) -> Option<&'static str> {
+        Preset::ALL
+            .into_iter()
+            .find(|p| p.scene() == self.scene)
+            .map(Preset::name)
+    }
+
     /// A parameter's value as JSON: a number, a choice name, a boolean for effects, `null` when
     /// inactive.
     pub fn get(&self, path: &str) -> Result<String, String> {
@@ -317,40 +339,24 @@ impl Explorer {
         let t = contact
             .collision(g, points, parse_accuracy(accuracy)?)
             .map_err(core_err)?;
-        let l = t.ledger;
-        let finite = |v: f64| {
-            if v.is_finite() {
-                Json::from(v)
-            } else {
-                Json::Null
-            }
-        };
-        let phases: Vec<Json> = t
-            .phases
-            .iter()
-            .map(|p| json!({"name": p.name, "t": p.t}))
-            .collect();
+        // The dynamic JKR model's loop, as two arrays.
         let dynamic = self.scene.adhesion.and_then(|a| {
             rime_core::models::brilliantov2007::Dynamic::new(&contact, a.surface_energy, a.jkr_end)
                 .and_then(|d| d.force_loop(g, 1e-9))
                 .ok()
-                .map(|p| {
-                    json!({"xi": p.iter().map(|q| q.xi).collect::<Vec<_>>(),
-                           "force": p.iter().map(|q| q.force).collect::<Vec<_>>()})
+                .map(|p| ForceLoop {
+                    xi: p.iter().map(|q| q.xi).collect(),
+                    force: p.iter().map(|q| q.force).collect(),
                 })
         });
-        Ok(json!({
-            "g": g, "t": t.t, "xi": t.xi, "xi_dot": t.xi_dot, "force": t.force, "phases": phases,
-            "t_c": finite(t.t_c), "xi_max": t.xi_max, "eps_n": t.eps_n, "status": t.status.name(),
-            "resolved": t.resolved,
-            "ledger": {"kinetic_in": l.kinetic_in, "kinetic_out": l.kinetic_out,
-                       "dissipated_bulk": l.dissipated_bulk, "dissipated_layer": l.dissipated_layer,
-                       "elastic_retained": l.elastic_retained, "adhesion": l.adhesion,
-                       "closure": l.closure},
-            "radius_1": self.scene.grains.radius_1, "radius_2": self.scene.grains.radius_2,
-            "dynamic": dynamic,
-        })
-        .to_string())
+        let record = CollisionRecord {
+            g,
+            trajectory: &t,
+            radius_1: self.scene.grains.radius_1,
+            radius_2: self.scene.grains.radius_2,
+            dynamic,
+        };
+        serde_json::to_string(&record).map_err(|e| format!("collision: {e}"))
     }
 
     /// Fits the damping time A of the current scene to a measured law of the atlas (`id`) over the
@@ -626,6 +632,30 @@ pub fn parse_quantity(field: &str, text: &str, unit: &str) -> Result<f64, String
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn issue_36_the_preset_is_named_by_the_scene_not_its_text() {
+        let mut e = Explorer::new();
+        for p in Preset::ALL {
+            e.load_preset(p.name()).unwrap();
+            assert_eq!(e.preset(), Some(p.name()));
+        }
+        // Back from its text (as a link brings it), still that preset.
+        let text = e.to_json().unwrap();
+        let e2 = Explorer::from_json(&text).unwrap();
+        assert_eq!(e2.preset(), e.preset());
+        // One parameter changed: no preset; changed back: the preset again.
+        e.load_preset("ice-frost").unwrap();
+        let eta = e.get("layer.viscosity").unwrap();
+        e.set("layer.viscosity", "2500").unwrap();
+        assert_eq!(e.preset(), None);
+        e.set("layer.viscosity", &eta).unwrap();
+        assert_eq!(e.preset(), Some("ice-frost"));
+        // The Compare list asks whether a section is there the same way (`get` of its toggle).
+        assert_eq!(e.get("plasticity").unwrap(), "false");
+        e.set("plasticity", "true").unwrap();
+        assert_eq!(e.get("plasticity").unwrap(), "true");
+    }
 
     #[test]
     fn json_round_trips_and_errors_name_the_field() {

@@ -55,7 +55,7 @@ fn one_frame_per_call_with_parts_failing_alone() {
         .unwrap()
         .iter()
         .flat_map(|f| f["series"].as_array().unwrap().iter())
-        .map(|s| s["x"]["len"].as_u64().unwrap() + s["y"]["len"].as_u64().unwrap())
+        .map(|s| s["x"]["$f64"][1].as_u64().unwrap() + s["y"]["$f64"][1].as_u64().unwrap())
         .sum();
     assert_eq!(numbers.len() as u64, 64 * 7 + 16 * 2 + 256 + figure_numbers);
     // statuses: curve, clean, 4 family curves; classes 256.

@@ -24,26 +24,35 @@ pub use super::request::{
 
 /// An overlay as drawn.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct OverlayCurve {
     /// The overlay.
+    #[cfg_attr(
+        feature = "serde",
+        serde(rename = "key", serialize_with = "overlay_key")
+    )]
     pub overlay: Overlay,
     /// Legend text (source, temperature and geometry for measured data).
     pub label: String,
     /// Speeds \[m/s\]: the frame's speeds for a model; the measured speeds for a law (never
     /// beyond them); the two ends of the measured speeds for a range.
+    #[cfg_attr(feature = "serde", serde(serialize_with = "super::wire::f64s"))]
     pub g: Vec<f64>,
     /// ε_N at `g` (NaN where the model failed); for a range, the band's low and high ε.
+    #[cfg_attr(feature = "serde", serde(serialize_with = "super::wire::f64s"))]
     pub eps: Vec<f64>,
     /// Whether `eps` is a band (a measured range) rather than a curve.
     pub band: bool,
     /// rms of ε_scene − ε_entry over the entry's measured speeds (atlas laws and ranges).
     pub score: Option<f64>,
     /// The model's characteristic speeds (`g_cr`, `v_yield`, …) \[m/s\].
+    #[cfg_attr(feature = "serde", serde(serialize_with = "named_speeds"))]
     pub speeds: Vec<(&'static str, f64)>,
 }
 
 /// A part of the frame that failed, and why.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct PartError {
     /// Which part (`curve`, `clean`, `family η* = 500`, `marker "sticks below"`, `stick map`, `scene`).
     pub part: String,
@@ -56,6 +65,86 @@ pub struct PartError {
 pub struct Curve {
     /// The full result at each speed (`None` where it failed: a gap).
     pub points: Vec<Option<Normal>>,
+}
+
+/// A curve crosses as its ε_N (NaN in the gaps), its status codes ([`Status::code`];
+/// [`FAILED`] in the gaps) and its number of gaps.
+#[cfg(feature = "serde")]
+impl serde::Serialize for Curve {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> core::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        struct F64s(Vec<f64>);
+        impl serde::Serialize for F64s {
+            fn serialize<S: serde::Serializer>(
+                &self,
+                s: S,
+            ) -> core::result::Result<S::Ok, S::Error> {
+                super::wire::f64s(&self.0, s)
+            }
+        }
+        struct U8s(Vec<u8>);
+        impl serde::Serialize for U8s {
+            fn serialize<S: serde::Serializer>(
+                &self,
+                s: S,
+            ) -> core::result::Result<S::Ok, S::Error> {
+                super::wire::u8s(&self.0, s)
+            }
+        }
+        let status: Vec<u8> = self
+            .points
+            .iter()
+            .map(|p| p.map_or(FAILED, |n| n.status.code()))
+            .collect();
+        let mut st = s.serialize_struct("Curve", 3)?;
+        st.serialize_field("eps", &F64s(self.eps()))?;
+        st.serialize_field("status", &U8s(status))?;
+        st.serialize_field("failed", &self.failed())?;
+        st.end()
+    }
+}
+
+/// The status code of a speed whose ε_N could not be computed (a gap on the curve).
+pub const FAILED: u8 = u8::MAX;
+
+#[cfg(feature = "serde")]
+fn overlay_key<S: serde::Serializer>(o: &Overlay, s: S) -> core::result::Result<S::Ok, S::Error> {
+    s.serialize_str(&o.key())
+}
+
+#[cfg(feature = "serde")]
+fn named_speeds<S: serde::Serializer>(
+    speeds: &[(&'static str, f64)],
+    s: S,
+) -> core::result::Result<S::Ok, S::Error> {
+    use serde::ser::{SerializeMap, SerializeSeq};
+    struct Named(&'static str, f64);
+    impl serde::Serialize for Named {
+        fn serialize<S: serde::Serializer>(&self, s: S) -> core::result::Result<S::Ok, S::Error> {
+            let mut m = s.serialize_map(Some(2))?;
+            m.serialize_entry("name", self.0)?;
+            m.serialize_entry("value", &self.1)?;
+            m.end()
+        }
+    }
+    let mut seq = s.serialize_seq(Some(speeds.len()))?;
+    for &(name, value) in speeds {
+        seq.serialize_element(&Named(name, value))?;
+    }
+    seq.end()
+}
+
+/// The family's sweep crosses as its parameter: `{path, symbol, unit}`.
+#[cfg(feature = "serde")]
+fn sweep_form<S: serde::Serializer>(sweep: &usize, s: S) -> core::result::Result<S::Ok, S::Error> {
+    use serde::ser::SerializeMap;
+    let mut m = s.serialize_map(Some(3))?;
+    if let Some(w) = SWEEPS.get(*sweep) {
+        m.serialize_entry("path", w.path)?;
+        m.serialize_entry("symbol", w.symbol)?;
+        m.serialize_entry("unit", w.unit)?;
+    }
+    m.end()
 }
 
 impl Curve {
@@ -75,6 +164,7 @@ impl Curve {
 
 /// One member of the family of curves.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Member {
     /// Value of the swept parameter.
     pub value: f64,
@@ -86,6 +176,7 @@ pub struct Member {
 
 /// A marker on the speed axis.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Marker {
     /// `layer`, `adhesion` or `stick`.
     pub key: &'static str,
@@ -97,6 +188,7 @@ pub struct Marker {
 
 /// The stick map part.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct MapPart {
     /// Upper end of both axes \[m/s\].
     pub max: f64,
@@ -106,16 +198,22 @@ pub struct MapPart {
     pub map: Option<StickMap>,
 }
 
-/// Everything one frame shows.
+/// Everything one frame shows. With `serde`, its serde form is what the page receives (through
+/// [`super::wire`], its number arrays as typed buffers); the request and the contact stay behind.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Frame {
     /// The request it answers.
+    #[cfg_attr(feature = "serde", serde(skip))]
     pub request: Request,
     /// Derived constants (`None` if the scene cannot be evaluated; see `errors`).
+    #[cfg_attr(feature = "serde", serde(skip))]
     pub contact: Option<Contact>,
     /// The sweep of the family (index into [`SWEEPS`]).
+    #[cfg_attr(feature = "serde", serde(serialize_with = "sweep_form"))]
     pub sweep: usize,
     /// Log-spaced impact speeds of every curve \[m/s\].
+    #[cfg_attr(feature = "serde", serde(serialize_with = "super::wire::f64s"))]
     pub g: Vec<f64>,
     /// The scene's curve.
     pub curve: Option<Curve>,

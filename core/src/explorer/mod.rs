@@ -31,3 +31,5 @@ pub mod thresholds;
 pub mod tidal;
 #[cfg(feature = "explorer")]
 pub mod warning;
+#[cfg(all(feature = "serde", feature = "alloc"))]
+pub mod wire;

@@ -20,6 +20,19 @@ pub struct MapRange {
     pub clamped: bool,
 }
 
+/// A map range crosses with its note: `{max, clamped, note}`.
+#[cfg(feature = "serde")]
+impl serde::Serialize for MapRange {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> core::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut st = s.serialize_struct("MapRange", 3)?;
+        st.serialize_field("max", &self.max)?;
+        st.serialize_field("clamped", &self.clamped)?;
+        st.serialize_field("note", &self.note())?;
+        st.end()
+    }
+}
+
 impl MapRange {
     /// The note to show beside the map, if any.
     pub fn note(&self) -> Option<&'static str> {

@@ -28,6 +28,21 @@ pub enum Warning {
     AdhesionModulusConsistent,
 }
 
+/// A warning crosses as what a surface shows of it: `{key, short, text, help, equation}`.
+#[cfg(feature = "serde")]
+impl serde::Serialize for Warning {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> core::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut st = s.serialize_struct("Warning", 5)?;
+        st.serialize_field("key", self.key())?;
+        st.serialize_field("short", self.short())?;
+        st.serialize_field("text", &self.text())?;
+        st.serialize_field("help", &self.help())?;
+        st.serialize_field("equation", self.equation())?;
+        st.end()
+    }
+}
+
 impl Warning {
     /// Every kind, in the order surfaces list them (one representative of `Overdamped`).
     pub const ALL: [Warning; 5] = [

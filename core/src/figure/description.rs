@@ -15,6 +15,7 @@ use alloc::vec::Vec;
 
 /// An axis.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Axis {
     /// Label with unit, e.g. `g_N [m/s]`.
     pub label: String,
@@ -29,6 +30,8 @@ pub struct Axis {
 /// How a series is drawn. Colour alone never carries a difference: within a figure no two series
 /// share both colour and stroke, so a figure reads in grey and on a terminal without colour.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
 pub enum Stroke {
     /// A solid line (the model's curves).
     Solid,
@@ -40,6 +43,41 @@ pub enum Stroke {
     Points,
     /// A line of long dashes (comparisons, once the hues have been used with dots and dashes).
     LongDash,
+}
+
+/// A series crosses with its points as two arrays, `x` and `y`, and whether its stroke is broken.
+#[cfg(feature = "serde")]
+impl serde::Serialize for Series {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> core::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        struct F64s(Vec<f64>);
+        impl serde::Serialize for F64s {
+            fn serialize<S: serde::Serializer>(
+                &self,
+                s: S,
+            ) -> core::result::Result<S::Ok, S::Error> {
+                crate::explorer::wire::f64s(&self.0, s)
+            }
+        }
+        let mut st = s.serialize_struct("Series", 7)?;
+        st.serialize_field("name", &self.name)?;
+        st.serialize_field("short", &self.short)?;
+        st.serialize_field("color", &self.color)?;
+        st.serialize_field("stroke", &self.stroke)?;
+        st.serialize_field("dashed", &self.stroke.is_broken())?;
+        st.serialize_field("x", &F64s(self.points.iter().map(|p| p.0).collect()))?;
+        st.serialize_field("y", &F64s(self.points.iter().map(|p| p.1).collect()))?;
+        st.end()
+    }
+}
+
+/// The figure's stick map crosses as whether there is one (its grid is the frame's map).
+#[cfg(feature = "serde")]
+fn has_map<S: serde::Serializer>(
+    map: &Option<ClassMap>,
+    s: S,
+) -> core::result::Result<S::Ok, S::Error> {
+    s.serialize_bool(map.is_some())
 }
 
 impl Stroke {
@@ -78,6 +116,7 @@ pub struct Series {
 
 /// A vertical line with a label (critical velocities).
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Marker {
     /// Position on the x axis.
     pub x: f64,
@@ -91,6 +130,7 @@ pub struct Marker {
 
 /// A shaded rectangle (an experimental range).
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Band {
     /// x range.
     pub x: (f64, f64),
@@ -135,6 +175,7 @@ pub struct ClassMap {
 /// # }
 /// ```
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Figure {
     /// File stem, e.g. `fig2-layer-viscosity`.
     pub name: String,
@@ -153,6 +194,7 @@ pub struct Figure {
     /// Shaded ranges.
     pub bands: Vec<Band>,
     /// A class map drawn under everything else.
+    #[cfg_attr(feature = "serde", serde(serialize_with = "has_map"))]
     pub map: Option<ClassMap>,
 }
 
