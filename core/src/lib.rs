@@ -69,6 +69,8 @@ pub mod sweep;
 pub mod tangential;
 pub mod tidal;
 pub mod units;
+#[cfg(all(feature = "serde", feature = "alloc"))]
+pub mod wire;
 
 pub use accuracy::Accuracy;
 pub use contact::Contact;

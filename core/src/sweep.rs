@@ -192,26 +192,17 @@ pub fn stick_map_rows_into(
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct StickMap {
     /// Grid speeds, 0 to max inclusive [m/s].
-    #[cfg_attr(
-        feature = "serde",
-        serde(serialize_with = "crate::explorer::wire::f64s")
-    )]
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::wire::f64s"))]
     pub g: alloc::vec::Vec<f64>,
     /// ε_N at the grid speeds.
-    #[cfg_attr(
-        feature = "serde",
-        serde(serialize_with = "crate::explorer::wire::f64s")
-    )]
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::wire::f64s"))]
     pub eps_n: alloc::vec::Vec<f64>,
     /// Row-major classes: `class[i * n + j]` at g_N = `g[i]`, g_T = `g[j]`; they cross as codes
     /// (the index in [`StickClass::ALL`]).
     #[cfg_attr(feature = "serde", serde(serialize_with = "class_codes"))]
     pub class: alloc::vec::Vec<StickClass>,
     /// Row-major ε_T.
-    #[cfg_attr(
-        feature = "serde",
-        serde(serialize_with = "crate::explorer::wire::f64s")
-    )]
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::wire::f64s"))]
     pub eps_t: alloc::vec::Vec<f64>,
     /// Integrator right-hand-side evaluations spent (ε_N once per grid speed, never per cell).
     pub rhs_evaluations: usize,
@@ -223,7 +214,7 @@ fn class_codes<S: serde::Serializer>(
     s: S,
 ) -> core::result::Result<S::Ok, S::Error> {
     let codes: alloc::vec::Vec<u8> = class.iter().map(|c| c.code()).collect();
-    crate::explorer::wire::u8s(&codes, s)
+    crate::wire::u8s(&codes, s)
 }
 
 #[cfg(feature = "alloc")]

@@ -32,4 +32,4 @@ pub mod tidal;
 #[cfg(feature = "explorer")]
 pub mod warning;
 #[cfg(all(feature = "serde", feature = "alloc"))]
-pub mod wire;
+pub use crate::wire;

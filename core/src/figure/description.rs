@@ -56,7 +56,7 @@ impl serde::Serialize for Series {
                 &self,
                 s: S,
             ) -> core::result::Result<S::Ok, S::Error> {
-                crate::explorer::wire::f64s(&self.0, s)
+                crate::wire::f64s(&self.0, s)
             }
         }
         let mut st = s.serialize_struct("Series", 7)?;
