@@ -1758,6 +1758,61 @@ try {
     return `R₁ after ${n + 1} Tabs (was 51); ${eqLinks.length} equation links kept as links out of the Tab order`;
   });
 
+  // ---------- issue 37: the dark chart, the link copied now, a tap, a link of repeats, the texts ----------
+  /** The ink (dark pixels, opaque) of `region` (CSS px of the chart canvas: {x0, y0, x1, y1}) in
+   *  the chart as composited on screen (an element screenshot: both layers and their CSS
+   *  backgrounds) and in the background layer alone (its own pixels): fractions of the region. */
+  async function chartInk(q, region) {
+    const shot = (await q.locator('#chart').screenshot()).toString('base64');
+    return q.evaluate(async ({ b64, r }) => {
+      const bytes = Uint8Array.from(atob(b64), (ch) => ch.charCodeAt(0));
+      const bmp = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
+      const oc = new OffscreenCanvas(bmp.width, bmp.height);
+      const cx = oc.getContext('2d');
+      cx.drawImage(bmp, 0, 0);
+      const screen = { width: bmp.width, height: bmp.height, data: cx.getImageData(0, 0, bmp.width, bmp.height).data };
+      const [back] = await window.rimeTest.layers('chart');
+      const cssW = document.getElementById('chart').clientWidth;
+      const frac = (img) => {
+        const k = img.width / cssW;
+        let n = 0, ink = 0;
+        for (let y = Math.round(r.y0 * k); y < Math.round(r.y1 * k); y++) {
+          for (let x = Math.round(r.x0 * k); x < Math.round(r.x1 * k); x++) {
+            const i = (y * img.width + x) * 4, d = img.data;
+            n++;
+            // Ink: opaque and darker than mid grey (tick labels, axis titles, legend text on white).
+            if (d[i + 3] > 128 && 0.2126 * d[i] + 0.7152 * d[i + 1] + 0.0722 * d[i + 2] < 140) ink++;
+          }
+        }
+        return ink / Math.max(1, n);
+      };
+      return { screen: frac(screen), back: frac(back) };
+    }, { b64: shot, r: region });
+  }
+
+  await check('issue 37: dark theme — the ε_N chart shows its axes, tick labels and legend (the ink of the axis layer is on screen, as in the light theme)', async () => {
+    const out = [];
+    for (const scheme of ['light', 'dark']) {
+      const q = watch(await context.newPage(), `ink-${scheme}`);
+      await q.emulateMedia({ colorScheme: scheme });
+      await q.goto(url, { waitUntil: 'load' });
+      await ready(q);
+      await noneOnItsWay(q);
+      await settled(q);
+      const box = await q.evaluate(() => window.rimeState.chartPlot);
+      // Left of the plot: the y tick labels and title; beneath it: the x tick labels, title and legend.
+      const left = await chartInk(q, { x0: 0, y0: box.t, x1: box.l - 3, y1: box.b });
+      const below = await chartInk(q, { x0: 0, y0: box.b + 3, x1: box.r, y1: box.legendBottom });
+      await q.close();
+      for (const [what, f] of [['y tick labels', left], ['x tick labels and legend', below]]) {
+        assert(f.back > 0.005, `${scheme}: the axis layer has no ink in its ${what} (${(100 * f.back).toFixed(2)} %)`);
+        assert(f.screen >= 0.5 * f.back, `${scheme}: the ${what} are hidden on screen: ${(100 * f.screen).toFixed(2)} % ink on screen against ${(100 * f.back).toFixed(2)} % in the axis layer`);
+      }
+      out.push(`${scheme}: ink on screen / in the axis layer ${(100 * left.screen).toFixed(1)}/${(100 * left.back).toFixed(1)} % (y labels), ${(100 * below.screen).toFixed(1)}/${(100 * below.back).toFixed(1)} % (x labels, legend)`);
+    }
+    return out.join('; ');
+  });
+
   // Reported, never asserted: main-thread long tasks while a slider is dragged at `integrated` on
   // the phone profile (375×812, CPU slowed 4× through CDP). The collision card integrates in its worker.
   let longTasks = null;
