@@ -17,7 +17,10 @@ export function buildCompare(h) {
       hooks.schedule();
     });
     const t = c.temperature;
-    const where = c.valid ? ` · ${speed(c.valid[0])}–${speed(c.valid[1])}, ${t[0] === t[1] ? qty(t[0], 'K', 3) : `${sig(t[0], 3)}–${qty(t[1], 'K', 3)}`}, ${c.geometry}` : '';
+    // An ansatz with no experiment (borderies1984) has no temperature (∞, null in JSON): "any
+    // temperature", as the core's label says (issue 37: it read "0–—").
+    const temp = !t ? '' : !Number.isFinite(t[1]) ? 'any temperature' : t[0] === t[1] ? qty(t[0], 'K', 3) : `${sig(t[0], 3)}–${qty(t[1], 'K', 3)}`;
+    const where = c.valid ? ` · ${speed(c.valid[0])}–${speed(c.valid[1])}, ${temp}, ${c.geometry}` : '';
     const needs = c.needs ? el('span', { class: 'hint needs', 'data-needs': c.needs }, '') : '';
     return el('label', { class: 'overlay-choice', title: c.label }, box, ` ${c.key.split(':')[1]} (${kinds[c.kind] || c.kind}${where})`, needs);
   }));

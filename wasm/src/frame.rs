@@ -351,24 +351,6 @@ pub(crate) fn pack_frame(
         .collect();
     out.insert("overlays".into(), Json::from(overlays));
     out.insert("friction".into(), Json::from(scene.friction.is_some()));
-    // The one CSV contract and the figure descriptions, built by the core for every surface.
-    let version = env!("CARGO_PKG_VERSION");
-    let record_json = if view.records {
-        let ctx = |what: &str| records::context(f, what, version, &view.date);
-        json!({
-            "curve": records::frame_curve_csv(f),
-            "family": records::family_csv(f),
-            // The map's records are formatted on download (`mapRecords`), not every frame.
-            "map": Json::Null,
-            "context": {
-                "curve": ctx(records::CURVE_WHAT),
-                "family": ctx(records::FAMILY_WHAT),
-                "map": ctx(records::MAP_WHAT),
-            },
-        })
-    } else {
-        Json::Null
-    };
     let pinned = match &view.pinned {
         Some(p) if p.g.len() != p.eps.len() => {
             return Err("view.pinned: g and eps must have the same length".into());
@@ -379,6 +361,25 @@ pub(crate) fn pack_frame(
             eps: p.eps.iter().map(|e| e.unwrap_or(f64::NAN)).collect(),
         }),
         None => None,
+    };
+    // The one CSV contract and the figure descriptions, built by the core for every surface.
+    let version = env!("CARGO_PKG_VERSION");
+    let record_json = if view.records {
+        let ctx = |what: &str| records::context(f, what, version, &view.date);
+        json!({
+            "curve": records::frame_curve_csv(f),
+            // Every curve the chart draws, the pinned one included (issue 37).
+            "family": records::family_csv_pinned(f, pinned.as_ref()),
+            // The map's records are formatted on download (`mapRecords`), not every frame.
+            "map": Json::Null,
+            "context": {
+                "curve": ctx(records::CURVE_WHAT),
+                "family": ctx(records::FAMILY_WHAT),
+                "map": ctx(records::MAP_WHAT),
+            },
+        })
+    } else {
+        Json::Null
     };
     let fig_view = figures::View {
         y_log: view.y_log,
