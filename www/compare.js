@@ -65,7 +65,9 @@ function fitToEntry() {
 let scoresKey = null;
 export function showOverlayScores(res) {
   const lines = (res.overlays || []).filter((o) => o.score !== null && o.score !== undefined)
-    .map((o) => ['', `rms ε_N difference against ${o.label}: ${sig(o.score, 3)}`]);
+    // A measured box scores the distance outside it: 0 means the curve passes through the box
+    // (issue 37: a bare "rms 0" read as a perfect fit).
+    .map((o) => ['', `rms ε_N difference against ${o.label}: ${sig(o.score, 3)}${o.band && o.score === 0 ? ' (the curve lies inside the box at every measured speed)' : ''}`]);
   for (const e of res.errors) if (/^(atlas|model):/.test(e.part)) lines.push(['err', `${e.part}: ${e.message}`]);
   // Rebuilt only when it changes (issue 26).
   const key = JSON.stringify(lines);

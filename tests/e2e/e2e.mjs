@@ -1954,6 +1954,21 @@ try {
     return `"${literal}"`;
   });
 
+  await check('issue 37: a measured box that the curve stays inside scores "0" with the words saying so, not a bare "rms 0"', async () => {
+    const q = watch(await context.newPage(), 'box-score');
+    expected.push(['box-score', /rime: link: no scene/]);
+    await q.goto(viewLink({ accuracy: 'fast', overlays: ['atlas:heisselmann2010', 'atlas:hill2015', 'atlas:bridges1984'] }), { waitUntil: 'load' });
+    await ready(q);
+    await q.waitForFunction(() => document.querySelectorAll('#overlay-scores li').length === 3, null, { timeout: GUARD_MS });
+    const lines = await q.evaluate(() => [...document.querySelectorAll('#overlay-scores li')].map((l) => l.textContent));
+    await q.close();
+    const zero = lines.filter((l) => /: 0( |$)/.test(l));
+    assert(zero.length > 0, `no box scored 0 on this scene: ${lines.join(' | ')}`);
+    assert(zero.every((l) => /inside the box at every measured speed/.test(l)), `bare zero: ${zero.join(' | ')}`);
+    assert(lines.filter((l) => /inside the box/.test(l)).every((l) => /: 0 /.test(l)), `the words beside a non-zero score: ${lines.join(' | ')}`);
+    return lines.map((l) => l.slice(-70)).join(' | ');
+  });
+
   // Reported, never asserted: main-thread long tasks while a slider is dragged at `integrated` on
   // the phone profile (375×812, CPU slowed 4× through CDP). The collision card integrates in its worker.
   let longTasks = null;
