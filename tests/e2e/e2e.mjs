@@ -1969,6 +1969,20 @@ try {
     return lines.map((l) => l.slice(-70)).join(' | ');
   });
 
+  await check('issue 37: the collision card\'s F(ξ) plot has tick values with units on both axes', async () => {
+    const q = watch(await context.newPage(), 'loop-ticks');
+    await q.goto(url, { waitUntil: 'load' });
+    await ready(q);
+    await q.locator('#collision-card').scrollIntoViewIfNeeded();
+    await q.waitForFunction(() => window.rimeState.collisionTicks && document.getElementById('collision-card').getAttribute('aria-busy') === 'false', null, { timeout: GUARD_MS });
+    const t = await q.evaluate(() => window.rimeState.collisionTicks);
+    await q.close();
+    const xMax = t.x[t.x.length - 1], yMax = t.y.reduce((a, b) => (b[0] > a[0] ? b : a));
+    assert(t.x.length >= 2 && xMax[0] > 0 && / [pnµm]?m$/.test(xMax[1]), `ξ ticks ${JSON.stringify(t.x)}`);
+    assert(t.y.length >= 2 && yMax[0] > 0 && / [pnµmk]?N$/.test(yMax[1]), `F ticks ${JSON.stringify(t.y)}`);
+    return `ξ: ${t.x.map((x) => x[1]).join(' … ')}; F: ${t.y.map((y) => y[1]).join(', ')}`;
+  });
+
   // Reported, never asserted: main-thread long tasks while a slider is dragged at `integrated` on
   // the phone profile (375×812, CPU slowed 4× through CDP). The collision card integrates in its worker.
   let longTasks = null;
