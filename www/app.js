@@ -401,7 +401,7 @@ function publish(req, res) {
     warningDetails: res.warningDetails,
     mapMax: res.map ? res.map.max : null,
     mapNote: res.mapNote,
-    figure: { y: fig.y, x: fig.x, series: fig.series.map((x) => x.name), styles: fig.series.map((x) => `${x.color}/${x.stroke}`), bands: fig.bands.map((b) => b.label), markers: fig.markers.map((m) => m.label), caption: fig.caption },
+    figure: { y: fig.y, x: fig.x, series: fig.series.map((x) => x.name), styles: fig.series.map((x) => `${x.color}/${x.stroke}`), widths: fig.series.map((x) => x.width || null), bands: fig.bands.map((b) => b.label), markers: fig.markers.map((m) => m.label), caption: fig.caption },
     tidal: res.tidal,
     tidalIn: app.tidalIn,
     frameErrors: res.errors,

@@ -35,7 +35,7 @@ export function chartSpec(res, view, hover = null, { shortLabels = false } = {})
   const series = fig.series.map((s) => {
     const top = color(s.color) === PALETTE.scene && s.stroke === 'solid';
     const dash = { dashed: [6, 3], dotted: [2, 3], longdash: [14, 4] }[s.stroke] || null;
-    return { x: s.x, y: s.y, color: color(s.color), width: top ? 2.6 : 1.5, dash, label: s.name, short: s.short };
+    return { x: s.x, y: s.y, color: color(s.color), width: s.width || (top ? 2.6 : 1.5), dash, label: s.name, short: s.short };
   });
   const bands = fig.bands.map((b) => ({ x: b.x, y: b.y, color: color(b.color), label: b.label, short: b.short }));
   const markers = fig.markers.map((m) => ({ x: m.x, label: m.label, short: m.short, color: color(m.color) }));
@@ -216,7 +216,11 @@ export function pinnedForRequest(wantScene) {
 
 /** The pinned curve's note beside the chart. */
 export function pinLabel() {
-  setText($('pin-note'), app.pinned ? `Pinned (dashed grey): the curve of the scene with ${app.pinned.label}.` : '');
+  // Before any edit the pinned curve is the one on screen (issue 37: it read "with same scene").
+  const text = !app.pinned ? ''
+    : app.pinned.label === 'same scene' ? 'Pinned (dashed grey): this curve, as it is now; edit a parameter to compare with it.'
+      : `Pinned (dashed grey): the curve of the scene with ${app.pinned.label}.`;
+  setText($('pin-note'), text);
 }
 
 export function wireChart(h) {
@@ -233,6 +237,9 @@ export function wireChart(h) {
     const i = pointer(ev);
     if (i === null) return;
     app.hover.chart = i;
+    // A tap sends no pointermove (and its pointerleave cleared the cursor just before): the click
+    // draws the cursor and readout itself, and they stay (issue 37).
+    drawChartCanvas();
     hooks.replay(app.res.g[i]);
   });
   chart.addEventListener('keydown', (ev) => {

@@ -227,8 +227,24 @@ function drawLoop(canvas, d, s) {
   ctx.strokeRect(box.l, box.t, box.r - box.l, box.b - box.t);
   ctx.fillStyle = '#333';
   ctx.font = '11px sans-serif';
-  ctx.fillText('overlap ξ [m]', box.r - 80, h - 6);
+  ctx.fillText('overlap ξ', box.r - 80, h - 6);
   ctx.fillText(`F (max ${qty(f1, 'N', 2)})`, box.l + 4, box.t + 12);
+  // Tick values at both ends of each axis (issue 37: the plot had none), with their units.
+  const ticks = {
+    x: [[x0, 'left'], [x1, 'right']].map(([v, align]) => ({ v, text: qty(v, 'm', 3), at: X(v), align })),
+    // 0 N only where it does not crowd an end (a small pull below it, -103 mN against 1 N).
+    y: [...new Set([f0, f1, ...(Math.min(Y(0) - Y(f1), Y(f0) - Y(0)) >= 12 ? [0] : [])])].map((v) => ({ v, text: qty(v, 'N', 3), at: Y(v) })),
+  };
+  ctx.fillStyle = '#555';
+  ctx.font = '10px sans-serif';
+  for (const t of ticks.x) {
+    ctx.textAlign = t.align;
+    ctx.fillText(t.text, t.at, box.b + 12);
+  }
+  ctx.textAlign = 'right';
+  for (const t of ticks.y) ctx.fillText(t.text, box.l - 3, Math.min(box.b, Math.max(box.t + 8, t.at + 3)));
+  ctx.textAlign = 'left';
+  window.rimeState.collisionTicks = { x: ticks.x.map((t) => [t.v, t.text]), y: ticks.y.map((t) => [t.v, t.text]) };
   const path = (xa, fa, upto, color, width) => {
     ctx.beginPath();
     for (let k = 0; k <= upto && k < xa.length; k++) {

@@ -17,7 +17,10 @@ export function buildCompare(h) {
       hooks.schedule();
     });
     const t = c.temperature;
-    const where = c.valid ? ` · ${speed(c.valid[0])}–${speed(c.valid[1])}, ${t[0] === t[1] ? qty(t[0], 'K', 3) : `${sig(t[0], 3)}–${qty(t[1], 'K', 3)}`}, ${c.geometry}` : '';
+    // An ansatz with no experiment (borderies1984) has no temperature (∞, null in JSON): "any
+    // temperature", as the core's label says (issue 37: it read "0–—").
+    const temp = !t ? '' : !Number.isFinite(t[1]) ? 'any temperature' : t[0] === t[1] ? qty(t[0], 'K', 3) : `${sig(t[0], 3)}–${qty(t[1], 'K', 3)}`;
+    const where = c.valid ? ` · ${speed(c.valid[0])}–${speed(c.valid[1])}, ${temp}, ${c.geometry}` : '';
     const needs = c.needs ? el('span', { class: 'hint needs', 'data-needs': c.needs }, '') : '';
     return el('label', { class: 'overlay-choice', title: c.label }, box, ` ${c.key.split(':')[1]} (${kinds[c.kind] || c.kind}${where})`, needs);
   }));
@@ -62,7 +65,9 @@ function fitToEntry() {
 let scoresKey = null;
 export function showOverlayScores(res) {
   const lines = (res.overlays || []).filter((o) => o.score !== null && o.score !== undefined)
-    .map((o) => ['', `rms ε_N difference against ${o.label}: ${sig(o.score, 3)}`]);
+    // A measured box scores the distance outside it: 0 means the curve passes through the box
+    // (issue 37: a bare "rms 0" read as a perfect fit).
+    .map((o) => ['', `rms ε_N difference against ${o.label}: ${sig(o.score, 3)}${o.band && o.score === 0 ? ' (the curve lies inside the box at every measured speed)' : ''}`]);
   for (const e of res.errors) if (/^(atlas|model):/.test(e.part)) lines.push(['err', `${e.part}: ${e.message}`]);
   // Rebuilt only when it changes (issue 26).
   const key = JSON.stringify(lines);

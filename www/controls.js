@@ -23,6 +23,9 @@ let hooks = { schedule: () => {}, notice: () => {} };
 const helpOf = (path) => (HELP.parameters[path] || {}).help || '';
 const optionName = (path, o) => ((HELP.parameters[path] || {}).options || {})[o] || o;
 const sliderRange = (p) => (HELP.parameters[p.path] || {}).slider || [p.min, p.max];
+/** Whether the page writes this parameter's values with their unit ("20 mm", "10 GPa"; not "900"
+ *  for kg/m³). */
+const carriesUnit = (p) => !!p.unit && /\d\s*[^\d\s.eE+-]/.test(editable(sliderRange(p)[0] || 1, p.unit));
 const shown = (p, v) => (p.unit ? qty(v, p.unit, 4) : sig(v, 4));
 
 function toSlider(p, v) {
@@ -155,7 +158,7 @@ export function buildControls(h) {
         rows.set(p.path, { p, root, sel, err });
       } else {
         const slider = el('input', { type: 'range', min: 0, max: SLIDER_STEPS, step: 1, 'aria-label': `${p.label} (slider)`, 'data-path': p.path, 'aria-describedby': hid });
-        const typed = el('input', { type: 'text', id, inputmode: 'decimal', spellcheck: 'false', 'data-path': p.path, autocomplete: 'off', 'aria-describedby': `${hid} ${id}-err` });
+        const typed = el('input', { type: 'text', id, inputmode: 'decimal', spellcheck: 'false', 'data-path': p.path, autocomplete: 'off', 'aria-describedby': `${hid} ${id}-err`, ...(carriesUnit(p) ? { title: `a value with its unit; a bare number is in ${p.unit}` } : {}) });
         const err = el('span', { class: 'err', id: `${id}-err`, role: 'status' });
         slider.addEventListener('input', () => {
           const v = fromSlider(p, Number(slider.value));
@@ -171,7 +174,10 @@ export function buildControls(h) {
         const root = el('div', { class: 'param', 'data-path': p.path },
           el('label', { class: 'name', for: id }, p.label),
           el('span', { class: 'slider-box' }, slider),
-          el('span', { class: 'typed' }, el('span', { class: 'typed-box' }, typed), el('span', { class: 'unit' }, p.unit || '–')),
+          // A typed value that carries its unit ("20 mm") has no unit column after it (issue 37: it
+          // read "20 mm m"; a bare number is taken in the SI unit, as its title says); one written
+          // bare ("900" kg/m³) keeps it.
+          el('span', { class: 'typed' }, el('span', { class: 'typed-box' }, typed), ...(carriesUnit(p) ? [] : [el('span', { class: 'unit' }, p.unit || '–')])),
           helpLine(p.path, hid),
           err);
         box.append(root);
@@ -237,7 +243,24 @@ export function syncControls() {
 /** What the chosen level trades (how ε_N is obtained, its bound, its cost), beside the menu. */
 function showTrade() {
   const l = HELP.levels.find((x) => x.name === $('accuracy').value);
-  setText($('accuracy-help'), l ? l.trade : '');
+  let text = l ? l.trade : '';
+  // The literal layer reading has no table: `precise` integrates each contact at rtol 1e-13 for its
+  // 1e-10 bound, `integrated` at 1e-9 for 1e-6, so here precise is the slower (issue 37; physics.md
+  // "Accuracy").
+  if (l && l.name === 'precise' && literalLayer()) text += ' — on this literal layer reading it integrates each contact at rtol 1e-13 for that bound: slower than integrated (rtol 1e-9, bound 1e-6)';
+  setText($('accuracy-help'), text);
+}
+
+let literalKey = null;
+let literalSeen = false;
+/** Whether the scene being edited reads the soft layer literally (Eq. (8) as printed). */
+function literalLayer() {
+  const json = app.wantScene;
+  if (json !== literalKey) {
+    literalKey = json;
+    try { const s = JSON.parse(json); literalSeen = !!(s && s.layer && s.layer.reading === 'literal'); } catch { literalSeen = false; }
+  }
+  return literalSeen;
 }
 
 /** Goes back (or forward) in the history of scene edits. */

@@ -97,14 +97,17 @@ export function physicsUrl(anchor = '') {
   return `physics.html${anchor ? `#${anchor}` : ''}`;
 }
 
-/** The anchor of the physics notes where an equation ("4", "23", "A.5") is decided. */
+/** The anchor of the physics notes for an equation ("4", "23", "A.5"): its row of the table
+ *  "Equations used" (docs/physics.md: the formula, the code, and a link to its decision; issue 37:
+ *  the links landed on the decision, which may not write the equation). An equation without a row
+ *  of its own goes to the row of its range (Eq. (14) → Eq. (13)–(16)), else to its decision. */
+const EQUATION_ROWS = [1, 2, 4, 5, 8, 9, 10, 11, 12, 15, 17, 22, 23, 25, 26, 27];
 export function equationAnchor(eq) {
-  if (/^A\./.test(eq)) return 'decision-8';
+  if (/^A\./.test(eq)) return 'eq-a1';
   const n = Number(eq);
-  if (n === 4) return 'decision-1';
-  if (n === 5 || n === 1) return 'decision-2';
-  if (n >= 8 && n <= 10) return 'decision-4';
-  if (n >= 11 && n <= 17) return 'decision-5';
+  if (EQUATION_ROWS.includes(n)) return `eq-${n}`;
+  if (n >= 13 && n <= 16) return 'eq-13';
+  if (n >= 18 && n <= 21) return 'eq-18';
   if (n >= 18 && n <= 26) return 'decision-6';
   return 'equations-used';
 }

@@ -8,6 +8,7 @@ import { chartSpec } from './chart.js';
 import { classColors, epsTSpec, mapSpec } from './map.js';
 import { CanvasPainter, SvgPainter, chartLegendHeight, drawCaption, drawChart, drawLines, drawMap } from './plot.js';
 import { app } from './state.js';
+import { writeHashNow } from './url.js';
 
 let version = '';
 export function setVersion(v) { version = v; }
@@ -138,6 +139,8 @@ export function wireDownloads(onError) {
   $('dl-scene').addEventListener('click', () => app.drawn && !app.preview && download('rime-scene.json', 'application/json', JSON.stringify(JSON.parse(app.drawn.scene), null, 2) + '\n'));
   $('copy-link').addEventListener('click', async () => {
     try {
+      // The state now, not the link written a second after the last edit (issue 37).
+      writeHashNow();
       await navigator.clipboard.writeText(location.href);
       $('copy-status').textContent = 'link copied';
     } catch {

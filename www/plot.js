@@ -306,21 +306,8 @@ export function drawChartFront(p, spec, g = chartGeometry(p, spec)) {
       const name = (b.short || '').split(' (')[0];
       if (x1 - x0 > 18) p.text(Math.max(box.l + 2, Math.min(x0 + 3, box.r - textWidth(name, 10) - 3)), y0 + 12, name, { size: 10, color: b.color });
     }
-    (spec.markers || []).forEach((m, i) => {
-      if (!(m.x > spec.xMin && m.x < spec.xMax)) return;
-      const x = X(m.x);
-      p.line([[x, box.t], [x, box.b]], { color: m.color || '#555', width: 1.2, dash: [2, 3] });
-      let label = m.label;
-      const fits = (t) => t.length * 5.9 + 6;
-      let right = x + fits(label) <= box.r || x - fits(label) < box.l;
-      if (x + fits(label) > box.r && x - fits(label) < box.l) {
-        label = m.short || label;
-        right = x + fits(label) <= box.r;
-      }
-      // Fitting neither side whole: inside the plot from its left edge (never cut by it).
-      const inside = !right && x - fits(label) < box.l;
-      p.text(inside ? box.l + 2 : x + (right ? 4 : -4), box.b - 8 - i * 15, label, { size: 10.5, color: AXIS, align: right || inside ? 'left' : 'right', bg: 'rgba(255,255,255,0.85)' });
-    });
+    const shown = (spec.markers || []).filter((m) => m.x > spec.xMin && m.x < spec.xMax);
+    for (const m of shown) p.line([[X(m.x), box.t], [X(m.x), box.b]], { color: m.color || '#555', width: 1.2, dash: [2, 3] });
     // Series: broken where ε_N is not finite; on a log axis also where it is 0 (stuck).
     for (const s of spec.series) {
       let seg = [];
@@ -333,6 +320,20 @@ export function drawChartFront(p, spec, g = chartGeometry(p, spec)) {
       }
       flush();
     }
+    // The markers' labels over the curves (issue 37: the curves struck them through), one row each.
+    shown.forEach((m, i) => {
+      const x = X(m.x);
+      let label = m.label;
+      const fits = (t) => t.length * 5.9 + 6;
+      let right = x + fits(label) <= box.r || x - fits(label) < box.l;
+      if (x + fits(label) > box.r && x - fits(label) < box.l) {
+        label = m.short || label;
+        right = x + fits(label) <= box.r;
+      }
+      // Fitting neither side whole: inside the plot from its left edge (never cut by it).
+      const inside = !right && x - fits(label) < box.l;
+      p.text(inside ? box.l + 2 : x + (right ? 4 : -4), box.b - 8 - i * 15, label, { size: 10.5, color: AXIS, align: right || inside ? 'left' : 'right', bg: 'rgba(255,255,255,0.85)' });
+    });
     if (spec.hover) {
       const x = X(spec.hover.x);
       p.line([[x, box.t], [x, box.b]], { color: '#888', width: 1 });

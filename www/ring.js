@@ -12,6 +12,9 @@ import { app } from './state.js';
 /** The card's inputs as the page starts (a link carries only inputs that differ). */
 export const RING_DEFAULTS = Object.freeze({ tau: 0.5, omega: 1.3143527e-4, planet: false, onChart: false });
 
+/** The width of the ring's ε_cr line on the chart (px; comparisons 1.5, this scene 2.6 solid). */
+const RING_LINE_WIDTH = 2.6;
+
 /** The card's inputs (in the link, `&r=`) and its last result. */
 export const ring = { ...RING_DEFAULTS, card: null, error: null };
 
@@ -40,6 +43,14 @@ function card(scene, text) {
   }
 }
 
+/** Why the core refuses `value` for the card's input `key` (`tau`, `omega`) on `scene` (JSON) over
+ *  the speeds `range`, or null: a link's value gets the card's own range check (issue 37: a link
+ *  carried τ = 1e308 past it). */
+export function ringInputProblem(key, value, scene, range) {
+  const trial = card(scene, request({ ...ring, planet: false, [key]: value }, range));
+  return trial.error && trial.error.startsWith(`ring.${key}`) ? trial.error : null;
+}
+
 /** The ring card's inputs for a frame request (the worker computes the card with the frame). */
 export function ringInputs() {
   return { tau: ring.tau, omega: ring.omega, planet: ring.planet, onChart: ring.onChart };
@@ -64,7 +75,9 @@ export function ringOverlay(res, out) {
     name, short, color: line.color, stroke, dashed: stroke !== 'solid' && stroke !== 'points',
     x: Float64Array.from(points, (p) => p[0]), y: Float64Array.from(points, (p) => p[1]),
   });
-  fig.series.push(series(line.name, line.short, line.points, line.stroke));
+  // Drawn thicker than every comparison (issue 37: its blue dashes looked like borderies1984's
+  // cyan ones): the one wide dashed line of the chart.
+  fig.series.push({ ...series(line.name, line.short, line.points, line.stroke), width: RING_LINE_WIDTH });
   if (c.meeting) fig.series.push(series('ε_N meets the ring\'s ε_cr', 'meets ε_cr', [c.meeting], 'points'));
   fig.markers.push(c.impact_marker);
 }

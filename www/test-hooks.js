@@ -20,6 +20,7 @@
 //   timer:late       compute.js LATE_MS: a late frame's preview asked from the other worker
 //   timer:describe   dom.js DESCRIBE_AFTER_MS: text alternatives, notes, legend and timing line
 //   timer:secondary  app.js SECONDARY_AFTER_MS: the collision and ring cards after the edits pause
+//   timer:hash       url.js writeHash: the link written a second after the last edit
 //
 // A held timer never starts: it is parked at once, and `fire(name)` runs it now (a debounce fired
 // at once), `release(name)` runs it and stops holding; a cancelled one (a debounce called again)

@@ -3,8 +3,9 @@
 // named and the good ones are kept.
 import { HELP, parseChartSpeed, parseQuantity, parseSpeed } from './core.js';
 import { errText } from './dom.js';
+import { later } from './test-hooks.js';
 import { DEFAULT_VIEW, START_PRESET, app } from './state.js';
-import { RING_DEFAULTS, ring, ringInputs } from './ring.js';
+import { RING_DEFAULTS, ring, ringInputProblem, ringInputs } from './ring.js';
 import { TIDAL_FIELDS } from './tidal.js';
 
 let timer = null;
@@ -14,8 +15,8 @@ let timer = null;
  *  of the page, 8–12 ms of the page's thread (issue 26: a long task on a phone while a slider was
  *  dragged). */
 export function writeHash() {
-  clearTimeout(timer);
-  timer = setTimeout(() => {
+  if (timer) timer.cancel();
+  timer = later('timer:hash', () => {
     timer = null;
     if ('requestIdleCallback' in window) requestIdleCallback(() => writeHashNow(), { timeout: 1000 });
     else writeHashNow();
@@ -85,10 +86,15 @@ function readView(text, problems) {
     const offered = new Set(app.overlayChoices.map((c) => c.key));
     if (!Array.isArray(obj.overlays)) problems.push('view.overlays: a list of atlas:ID or model:NAME');
     else {
+      // Each offered overlay once, so at most as many as are offered (issue 37: 20 000 copies of
+      // one valid overlay took 22 s to the first frame); the repeats are dropped and said once.
+      let repeats = 0;
       for (const o of obj.overlays) {
-        if (offered.has(o)) v.overlays.push(o);
-        else problems.push(`view.overlays: ${String(o).slice(0, 40)} is not offered`);
+        if (!offered.has(o)) problems.push(`view.overlays: ${String(o).slice(0, 40)} is not offered`);
+        else if (v.overlays.includes(o)) repeats++;
+        else v.overlays.push(o);
       }
+      if (repeats) problems.push(`view.overlays: ${repeats} repeated ${repeats === 1 ? 'entry' : 'entries'} dropped (each overlay is drawn once)`);
     }
   }
   return v;
@@ -161,6 +167,8 @@ function readPinned(text, problems) {
   for (const k of Object.keys(obj)) if (!['scene', 'accuracy', 'from', 'to'].includes(k)) problems.push(`pinned.${k}: unknown field`);
   const out = {};
   try {
+    // (A missing scene is named as such, not as the TypeError of reading it: issue 37.)
+    if (obj.scene === undefined || obj.scene === null) { problems.push('pinned.scene: missing'); return null; }
     const scene = typeof obj.scene === 'string' ? obj.scene : JSON.stringify(obj.scene);
     app.probeEx.setJson(scene);
     app.probeScene = null; // the probe editor no longer holds the drawn scene
@@ -216,6 +224,8 @@ function readRing(text, problems) {
     try {
       const v = parseQuantity(`ring.${key}`, String(obj[key]), units[key]);
       if (!(v > 0)) throw new Error(`ring.${key}: must be a positive number`);
+      const why = ringInputProblem(key, v, app.ex.toJson(), [app.view.from, app.view.to]);
+      if (why) throw new Error(why);
       ring[key] = v;
     } catch (e) { problems.push(errText(e)); }
   }

@@ -1783,6 +1783,231 @@ try {
     return `R₁ after ${n + 1} Tabs (was 51); ${eqLinks.length} equation links kept as links out of the Tab order`;
   });
 
+  // ---------- issue 37: the dark chart, the link copied now, a tap, a link of repeats, the texts ----------
+  /** The ink (dark pixels, opaque) of `region` (CSS px of the chart canvas: {x0, y0, x1, y1}) in
+   *  the chart as composited on screen (an element screenshot: both layers and their CSS
+   *  backgrounds) and in the background layer alone (its own pixels): fractions of the region. */
+  async function chartInk(q, region) {
+    const shot = (await q.locator('#chart').screenshot()).toString('base64');
+    return q.evaluate(async ({ b64, r }) => {
+      const bytes = Uint8Array.from(atob(b64), (ch) => ch.charCodeAt(0));
+      const bmp = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
+      const oc = new OffscreenCanvas(bmp.width, bmp.height);
+      const cx = oc.getContext('2d');
+      cx.drawImage(bmp, 0, 0);
+      const screen = { width: bmp.width, height: bmp.height, data: cx.getImageData(0, 0, bmp.width, bmp.height).data };
+      const [back] = await window.rimeTest.layers('chart');
+      const cssW = document.getElementById('chart').clientWidth;
+      const frac = (img) => {
+        const k = img.width / cssW;
+        let n = 0, ink = 0;
+        for (let y = Math.round(r.y0 * k); y < Math.round(r.y1 * k); y++) {
+          for (let x = Math.round(r.x0 * k); x < Math.round(r.x1 * k); x++) {
+            const i = (y * img.width + x) * 4, d = img.data;
+            n++;
+            // Ink: opaque and darker than mid grey (tick labels, axis titles, legend text on white).
+            if (d[i + 3] > 128 && 0.2126 * d[i] + 0.7152 * d[i + 1] + 0.0722 * d[i + 2] < 140) ink++;
+          }
+        }
+        return ink / Math.max(1, n);
+      };
+      return { screen: frac(screen), back: frac(back) };
+    }, { b64: shot, r: region });
+  }
+
+  await check('issue 37: dark theme — the ε_N chart shows its axes, tick labels and legend (the ink of the axis layer is on screen, as in the light theme)', async () => {
+    const out = [];
+    for (const scheme of ['light', 'dark']) {
+      const q = watch(await context.newPage(), `ink-${scheme}`);
+      await q.emulateMedia({ colorScheme: scheme });
+      await q.goto(url, { waitUntil: 'load' });
+      await ready(q);
+      await noneOnItsWay(q);
+      await settled(q);
+      const box = await q.evaluate(() => window.rimeState.chartPlot);
+      // Left of the plot: the y tick labels and title; beneath it: the x tick labels, title and legend.
+      const left = await chartInk(q, { x0: 0, y0: box.t, x1: box.l - 3, y1: box.b });
+      const below = await chartInk(q, { x0: 0, y0: box.b + 3, x1: box.r, y1: box.legendBottom });
+      await q.close();
+      for (const [what, f] of [['y tick labels', left], ['x tick labels and legend', below]]) {
+        assert(f.back > 0.005, `${scheme}: the axis layer has no ink in its ${what} (${(100 * f.back).toFixed(2)} %)`);
+        assert(f.screen >= 0.5 * f.back, `${scheme}: the ${what} are hidden on screen: ${(100 * f.screen).toFixed(2)} % ink on screen against ${(100 * f.back).toFixed(2)} % in the axis layer`);
+      }
+      out.push(`${scheme}: ink on screen / in the axis layer ${(100 * left.screen).toFixed(1)}/${(100 * left.back).toFixed(1)} % (y labels), ${(100 * below.screen).toFixed(1)}/${(100 * below.back).toFixed(1)} % (x labels, legend)`);
+    }
+    return out.join('; ');
+  });
+
+  await check('issue 37: "copy link" copies the state on screen right after an edit (not the link written a second later)', async () => {
+    const q = watch(await context.newPage(), 'copy-now');
+    await q.goto(url, { waitUntil: 'load' });
+    await ready(q);
+    await noneOnItsWay(q);
+    // The clipboard as the check reads it; the delayed write of the link held, as if the click came first.
+    await q.evaluate(() => { navigator.clipboard.writeText = async (t) => { window.__copied = t; }; });
+    await hold(q, 'timer:hash');
+    await stepE(q, 37);
+    const before = await q.evaluate(() => location.href);
+    await q.locator('#copy-link').click();
+    await q.waitForFunction(() => window.__copied !== undefined, null, { timeout: GUARD_MS });
+    const d = await q.evaluate(() => ({ copied: window.__copied, scene: window.rimeState.sceneJson, status: document.getElementById('copy-status').textContent }));
+    await q.close();
+    const s = new URLSearchParams(new URL(d.copied).hash.slice(1)).get('s');
+    assert(s !== null, `the copied link has no scene: ${d.copied.slice(0, 120)}`);
+    const y = (json) => JSON.parse(json).bulk.youngs_modulus;
+    assert(y(s) === y(d.scene), `copied Y = ${y(s)}, on screen Y = ${y(d.scene)} (link before the click: ${before.slice(0, 80)}…)`);
+    return `copied Y = ${y(s)} Pa, the scene on screen; "${d.status}"`;
+  });
+
+  await check('issue 37: a tap on the chart (touch) shows the readout and cursor at the tapped speed, and they stay', async () => {
+    const q = watch(await context.newPage(), 'tap');
+    await q.setViewportSize({ width: 375, height: 812 });
+    await q.goto(url, { waitUntil: 'load' });
+    await ready(q);
+    await noneOnItsWay(q);
+    const cdp = await context.newCDPSession(q);
+    await cdp.send('Emulation.setTouchEmulationEnabled', { enabled: true, maxTouchPoints: 5 });
+    await q.locator('#chart').scrollIntoViewIfNeeded();
+    await q.evaluate(() => {
+      window.__events = [];
+      for (const t of ['pointerdown', 'pointermove', 'pointerup', 'pointerleave', 'click']) {
+        document.getElementById('chart').addEventListener(t, (e) => window.__events.push(`${t}:${e.pointerType || ''}`));
+      }
+    });
+    const c = await q.locator('#chart').boundingBox();
+    const box = await q.evaluate(() => window.rimeState.chartPlot);
+    const x = c.x + (box.l + box.r) / 2, y = c.y + (box.t + box.b) / 2;
+    const fronts = await q.evaluate(() => window.rimeState.chartLayers.frontDraws);
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x, y }] });
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+    await q.waitForFunction(() => window.__events.includes('click:touch') || window.__events.includes('click:'), null, { timeout: GUARD_MS });
+    // The collision card takes the tapped speed (the click's other effect); then the readout is read.
+    await q.waitForFunction(() => document.getElementById('collision-card').getAttribute('aria-busy') === 'false', null, { timeout: GUARD_MS });
+    await noneOnItsWay(q);
+    const d = await q.evaluate(() => ({ t: document.getElementById('chart-readout').textContent, hover: window.rimeState.chartLayers, events: window.__events, card: document.querySelector('#collision-card h2, #collision-card .collision-head')?.textContent || '' }));
+    await q.close();
+    assert(/^g_N = .*ε_N = /.test(d.t), `after a tap (events ${d.events.join(', ')}) the readout reads "${d.t}"`);
+    assert(d.hover.frontDraws > fronts, `the data layer (cursor) was not redrawn after the tap (${fronts} → ${d.hover.frontDraws})`);
+    return `events ${d.events.join(', ')}; readout "${d.t}"`;
+  });
+
+  await check('issue 37: a link with 20 000 copies of one overlay draws it once and says the repeats were dropped', async () => {
+    const q = watch(await context.newPage(), 'repeats');
+    expected.push(['repeats', /rime: link: (no scene|view\.overlays: 19999 repeated)/]);
+    await q.goto(viewLink({ accuracy: 'fast', overlays: Array(20000).fill('atlas:bridges1984') }), { waitUntil: 'load' });
+    await ready(q);
+    const d = await q.evaluate(() => ({ overlays: window.rimeState.view.overlays, notice: document.getElementById('notice').textContent, drawn: (window.rimeState.overlays || []).length }));
+    await q.close();
+    assert(d.overlays.length === 1 && d.overlays[0] === 'atlas:bridges1984', `view.overlays has ${d.overlays.length} entries`);
+    assert(d.drawn === 1, `${d.drawn} overlays drawn`);
+    assert(/19999 repeated entries dropped/.test(d.notice), `notice: ${d.notice}`);
+    return `1 overlay kept and drawn; notice "${d.notice.slice(-70)}"`;
+  });
+
+  await check('issue 37: pinning before any edit says what is pinned (not "with same scene") and the all-curves CSV has the pinned curve; help text ≥ 12 px; no unit after a value that has one', async () => {
+    const q = watch(await context.newPage(), 'pin-words');
+    await q.goto(url, { waitUntil: 'load' });
+    await ready(q);
+    await noneOnItsWay(q);
+    await q.locator('#pin').click();
+    await q.waitForFunction(() => document.getElementById('pin-note').textContent !== '', null, { timeout: GUARD_MS });
+    // The pinned curve is drawn (the frame asked again with it), and the all-curves CSV has it.
+    await q.waitForFunction(() => window.rimeState.gen === window.rimeState.asked && /pinned/.test(window.rimeExports.familyCsv().split('\n').find((l) => l.startsWith('g_n')) || ''), null, { timeout: GUARD_MS });
+    const d = await q.evaluate(() => ({
+      head: window.rimeExports.familyCsv().split('\n').find((l) => l.startsWith('g_n')),
+      note: document.getElementById('pin-note').textContent,
+      help: Math.min(...[...document.querySelectorAll('.param .help')].map((h) => parseFloat(getComputedStyle(h).fontSize))),
+      units: [...document.querySelectorAll('.param')].filter((p) => p.querySelector('input[type=text]')).map((p) => [p.querySelector('input[type=text]').value, p.querySelector('.unit')?.textContent || '']),
+    }));
+    await q.close();
+    assert(!/same scene/.test(d.note) && /this curve/.test(d.note), `pin note: "${d.note}"`);
+    assert(d.help >= 12, `help text at ${d.help} px`);
+    // A value typed with a unit ("20 mm") is not followed by the SI unit again ("20 mm m").
+    assert(d.units.length > 10 && d.units.filter(([v]) => /\d\s*[a-zµ]/i.test(v)).length >= 3, `typed values: ${JSON.stringify(d.units)}`);
+    const doubled = d.units.filter(([v, u]) => /\d\s*[a-zµ]/i.test(v) && u.trim() !== '');
+    assert(doubled.length === 0, `values with a unit and a unit column: ${doubled.map(([v, u]) => `"${v} ${u}"`).join(', ')}`);
+    return `"${d.note}"; CSV header ends "${d.head.slice(-40)}"; help ${d.help} px; ${d.units.length} typed values, none followed by a unit column`;
+  });
+
+  await check('issue 37: every equation link lands on the row of its equation in the physics notes ("Equations used"), not on a decision', async () => {
+    const q = watch(await context.newPage(), 'eq-rows');
+    await q.goto(url, { waitUntil: 'load' });
+    await ready(q);
+    const links = await q.evaluate(() => [...new Set([...document.querySelectorAll('a.eq')].map((a) => `${a.textContent}\t${a.getAttribute('href')}`))].map((s) => s.split('\t')));
+    const html = await (await q.request.get(new URL('physics.html', url).href)).text();
+    await q.close();
+    const num = (a, n) => (a ? 1000 + Number(n) : Number(n));
+    const bad = [];
+    let rows = 0;
+    for (const [text, href] of links) {
+      const m = text.match(/^Eq\. \((A\.)?(\d+)\)/);
+      if (!m) continue; // "decision N" links go to their decision
+      const id = href.split('#')[1] || '';
+      const at = html.indexOf(`id="${id}"`);
+      const row = at < 0 ? '' : html.slice(at, at + 200).replace(/<[^>]*>/g, '').replace(/^[^>]*>/, '');
+      const r = row.match(/^\s*Eq\. \((A\.)?(\d+)\)(?:–\((A\.)?(\d+)\))?/);
+      const n = num(m[1], m[2]);
+      if (!r || !(num(r[1], r[2]) <= n && n <= (r[4] ? num(r[3], r[4]) : num(r[1], r[2])))) bad.push(`${text} → #${id} ("${row.trim().slice(0, 30)}")`);
+      else rows++;
+    }
+    assert(bad.length === 0 && rows > 5, `${bad.join('; ')} (${rows} on their rows)`);
+    return `${rows} distinct equation links, each on its equation's row`;
+  });
+
+  await check('issue 37: on the literal layer reading the accuracy text says why `precise` is slower than `integrated` (and only there)', async () => {
+    const q = watch(await context.newPage(), 'literal-trade');
+    await q.goto(url, { waitUntil: 'load' });
+    await ready(q);
+    const trade = () => q.evaluate(() => document.getElementById('accuracy-help').textContent);
+    let u = await updates(q);
+    await q.selectOption('#preset', 'ice-frost');
+    await waitUpdate(q, u);
+    await q.selectOption('#accuracy', 'precise');
+    await q.waitForFunction(() => window.rimeState.view.accuracy === 'precise', null, { timeout: GUARD_MS });
+    const offset = await trade();
+    u = await updates(q);
+    await q.selectOption('[id="p-layer.reading"]', 'literal');
+    await waitUpdate(q, u);
+    await q.waitForFunction(() => /literal layer reading/.test(document.getElementById('accuracy-help').textContent), null, { timeout: GUARD_MS });
+    const literal = await trade();
+    await q.selectOption('#accuracy', 'integrated');
+    const integrated = await trade();
+    await q.close();
+    assert(!/literal layer reading/.test(offset), `offset reading: "${offset}"`);
+    assert(/slower than integrated/.test(literal) && /1e-13/.test(literal), `literal at precise: "${literal}"`);
+    assert(!/literal layer reading/.test(integrated), `literal at integrated: "${integrated}"`);
+    return `"${literal}"`;
+  });
+
+  await check('issue 37: a measured box that the curve stays inside scores "0" with the words saying so, not a bare "rms 0"', async () => {
+    const q = watch(await context.newPage(), 'box-score');
+    expected.push(['box-score', /rime: link: no scene/]);
+    await q.goto(viewLink({ accuracy: 'fast', overlays: ['atlas:heisselmann2010', 'atlas:hill2015', 'atlas:bridges1984'] }), { waitUntil: 'load' });
+    await ready(q);
+    await q.waitForFunction(() => document.querySelectorAll('#overlay-scores li').length === 3, null, { timeout: GUARD_MS });
+    const lines = await q.evaluate(() => [...document.querySelectorAll('#overlay-scores li')].map((l) => l.textContent));
+    await q.close();
+    const zero = lines.filter((l) => /: 0( |$)/.test(l));
+    assert(zero.length > 0, `no box scored 0 on this scene: ${lines.join(' | ')}`);
+    assert(zero.every((l) => /inside the box at every measured speed/.test(l)), `bare zero: ${zero.join(' | ')}`);
+    assert(lines.filter((l) => /inside the box/.test(l)).every((l) => /: 0 /.test(l)), `the words beside a non-zero score: ${lines.join(' | ')}`);
+    return lines.map((l) => l.slice(-70)).join(' | ');
+  });
+
+  await check('issue 37: the collision card\'s F(ξ) plot has tick values with units on both axes', async () => {
+    const q = watch(await context.newPage(), 'loop-ticks');
+    await q.goto(url, { waitUntil: 'load' });
+    await ready(q);
+    await q.locator('#collision-card').scrollIntoViewIfNeeded();
+    await q.waitForFunction(() => window.rimeState.collisionTicks && document.getElementById('collision-card').getAttribute('aria-busy') === 'false', null, { timeout: GUARD_MS });
+    const t = await q.evaluate(() => window.rimeState.collisionTicks);
+    await q.close();
+    const xMax = t.x[t.x.length - 1], yMax = t.y.reduce((a, b) => (b[0] > a[0] ? b : a));
+    assert(t.x.length >= 2 && xMax[0] > 0 && / [pnµm]?m$/.test(xMax[1]), `ξ ticks ${JSON.stringify(t.x)}`);
+    assert(t.y.length >= 2 && yMax[0] > 0 && / [pnµmk]?N$/.test(yMax[1]), `F ticks ${JSON.stringify(t.y)}`);
+    return `ξ: ${t.x.map((x) => x[1]).join(' … ')}; F: ${t.y.map((y) => y[1]).join(', ')}`;
+  });
+
   // Reported, never asserted: main-thread long tasks while a slider is dragged at `integrated` on
   // the phone profile (375×812, CPU slowed 4× through CDP). The collision card integrates in its worker.
   let longTasks = null;

@@ -209,6 +209,45 @@ try {
     }
   });
 
+  await check('issue 37: a ring value in a link gets the card\'s range check (τ = 1e308 is named and not used)', async () => {
+    const q = await context.newPage();
+    try {
+      const link = `${url}#r=${encodeURIComponent(JSON.stringify({ tau: 1e308, omega: 2e-4 }))}`;
+      await q.goto(link, { waitUntil: 'load' });
+      await q.waitForFunction(() => window.rimeState && window.rimeState.ready === true && window.rimeState.ring, null, { timeout: GUARD_MS });
+      const s = await q.evaluate(() => ({ notice: window.rimeState.notice || '', record: window.rimeState.ring.record, tau: document.getElementById('r-tau').value }));
+      assert(/ring\.tau: must lie in \(0, 5\]/.test(s.notice), `notice: ${s.notice}`);
+      assert(s.record.tau === 0.5 && s.tau === '0.5' && s.record.omega === 2e-4, `card τ ${s.record.tau}, field ${s.tau}, Ω ${s.record.omega}`);
+      return s.notice.slice(0, 140);
+    } finally {
+      await q.close();
+    }
+  });
+
+  await check('issue 37: with every comparison on, the ring\'s ε_cr line has a colour and stroke of its own', async () => {
+    const q = await context.newPage();
+    try {
+      const overlays = ['atlas:bridges1984', 'atlas:hatzes1988_frost', 'atlas:hatzes1988_compacted', 'atlas:hatzes1988_compacted_r20', 'atlas:supulver1995', 'atlas:higa1996', 'atlas:borderies1984', 'atlas:heisselmann2010', 'atlas:hill2015', 'model:brilliantov2007', 'model:schwager_poschel2008', 'model:muller_poschel2011'];
+      const link = `${url}#v=${encodeURIComponent(JSON.stringify({ accuracy: 'fast', overlays }))}&r=${encodeURIComponent(JSON.stringify({ onChart: true }))}`;
+      await q.goto(link, { waitUntil: 'load' });
+      await q.waitForFunction(() => window.rimeState && window.rimeState.ready === true && window.rimeState.ring && window.rimeState.figure.series.some((n) => /^ε_cr of the ring/.test(n)), null, { timeout: GUARD_MS });
+      const f = await q.evaluate(() => window.rimeState.figure);
+      const palette = await q.evaluate(async () => (await import('./core.js')).PALETTE.series);
+      const i = f.series.findIndex((n) => /^ε_cr of the ring/.test(n));
+      // As drawn: a line looks like another when its stroke and width are the same and its colour is
+      // near (RGB distance under 80: blue #0072B2 and cyan #0098A8 are 39 apart).
+      const rgb = (k) => [1, 3, 5].map((j) => parseInt(palette[Number(f.styles[k].split('/')[0])].slice(j, j + 2), 16));
+      const dist = (a, b) => Math.hypot(...a.map((v, j) => v - b[j]));
+      const width = (k) => f.widths[k] || 1.5; // (the page's width of a comparison)
+      const alike = f.series.filter((n, k) => k !== i && f.styles[k].split('/')[1] === f.styles[i].split('/')[1]
+        && width(k) === width(i) && dist(rgb(k), rgb(i)) < 80);
+      assert(alike.length === 0, `the ε_cr line (${f.styles[i]}, ${width(i)} px) looks like ${alike.join(', ')}`);
+      return `ε_cr line ${f.styles[i]}, ${width(i)} px; ${f.series.length - 1} other series, none alike`;
+    } finally {
+      await q.close();
+    }
+  });
+
   await check('at 375 px the ring card fits the screen (its table does not scroll sideways)', async () => {
     const phone = await context.newPage();
     try {

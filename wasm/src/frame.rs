@@ -216,20 +216,6 @@ pub(crate) fn pack_frame(
     f: &rime_core::explorer::frame::Frame,
 ) -> Result<Frame, String> {
     let version = env!("CARGO_PKG_VERSION");
-    // The one CSV contract, built by the core for every surface; the map's records are formatted
-    // on download (`mapRecords`), not every frame.
-    let records = if view.records {
-        let ctx = |what: &str| records::context(f, what, version, &view.date);
-        json!({
-            "curve": records::frame_curve_csv(f),
-            "family": records::family_csv(f),
-            "map": Json::Null,
-            "context": {"curve": ctx(records::CURVE_WHAT), "family": ctx(records::FAMILY_WHAT),
-                        "map": ctx(records::MAP_WHAT)},
-        })
-    } else {
-        Json::Null
-    };
     let pinned = match &view.pinned {
         Some(p) if p.g.len() != p.eps.len() => {
             return Err("view.pinned: g and eps must have the same length".into());
@@ -240,6 +226,21 @@ pub(crate) fn pack_frame(
             eps: p.eps.iter().map(|e| e.unwrap_or(f64::NAN)).collect(),
         }),
         None => None,
+    };
+    // The one CSV contract, built by the core for every surface; the map's records are formatted
+    // on download (`mapRecords`), not every frame.
+    let records = if view.records {
+        let ctx = |what: &str| records::context(f, what, version, &view.date);
+        json!({
+            "curve": records::frame_curve_csv(f),
+            // Every curve the chart draws, the pinned one included (issue 37).
+            "family": records::family_csv_pinned(f, pinned.as_ref()),
+            "map": Json::Null,
+            "context": {"curve": ctx(records::CURVE_WHAT), "family": ctx(records::FAMILY_WHAT),
+                        "map": ctx(records::MAP_WHAT)},
+        })
+    } else {
+        Json::Null
     };
     let fig_view = figures::View {
         y_log: view.y_log,

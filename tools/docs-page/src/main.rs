@@ -212,4 +212,41 @@ mod tests {
         assert!(!html.contains("href=\"../"), "{html}");
         assert!(html.contains("η* stays η*"), "{html}");
     }
+
+    /// Issue 37: the page's physics notes read "(g_s/g'{N,v})²) *with g'*{N,v}": two subscripts
+    /// `_{…}` of a formula paired as emphasis and lost their underscores. No emphasis of the real
+    /// notes holds a formula's brace, and every row of "Equations used" is an anchor the page's
+    /// equation links land on.
+    #[test]
+    fn issue_37_the_notes_keep_formula_underscores_and_anchor_each_equation_row() {
+        let md = include_str!("../../../docs/physics.md");
+        let html = page(md, "physics.md", "t");
+        assert!(
+            html.contains("g'_{N,v}"),
+            "the adhesion formula lost its subscript"
+        );
+        for em in html.split("<em>").skip(1) {
+            let inside = em.split("</em>").next().unwrap_or_default();
+            assert!(
+                !inside.contains('{') && !inside.contains('}'),
+                "a formula read as emphasis: <em>{inside}</em>"
+            );
+        }
+        let rows = md
+            .lines()
+            .filter(|l| l.starts_with("| ") && l.contains("Eq. ("))
+            .filter(|l| l.split('|').nth(1).is_some_and(|c| c.contains("Eq. (")));
+        let mut n = 0;
+        for row in rows {
+            n += 1;
+            assert!(
+                row.starts_with("| <a id=\"eq-"),
+                "a row without its anchor: {row}"
+            );
+        }
+        assert!(n >= 19, "{n} equation rows");
+        for id in ["eq-4", "eq-13", "eq-a1"] {
+            assert!(html.contains(&format!("<a id=\"{id}\"></a>")), "{id}");
+        }
+    }
 }
