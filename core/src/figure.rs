@@ -1,6 +1,6 @@
 //! What a figure shows — series, axes, log scales, labels, units, markers, bands, class maps — with
 //! no drawing. One description serves every surface: feature `plot` renders it with plotters to SVG
-//! and PNG ([`render_svg`], [`render_png`]); the terminal and the web page draw the same data.
+//! and PNG (`render_svg`, `render_png`); the terminal and the web page draw the same data.
 //!
 //! [`paper`] builds the paper's Figs. 2–4 from the model, and [`experiments`] holds the
 //! experimental context (Bridges et al. 1984; Heißelmann et al. 2010; Hill et al. 2015).

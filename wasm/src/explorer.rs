@@ -8,7 +8,8 @@ use rime_core::params::{Kind, PARAMETERS, Value};
 use rime_core::sweep::log_space;
 use rime_core::tidal::TidalInput;
 use rime_core::{Accuracy, Contact, Preset, Scene, Status, StickClass};
-use serde_json::{Value as Json, json};
+use serde_json::Value as Json;
+use std::collections::BTreeMap;
 
 pub use rime_core::explorer::limits::{MAX_CURVE_POINTS, MAX_MAP_SIDE, MAX_SCENE_BYTES};
 
@@ -125,19 +126,23 @@ pub fn ring_card_json(scene: &str, input: &str) -> Result<String, String> {
     let card = rime_core::explorer::ring::ring_card(&scene, &input, req.chart)
         .map_err(|e| format!("ring.{e}"))?;
     let line = &card.eps_cr_line;
-    let m = &card.impact_marker;
-    Ok(json!({
-        "verdict": card.verdict,
-        "equilibrium": card.equilibrium,
-        "sentence": card.sentence,
-        "rows": card.rows.iter().map(|r| json!({"label": r.label, "text": r.text})).collect::<Vec<_>>(),
-        "eps_cr_line": {"name": line.name, "short": line.short, "points": line.points,
-                        "color": line.color, "stroke": line.stroke.name()},
-        "meeting": card.meeting.map(|(g, e)| [g, e]),
-        "impact_marker": {"x": m.x, "label": m.label, "short": m.short, "color": m.color},
-        "record": card.record,
-    })
-    .to_string())
+    let page = RingCardJson {
+        verdict: card.verdict,
+        equilibrium: card.equilibrium,
+        sentence: &card.sentence,
+        rows: &card.rows,
+        eps_cr_line: LineJson {
+            name: &line.name,
+            short: &line.short,
+            points: &line.points,
+            color: line.color,
+            stroke: line.stroke.name(),
+        },
+        meeting: card.meeting.map(|(g, e)| [g, e]),
+        impact_marker: &card.impact_marker,
+        record: &card.record,
+    };
+    serde_json::to_string(&page).map_err(|e| format!("ring: {e}"))
 }
 
 fn core_err(e: rime_core::Error) -> String {
@@ -320,11 +325,15 @@ impl Explorer {
         let r = contact
             .normal(g, parse_accuracy(accuracy)?)
             .map_err(core_err)?;
-        Ok(json!({
-            "g_n": g, "eps_n": r.eps, "status": r.status.name(), "t_c": r.t_c,
-            "xi_max": r.xi_max, "error_estimate": r.error_estimate,
-        })
-        .to_string())
+        let page = NormalJson {
+            g_n: g,
+            eps_n: r.eps,
+            status: r.status.name(),
+            t_c: r.t_c,
+            xi_max: r.xi_max,
+            error_estimate: r.error_estimate,
+        };
+        serde_json::to_string(&page).map_err(|e| format!("normal: {e}"))
     }
 
     /// One collision from the inside at impact speed `g` (docs/physics.md#collision), as JSON:
@@ -374,12 +383,15 @@ impl Explorer {
         .map_err(|e| format!("fit A to {id}: {e}"))?;
         self.scene = f.scene;
         let p = &f.params[0];
-        Ok(
-            json!({"id": id, "value": p.value, "standard_error": p.standard_error,
-                  "rms_error": f.rms_error, "warnings": f.warnings,
-                  "scene": serde_json::to_string(&f.scene).map_err(|e| e.to_string())?})
-            .to_string(),
-        )
+        let page = FitJson {
+            id,
+            value: p.value,
+            standard_error: p.standard_error,
+            rms_error: f.rms_error,
+            warnings: &f.warnings,
+            scene: serde_json::to_string(&f.scene).map_err(|e| e.to_string())?,
+        };
+        serde_json::to_string(&page).map_err(|e| format!("fit A to {id}: {e}"))
     }
 
     /// Tangential restitution at one point, as JSON (`g_n`, `g_t`, `eps_t`, `eps_n`, `class`).
@@ -389,8 +401,14 @@ impl Explorer {
         let t = contact
             .tangential(g_n, g_t, parse_accuracy(accuracy)?)
             .map_err(core_err)?;
-        Ok(json!({"g_n": g_n, "g_t": g_t, "eps_t": t.eps_t, "eps_n": t.eps_n, "class": t.class.name()})
-            .to_string())
+        let page = TangentialJson {
+            g_n,
+            g_t,
+            eps_t: t.eps_t,
+            eps_n: t.eps_n,
+            class: t.class.name(),
+        };
+        serde_json::to_string(&page).map_err(|e| format!("tangential: {e}"))
     }
 
     /// The appendix (Eq. (A.1)–(A.7)) as JSON: the core's tidal card (`rime_core::explorer::tidal`). `input_json` is a
@@ -419,80 +437,94 @@ fn check_map_speed(field: &str, g: f64) -> Result<f64, String> {
     }
 }
 
+/// A catalogue as JSON. `serde_json` fails only on a map with non-string keys or a `Serialize`
+/// impl that errors; the catalogues have neither, so the fallback `null` is never sent.
+fn catalogue_json<T: serde::Serialize>(value: &T) -> String {
+    serde_json::to_string(value).unwrap_or_else(|_| "null".to_string())
+}
+
 /// The parameter registry as JSON: a list of `{path, label, unit, kind, ...}` with `min`, `max`,
 /// `log` for numbers and `options` for choices.
 pub fn parameters_json() -> String {
-    let list: Vec<Json> = PARAMETERS
+    let list: Vec<ParameterJson> = PARAMETERS
         .iter()
-        .map(|p| match p.kind {
-            Kind::Number { min, max, log } => json!({
-                "path": p.path, "label": p.label, "unit": p.unit, "kind": "number",
-                "min": min, "max": max, "log": log,
-            }),
-            Kind::Choice(options) => json!({
-                "path": p.path, "label": p.label, "unit": p.unit, "kind": "choice", "options": options,
-            }),
-            Kind::Toggle => json!({"path": p.path, "label": p.label, "unit": p.unit, "kind": "toggle"}),
+        .map(|p| ParameterJson {
+            path: p.path,
+            label: p.label,
+            unit: p.unit,
+            kind: match p.kind {
+                Kind::Number { min, max, log } => KindJson::Number { min, max, log },
+                Kind::Choice(options) => KindJson::Choice { options },
+                Kind::Toggle => KindJson::Toggle,
+            },
         })
         .collect();
-    Json::from(list).to_string()
+    catalogue_json(&list)
 }
 
 /// The presets as JSON: a list of `{name, description, scene}` (the scene, so that the page can
 /// say which preset the scene it shows is).
 pub fn presets_json() -> String {
-    let list: Vec<Json> = Preset::ALL
+    let list: Vec<PresetJson> = Preset::ALL
         .iter()
-        .map(|p| {
-            let scene = serde_json::to_value(p.scene()).unwrap_or(Json::Null);
-            json!({"name": p.name(), "description": p.description(), "scene": scene})
+        .map(|p| PresetJson {
+            name: p.name(),
+            description: p.description(),
+            scene: p.scene(),
         })
         .collect();
-    Json::from(list).to_string()
+    catalogue_json(&list)
 }
 
 /// What can be drawn over the ε_N chart, as JSON: a list of `{key, label, kind, valid, temperature,
-/// geometry}` (measured laws and ranges of the atlas, then the other models).
+/// geometry}` (measured laws and ranges of the atlas, then the other models with `needs`).
 pub fn overlays_json() -> String {
     use rime_core::atlas::{ENTRIES, Kind as EntryKind};
     use rime_core::models::Model;
-    let mut list: Vec<Json> = ENTRIES
+    let mut list: Vec<OverlayJson> = ENTRIES
         .iter()
         .filter(|e| e.kind != EntryKind::Threshold)
-        .map(|e| {
-            json!({"key": format!("atlas:{}", e.id),
-                   "label": format!("{} {}: {}", e.citation.authors, e.citation.year, e.material),
-                   "kind": e.kind.name(), "valid": e.valid_speed, "temperature": e.temperature,
-                   "geometry": e.geometry.name()})
+        .map(|e| OverlayJson::Atlas {
+            key: format!("atlas:{}", e.id),
+            label: format!("{} {}: {}", e.citation.authors, e.citation.year, e.material),
+            kind: e.kind.name(),
+            valid: e.valid_speed,
+            temperature: e.temperature,
+            geometry: e.geometry.name(),
         })
         .collect();
     list.extend(
         Model::ALL
             .iter()
             .filter(|m| **m != Model::Hertzsch2002)
-            .map(|m| {
-                json!({"key": format!("model:{}", m.name()), "label": m.citation(), "kind": "model",
-                            "needs": m.needs_section()})
+            .map(|m| OverlayJson::Model {
+                key: format!("model:{}", m.name()),
+                label: m.citation(),
+                kind: "model",
+                needs: m.needs_section(),
             }),
     );
-    Json::from(list).to_string()
+    catalogue_json(&list)
 }
 
-/// The stick classes in code order as JSON: a list of `{name, letter, description}`.
+/// The stick classes in code order as JSON: a list of `{name, letter, label, description, meaning}`.
 pub fn classes_json() -> String {
-    let list: Vec<Json> = StickClass::ALL
+    let list: Vec<ClassJson> = StickClass::ALL
         .iter()
-        .map(|c| {
-            json!({"name": c.name(), "letter": c.letter().to_string(), "label": c.label(),
-                        "description": c.description(), "meaning": c.meaning()})
+        .map(|c| ClassJson {
+            name: c.name(),
+            letter: c.letter(),
+            label: c.label(),
+            description: c.description(),
+            meaning: c.meaning(),
         })
         .collect();
-    Json::from(list).to_string()
+    catalogue_json(&list)
 }
 
 /// The status names in code order as JSON.
 pub fn statuses_json() -> String {
-    Json::from(Status::ALL.map(Status::name).to_vec()).to_string()
+    catalogue_json(&Status::ALL.map(Status::name))
 }
 
 /// The experimental context of the ε_N chart as JSON: the Bridges et al. (1984) law
@@ -501,16 +533,24 @@ pub fn statuses_json() -> String {
 /// `rime_core::figure`, packed only.
 pub fn experiments_json() -> String {
     let b = rime_core::fit::BRIDGES_1984;
-    let bands: Vec<Json> = rime_core::figure::experiments::bands(0)
-        .into_iter()
-        .map(|band| json!({"x": [band.x.0, band.x.1], "y": [band.y.0, band.y.1], "label": band.label}))
-        .collect();
-    json!({
-        "bridges": {"a": b.a, "b": b.b, "g0": b.g0,
-                    "label": rime_core::fit::BRIDGES_1984_LABEL},
-        "bands": bands,
-    })
-    .to_string()
+    let bands = rime_core::figure::experiments::bands(0);
+    let page = ExperimentsJson {
+        bridges: BridgesJson {
+            a: b.a,
+            b: b.b,
+            g0: b.g0,
+            label: rime_core::fit::BRIDGES_1984_LABEL,
+        },
+        bands: bands
+            .iter()
+            .map(|band| BandJson {
+                x: [band.x.0, band.x.1],
+                y: [band.y.0, band.y.1],
+                label: &band.label,
+            })
+            .collect(),
+    };
+    catalogue_json(&page)
 }
 
 /// Everything the page says in words, as JSON: the paper's citation, the glossary,
@@ -521,46 +561,54 @@ pub fn help_json() -> String {
         ARTIFACT_NOTE, GLOSSARY, PAPER, class_is_artifact, option_label, parameter_help,
         slider_range,
     };
-    let params: serde_json::Map<String, Json> = PARAMETERS
+    let parameters: BTreeMap<&str, ParameterHelpJson> = PARAMETERS
         .iter()
         .map(|p| {
-            let options: serde_json::Map<String, Json> = match p.kind {
+            let options = match p.kind {
                 Kind::Choice(options) => options
                     .iter()
-                    .map(|o| {
-                        (
-                            (*o).to_string(),
-                            Json::from(option_label(p.path, o).unwrap_or(o)),
-                        )
-                    })
+                    .map(|o| (*o, option_label(p.path, o).unwrap_or(o)))
                     .collect(),
-                _ => serde_json::Map::new(),
+                _ => BTreeMap::new(),
             };
-            (
-                p.path.to_string(),
-                json!({"help": parameter_help(p.path).unwrap_or(""), "options": options,
-                       "slider": slider_range(p.path).map(|(lo, hi)| [lo, hi])}),
-            )
+            let help = ParameterHelpJson {
+                help: parameter_help(p.path).unwrap_or(""),
+                options,
+                slider: slider_range(p.path).map(|(lo, hi)| [lo, hi]),
+            };
+            (p.path, help)
         })
         .collect();
-    let classes: Vec<Json> = StickClass::ALL
-        .iter()
-        .map(|c| json!({"name": c.name(), "artifact": class_is_artifact(*c)}))
-        .collect();
-    json!({
-        "paper": {"authors": PAPER.authors, "year": PAPER.year, "title": PAPER.title,
-                  "journal": PAPER.journal, "volume": PAPER.volume, "pages": PAPER.pages},
-        "glossary": GLOSSARY.iter().map(|(k, v)| json!({"term": k, "meaning": v})).collect::<Vec<_>>(),
-        "parameters": params,
-        "classes": classes,
-        "artifactNote": ARTIFACT_NOTE,
-        "tidalPaper": TidalInput::default(),
-        "levels": Accuracy::LEVELS.iter().map(|l| json!({"name": l.name(), "trade": l.trade(),
-            "bound": l.error_bound()})).collect::<Vec<_>>(),
-        "limits": {"speedMin": rime_core::explorer::limits::SPEED_MIN,
-                   "speedMax": rime_core::explorer::limits::SPEED_MAX},
-    })
-    .to_string()
+    let page = HelpJson {
+        paper: PAPER,
+        glossary: GLOSSARY
+            .iter()
+            .map(|(term, meaning)| GlossaryJson { term, meaning })
+            .collect(),
+        parameters,
+        classes: StickClass::ALL
+            .iter()
+            .map(|c| ClassArtifactJson {
+                name: c.name(),
+                artifact: class_is_artifact(*c),
+            })
+            .collect(),
+        artifact_note: ARTIFACT_NOTE,
+        tidal_paper: TidalInput::default(),
+        levels: Accuracy::LEVELS
+            .iter()
+            .map(|l| LevelJson {
+                name: l.name(),
+                trade: l.trade(),
+                bound: l.error_bound(),
+            })
+            .collect(),
+        limits: LimitsJson {
+            speed_min: rime_core::explorer::limits::SPEED_MIN,
+            speed_max: rime_core::explorer::limits::SPEED_MAX,
+        },
+    };
+    catalogue_json(&page)
 }
 
 /// Parses a typed speed (`"1 um/s"`, `"0.02"`, `"5 cm/s"`) for the view field `field`; the value
@@ -627,6 +675,198 @@ pub fn parse_quantity(field: &str, text: &str, unit: &str) -> Result<f64, String
     } else {
         Err(format!("{field}: not a finite number (typed \"{shown}\")"))
     }
+}
+
+// The page's own shapes (www/app.js reads them by key): derived, so a key is spelled once.
+
+/// `ring_card_json`: the core's ring card with the line's stroke by name.
+#[derive(serde::Serialize)]
+struct RingCardJson<'a> {
+    verdict: &'a str,
+    equilibrium: bool,
+    sentence: &'a str,
+    rows: &'a [rime_core::explorer::ring::RingRow],
+    eps_cr_line: LineJson<'a>,
+    meeting: Option<[f64; 2]>,
+    impact_marker: &'a rime_core::figure::Marker,
+    record: &'a rime_core::ring::RingRecord,
+}
+
+/// A chart line as the page draws it (`stroke` by name).
+#[derive(serde::Serialize)]
+struct LineJson<'a> {
+    name: &'a str,
+    short: &'a str,
+    points: &'a [(f64, f64)],
+    color: usize,
+    stroke: &'static str,
+}
+
+/// [`Explorer::normal`]: the core's `Normal` under the page's names (`eps_n`, status by name).
+#[derive(serde::Serialize)]
+struct NormalJson {
+    g_n: f64,
+    eps_n: f64,
+    status: &'static str,
+    t_c: f64,
+    xi_max: f64,
+    error_estimate: f64,
+}
+
+/// [`Explorer::fit_to_entry`]: the fitted damping time and the fitted scene (as scene JSON text).
+#[derive(serde::Serialize)]
+struct FitJson<'a> {
+    id: &'a str,
+    value: f64,
+    standard_error: Option<f64>,
+    rms_error: f64,
+    warnings: &'a [String],
+    scene: String,
+}
+
+/// [`Explorer::tangential`]: one point of the stick map.
+#[derive(serde::Serialize)]
+struct TangentialJson {
+    g_n: f64,
+    g_t: f64,
+    eps_t: f64,
+    eps_n: f64,
+    class: &'static str,
+}
+
+/// One entry of [`parameters_json`].
+#[derive(serde::Serialize)]
+struct ParameterJson {
+    path: &'static str,
+    label: &'static str,
+    unit: &'static str,
+    #[serde(flatten)]
+    kind: KindJson,
+}
+
+/// A parameter's kind: `"kind": "number"` with its range, `"choice"` with its options, `"toggle"`.
+#[derive(serde::Serialize)]
+#[serde(tag = "kind", rename_all = "lowercase")]
+enum KindJson {
+    Number { min: f64, max: f64, log: bool },
+    Choice { options: &'static [&'static str] },
+    Toggle,
+}
+
+/// One entry of [`presets_json`].
+#[derive(serde::Serialize)]
+struct PresetJson {
+    name: &'static str,
+    description: &'static str,
+    scene: Scene,
+}
+
+/// One entry of [`overlays_json`]: a measured law or range of the atlas, or another model.
+#[derive(serde::Serialize)]
+#[serde(untagged)]
+enum OverlayJson {
+    Atlas {
+        key: String,
+        label: String,
+        kind: &'static str,
+        valid: [f64; 2],
+        temperature: [f64; 2],
+        geometry: &'static str,
+    },
+    Model {
+        key: String,
+        label: &'static str,
+        kind: &'static str,
+        needs: Option<&'static str>,
+    },
+}
+
+/// One entry of [`classes_json`].
+#[derive(serde::Serialize)]
+struct ClassJson {
+    name: &'static str,
+    letter: char,
+    label: &'static str,
+    description: &'static str,
+    meaning: &'static str,
+}
+
+/// [`experiments_json`].
+#[derive(serde::Serialize)]
+struct ExperimentsJson<'a> {
+    bridges: BridgesJson,
+    bands: Vec<BandJson<'a>>,
+}
+
+/// The Bridges et al. (1984) law ε = a (g/g0)^b with its legend entry.
+#[derive(serde::Serialize)]
+struct BridgesJson {
+    a: f64,
+    b: f64,
+    g0: f64,
+    label: &'static str,
+}
+
+/// An experiment's range as two intervals.
+#[derive(serde::Serialize)]
+struct BandJson<'a> {
+    x: [f64; 2],
+    y: [f64; 2],
+    label: &'a str,
+}
+
+/// [`help_json`].
+#[derive(serde::Serialize)]
+struct HelpJson {
+    paper: rime_core::figure::words::Citation,
+    glossary: Vec<GlossaryJson>,
+    parameters: BTreeMap<&'static str, ParameterHelpJson>,
+    classes: Vec<ClassArtifactJson>,
+    #[serde(rename = "artifactNote")]
+    artifact_note: &'static str,
+    #[serde(rename = "tidalPaper")]
+    tidal_paper: TidalInput,
+    levels: Vec<LevelJson>,
+    limits: LimitsJson,
+}
+
+/// One glossary entry.
+#[derive(serde::Serialize)]
+struct GlossaryJson {
+    term: &'static str,
+    meaning: &'static str,
+}
+
+/// One parameter's help: the sentence, human option names, the slider's range.
+#[derive(serde::Serialize)]
+struct ParameterHelpJson {
+    help: &'static str,
+    options: BTreeMap<&'static str, &'static str>,
+    slider: Option<[f64; 2]>,
+}
+
+/// Whether a stick class is an artifact of the printed law.
+#[derive(serde::Serialize)]
+struct ClassArtifactJson {
+    name: &'static str,
+    artifact: bool,
+}
+
+/// An accuracy level: its name, trade-off and error bound (`null` for none).
+#[derive(serde::Serialize)]
+struct LevelJson {
+    name: &'static str,
+    trade: &'static str,
+    bound: f64,
+}
+
+/// The speeds the page accepts.
+#[derive(serde::Serialize)]
+struct LimitsJson {
+    #[serde(rename = "speedMin")]
+    speed_min: f64,
+    #[serde(rename = "speedMax")]
+    speed_max: f64,
 }
 
 #[cfg(test)]
@@ -828,5 +1068,325 @@ mod tests {
                 .unwrap_err()
                 .starts_with("points")
         );
+    }
+
+    /// The keys of a JSON object, sorted (the page reads by key; order is not part of the contract).
+    fn keys(v: &Json) -> Vec<&str> {
+        let mut k: Vec<&str> = v
+            .as_object()
+            .expect("an object")
+            .keys()
+            .map(String::as_str)
+            .collect();
+        k.sort_unstable();
+        k
+    }
+
+    /// Whether a JSON number carries `x` (a non-finite one crosses as `null`).
+    fn carries(j: &Json, x: f64) -> bool {
+        if x.is_finite() {
+            j.as_f64() == Some(x)
+        } else {
+            j.is_null()
+        }
+    }
+
+    fn parse(text: &str) -> Json {
+        serde_json::from_str(text).expect("JSON")
+    }
+
+    #[test]
+    fn issue_36_the_parameter_catalogue_keeps_its_keys() {
+        let list = parse(&parameters_json());
+        let list = list.as_array().expect("a list");
+        assert_eq!(list.len(), PARAMETERS.len());
+        for (j, p) in list.iter().zip(PARAMETERS.iter()) {
+            assert_eq!(j["path"], p.path);
+            assert_eq!(j["label"], p.label);
+            assert_eq!(j["unit"], p.unit);
+            match p.kind {
+                Kind::Number { min, max, log } => {
+                    assert_eq!(
+                        keys(j),
+                        ["kind", "label", "log", "max", "min", "path", "unit"]
+                    );
+                    assert_eq!(j["kind"], "number");
+                    assert_eq!(
+                        (j["min"].as_f64(), j["max"].as_f64()),
+                        (Some(min), Some(max))
+                    );
+                    assert_eq!(j["log"], log);
+                }
+                Kind::Choice(options) => {
+                    assert_eq!(keys(j), ["kind", "label", "options", "path", "unit"]);
+                    assert_eq!(j["kind"], "choice");
+                    assert_eq!(j["options"], Json::from(options.to_vec()));
+                }
+                Kind::Toggle => {
+                    assert_eq!(keys(j), ["kind", "label", "path", "unit"]);
+                    assert_eq!(j["kind"], "toggle");
+                }
+            }
+        }
+        // Every kind is present, so each arm above ran.
+        for kind in ["number", "choice", "toggle"] {
+            assert!(list.iter().any(|j| j["kind"] == kind), "{kind}");
+        }
+    }
+
+    #[test]
+    fn issue_36_presets_classes_statuses_keep_their_keys() {
+        let presets = parse(&presets_json());
+        let presets = presets.as_array().expect("a list");
+        assert_eq!(presets.len(), Preset::ALL.len());
+        for (j, p) in presets.iter().zip(Preset::ALL.iter()) {
+            assert_eq!(keys(j), ["description", "name", "scene"]);
+            assert_eq!(j["name"], p.name());
+            assert_eq!(j["description"], p.description());
+            let scene: Scene = serde_json::from_value(j["scene"].clone()).expect("a scene");
+            assert_eq!(scene, p.scene());
+        }
+        let classes = parse(&classes_json());
+        let classes = classes.as_array().expect("a list");
+        assert_eq!(classes.len(), StickClass::ALL.len());
+        for (j, c) in classes.iter().zip(StickClass::ALL.iter()) {
+            assert_eq!(
+                keys(j),
+                ["description", "label", "letter", "meaning", "name"]
+            );
+            assert_eq!(j["name"], c.name());
+            // The letter is a one-character string, not a number.
+            assert_eq!(j["letter"], c.letter().to_string());
+            assert_eq!(j["label"], c.label());
+            assert_eq!(j["description"], c.description());
+            assert_eq!(j["meaning"], c.meaning());
+        }
+        let statuses = parse(&statuses_json());
+        let names: Vec<&str> = Status::ALL.iter().map(|s| s.name()).collect();
+        assert_eq!(statuses, Json::from(names));
+    }
+
+    #[test]
+    fn issue_36_overlays_and_experiments_keep_their_keys() {
+        use rime_core::atlas::{ENTRIES, Kind as EntryKind};
+        use rime_core::models::Model;
+        let list = parse(&overlays_json());
+        let list = list.as_array().expect("a list");
+        let entries: Vec<_> = ENTRIES
+            .iter()
+            .filter(|e| e.kind != EntryKind::Threshold)
+            .collect();
+        let models: Vec<_> = Model::ALL
+            .iter()
+            .filter(|m| **m != Model::Hertzsch2002)
+            .collect();
+        assert_eq!(list.len(), entries.len() + models.len());
+        for (j, e) in list.iter().zip(&entries) {
+            assert_eq!(
+                keys(j),
+                ["geometry", "key", "kind", "label", "temperature", "valid"]
+            );
+            assert_eq!(j["key"], format!("atlas:{}", e.id));
+            assert!(j["label"].as_str().expect("label").contains(e.material));
+            assert_eq!(j["kind"], e.kind.name());
+            assert!(carries(&j["valid"][0], e.valid_speed[0]));
+            assert!(carries(&j["valid"][1], e.valid_speed[1]));
+            assert!(carries(&j["temperature"][0], e.temperature[0]));
+            assert!(carries(&j["temperature"][1], e.temperature[1]));
+            assert_eq!(j["geometry"], e.geometry.name());
+        }
+        for (j, m) in list[entries.len()..].iter().zip(&models) {
+            assert_eq!(keys(j), ["key", "kind", "label", "needs"]);
+            assert_eq!(j["key"], format!("model:{}", m.name()));
+            assert_eq!(j["kind"], "model");
+            assert_eq!(j["label"], m.citation());
+            assert_eq!(j["needs"].as_str(), m.needs_section());
+        }
+        let x = parse(&experiments_json());
+        assert_eq!(keys(&x), ["bands", "bridges"]);
+        assert_eq!(keys(&x["bridges"]), ["a", "b", "g0", "label"]);
+        let b = rime_core::fit::BRIDGES_1984;
+        assert_eq!(x["bridges"]["a"].as_f64(), Some(b.a));
+        assert_eq!(x["bridges"]["b"].as_f64(), Some(b.b));
+        assert_eq!(x["bridges"]["g0"].as_f64(), Some(b.g0));
+        let bands = rime_core::figure::experiments::bands(0);
+        assert!(!bands.is_empty());
+        assert_eq!(x["bands"].as_array().map(Vec::len), Some(bands.len()));
+        for (j, band) in x["bands"].as_array().expect("bands").iter().zip(&bands) {
+            assert_eq!(keys(j), ["label", "x", "y"]);
+            assert_eq!(j["x"][0].as_f64(), Some(band.x.0));
+            assert_eq!(j["x"][1].as_f64(), Some(band.x.1));
+            assert_eq!(j["y"][0].as_f64(), Some(band.y.0));
+            assert_eq!(j["y"][1].as_f64(), Some(band.y.1));
+            assert_eq!(j["label"], band.label);
+        }
+    }
+
+    #[test]
+    fn issue_36_help_keeps_its_keys() {
+        use rime_core::explorer::help::{GLOSSARY, PAPER, option_label, parameter_help};
+        let h = parse(&help_json());
+        assert_eq!(
+            keys(&h),
+            [
+                "artifactNote",
+                "classes",
+                "glossary",
+                "levels",
+                "limits",
+                "paper",
+                "parameters",
+                "tidalPaper"
+            ]
+        );
+        assert_eq!(
+            keys(&h["paper"]),
+            ["authors", "journal", "pages", "title", "volume", "year"]
+        );
+        assert_eq!(h["paper"]["authors"], "J.-M. Hertzsch");
+        assert_eq!(h["paper"]["year"], 2002);
+        assert_eq!(h["paper"]["pages"], PAPER.pages);
+        assert_eq!(h["glossary"].as_array().map(Vec::len), Some(GLOSSARY.len()));
+        assert_eq!(keys(&h["glossary"][0]), ["meaning", "term"]);
+        assert_eq!(h["glossary"][0]["term"], GLOSSARY[0].0);
+        assert_eq!(h["glossary"][0]["meaning"], GLOSSARY[0].1);
+        let params = h["parameters"].as_object().expect("parameters");
+        assert_eq!(params.len(), PARAMETERS.len());
+        for p in PARAMETERS.iter() {
+            let j = &params[p.path];
+            assert_eq!(keys(j), ["help", "options", "slider"], "{}", p.path);
+            assert_eq!(j["help"], parameter_help(p.path).unwrap_or(""));
+            match p.kind {
+                Kind::Choice(options) => {
+                    assert_eq!(keys(&j["options"]).len(), options.len());
+                    for o in options {
+                        assert_eq!(j["options"][*o], option_label(p.path, o).unwrap_or(o));
+                    }
+                }
+                _ => assert_eq!(j["options"], Json::Object(Default::default())),
+            }
+            match rime_core::explorer::help::slider_range(p.path) {
+                Some((lo, hi)) => {
+                    assert_eq!(j["slider"][0].as_f64(), Some(lo));
+                    assert_eq!(j["slider"][1].as_f64(), Some(hi));
+                }
+                None => assert!(j["slider"].is_null()),
+            }
+        }
+        assert_eq!(keys(&h["classes"][0]), ["artifact", "name"]);
+        assert!(
+            h["classes"]
+                .as_array()
+                .expect("classes")
+                .iter()
+                .any(|c| c["artifact"] == true)
+        );
+        assert_eq!(keys(&h["levels"][0]), ["bound", "name", "trade"]);
+        assert_eq!(
+            h["levels"].as_array().map(Vec::len),
+            Some(Accuracy::LEVELS.len())
+        );
+        assert_eq!(keys(&h["limits"]), ["speedMax", "speedMin"]);
+        assert_eq!(
+            h["limits"]["speedMax"].as_f64(),
+            Some(rime_core::explorer::limits::SPEED_MAX)
+        );
+        assert_eq!(
+            h["tidalPaper"],
+            serde_json::to_value(TidalInput::default()).expect("tidal input")
+        );
+    }
+
+    #[test]
+    fn issue_36_point_results_keep_their_keys() {
+        let mut ex = Explorer::new();
+        ex.load_preset("ice").expect("preset");
+        let contact = Contact::new(&Preset::Ice.scene()).expect("contact");
+        let n = parse(&ex.normal(1e-3, "fast").expect("normal"));
+        assert_eq!(
+            keys(&n),
+            ["eps_n", "error_estimate", "g_n", "status", "t_c", "xi_max"]
+        );
+        let core = contact.normal(1e-3, Accuracy::Fast).expect("core normal");
+        assert_eq!(n["g_n"].as_f64(), Some(1e-3));
+        assert_eq!(n["eps_n"].as_f64(), Some(core.eps));
+        assert_eq!(n["status"], core.status.name());
+        assert_eq!(n["t_c"].as_f64(), Some(core.t_c));
+        assert_eq!(n["xi_max"].as_f64(), Some(core.xi_max));
+        // A grain that sticks comes to rest asymptotically: its infinite t_c is sent as null.
+        let stuck = NormalJson {
+            g_n: 1e-9,
+            eps_n: 0.0,
+            status: "stuck",
+            t_c: f64::INFINITY,
+            xi_max: 1e-12,
+            error_estimate: f64::INFINITY,
+        };
+        let stuck = parse(&serde_json::to_string(&stuck).expect("JSON"));
+        assert!(stuck["t_c"].is_null() && stuck["error_estimate"].is_null());
+        let t = parse(&ex.tangential(1e-3, 2e-3, "fast").expect("tangential"));
+        assert_eq!(keys(&t), ["class", "eps_n", "eps_t", "g_n", "g_t"]);
+        let core = contact
+            .tangential(1e-3, 2e-3, Accuracy::Fast)
+            .expect("core tangential");
+        assert_eq!(
+            (t["g_n"].as_f64(), t["g_t"].as_f64()),
+            (Some(1e-3), Some(2e-3))
+        );
+        assert_eq!(t["eps_t"].as_f64(), Some(core.eps_t));
+        assert_eq!(t["eps_n"].as_f64(), Some(core.eps_n));
+        assert_eq!(t["class"], core.class.name());
+        let f = parse(&ex.fit_to_entry("bridges1984", "fast").expect("fit"));
+        assert_eq!(
+            keys(&f),
+            [
+                "id",
+                "rms_error",
+                "scene",
+                "standard_error",
+                "value",
+                "warnings"
+            ]
+        );
+        assert_eq!(f["id"], "bridges1984");
+        let scene: Scene =
+            serde_json::from_str(f["scene"].as_str().expect("scene text")).expect("scene");
+        assert_eq!(scene, ex.scene);
+        assert!(f["warnings"].is_array());
+    }
+
+    #[test]
+    fn issue_36_the_ring_card_keeps_its_keys() {
+        let scene = serde_json::to_string(&Preset::Ice.scene()).unwrap();
+        let input = r#"{"tau": 0.5, "omega": 1.3143527e-4, "chart": [1e-7, 1.0]}"#;
+        let card = parse(&ring_card_json(&scene, input).unwrap());
+        assert_eq!(
+            keys(&card),
+            [
+                "eps_cr_line",
+                "equilibrium",
+                "impact_marker",
+                "meeting",
+                "record",
+                "rows",
+                "sentence",
+                "verdict"
+            ]
+        );
+        assert_eq!(keys(&card["rows"][0]), ["label", "text"]);
+        assert_eq!(
+            keys(&card["eps_cr_line"]),
+            ["color", "name", "points", "short", "stroke"]
+        );
+        assert_eq!(
+            keys(&card["impact_marker"]),
+            ["color", "label", "short", "x"]
+        );
+        // Points are [x, y] pairs.
+        assert_eq!(
+            card["eps_cr_line"]["points"][0].as_array().map(Vec::len),
+            Some(2)
+        );
+        assert!(card["meeting"].is_null() || card["meeting"].as_array().map(Vec::len) == Some(2));
     }
 }

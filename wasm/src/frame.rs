@@ -18,7 +18,7 @@ use rime_core::params::{PARAMETERS, Value};
 use rime_core::tidal::TidalInput;
 use rime_core::{Scene, Status};
 use serde::{Deserialize, Serialize};
-use serde_json::{Value as Json, json};
+use serde_json::Value as Json;
 
 /// Status code of a speed whose ε_N could not be computed (a gap on the curve).
 pub use rime_core::explorer::frame::FAILED;
@@ -204,9 +204,35 @@ struct PageFrame<'a> {
     /// The figure descriptions, built by the core for every surface.
     figures: Vec<Figure>,
     /// The tidal card, or `{"error": …}`.
-    tidal: Json,
+    tidal: Tidal,
     /// The status names in code order ([`Status::ALL`]).
     status_names: [&'static str; 4],
+}
+
+/// The tidal card as it crosses: the card, or why there is none.
+#[derive(Serialize)]
+#[serde(untagged)]
+enum Tidal {
+    Card(Json),
+    Error { error: String },
+}
+
+/// The frame's records, the CSV of the downloads (see [`Frame::records`]).
+#[derive(Serialize)]
+struct Records {
+    curve: String,
+    family: String,
+    /// Formatted on download (`mapRecords`), never in the frame.
+    map: Option<String>,
+    context: RecordsContext,
+}
+
+/// Each record's context lines (what, version, date, scene).
+#[derive(Serialize)]
+struct RecordsContext {
+    curve: String,
+    family: String,
+    map: String,
 }
 
 /// The page's frame (JSON, arrays, records) of the core's frame `f` of `req` seen through `view`.
@@ -229,18 +255,23 @@ pub(crate) fn pack_frame(
     };
     // The one CSV contract, built by the core for every surface; the map's records are formatted
     // on download (`mapRecords`), not every frame.
+    // The one CSV contract, built by the core for every surface; the map's records are formatted
+    // on download (`mapRecords`), not every frame.
     let records = if view.records {
         let ctx = |what: &str| records::context(f, what, version, &view.date);
-        json!({
-            "curve": records::frame_curve_csv(f),
+        Some(Records {
+            curve: records::frame_curve_csv(f),
             // Every curve the chart draws, the pinned one included (issue 37).
-            "family": records::family_csv_pinned(f, pinned.as_ref()),
-            "map": Json::Null,
-            "context": {"curve": ctx(records::CURVE_WHAT), "family": ctx(records::FAMILY_WHAT),
-                        "map": ctx(records::MAP_WHAT)},
+            family: records::family_csv_pinned(f, pinned.as_ref()),
+            map: None,
+            context: RecordsContext {
+                curve: ctx(records::CURVE_WHAT),
+                family: ctx(records::FAMILY_WHAT),
+                map: ctx(records::MAP_WHAT),
+            },
         })
     } else {
-        Json::Null
+        None
     };
     let fig_view = figures::View {
         y_log: view.y_log,
@@ -257,7 +288,7 @@ pub(crate) fn pack_frame(
         values: values(&req.scene),
         map_n: req.map_n,
         figures: figures::frame_figures(f, &fig_view, version),
-        tidal: tidal.unwrap_or_else(|e| json!({ "error": e })),
+        tidal: tidal.map_or_else(|error| Tidal::Error { error }, Tidal::Card),
         status_names: Status::ALL.map(Status::name),
     };
     let wire = to_wire(&page).map_err(|e| e.to_string())?;
@@ -265,7 +296,7 @@ pub(crate) fn pack_frame(
         json: wire.json,
         numbers: wire.numbers,
         codes: wire.codes,
-        records: records.to_string(),
+        records: serde_json::to_string(&records).map_err(|e| format!("records: {e}"))?,
     })
 }
 
@@ -274,6 +305,7 @@ mod tests {
     use super::*;
     use rime_core::explorer::range::auto_map_range;
     use rime_core::{Accuracy, Contact};
+    use serde_json::json;
 
     fn get<'a>(f: &'a Frame, j: &Json) -> &'a [f64] {
         let at = j["$f64"][0].as_u64().unwrap() as usize;
@@ -593,5 +625,37 @@ mod tests {
             .map(|m| m["is_scene"].clone())
             .collect();
         assert_eq!(is_scene, [false, true, false, false]);
+    }
+
+    #[test]
+    fn issue_36_the_records_keep_their_keys() {
+        let text = serde_json::to_string(&frost()).unwrap();
+        let f = frame(&text, r#"{"points": 12, "mapN": 4, "date": "D"}"#).unwrap();
+        let records: Json = serde_json::from_str(&f.records).unwrap();
+        let keys = |j: &Json| {
+            let mut k: Vec<String> = j.as_object().unwrap().keys().cloned().collect();
+            k.sort();
+            k
+        };
+        assert_eq!(keys(&records), ["context", "curve", "family", "map"]);
+        assert!(
+            records["map"].is_null(),
+            "the map's records come on download"
+        );
+        assert_eq!(keys(&records["context"]), ["curve", "family", "map"]);
+        for (key, what) in [
+            ("curve", records::CURVE_WHAT),
+            ("family", records::FAMILY_WHAT),
+            ("map", records::MAP_WHAT),
+        ] {
+            let line = records["context"][key].as_str().unwrap();
+            assert!(line.starts_with(&format!("# {what}")), "{key}: {line}");
+        }
+        assert!(
+            records["family"]
+                .as_str()
+                .unwrap()
+                .starts_with("g_n [m/s],eps_n")
+        );
     }
 }

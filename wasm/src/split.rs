@@ -11,7 +11,6 @@
 use crate::frame::{Frame, LAYER_MEMO, View, pack_frame, prepare};
 use rime_core::explorer::frame::{Output, Plan, Request, Unit};
 use rime_core::normal::{Normal, Status};
-use serde_json::{Value as Json, json};
 
 /// Numbers per point of a curve: present, ε_N, status code, t_c, ξ_max, error estimate,
 /// right-hand-side evaluations.
@@ -58,6 +57,39 @@ pub struct Share {
     pub meta: String,
 }
 
+/// A share's words: each output's unit index, kind and length (`{"units": [{"i", "k", "n", …}]}`).
+#[derive(serde::Serialize, serde::Deserialize)]
+struct ShareMeta {
+    units: Vec<UnitMeta>,
+}
+
+/// One output of a share: its unit's index in the plan and what it is.
+#[derive(serde::Serialize, serde::Deserialize)]
+struct UnitMeta {
+    i: usize,
+    #[serde(flatten)]
+    kind: UnitKind,
+}
+
+/// What an output is (`"k"`) with its length `n` (checked against the plan) and its words.
+#[derive(serde::Serialize, serde::Deserialize)]
+#[serde(tag = "k", rename_all = "lowercase")]
+enum UnitKind {
+    /// A curve's points ([`PER_POINT`] numbers each) and its first failure.
+    Curve { n: usize, first: Option<String> },
+    /// An overlay's ε_N.
+    Points { n: usize },
+    /// Stick-map rows with their evaluation count, or the map's error (no numbers).
+    Rows {
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        n: Option<usize>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        evals: Option<usize>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        error: Option<String>,
+    },
+}
+
 fn encode(items: &[(usize, &Output)]) -> Share {
     let mut numbers = Vec::new();
     let mut meta = Vec::with_capacity(items.len());
@@ -78,32 +110,55 @@ fn encode(items: &[(usize, &Output)]) -> Share {
                         None => numbers.extend_from_slice(&[0.0; PER_POINT]),
                     }
                 }
-                meta.push(json!({"i": i, "k": "curve", "n": points.len(), "first": first}));
+                meta.push(UnitMeta {
+                    i: *i,
+                    kind: UnitKind::Curve {
+                        n: points.len(),
+                        first: first.clone(),
+                    },
+                });
             }
             Output::OverlayPoints(eps) => {
                 numbers.extend_from_slice(eps);
-                meta.push(json!({"i": i, "k": "points", "n": eps.len()}));
+                meta.push(UnitMeta {
+                    i: *i,
+                    kind: UnitKind::Points { n: eps.len() },
+                });
             }
             Output::MapRows(Ok((eps, evaluations))) => {
                 numbers.extend_from_slice(eps);
-                meta.push(json!({"i": i, "k": "rows", "n": eps.len(), "evals": evaluations}));
+                meta.push(UnitMeta {
+                    i: *i,
+                    kind: UnitKind::Rows {
+                        n: Some(eps.len()),
+                        evals: Some(*evaluations),
+                        error: None,
+                    },
+                });
             }
-            Output::MapRows(Err(e)) => meta.push(json!({"i": i, "k": "rows", "error": e})),
+            Output::MapRows(Err(e)) => meta.push(UnitMeta {
+                i: *i,
+                kind: UnitKind::Rows {
+                    n: None,
+                    evals: None,
+                    error: Some(e.clone()),
+                },
+            }),
             // Never assigned to a share (see `shareable`).
             Output::Threshold(_) | Output::Overlay(_) => {}
         }
     }
     Share {
         numbers,
-        meta: json!({ "units": meta }).to_string(),
+        // Serializing these plain structs cannot fail; an empty meta is refused by `decode`.
+        meta: serde_json::to_string(&ShareMeta { units: meta }).unwrap_or_default(),
     }
 }
 
 /// The outputs of a share for the plan's `units`, or why they cannot be used (a share of another
 /// plan: an index, kind or length that does not match).
 fn decode(share: &Share, units: &[Unit]) -> Result<Vec<(usize, Output)>, String> {
-    let meta: Json = serde_json::from_str(&share.meta).map_err(|e| format!("share: {e}"))?;
-    let list = meta["units"].as_array().ok_or("share: no units")?;
+    let meta: ShareMeta = serde_json::from_str(&share.meta).map_err(|e| format!("share: {e}"))?;
     let mut at = 0usize;
     let mut take = |n: usize| -> Result<&[f64], String> {
         let s = share
@@ -113,19 +168,21 @@ fn decode(share: &Share, units: &[Unit]) -> Result<Vec<(usize, Output)>, String>
         at += n;
         Ok(s)
     };
-    let mut out = Vec::with_capacity(list.len());
-    for m in list {
-        let i = m["i"].as_u64().ok_or("share: unit without index")? as usize;
+    let mut out = Vec::with_capacity(meta.units.len());
+    for UnitMeta { i, kind } in meta.units {
         let unit = units.get(i).ok_or("share: unit index beyond the plan")?;
-        let n = m["n"].as_u64().map(|n| n as usize);
+        let n = match &kind {
+            UnitKind::Curve { n, .. } | UnitKind::Points { n } => Some(*n),
+            UnitKind::Rows { n, .. } => *n,
+        };
         if n.is_some_and(|n| n != unit_len(unit)) {
             return Err(format!(
                 "share: unit {i} has {n:?} numbers, the plan {}",
                 unit_len(unit)
             ));
         }
-        let output = match (m["k"].as_str(), unit) {
-            (Some("curve"), Unit::Curve { .. }) => {
+        let output = match (kind, unit) {
+            (UnitKind::Curve { first, .. }, Unit::Curve { .. }) => {
                 let raw = take(PER_POINT * unit_len(unit))?;
                 let mut points = Vec::with_capacity(unit_len(unit));
                 for p in raw.chunks_exact(PER_POINT) {
@@ -145,19 +202,26 @@ fn decode(share: &Share, units: &[Unit]) -> Result<Vec<(usize, Output)>, String>
                         })
                     });
                 }
-                Output::Curve(points, m["first"].as_str().map(String::from))
+                Output::Curve(points, first)
             }
-            (Some("points"), Unit::OverlayPoints { .. }) => {
+            (UnitKind::Points { .. }, Unit::OverlayPoints { .. }) => {
                 Output::OverlayPoints(take(unit_len(unit))?.to_vec())
             }
-            (Some("rows"), Unit::MapRows { .. }) => match m["error"].as_str() {
-                Some(e) => Output::MapRows(Err(String::from(e))),
+            (UnitKind::Rows { error, evals, .. }, Unit::MapRows { .. }) => match error {
+                Some(e) => Output::MapRows(Err(e)),
                 None => {
-                    let evaluations = m["evals"].as_u64().ok_or("share: rows without evals")?;
-                    Output::MapRows(Ok((take(unit_len(unit))?.to_vec(), evaluations as usize)))
+                    let evaluations = evals.ok_or("share: rows without evals")?;
+                    Output::MapRows(Ok((take(unit_len(unit))?.to_vec(), evaluations)))
                 }
             },
-            _ => return Err(format!("share: unit {i} is not a {}", m["k"])),
+            (kind, _) => {
+                let k = match kind {
+                    UnitKind::Curve { .. } => "curve",
+                    UnitKind::Points { .. } => "points",
+                    UnitKind::Rows { .. } => "rows",
+                };
+                return Err(format!("share: unit {i} is not a {k}"));
+            }
         };
         out.push((i, output));
     }
@@ -466,5 +530,83 @@ mod tests {
             assert_eq!(Pending::begin(&s, view, 2).unwrap_err(), whole);
             assert_eq!(share(&s, view, 1, 2).unwrap_err(), whole);
         }
+    }
+
+    #[test]
+    fn issue_36_a_shares_words_keep_their_keys_and_come_back_whole() {
+        use rime_core::explorer::frame::CurveOf;
+        let units = [
+            Unit::Curve {
+                of: CurveOf::Scene,
+                from: 0,
+                to: 2,
+            },
+            Unit::OverlayPoints {
+                k: 0,
+                from: 3,
+                to: 6,
+            },
+            Unit::MapRows { from: 0, to: 2 },
+            Unit::MapRows { from: 2, to: 4 },
+        ];
+        let rebound = Normal {
+            eps: 0.5,
+            status: Status::ALL[1],
+            t_c: f64::INFINITY,
+            xi_max: 1e-9,
+            error_estimate: 1e-6,
+            rhs_evaluations: 42,
+        };
+        let outputs = [
+            Output::Curve(vec![Some(rebound), None], Some("g = 1 m/s: why".into())),
+            Output::OverlayPoints(vec![0.1, f64::NAN, 0.3]),
+            Output::MapRows(Ok((vec![0.25, -0.5], 7))),
+            Output::MapRows(Err("map: no".into())),
+        ];
+        let items: Vec<(usize, &Output)> = outputs.iter().enumerate().collect();
+        let share = encode(&items);
+        // The words travel as JSON with these keys (the page's workers pass them on unread).
+        let meta: serde_json::Value = serde_json::from_str(&share.meta).unwrap();
+        let keys = |j: &serde_json::Value| {
+            let mut k: Vec<String> = j.as_object().unwrap().keys().cloned().collect();
+            k.sort();
+            k
+        };
+        assert_eq!(keys(&meta), ["units"]);
+        let list = meta["units"].as_array().unwrap();
+        assert_eq!(keys(&list[0]), ["first", "i", "k", "n"]);
+        assert_eq!((&list[0]["k"], &list[0]["n"]), (&"curve".into(), &2.into()));
+        assert_eq!(keys(&list[1]), ["i", "k", "n"]);
+        assert_eq!(list[1]["k"], "points");
+        assert_eq!(keys(&list[2]), ["evals", "i", "k", "n"]);
+        assert_eq!(
+            (&list[2]["k"], &list[2]["evals"]),
+            (&"rows".into(), &7.into())
+        );
+        assert_eq!(keys(&list[3]), ["error", "i", "k"]);
+        // 2 points × PER_POINT, 3 overlay values, 2 map values, none for the failed rows.
+        assert_eq!(share.numbers.len(), 2 * PER_POINT + 3 + 2);
+        let back = decode(&share, &units).unwrap();
+        assert_eq!(back.len(), outputs.len());
+        for ((i, got), (j, want)) in back.iter().zip(items) {
+            assert_eq!(*i, j);
+            match (got, want) {
+                // NaN is not equal to itself: compare the bits.
+                (Output::OverlayPoints(a), Output::OverlayPoints(b)) => {
+                    let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+                    assert_eq!(bits(a), bits(b));
+                }
+                _ => assert_eq!(got, want),
+            }
+        }
+        // A share whose kinds do not match the plan's units is refused, naming the unit.
+        let swapped = [
+            units[1].clone(),
+            units[0].clone(),
+            units[2].clone(),
+            units[3].clone(),
+        ];
+        let err = decode(&share, &swapped).unwrap_err();
+        assert!(err.starts_with("share: unit 0"), "{err}");
     }
 }

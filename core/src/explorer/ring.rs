@@ -27,6 +27,7 @@ const MEETING_SAMPLES: usize = 200;
 
 /// One printed row of the card.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct RingRow {
     /// What the row is (`velocity dispersion c`, …).
     pub label: String,

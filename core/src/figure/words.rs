@@ -5,6 +5,7 @@
 
 /// The paper every surface cites.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Citation {
     /// Authors as printed.
     pub authors: &'static str,
