@@ -340,7 +340,13 @@ pub struct Viscosity {
     pub total: f64,
     /// `d ln ν_total/d ln τ` (central difference in ln τ, ±1e-3).
     pub dlnnu_dlntau: f64,
+    /// Viscous overstability: always [`OVERSTABILITY_NOT_ASSESSED`] (no published criterion for
+    /// this closure could be read and checked; docs/physics.md#ring-sizes).
+    pub overstability: &'static str,
 }
+
+/// The overstability verdict rime gives: none (docs/physics.md#ring-sizes says why).
+pub const OVERSTABILITY_NOT_ASSESSED: &str = "not_assessed";
 
 /// The record of [`equilibrium`].
 #[derive(Debug, Clone, PartialEq)]
@@ -815,6 +821,7 @@ fn describe(m: &Model, st: &State, bins: &[Bin]) -> Result<(Vec<BinPrediction>, 
             collisional,
             total: nu_trans + collisional,
             dlnnu_dlntau: f64::NAN,
+            overstability: OVERSTABILITY_NOT_ASSESSED,
         },
         phi,
     ))
