@@ -3,6 +3,7 @@
 
 Run with target/venv's python (REBOUND 5.2.2, the rime_grains wheel installed) from the repository
 root:  target/venv/bin/python scripts/ring-nbody.py [--quick] [--seeds 3] [--orbits 4]
+A ring of many sizes (issue 38; `rime ring --radii`):  ... ring-nbody.py --sizes --n 250 --orbits 6
 
 Each case is a non-gravitating patch of identical grains (sei integrator, shear boundary, ghost
 boxes, tree collision search, REBOUND's shearing-sheet setup) at Saturn's A ring
@@ -120,6 +121,127 @@ def run(radius, tau, scene, c0, n, orbits, seed, z_room=10.0):
     return float(np.mean(cs[half:])), float(np.mean(hs[half:])), cs, cost, att.counts()
 
 
+#: Size-distribution cases (issue 38): name, R_min, R_max [m], q, tau. Friction on, A the same for
+#: every pair (the `ice` preset's), three bins equal in log R.
+SIZE_CASES = [
+    ("1-5 cm ice, q=3, τ=0.25", 0.01, 0.05, 3.0, 0.25),
+    ("1-5 cm ice, q=3, τ=0.5", 0.01, 0.05, 3.0, 0.5),
+]
+
+
+def size_prediction(r_min, r_max, q, tau):
+    binary = os.environ.get("RIME_BIN", "target/release/rime")
+    args = [binary, "ring", "--preset", "ice", "--tau", str(tau), "--omega", str(OMEGA),
+            "--radii", f"{r_min}..{r_max}", "--q", str(q), "--format", "json"]
+    return json.loads(subprocess.run(args, check=True, capture_output=True, text=True).stdout)
+
+
+def run_sizes(pred, r_min, r_max, q, tau, n, orbits, seed):
+    """A patch of n grains drawn from dN/dR ∝ R^−q; returns the per-bin c (bins of the prediction),
+    the ring-wide c and rms z (averaged over the last half), the deepest overlap seen (in units of
+    R_i + R_j) and how many samples had any, and the CPU time per orbit."""
+    rng = np.random.default_rng(seed)
+    u = rng.uniform(size=n)
+    radii = (r_min**(1 - q) + u * (r_max**(1 - q) - r_min**(1 - q)))**(1 / (1 - q))
+    radii = np.sort(radii)[::-1]
+    edges = [b["radius_min"] for b in pred["size_bins"]] + [pred["size_bins"][-1]["radius_max"]]
+    which = np.clip(np.searchsorted(edges, radii, side="right") - 1, 0, len(edges) - 2)
+    c_bins = np.array([b["velocity_dispersion"] for b in pred["size_bins"]])
+    box = math.sqrt(np.sum(math.pi * radii**2) / tau)
+    sim = rebound.Simulation()
+    sim.rand_seed = seed
+    sim.OMEGA = OMEGA
+    sim.dt = 1e-3 * 2 * math.pi / OMEGA
+    h0 = max(c_bins.max() / OMEGA, r_max)
+    sim.root_size = box
+    sim.N_root_x, sim.N_root_y, sim.N_root_z = 1, 1, 2 * math.ceil(10.0 * h0 / box) + 1
+    sim.N_ghost_x, sim.N_ghost_y = 2, 2
+    sim.integrator, sim.boundary, sim.gravity, sim.collision = "sei", "shear", "none", "tree"
+    placed = np.empty((0, 3))
+    placed_r = np.empty(0)
+    for r, b in zip(radii, which):
+        c0 = c_bins[b]
+        while True:
+            x = np.array([rng.uniform(-box / 2, box / 2), rng.uniform(-box / 2, box / 2),
+                          rng.normal(0, h0)])
+            d = placed - x
+            d[:, :2] -= box * np.round(d[:, :2] / box)
+            if len(placed) == 0 or np.all(np.linalg.norm(d, axis=1) > 1.025 * (placed_r + r)):
+                break
+        placed = np.vstack([placed, x])
+        placed_r = np.append(placed_r, r)
+        sim.add(m=900 * 4 / 3 * math.pi * r**3, r=r, x=x[0], y=x[1], z=x[2],
+                vx=rng.normal(0, c0), vy=-1.5 * x[0] * OMEGA + rng.normal(0, c0),
+                vz=rng.normal(0, c0))
+    scene = rime.Scene.preset("ice")
+    rime.rebound.attach(sim, scene, length_unit=1, time_unit=1, mass_unit=1, sticking="stay",
+                        accuracy="fast")
+    period = 2 * math.pi / OMEGA
+    samples = max(8, int(4 * orbits))
+    per_bin, ring_c, ring_h = [], [], []
+    deepest, overlapped = 0.0, 0
+    sums = placed_r[:, None] + placed_r[None, :]
+    start = time.perf_counter()
+    for k in range(1, samples + 1):
+        sim.integrate(k * orbits * period / samples)
+        xyz = np.array([p.xyz for p in sim.particles])
+        v = np.array([p.vxyz for p in sim.particles])
+        e = (v[:, 0]**2 + (v[:, 1] + 1.5 * OMEGA * xyz[:, 0])**2 + v[:, 2]**2) / 3
+        per_bin.append([math.sqrt(np.mean(e[which == b])) if np.any(which == b) else float("nan")
+                        for b in range(len(c_bins))])
+        ring_c.append(math.sqrt(np.mean(e)))
+        ring_h.append(float(np.sqrt(np.mean((xyz[:, 2] - xyz[:, 2].mean())**2))))
+        d = xyz[:, None, :] - xyz[None, :, :]
+        d[:, :, :2] -= box * np.round(d[:, :, :2] / box)
+        depth = 1 - np.linalg.norm(d, axis=2) / sums
+        np.fill_diagonal(depth, 0.0)
+        if depth.max() > 0.01:
+            overlapped += 1
+        deepest = max(deepest, float(depth.max()))
+    cost = (time.perf_counter() - start) / orbits
+    half = samples // 2
+    return (np.nanmean(np.array(per_bin[half:]), axis=0), float(np.mean(ring_c[half:])),
+            float(np.mean(ring_h[half:])), deepest, overlapped, samples, cost,
+            np.bincount(which, minlength=len(c_bins)))
+
+
+def main_sizes(a, n, orbits):
+    print(f"size distributions: {n} particles, {orbits:g} orbits, {a.seeds} seeds "
+          f"(sim.rand_seed set), Ω = {OMEGA} 1/s; tolerance |ln ratio| <= ln 2 on every bin's c "
+          f"and the ring's c and H")
+    print("case | quantity | predicted | N-body (mean of seeds) | ratio | ± seed scatter | ok")
+    failures = 0
+    for name, r_min, r_max, q, tau in SIZE_CASES:
+        pred = size_prediction(r_min, r_max, q, tau)
+        results = [run_sizes(pred, r_min, r_max, q, tau, n, orbits, 2000 + s)
+                   for s in range(a.seeds)]
+        rows = []
+        for b, bin_pred in enumerate(pred["size_bins"]):
+            got = np.array([r[0][b] for r in results])
+            rows.append((f"c bin {b + 1} ({bin_pred['radius_min'] * 100:.3g}-"
+                         f"{bin_pred['radius_max'] * 100:.3g} cm, "
+                         f"{np.mean([r[7][b] for r in results]):.0f} grains)",
+                         bin_pred["velocity_dispersion"], got))
+        rows.append(("c ring", pred["velocity_dispersion"], np.array([r[1] for r in results])))
+        rows.append(("H ring", pred["thickness"], np.array([r[2] for r in results])))
+        for label, p, got in rows:
+            ratio = got / p
+            ok = bool(abs(math.log(ratio.mean())) <= TOLERANCE)
+            sc = ratio.std(ddof=1) if len(ratio) > 1 else float("nan")
+            unit, scale = ("m", 1.0) if label.startswith("H") else ("µm/s", 1e6)
+            print(f"{name} | {label} | {p * scale:.4g} {unit} | {got.mean() * scale:.4g} {unit} | "
+                  f"{ratio.mean():.2f} | {sc:.2f} | {'yes' if ok else 'NO'}")
+            failures += not ok
+        deepest = max(r[3] for r in results)
+        overlapped = sum(r[4] for r in results)
+        total = sum(r[5] for r in results)
+        cost = float(np.mean([r[6] for r in results]))
+        print(f"{name} | overlaps | deepest {deepest:.3f} (R_i + R_j); samples with one > 1 %: "
+              f"{overlapped}/{total} | CPU {cost:.2f} s/orbit")
+        sys.stdout.flush()
+    return 1 if failures else 0
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--quick", action="store_true", help="60 particles, 2 orbits, 3 seeds")
@@ -129,8 +251,12 @@ def main():
     parser.add_argument("--only", type=int, default=None, help="run case INDEX only")
     parser.add_argument("--start", type=float, default=None,
                         help="start settling cases at START × c_pred (default: the case's, 1)")
+    parser.add_argument("--sizes", action="store_true",
+                        help="the size-distribution cases (issue 38) instead of the one-size ones")
     a = parser.parse_args()
     n, orbits = (60, 2.0) if a.quick else (a.n, a.orbits)
+    if a.sizes:
+        return main_sizes(a, n, orbits)
     print(f"{n} particles, {orbits:g} orbits, {a.seeds} seeds, Ω = {OMEGA} 1/s; "
           f"tolerance |ln ratio| <= ln 2")
     header = ("case", "verdict", "c_pred", "c_nbody", "ratio", "±", "H_pred", "H_nbody", "ratio",

@@ -63,6 +63,8 @@ pub mod numerics;
 pub mod ode;
 pub mod params;
 pub mod ring;
+#[cfg(feature = "alloc")]
+pub mod ring_sizes;
 pub mod scene;
 pub mod stick;
 pub mod sweep;

@@ -362,17 +362,17 @@ impl RingPatch {
 
 /// The vertical to 1-D dispersion ratio of the closure at the balance, `c_z²/c² = 1 − ζ/ν =
 /// 1 − (3/2)/(ν̂² + 11/2)` with `ν̂ = b(ε_cr) ω̂`.
-fn vertical_fraction(w: f64) -> f64 {
+pub(crate) fn vertical_fraction(w: f64) -> f64 {
     let nu = relaxation_per_collision(eps_cr_of(w)) * w;
     sqrt(1.0 - 1.5 / (nu * nu + 5.5))
 }
 
 // Simpson nodes in x = g/s for the Rayleigh impact distributions, on [0, X_MAX].
-const X_MAX: f64 = 8.0;
-const N_NORMAL: usize = 96;
-const N_TANGENTIAL: usize = 48;
+pub(crate) const X_MAX: f64 = 8.0;
+pub(crate) const N_NORMAL: usize = 96;
+pub(crate) const N_TANGENTIAL: usize = 48;
 
-fn simpson_weight(i: usize, n: usize) -> f64 {
+pub(crate) fn simpson_weight(i: usize, n: usize) -> f64 {
     if i == 0 || i == n {
         1.0
     } else if i % 2 == 1 {

@@ -34,7 +34,8 @@ __all__ = ["equilibrium", "scaled_damping_time"]
 
 
 def equilibrium(scene, *, tau, omega=None, planet_mass=None, distance=None, radius=None,
-                scale_damping=False, damping_set_for=None):
+                scale_damping=False, damping_set_for=None, radius_min=None, radius_max=None,
+                q=None, bins=3, radii=None, fractions=None, damping_rule="same"):
     """The ring's equilibrium for ``scene`` at optical depth ``tau``.
 
     Give ``omega`` [1/s], or ``planet_mass`` [kg] and ``distance`` [m] (Ω = √(GM/d³)). ``radius``
@@ -48,8 +49,35 @@ def equilibrium(scene, *, tau, omega=None, planet_mass=None, distance=None, radi
     ``equilibrium`` (True for the first two: the floor is a steady state too), ``verdict_words``,
     ``velocity_dispersion`` [m/s], ``thickness`` [m], ``mean_impact_speed`` [m/s], ``eps_cr``,
     ``eps_effective``, ``equilibration_orbits`` and the ``smooth`` and ``rough`` predictions.
+
+    **A ring of many sizes** (issue 38; docs/physics.md#ring-sizes): ``radius_min``,
+    ``radius_max`` [m] and ``q`` (dN/dR ∝ R^−q, ``bins`` bins equal in log R), or ``radii`` [m]
+    with number ``fractions``; ``damping_rule`` is ``"same"`` (the scene's A for every pair) or
+    ``"keep_epsilon"`` (every pair keeps the scene's ε_N(g)). Returns the dict of
+    ``rime ring --radii … --format json``: ``size_bins`` (per bin ``radius_min``, ``radius_max``,
+    ``velocity_dispersion``, ``thickness``, …), ``viscosity`` (``translational``, ``collisional``,
+    ``total`` [m²/s], ``dlnnu_dlntau``, ``overstability``), the ring-wide number-weighted
+    ``velocity_dispersion`` and ``thickness``, and the ``verdict``.
+
+    >>> import rime_grains as rime
+    >>> r = rime.ring.equilibrium(rime.Scene.preset("ice"), tau=0.5, omega=1.3143527e-4,
+    ...                           radius_min=0.01, radius_max=0.05, q=3)
+    >>> len(r["size_bins"]), r["verdict"], r["viscosity"]["overstability"]
+    (3, 'equilibrium', 'not_assessed')
     """
     from . import _scene
+    if any(v is not None for v in (radius_min, radius_max, q, radii, fractions)) \
+            or damping_rule != "same":
+        if radius is not None or scale_damping or damping_set_for is not None:
+            raise ValueError("radii: a ring of many sizes takes no radius, scale_damping or "
+                             "damping_set_for (choose the A rule with damping_rule)")
+        import json
+        return json.loads(_native.ring_sizes_equilibrium(
+            _scene(scene), tau=tau, omega=omega, planet_mass=planet_mass, distance=distance,
+            radius_min=radius_min, radius_max=radius_max, q=q, bins=bins,
+            radii=None if radii is None else [float(r) for r in radii],
+            fractions=None if fractions is None else [float(f) for f in fractions],
+            damping_rule=damping_rule))
     return _native.ring_equilibrium(_scene(scene), tau=tau, omega=omega, planet_mass=planet_mass,
                                     distance=distance, radius=radius, scale_damping=scale_damping,
                                     damping_set_for=damping_set_for)

@@ -668,6 +668,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(eps_n, m)?)?;
     m.add_function(wrap_pyfunction!(ring::ring_equilibrium, m)?)?;
+    m.add_function(wrap_pyfunction!(ring::ring_sizes_equilibrium, m)?)?;
     m.add_function(wrap_pyfunction!(eps_t, m)?)?;
     m.add_function(wrap_pyfunction!(tangential, m)?)?;
     m.add_function(wrap_pyfunction!(collision, m)?)?;

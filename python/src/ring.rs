@@ -89,3 +89,104 @@ pub(crate) fn ring_equilibrium<'py>(
     }
     Ok(d)
 }
+
+/// A ring of many sizes (issue 38): the same JSON as `rime ring --radii … --format json`, as text
+/// (`rime_grains.ring.equilibrium` parses it).
+#[pyfunction]
+#[pyo3(signature = (scene, *, tau, omega = None, planet_mass = None, distance = None, radius_min = None, radius_max = None, q = None, bins = 3, radii = None, fractions = None, damping_rule = "same"))]
+#[allow(clippy::too_many_arguments)]
+// Long by design: every keyword checked at the boundary with a named error, then one call.
+pub(crate) fn ring_sizes_equilibrium(
+    py: Python<'_>,
+    scene: PyRef<'_, PyScene>,
+    tau: f64,
+    omega: Option<f64>,
+    planet_mass: Option<f64>,
+    distance: Option<f64>,
+    radius_min: Option<f64>,
+    radius_max: Option<f64>,
+    q: Option<f64>,
+    bins: usize,
+    radii: Option<Vec<f64>>,
+    fractions: Option<Vec<f64>>,
+    damping_rule: &str,
+) -> PyResult<String> {
+    use rime_core::ring_sizes::{DampingRule, SizeDistribution, SizeRingInput};
+    let orbit = match (omega, planet_mass, distance) {
+        (Some(o), None, None) => Orbit::Omega(o),
+        (None, Some(m), Some(d)) => Orbit::Planet {
+            planet_mass: m,
+            distance: d,
+        },
+        (Some(_), _, _) => {
+            return Err(value_error(
+                "omega",
+                "give omega or planet_mass and distance, not both",
+            ));
+        }
+        (None, Some(_), None) => return Err(value_error("distance", "required with planet_mass")),
+        (None, None, Some(_)) => return Err(value_error("planet_mass", "required with distance")),
+        (None, None, None) => {
+            return Err(value_error(
+                "omega",
+                "required (or planet_mass and distance)",
+            ));
+        }
+    };
+    let rule = match damping_rule {
+        "same" => DampingRule::Same,
+        "keep_epsilon" => DampingRule::KeepEpsilon,
+        other => {
+            return Err(value_error(
+                "damping_rule",
+                format!("expected 'same' or 'keep_epsilon' (got {other:?})"),
+            ));
+        }
+    };
+    let sizes = match (radius_min, radius_max, q, radii, fractions) {
+        (Some(a), Some(b), Some(q), None, None) => SizeDistribution::PowerLaw {
+            q,
+            radius_min: a,
+            radius_max: b,
+            bins,
+        },
+        (None, None, None, Some(radii), fractions) => {
+            let fractions = match fractions {
+                Some(f) => f,
+                None if radii.len() == 1 => vec![1.0],
+                None => return Err(value_error("fractions", "required with a list of radii")),
+            };
+            SizeDistribution::List { radii, fractions }
+        }
+        (Some(_), Some(_), None, None, None) => {
+            return Err(value_error("q", "required with radius_min and radius_max"));
+        }
+        _ => {
+            return Err(value_error(
+                "radii",
+                "give radius_min, radius_max and q (a power law) or radii (and fractions), not both",
+            ));
+        }
+    };
+    let input = SizeRingInput {
+        tau,
+        orbit,
+        sizes,
+        damping_rule: rule,
+    };
+    let material = scene.scene;
+    let rec = py
+        .detach(|| rime_core::ring_sizes::equilibrium(&material, &input))
+        .map_err(core_error)?;
+    let mut v = serde_json::to_value(&rec).map_err(|e| value_error("ring", e.to_string()))?;
+    if let Some(map) = v.as_object_mut() {
+        // The keys `rime ring --radii` adds (tui/src/commands/ring.rs).
+        map.insert("equilibrium".into(), rec.verdict.is_equilibrium().into());
+        map.insert("verdict_words".into(), rec.verdict.words().into());
+        map.insert(
+            "prediction".into(),
+            if rec.friction { "rough" } else { "smooth" }.into(),
+        );
+    }
+    serde_json::to_string(&v).map_err(|e| value_error("ring", e.to_string()))
+}

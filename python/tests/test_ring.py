@@ -86,3 +86,35 @@ def test_issue_35_a_given_for_the_radius_grains_needs_no_scaling(rime_cli):
     assert noted["scaled_damping_time"] == pytest.approx(0.25, rel=1e-12)
     with pytest.raises(ValueError, match="^damping_set_for"):
         rime.ring.equilibrium(ice, tau=0.5, omega=OMEGA, radius=1.0, damping_set_for=-1.0)
+
+
+def test_issue_38_a_ring_of_many_sizes_agrees_with_the_cli_to_the_digit():
+    ice = rime.Scene.preset("ice")
+    cases = [
+        (dict(radius_min=0.01, radius_max=0.05, q=3),
+         ["--radii", "0.01..0.05", "--q", 3]),
+        (dict(radius_min=0.01, radius_max=0.05, q=3, bins=5, damping_rule="keep_epsilon"),
+         ["--radii", "0.01..0.05", "--q", 3, "--bins", 5, "--damping-rule", "keep_epsilon"]),
+        (dict(radii=[0.01, 0.02, 0.05], fractions=[0.6, 0.3, 0.1]),
+         ["--radii", "0.01,0.02,0.05", "--fractions", "0.6,0.3,0.1"]),
+    ]
+    for kwargs, flags in cases:
+        py = rime.ring.equilibrium(ice, tau=0.5, omega=OMEGA, **kwargs)
+        js = cli("ring", "--preset", "ice", "--tau", 0.5, "--omega", OMEGA, *flags)
+        assert py == js
+        assert len(py["size_bins"]) == kwargs.get("bins", 3)
+        nu = py["viscosity"]
+        assert nu["total"] == nu["translational"] + nu["collisional"]
+    # One size through radii is the one-size answer.
+    one = rime.ring.equilibrium(ice, tau=0.5, omega=OMEGA, radii=[0.02])
+    today = rime.ring.equilibrium(ice, tau=0.5, omega=OMEGA, radius=0.02)
+    assert one["size_bins"][0]["velocity_dispersion"] == today["velocity_dispersion"]
+    assert one["size_bins"][0]["thickness"] == today["thickness"]
+    with pytest.raises(ValueError, match="^fractions:"):
+        rime.ring.equilibrium(ice, tau=0.5, omega=OMEGA, radii=[0.01, 0.02], fractions=[0.5, 0.4])
+    with pytest.raises(ValueError, match="^q:"):
+        rime.ring.equilibrium(ice, tau=0.5, omega=OMEGA, radius_min=0.01, radius_max=0.05)
+    with pytest.raises(ValueError, match="^damping_rule:"):
+        rime.ring.equilibrium(ice, tau=0.5, omega=OMEGA, radii=[0.02], damping_rule="other")
+    with pytest.raises(ValueError, match="^radii:"):
+        rime.ring.equilibrium(ice, tau=0.5, omega=OMEGA, radii=[0.02], radius=0.02)

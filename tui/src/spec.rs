@@ -203,7 +203,7 @@ pub const SUBS: &[Sub] = &[
     },
     Sub {
         name: "ring",
-        usage: "ring --tau T (--omega W | --planet-mass M --distance D) [--radius R] [--scale-damping] [OPTIONS]",
+        usage: "ring --tau T (--omega W | --planet-mass M --distance D) [--radius R [--scale-damping] | --radii R1..R2 --q Q [--bins N] | --radii LIST --fractions LIST] [--damping-rule RULE] [OPTIONS]",
         about: "What the scene's law does to a ring: equilibrium velocity dispersion, thickness and \
                 verdict (equilibrium, monolayer_floor, aggregates, heats), smooth and rough.",
         flags: &[
@@ -227,6 +227,31 @@ pub const SUBS: &[Sub] = &[
             switch(
                 "--scale-damping",
                 "use A' = A·R/R_scene (keeps ε_N(g); a different material)",
+            ),
+            f(
+                "--radii",
+                "R1..R2|LIST",
+                "a ring of many sizes: a range (with --q) or a comma list (with --fractions); units allowed",
+            ),
+            f(
+                "--q",
+                "Q",
+                "power-law exponent of dN/dR ∝ R^−q (with a range of --radii)",
+            ),
+            f(
+                "--bins",
+                "N",
+                "bins equal in log R (with a range of --radii; default 3)",
+            ),
+            f(
+                "--fractions",
+                "LIST",
+                "number fractions of a list of --radii, comma-separated, summing to 1",
+            ),
+            f(
+                "--damping-rule",
+                "RULE",
+                "A across sizes: same (the scene's A, default) or keep_epsilon (every pair keeps the scene's ε_N(g))",
             ),
         ],
         scene: true,
@@ -671,6 +696,7 @@ fn value_words(flag: &str) -> Option<String> {
         "--accuracy" => "fast precise integrated".to_string(),
         "--format" => "json csv table".to_string(),
         "--gamma" => "surface adhesion".to_string(),
+        "--damping-rule" => "same keep_epsilon".to_string(),
         // Parameter paths, each ready for its value (issue 37: flags were offered after --set).
         "--set" => rime_core::params::PARAMETERS
             .iter()

@@ -5,6 +5,7 @@ use crate::args::{Common, Format};
 use crate::output;
 use crate::scene_io::{CliError, CliResult, err};
 use rime_core::ring::{Orbit, Prediction, RingPatch, equilibrium};
+use rime_core::ring_sizes::{DampingRule, SizeDistribution, SizeRingInput, SizeRingRecord};
 
 /// Parsed arguments.
 #[derive(Debug, Clone, PartialEq)]
@@ -20,6 +21,84 @@ pub struct Args {
     /// A was given in this command (`--set bulk.damping…`) without the grains' radius: it was
     /// given for the `--radius` grains, not for the scene's.
     pub damping_given_here: bool,
+    /// `--radii …`: a ring of many sizes (issue 38), with the A rule.
+    pub sizes: Option<(SizeDistribution, DampingRule)>,
+}
+
+/// Reads `--radii`, `--q`, `--bins`, `--fractions`, `--damping-rule` (None without `--radii`).
+fn parse_sizes(
+    get: &dyn Fn(&str) -> Option<String>,
+) -> CliResult<Option<(SizeDistribution, DampingRule)>> {
+    let Some(radii) = get("--radii") else {
+        for flag in ["--q", "--bins", "--fractions", "--damping-rule"] {
+            if get(flag).is_some() {
+                return err(format!("{flag}: only with --radii (a ring of many sizes)"));
+            }
+        }
+        return Ok(None);
+    };
+    if get("--radius").is_some() {
+        return err("--radii: cannot be combined with --radius (one size)");
+    }
+    if get("--scale-damping").is_some() {
+        return err(
+            "--scale-damping: not with --radii; choose how A follows the sizes with --damping-rule",
+        );
+    }
+    let rule = match get("--damping-rule").as_deref() {
+        None | Some("same") => DampingRule::Same,
+        Some("keep_epsilon") => DampingRule::KeepEpsilon,
+        Some(other) => {
+            return err(format!(
+                "--damping-rule: expected same or keep_epsilon, got {other:?}"
+            ));
+        }
+    };
+    let quantity = |text: &str| -> CliResult<f64> {
+        rime_core::units::parse_quantity("--radii", text, "m").map_err(CliError::from)
+    };
+    let sizes = if let Some((lo, hi)) = radii.split_once("..") {
+        if get("--fractions").is_some() {
+            return err("--fractions: only with a list of --radii (a range takes --q)");
+        }
+        let q = get("--q").ok_or_else(|| {
+            CliError::input("--q: required with a range of --radii (dN/dR ∝ R^−q)")
+        })?;
+        let q = rime_core::units::parse_quantity("--q", &q, "1").map_err(CliError::from)?;
+        let bins = match get("--bins") {
+            None => 3,
+            Some(b) => b.trim().parse::<usize>().map_err(|_| {
+                CliError::input(format!(
+                    "--bins: expected a whole number of bins, got {b:?}"
+                ))
+            })?,
+        };
+        SizeDistribution::PowerLaw {
+            q,
+            radius_min: quantity(lo)?,
+            radius_max: quantity(hi)?,
+            bins,
+        }
+    } else {
+        for flag in ["--q", "--bins"] {
+            if get(flag).is_some() {
+                return err(format!("{flag}: only with a range of --radii (R1..R2)"));
+            }
+        }
+        let radii: Vec<f64> = radii.split(',').map(quantity).collect::<CliResult<_>>()?;
+        let fractions: Vec<f64> = match get("--fractions") {
+            Some(f) => f
+                .split(',')
+                .map(|x| {
+                    rime_core::units::parse_quantity("--fractions", x, "1").map_err(CliError::from)
+                })
+                .collect::<CliResult<_>>()?,
+            None if radii.len() == 1 => vec![1.0],
+            None => return err("--fractions: required with a list of --radii"),
+        };
+        SizeDistribution::List { radii, fractions }
+    };
+    Ok(Some((sizes, rule)))
 }
 
 /// Reads `--tau`, `--omega | --planet-mass --distance`, `--radius`, `--scale-damping`; `sets` are
@@ -56,6 +135,7 @@ pub fn parse(get: &dyn Fn(&str) -> Option<String>, sets: &[String]) -> CliResult
         scale_damping: get("--scale-damping").as_deref() == Some("true"),
         damping_given_here: sets.iter().any(|s| set_key(s).starts_with("bulk.damping"))
             && !sets.iter().any(|s| set_key(s).starts_with("grains.radius")),
+        sizes: parse_sizes(get)?,
     })
 }
 
@@ -67,6 +147,9 @@ fn set_key(set: &str) -> &str {
 // Long by design: one record's three outputs (JSON, CSV, table) side by side so that their fields
 // stay in step.
 pub fn run(common: &Common, args: &Args) -> CliResult<String> {
+    if let Some((sizes, rule)) = &args.sizes {
+        return run_sizes(common, args, sizes, *rule);
+    }
     if args.scale_damping
         && args
             .radius
@@ -195,4 +278,193 @@ fn summary(p: &Prediction, r_omega: f64) -> String {
         "heats: no balance in the slow-collision regime; the balance the law gives, {numbers}, lies \
          outside it ({why}): beyond what the model covers, not a prediction\n"
     )
+}
+
+/// `rime ring --radii …`: a ring of many sizes (issue 38, docs/physics.md#ring-sizes).
+fn run_sizes(
+    common: &Common,
+    args: &Args,
+    sizes: &SizeDistribution,
+    rule: DampingRule,
+) -> CliResult<String> {
+    use rime_core::explorer::format::{qty, sig};
+    let input = SizeRingInput {
+        tau: args.tau,
+        orbit: args.orbit,
+        sizes: sizes.clone(),
+        damping_rule: rule,
+    };
+    let rec = rime_core::ring_sizes::equilibrium(&common.scene, &input).map_err(|e| {
+        // The core names its fields; on the command line they are flags.
+        let text = e.to_string();
+        let text = ["radius_min", "radius_max", "radii"]
+            .iter()
+            .fold(text, |t, f| {
+                t.replacen(&format!("{f}:"), &format!("--radii ({f}):"), 1)
+            });
+        let text = ["q:", "bins:", "fractions:"].iter().fold(text, |t, f| {
+            if t.starts_with(f) {
+                format!("--{t}")
+            } else {
+                t
+            }
+        });
+        CliError::input(text)
+    })?;
+    let prediction = if rec.friction { "rough" } else { "smooth" };
+    Ok(match common.format {
+        Format::Json => {
+            let mut v = serde_json::to_value(&rec).map_err(|e| CliError::input(e.to_string()))?;
+            if let Some(map) = v.as_object_mut() {
+                map.insert("equilibrium".into(), rec.verdict.is_equilibrium().into());
+                map.insert("verdict_words".into(), rec.verdict.words().into());
+                map.insert("prediction".into(), prediction.into());
+            }
+            serde_json::to_string_pretty(&v).map_err(|e| CliError::input(e.to_string()))? + "\n"
+        }
+        Format::Csv => {
+            let mut s = String::from("name,value,unit\n");
+            for (k, v) in ring_values(&rec) {
+                s.push_str(&format!("{k},{v}\n"));
+            }
+            for (i, b) in rec.size_bins.iter().enumerate() {
+                for (k, v, u) in bin_values(b) {
+                    s.push_str(&format!("bin{}.{k},{},{u}\n", i + 1, output::num(v)));
+                }
+            }
+            s
+        }
+        Format::Table => {
+            let rows: Vec<Vec<String>> = ring_values(&rec)
+                .into_iter()
+                .map(|(k, v)| {
+                    let (v, u) = v.split_once(',').unwrap_or((&v, ""));
+                    match (u, v.parse::<f64>()) {
+                        ("m²/s", Ok(x)) => {
+                            let (scale, u) = area_unit(rec.viscosity.total);
+                            vec![k.to_string(), output::num(x / scale), u.to_string()]
+                        }
+                        _ => vec![k.to_string(), v.to_string(), u.to_string()],
+                    }
+                })
+                .collect();
+            let mut s = output::table(&["name", "value", "unit"], &output::human_value_rows(rows));
+            s.push('\n');
+            let bins: Vec<Vec<String>> = rec
+                .size_bins
+                .iter()
+                .enumerate()
+                .map(|(i, b)| {
+                    let radii = if b.radius_min == b.radius_max {
+                        qty(b.radius, "m")
+                    } else {
+                        format!("{}–{}", qty(b.radius_min, "m"), qty(b.radius_max, "m"))
+                    };
+                    vec![
+                        (i + 1).to_string(),
+                        radii,
+                        sig(b.number_fraction, 4),
+                        qty(b.velocity_dispersion, "m/s"),
+                        qty(b.thickness, "m"),
+                        if b.at_floor { "floor" } else { "" }.to_string(),
+                    ]
+                })
+                .collect();
+            s.push_str(&output::table(
+                &["bin", "radii", "fraction", "c", "H", ""],
+                &bins,
+            ));
+            let nu = |x: f64| {
+                let (scale, u) = area_unit(rec.viscosity.total);
+                format!("{} {u}", sig(x / scale, 4))
+            };
+            s.push_str(&format!(
+                "{}\nall grains (number-weighted): c = {}, H = {}\n\
+                 ν = {} (translational {}, collisional {})\n\
+                 d ln ν/d ln τ = {}\n\
+                 A: {}\n",
+                rec.verdict.words(),
+                qty(rec.velocity_dispersion, "m/s"),
+                qty(rec.thickness, "m"),
+                nu(rec.viscosity.total),
+                nu(rec.viscosity.translational),
+                nu(rec.viscosity.collisional),
+                sig(rec.viscosity.dlnnu_dlntau, 4),
+                match rule {
+                    DampingRule::Same => "the scene's for every pair (a material constant)",
+                    DampingRule::KeepEpsilon =>
+                        "scaled so every pair keeps the scene's ε_N(g) (a different material)",
+                },
+            ));
+            s.push_str(
+                "overstability: not assessed (no published criterion checked for this closure)\n",
+            );
+            s
+        }
+    })
+}
+
+/// The unit \[scale in m²/s, name\] for kinematic viscosities of the size of `x`: the largest of
+/// m²/s, cm²/s, mm²/s, µm²/s that leaves it at least 0.01 (tables for people).
+fn area_unit(x: f64) -> (f64, &'static str) {
+    for (scale, unit) in [(1.0, "m²/s"), (1e-4, "cm²/s"), (1e-6, "mm²/s")] {
+        if x.abs() >= 0.01 * scale {
+            return (scale, unit);
+        }
+    }
+    (1e-12, "µm²/s")
+}
+
+/// The ring-wide rows `name → "value,unit"` (CSV with every digit).
+fn ring_values(rec: &SizeRingRecord) -> Vec<(&'static str, String)> {
+    let n = |v: f64, u: &str| format!("{},{u}", output::num(v));
+    vec![
+        ("verdict", format!("{},", rec.verdict.name())),
+        ("equilibrium", format!("{},", rec.verdict.is_equilibrium())),
+        ("verdict_words", format!("{},", rec.verdict.words())),
+        ("damping_rule", format!("{},", rec.damping_rule.name())),
+        ("tau", n(rec.tau, "")),
+        ("omega", n(rec.omega, "1/s")),
+        ("damping_time", n(rec.damping_time, "s")),
+        (
+            "damping_reference_radius",
+            n(rec.damping_reference_radius, "m"),
+        ),
+        ("velocity_dispersion", n(rec.velocity_dispersion, "m/s")),
+        ("thickness", n(rec.thickness, "m")),
+        ("mean_impact_speed", n(rec.mean_impact_speed, "m/s")),
+        ("sticking_fraction", n(rec.sticking_fraction, "")),
+        ("filling_factor", n(rec.filling_factor, "")),
+        (
+            "viscosity.translational",
+            n(rec.viscosity.translational, "m²/s"),
+        ),
+        (
+            "viscosity.collisional",
+            n(rec.viscosity.collisional, "m²/s"),
+        ),
+        ("viscosity.total", n(rec.viscosity.total, "m²/s")),
+        ("viscosity.dlnnu_dlntau", n(rec.viscosity.dlnnu_dlntau, "")),
+        (
+            "viscosity.overstability",
+            format!("{},", rec.viscosity.overstability),
+        ),
+    ]
+}
+
+fn bin_values(b: &rime_core::ring_sizes::BinPrediction) -> Vec<(&'static str, f64, &'static str)> {
+    vec![
+        ("radius_min", b.radius_min, "m"),
+        ("radius_max", b.radius_max, "m"),
+        ("radius", b.radius, "m"),
+        ("number_fraction", b.number_fraction, ""),
+        ("tau", b.tau, ""),
+        ("velocity_dispersion", b.velocity_dispersion, "m/s"),
+        ("thickness", b.thickness, "m"),
+        ("floor_dispersion", b.floor_dispersion, "m/s"),
+        ("mean_impact_speed", b.mean_impact_speed, "m/s"),
+        ("sticking_fraction", b.sticking_fraction, ""),
+        ("collision_frequency", b.collision_frequency, ""),
+        ("viscosity_translational", b.viscosity_translational, "m²/s"),
+    ]
 }

@@ -16,6 +16,7 @@ mod exit_codes;
 mod explorer_model;
 mod exported;
 mod issue_37;
+mod issue_38;
 mod lammps;
 mod measured;
 mod models;
