@@ -2106,7 +2106,7 @@ fn issue_36_the_tidal_marks_are_the_cores() {
         compared, 6,
         "every printed number is compared on the paper's example"
     );
-    assert!(s.contains("37.6 m      ⚠ +0.32 %"), "{s}");
+    assert!(s.contains("37.6 m     ⚠ +0.32 %"), "{s}");
     assert!(s.contains(&card.verdict));
 }
 

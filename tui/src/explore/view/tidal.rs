@@ -134,7 +134,7 @@ pub fn lines(t: &TidalView) -> Vec<Line<'static>> {
             Style::new().fg(Color::LightYellow),
         ));
         let paper = row.printed.map_or("—".to_string(), |p| v(p, row.unit));
-        spans.push(Span::raw(format!("  {paper:<11}")));
+        spans.push(Span::raw(format!("  {paper:<10}")));
         if let Some(c) = &row.comparison {
             spans.push(Span::styled(
                 format!(" {}", c.mark),
