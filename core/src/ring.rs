@@ -385,12 +385,47 @@ pub(crate) fn simpson_weight(i: usize, n: usize) -> f64 {
 /// Loss average at dispersion `c`: returns (1 − ε̄², sticking fraction), smooth or rough.
 fn loss(contact: &Contact, c: f64, rough: bool) -> Result<(f64, f64)> {
     let s = core::f64::consts::SQRT_2 * c;
+    let average = pair_average(contact, s, rough, "tau, omega, radius")?;
+    Ok((average.loss, average.sticking))
+}
+
+/// Impact averages of one pair at relative dispersion `s` per component.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct PairAverage {
+    /// `1 − ε̄²`: energy-weighted loss fraction, normal and (rough) tangential.
+    pub(crate) loss: f64,
+    /// `⟨(1 + ε_N) g_N²⟩/⟨g_N²⟩ + κ⟨(1 + ε_T) g_T²⟩/⟨g_T²⟩`: the momentum-exchange weight.
+    pub(crate) exchange: f64,
+    /// Rate-weighted fraction of sticking impacts.
+    pub(crate) sticking: f64,
+}
+
+/// The impact averages of a pair whose normal impact speed is Rayleigh with scale `s` per component
+/// (`s = √2 c` for one size; a ring of many sizes, `crate::ring_sizes`, passes each pair's):
+/// the one place the loss, exchange and sticking averages are integrated (Simpson nodes in
+/// `x = g/s`). `fields` names the inputs an error blames.
+pub(crate) fn pair_average(
+    contact: &Contact,
+    s: f64,
+    rough: bool,
+    fields: &'static str,
+) -> Result<PairAverage> {
     let h = X_MAX / N_NORMAL as f64;
     let ht = X_MAX / N_TANGENTIAL as f64;
-    let (mut num, mut den, mut stuck, mut rate) = (0.0, 0.0, 0.0, 0.0);
+    let kappa = if rough {
+        contact
+            .friction
+            .ok_or(Error::InvalidValue {
+                field: "friction",
+                expected: "a friction model (the scene has none)",
+            })?
+            .kappa
+    } else {
+        0.0
+    };
+    let (mut num, mut den, mut stuck, mut rate, mut exch) = (0.0, 0.0, 0.0, 0.0, 0.0);
     for i in 0..=N_NORMAL {
         let x = i as f64 * h;
-        // Rayleigh density x e^{−x²/2}; ⟨g_N²·…⟩ adds x².
         let w = simpson_weight(i, N_NORMAL) * x * exp(-0.5 * x * x);
         if w == 0.0 {
             continue;
@@ -403,12 +438,9 @@ fn loss(contact: &Contact, c: f64, rough: bool) -> Result<(f64, f64)> {
         }
         den += w * x * x;
         num += w * x * x * (1.0 - eps_n * eps_n);
+        exch += w * x * x * (1.0 + eps_n);
         if rough {
-            let friction = contact.friction.ok_or(Error::InvalidValue {
-                field: "friction",
-                expected: "a friction model (the scene has none)",
-            })?;
-            let mut tangential = 0.0;
+            let (mut tangential, mut t_exch) = (0.0, 0.0);
             for j in 0..=N_TANGENTIAL {
                 let y = j as f64 * ht;
                 let wt = simpson_weight(j, N_TANGENTIAL) * y * exp(-0.5 * y * y);
@@ -417,18 +449,24 @@ fn loss(contact: &Contact, c: f64, rough: bool) -> Result<(f64, f64)> {
                 }
                 let eps_t = contact.tangential(g_n, s * y, Accuracy::Fast)?.eps_t;
                 tangential += wt * y * y * (1.0 - eps_t * eps_t);
+                t_exch += wt * y * y * (1.0 + eps_t);
             }
-            // (m_eff/2) κ (1 − ε_T²) g_T² (Eq. (22)'s κ), averaged over g_T given g_N (Simpson: ht/3).
-            num += w * friction.kappa * tangential * ht / 3.0;
+            num += w * kappa * tangential * ht / 3.0;
+            // ⟨g_T²⟩ of the 2-D Rayleigh law is 2 s², i.e. 2 in units of s² (Simpson: ht/3).
+            exch += w * x * x * kappa * t_exch * ht / 3.0 / 2.0;
         }
     }
     if !(den > 0.0) {
         return Err(Error::DerivedOutOfRange {
             quantity: "impact average",
-            fields: "tau, omega, radius",
+            fields,
         });
     }
-    Ok((num / den, stuck / rate))
+    Ok(PairAverage {
+        loss: num / den,
+        exchange: exch / den,
+        sticking: stuck / rate,
+    })
 }
 
 /// `ε̄` and the sticking fraction at dispersion `c` \[m/s\] for smooth (`rough = false`) or rough

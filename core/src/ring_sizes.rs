@@ -19,14 +19,16 @@
 //! partners (`2RΩ` for one size). The system is solved species by species (Gauss–Seidel sweeps,
 //! each a root in ln c).
 
-use crate::accuracy::Accuracy;
 use crate::contact::Contact;
 use crate::error::{Error, Result, positive, within};
 use crate::math::{exp, ln, sqrt};
 use crate::ring::{
-    self, AGGREGATE_FRACTION, N_NORMAL, N_TANGENTIAL, Orbit, SLOW_REGIME_LIMIT, Verdict, X_MAX,
-    simpson_weight, vertical_fraction,
+    self, AGGREGATE_FRACTION, Orbit, PairAverage, SLOW_REGIME_LIMIT, Verdict, pair_average,
+    vertical_fraction,
 };
+
+/// The inputs an impact average's error blames for a ring of many sizes.
+const RADII: &str = "tau, omega, radii";
 use crate::scene::{Damping, Scene};
 use crate::tidal::G;
 use alloc::vec::Vec;
@@ -211,79 +213,6 @@ impl SizeDistribution {
     }
 }
 
-/// Impact averages of one pair at relative dispersion `s` per component.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct PairAverage {
-    /// `1 − ε̄²`: energy-weighted loss fraction, normal and (rough) tangential.
-    loss: f64,
-    /// `⟨(1 + ε_N) g_N²⟩/⟨g_N²⟩ + κ⟨(1 + ε_T) g_T²⟩/⟨g_T²⟩`: the momentum-exchange weight.
-    exchange: f64,
-    /// Rate-weighted fraction of sticking impacts.
-    sticking: f64,
-}
-
-/// The averages of [`crate::ring`]'s `loss` for a pair whose normal impact speed is Rayleigh with
-/// scale `s` (the same Simpson nodes; `s = √2 c` for one size).
-fn pair_average(contact: &Contact, s: f64, rough: bool) -> Result<PairAverage> {
-    let h = X_MAX / N_NORMAL as f64;
-    let ht = X_MAX / N_TANGENTIAL as f64;
-    let kappa = if rough {
-        contact
-            .friction
-            .ok_or(Error::InvalidValue {
-                field: "friction",
-                expected: "a friction model (the scene has none)",
-            })?
-            .kappa
-    } else {
-        0.0
-    };
-    let (mut num, mut den, mut stuck, mut rate, mut exch) = (0.0, 0.0, 0.0, 0.0, 0.0);
-    for i in 0..=N_NORMAL {
-        let x = i as f64 * h;
-        let w = simpson_weight(i, N_NORMAL) * x * exp(-0.5 * x * x);
-        if w == 0.0 {
-            continue;
-        }
-        let g_n = s * x;
-        let eps_n = contact.eps_n(g_n, Accuracy::Fast)?;
-        rate += w;
-        if eps_n == 0.0 {
-            stuck += w;
-        }
-        den += w * x * x;
-        num += w * x * x * (1.0 - eps_n * eps_n);
-        exch += w * x * x * (1.0 + eps_n);
-        if rough {
-            let (mut tangential, mut t_exch) = (0.0, 0.0);
-            for j in 0..=N_TANGENTIAL {
-                let y = j as f64 * ht;
-                let wt = simpson_weight(j, N_TANGENTIAL) * y * exp(-0.5 * y * y);
-                if wt == 0.0 {
-                    continue;
-                }
-                let eps_t = contact.tangential(g_n, s * y, Accuracy::Fast)?.eps_t;
-                tangential += wt * y * y * (1.0 - eps_t * eps_t);
-                t_exch += wt * y * y * (1.0 + eps_t);
-            }
-            num += w * kappa * tangential * ht / 3.0;
-            // ⟨g_T²⟩ of the 2-D Rayleigh law is 2 s², i.e. 2 in units of s² (Simpson: ht/3).
-            exch += w * x * x * kappa * t_exch * ht / 3.0 / 2.0;
-        }
-    }
-    if !(den > 0.0) {
-        return Err(Error::DerivedOutOfRange {
-            quantity: "impact average",
-            fields: "tau, omega, radii",
-        });
-    }
-    Ok(PairAverage {
-        loss: num / den,
-        exchange: exch / den,
-        sticking: stuck / rate,
-    })
-}
-
 /// Inputs of [`equilibrium`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct SizeRingInput {
@@ -456,7 +385,7 @@ impl Model {
         for i in 0..n {
             for j in i..n {
                 let s = sqrt(c[i] * c[i] + c[j] * c[j]);
-                let pa = pair_average(&self.contacts[i][j], s, self.rough)?;
+                let pa = pair_average(&self.contacts[i][j], s, self.rough, RADII)?;
                 t[i][j] = pa;
                 t[j][i] = pa;
             }
@@ -474,7 +403,7 @@ impl Model {
         let mut t = table.to_vec();
         for k in 0..self.n() {
             let s = sqrt(c[j] * c[j] + c[k] * c[k]);
-            let pa = pair_average(&self.contacts[j][k], s, self.rough)?;
+            let pa = pair_average(&self.contacts[j][k], s, self.rough, RADII)?;
             t[j][k] = pa;
             t[k][j] = pa;
         }
@@ -787,7 +716,7 @@ fn describe(m: &Model, st: &State, bins: &[Bin]) -> Result<(Vec<BinPrediction>, 
         for j in 0..n {
             let sj = &m.species[j];
             let s = sqrt(c[i] * c[i] + c[j] * c[j]);
-            let pa = pair_average(&m.contacts[i][j], s, m.rough)?;
+            let pa = pair_average(&m.contacts[i][j], s, m.rough, RADII)?;
             let w = m.w0[i][j] * y;
             rate += w;
             speed += w * s * sqrt(PI / 2.0);
