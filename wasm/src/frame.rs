@@ -5,7 +5,7 @@
 //! `errors` (`{part, message}`), the other parts are still computed. A speed on a curve whose ε_N
 //! fails becomes a gap (NaN, status code [`FAILED`]), not a failed frame. The frame is the core's
 //! frame's serde form with what only the page shows beside it (`PageFrame`), in its wire form
-//! (`rime_core::explorer::wire`): the number arrays in two flat buffers (`f64` and `u8`), the JSON
+//! (`rime_core::wire`): the number arrays in two flat buffers (`f64` and `u8`), the JSON
 //! giving each as `{"$f64": [at, len]}` or `{"$u8": [at, len]}`.
 
 use crate::explorer::{parse_scene, tidal_json};
@@ -191,7 +191,7 @@ pub(crate) fn prepare(scene_json: &str, view_json: &str) -> Result<(View, Reques
 }
 
 /// What crosses to the page besides the core's frame: the scene's values, the figures, the tidal
-/// card and the status names. Its wire form (`rime_core::explorer::wire`) is the page's frame.
+/// card and the status names. Its wire form (`rime_core::wire`) is the page's frame.
 #[derive(Serialize)]
 struct PageFrame<'a> {
     /// The core's frame, field for field (its serde form).
