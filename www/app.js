@@ -7,8 +7,8 @@ import { Explorer, calls, counted, qty, speed, start } from './core.js';
 import { CollisionComputer, Computer, poolSize } from './compute.js';
 import { Painter, canPaintInWorker } from './painter.js';
 import { CollisionView } from './collision.js';
-import { $, debounced, DESCRIBE_AFTER_MS, errText, linkify, markBusy, median, put, setText } from './dom.js';
-import { START_PRESET, app, historySize } from './state.js';
+import { $, afterPresented, debounced, DESCRIBE_AFTER_MS, errText, linkify, markBusy, median, put, setText } from './dom.js';
+import { START_PRESET, app } from './state.js';
 import { buildControls, edit, reflectScene, syncControls, wireToolbar, wireView } from './controls.js';
 import { drawChartCanvas, familyNote, pinLabel, pinnedForRequest, restorePin, wireChart } from './chart.js';
 import { drawLegend, drawMapCanvas, wireMap } from './map.js';
@@ -19,11 +19,17 @@ import { intro, showBanner, showNotice, showPartNotes, showWarnings, wireBanner 
 import { loadHash, writeHash } from './url.js';
 import { chartSvg, curvesCsv, familyCsv, mapCsv, mapSvg, setVersion, wireDownloads } from './downloads.js';
 import { testHooks, testPreview, testView } from './test-hooks.js';
+import { PREVIEWS, SLOW_MS, frameCost, frameKind, nextPreviewLevel } from './frame-rule.js';
+import { keepCursor } from './cursor.js';
+import { decode, readWire } from './wire.js';
+import { drawnEvent, probe, publish } from './publish.js';
+import { markCollision, onCollision, replayCollision } from './collision-card.js';
 
 // Exposed for tests and curious users (the test hooks, window.rimeTest: www/test-hooks.js).
 window.rimeState = { ready: false, errors: [] };
 
 let pending = false;
+let previewLevel = 0; // index into PREVIEWS (frame-rule.js)
 
 /** Asks for a frame once the current event is handled: the edits of one event (a preset sets many
  *  fields) make one request, and the request leaves at once, not at the next animation frame
@@ -33,52 +39,6 @@ function schedule() {
   if (pending) return;
   pending = true;
   queueMicrotask(() => { pending = false; request(); });
-}
-
-/** The preview's curve points and map side (issue 26): every other point and cell of the default
- *  view's (Request::POINTS = 241, Request::MAP_N = 81), so the preview's samples are samples of the
- *  refined frame, and a quarter of the map's cells; every fourth, eighth or sixteenth point while
- *  previews take longer than PREVIEW_SLOW_MS in the worker (the literal layer reading integrates
- *  every point and its family's; other models compared: their points dominate), so that the
- *  preview is on screen within the frame the edit was made in. Input to a worker's start, the
- *  page's handling and the painter take 4–5 ms of that frame on two cores; the literal reading's
- *  preview takes 5.3 ms in the worker at 31 points, 2.7 ms at 16. */
-const PREVIEWS = [{ points: 121, mapN: 41 }, { points: 61, mapN: 21 }, { points: 31, mapN: 11 }, { points: 16, mapN: 11 }];
-/** A preview slower than this in the worker makes the next one coarser [ms]; one quicker than
- *  PREVIEW_QUICK_MS finer (half the points take about half the time, so a preview between the two
- *  stays where it is). */
-const PREVIEW_SLOW_MS = 5;
-const PREVIEW_QUICK_MS = 2;
-/** The preview level after a preview of `points` points took `ms` in the worker: after a slow one,
- *  the finest level coarser than now whose time, scaled by its points, is within PREVIEW_SLOW_MS
- *  (the coarsest if none: a slow scene's previews need not step down one edit at a time); after a
- *  quick one, one level finer. */
-function nextPreviewLevel(ms, points) {
-  const at = PREVIEWS.findIndex((p) => p.points === points);
-  const now = at < 0 ? previewLevel : at;
-  if (ms > PREVIEW_SLOW_MS) {
-    for (let k = now + 1; k < PREVIEWS.length; k++) if ((ms * PREVIEWS[k].points) / points <= PREVIEW_SLOW_MS) return k;
-    return PREVIEWS.length - 1;
-  }
-  return ms < PREVIEW_QUICK_MS ? Math.max(now - 1, 0) : now;
-}
-
-/** A frame gets a preview first only when the last frame of its kind (`frameKind`) took longer
- *  than this in the worker, or is of a kind not seen yet [ms]: a quicker one is on screen as soon
- *  as its preview would be, and the preview would only cost the page's thread a second frame and
- *  put the refined one a display frame later (issue 26). One that is late after all gets its
- *  preview then (Computer.request). */
-const SLOW_MS = 8;
-/** What the last frame of each kind cost in the worker [ms]. */
-const frameCost = new Map();
-let previewLevel = 0; // index into PREVIEWS
-
-/** A frame's kind, for the cost its next one will likely have: its level, the compared overlays,
- *  the family's sweep, the parameter whose edit asked for it, and the scene with every number
- *  blanked. The edited parameter counts because the literal layer reading's worker keeps the
- *  outcomes an edit of μ leaves unchanged, and not those an edit of E changes. */
-function frameKind(scene, view, edited) {
-  return [view.accuracy, view.overlays.join(','), view.sweep || '', view.experiments, edited, scene.replace(/-?\d+(?:\.\d+)?(?:[eE][+-]?\d+)?/g, '#')].join('|');
 }
 
 /** Asks the worker for the pinned curve of the link (its scene at its level and speeds), before
@@ -121,105 +81,10 @@ function request() {
   window.rimeState.asked = app.computer.request(app.wantScene, view, page, quick ? null : preview, ringInputs(), quick ? preview : null);
 }
 
-/** Keeps the hover cursor and the map's chosen row on the same speeds when the next frame has
- *  another number of samples (a preview has every other, fourth or eighth one). Each keeps the
- *  speed it was put on (by the user, or kept from the frame before): mapped through a preview's
- *  coarser samples and back, it comes back to the very sample it was on (an index mapped to the
- *  nearest sample and back drifted by a sample or more with every edit). */
-const anchors = { chart: null, map: null, row: null }; // {at: index set for the frame, pos: speed or fraction}
-function keepCursor(old, res) {
-  if (!old) return;
-  // The anchor: where the frame before put it, unless the user has moved it since.
-  const anchor = (key, at, pos) => (anchors[key] && anchors[key].at === at ? anchors[key].pos : pos());
-  const i = app.hover.chart;
-  if (i !== null && i < old.g.length) {
-    const g = anchor('chart', i, () => old.g[i]);
-    let best = 0;
-    for (let k = 1; k < res.g.length; k++) if (Math.abs(Math.log(res.g[k] / g)) < Math.abs(Math.log(res.g[best] / g))) best = k;
-    app.hover.chart = best;
-    anchors.chart = { at: best, pos: g };
-  } else anchors.chart = null;
-  if (old.map && res.map) {
-    const frac = (k) => k / (old.map.n - 1);
-    const to = (f) => Math.round(f * (res.map.n - 1));
-    const h = app.hover.map;
-    if (h) {
-      const at = `${h.i},${h.j}`;
-      const f = anchor('map', at, () => [frac(h.i), frac(h.j)]);
-      app.hover.map = { i: to(f[0]), j: to(f[1]) };
-      anchors.map = { at: `${app.hover.map.i},${app.hover.map.j}`, pos: f };
-    } else anchors.map = null;
-    if (app.mapRow !== null) {
-      const f = anchor('row', app.mapRow, () => frac(app.mapRow));
-      app.mapRow = to(f);
-      anchors.row = { at: app.mapRow, pos: f };
-    } else anchors.row = null;
-  }
-}
-
 /** Runs `fn` once the chart drawn so far is on its canvas (at once where the page draws it). */
 function afterPaint(fn) {
   if (app.painter) app.painter.after(fn);
   else fn();
-}
-
-/** Calls `fn` once, after the next display frame is made (its animation frame's task is over), or
- *  after 50 ms where the page gets no animation frames (a hidden tab). */
-function afterPresented(fn) {
-  let called = false;
-  const once = () => { if (!called) { called = true; fn(); } };
-  requestAnimationFrame(() => setTimeout(once, 0));
-  setTimeout(once, 50);
-}
-
-/** A value in the core's wire form (rime_core::explorer::wire) read back: its JSON with each
- * `{"$f64": [at, len]}` / `{"$u8": [at, len]}` as a view into `numbers` / `codes`. */
-function readWire(json, numbers, codes) {
-  return JSON.parse(json, (_, v) => {
-    if (v === null || typeof v !== 'object' || Array.isArray(v)) return v;
-    if (v.$f64) return numbers.subarray(v.$f64[0], v.$f64[0] + v.$f64[1]);
-    return v.$u8 ? codes.subarray(v.$u8[0], v.$u8[0] + v.$u8[1]) : v;
-  });
-}
-
-/** The frame (the core frame's serde form and the page's keys, snake_case) as the page's parts. */
-function decode(msg, page) {
-  const j = readWire(msg.json, msg.numbers, msg.codes);
-  const m = j.map;
-  const note = m && m.auto ? m.auto.note : null;
-  const mapError = () => (j.errors.find((e) => e.part === 'stick map') || { message: '' }).message;
-  const members = j.family;
-  const res = {
-    accuracy: page.view.accuracy,
-    values: j.values,
-    g: j.g,
-    eps: j.curve ? j.curve.eps : null,
-    status: j.curve ? j.curve.status : null,
-    gaps: j.curve ? j.curve.failed : 0,
-    clean: j.clean ? j.clean.eps : null,
-    family: members.length ? {
-      path: j.sweep.path, sym: j.sweep.symbol, unit: j.sweep.unit, values: members.map((x) => x.value),
-      isScene: members.map((x) => x.is_scene), curves: members.map((x) => (x.curve ? x.curve.eps : null)),
-    } : null,
-    crit: j.markers,
-    warnings: j.warnings.map((w) => w.text),
-    warningDetails: j.warnings,
-    friction: j.values.friction === true,
-    map: m && m.map ? { n: j.map_n, max: m.max, note, codes: m.map.class, epsT: m.map.eps_t, epsN: m.map.eps_n, g: m.map.g } : null,
-    mapFailed: m && !m.map ? { n: j.map_n, max: m.max, note, error: mapError() } : null,
-    mapNote: note,
-    tidal: j.tidal.error ? null : j.tidal,
-    overlays: j.overlays,
-    figures: j.figures,
-    errors: j.tidal.error ? [...j.errors, { part: 'tidal', message: j.tidal.error }] : j.errors,
-  };
-  // The records (UTF-8 JSON from the worker) are read when a download first asks for them.
-  let records = null;
-  Object.defineProperty(res, 'records', {
-    enumerable: true,
-    get() { records ||= JSON.parse(new TextDecoder().decode(msg.records)); return records; },
-  });
-  return res;
 }
 
 /** The worker's answer to the newest request: draw what succeeded, report what failed. */
@@ -258,7 +123,7 @@ function onFrame(msg, req) {
     res.accuracy = 'fast';
     // Coarser after a slow preview, finer after a quick one (a worker's first frame, slow while
     // its wasm warms up, costs a coarser preview).
-    previewLevel = nextPreviewLevel(msg.ms, res.g.length);
+    previewLevel = nextPreviewLevel(msg.ms, res.g.length, previewLevel);
     const sceneChanged = !app.drawn || app.drawn.scene !== req.scene;
     keepCursor(app.res, res);
     app.res = res;
@@ -367,61 +232,6 @@ function onRing(msg) {
   window.rimeState.ringMs = msg.ms;
 }
 
-/** The drawn frame in `window.rimeState` (tests and curious users), once it is on screen. */
-function publish(req, res) {
-  const s = window.rimeState;
-  const fig = res.figures[0];
-  const bridges = fig.series.find((x) => /^Bridges/.test(x.name));
-  // The frame's arrays as plain arrays when first read (copying them for every frame was a
-  // sizeable part of a frame's time on the page's thread, for tests alone).
-  const lazy = (name, fn) => Object.defineProperty(s, name, {
-    enumerable: true,
-    configurable: true,
-    get() { const v = fn(); Object.defineProperty(s, name, { value: v, enumerable: true, configurable: true, writable: true }); return v; },
-  });
-  lazy('g', () => Array.from(res.g));
-  lazy('computeMs', () => [...app.timings]);
-  lazy('totalMs', () => [...app.totals]);
-  lazy('callsPerUpdate', () => [...app.callsPerUpdate]);
-  lazy('formatCallsPerUpdate', () => [...app.formatCallsPerUpdate]);
-  lazy('eps', () => (res.eps ? Array.from(res.eps) : []));
-  lazy('status', () => (res.status ? Array.from(res.status, (c) => app.statusNames[c] ?? 'failed') : []));
-  lazy('family', () => res.family && { path: res.family.path, values: res.family.values, isScene: res.family.isScene, curves: res.family.curves.map((c) => c && Array.from(c)) });
-  lazy('mapClasses', () => (res.map ? Array.from(res.map.codes) : null));
-  lazy('experiments', () => (bridges || fig.bands.length
-    ? { bridges: bridges ? { name: bridges.name, g: Array.from(bridges.x), eps: Array.from(bridges.y) } : null, bands: fig.bands } : null));
-  lazy('overlays', () => res.overlays.map((o) => ({ key: o.key, label: o.label, band: o.band, score: o.score, g: Array.from(o.g), eps: Array.from(o.eps), speeds: o.speeds })));
-  Object.assign(s, {
-    ready: true,
-    gen: req.gen,
-    sceneJson: req.scene,
-    view: { ...req.page.view },
-    critical: res.crit,
-    warnings: res.warnings,
-    warningDetails: res.warningDetails,
-    mapMax: res.map ? res.map.max : null,
-    mapNote: res.mapNote,
-    figure: { y: fig.y, x: fig.x, series: fig.series.map((x) => x.name), styles: fig.series.map((x) => `${x.color}/${x.stroke}`), widths: fig.series.map((x) => x.width || null), bands: fig.bands.map((b) => b.label), markers: fig.markers.map((m) => m.label), caption: fig.caption },
-    tidal: res.tidal,
-    tidalIn: app.tidalIn,
-    frameErrors: res.errors,
-    workerRestarts: app.computer.restarts,
-    refinementsStopped: app.computer.stopped,
-    refinementPosted: app.computer.refinementPosted,
-    history: historySize(),
-    pinned: app.pinned ? { g: app.pinned.g, eps: app.pinned.eps, label: app.pinned.label } : null,
-    updates: (s.updates || 0) + 1,
-    drawnAt: performance.now(),
-  });
-  drawnEvent(req.gen, false);
-}
-
-/** Tells the tests and benchmarks that a preview or frame is on its canvas: an event, not a mark
- *  in the document (a mark cost each frame a rendering update of the page's thread). */
-function drawnEvent(gen, preview) {
-  window.dispatchEvent(new CustomEvent('rime:drawn', { detail: { gen, preview } }));
-}
-
 let busyTimer = null;
 function onBusy(busy) {
   clearTimeout(busyTimer);
@@ -482,56 +292,6 @@ function figureWidths() {
     for (const e of Object.values(boxes)) widthsObserver.observe(e);
   }
   return { ...widthsSeen };
-}
-
-/** The normal result at `g` for the drawn scene (main thread; tests). */
-function probe(g, accuracy) {
-  if (!app.drawn) throw new Error('nothing drawn yet');
-  if (app.probeScene !== app.drawn.scene) {
-    app.probeEx.setJson(app.drawn.scene);
-    app.probeScene = app.drawn.scene;
-  }
-  return JSON.parse(app.probeEx.normal(g, accuracy));
-}
-
-/** One collision of the drawn scene at `app.collisionG` (integrated in the collision worker). */
-let replayed = '';
-let collisionShown = ''; // the scene, level and speed of the collision on the card
-/** What names one collision: its scene, level and speed. */
-const collisionOf = (scene, accuracy, g) => `${scene}|${accuracy}|${g}`;
-const collisionKey = () => (app.drawn ? collisionOf(app.drawn.scene, app.drawn.view.accuracy, app.collisionG) : '');
-/** The collision card says it shows another scene's collision (or level's, or speed's) than the one
- *  asked for, from the edit until the replay arrives (the replay follows once the edits pause). */
-function markCollision() {
-  markBusy($('collision-card'), collisionShown !== collisionOf(app.wantScene, app.view.accuracy, app.collisionG));
-}
-function replayCollision(g) {
-  if (g !== undefined) app.collisionG = g;
-  if (!app.drawn || !app.collisionView) return;
-  // A new frame of the same scene at the same level (a zoom, an axis) does not replay it.
-  const key = collisionKey();
-  if (g === undefined && key === replayed) return;
-  replayed = key;
-  // Integrated in the collision worker (issue 22: it ran here, on the page's thread).
-  app.collider.request(app.drawn.scene, app.collisionG, 300, app.drawn.view.accuracy, { requested: g !== undefined });
-}
-
-/** The collision worker's answer to the newest request. */
-function onCollision(msg, req) {
-  collisionShown = req ? collisionOf(req.scene, req.accuracy, req.g) : '';
-  markCollision();
-  if (msg.error) {
-    console.error(`rime: collision: ${msg.error}`);
-    app.collisionView.fail(msg.error);
-    return;
-  }
-  const d = JSON.parse(msg.json);
-  app.collisionView.show(d, req.requested);
-  window.rimeState.collision = {
-    g: d.g, eps_n: d.eps_n, t_c: d.t_c, status: d.status, closure: d.ledger.closure,
-    n: d.t.length, dynamic: d.dynamic !== null, animating: app.collisionView.animating,
-    reduced: app.collisionView.reduced, ms: msg.ms,
-  };
 }
 
 async function main() {

@@ -164,3 +164,12 @@ export function viewportHeight() {
   }
   return viewHeight;
 }
+
+/** Calls `fn` once, after the next display frame is made (its animation frame's task is over), or
+ *  after 50 ms where the page gets no animation frames (a hidden tab). */
+export function afterPresented(fn) {
+  let called = false;
+  const once = () => { if (!called) { called = true; fn(); } };
+  requestAnimationFrame(() => setTimeout(once, 0));
+  setTimeout(once, 50);
+}
