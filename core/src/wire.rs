@@ -31,6 +31,25 @@ pub fn u8s<S: Serializer>(values: &[u8], s: S) -> Result<S::Ok, S::Error> {
     s.serialize_newtype_struct(U8_TOKEN, values)
 }
 
+/// An owned `f64` array marked for the number buffer (for a hand-written `Serialize` that builds
+/// the array it sends, e.g. a curve's ε_N with NaN in its gaps).
+pub struct F64s(pub Vec<f64>);
+
+impl Serialize for F64s {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        f64s(&self.0, s)
+    }
+}
+
+/// An owned `u8` array marked for the code buffer.
+pub struct U8s(pub Vec<u8>);
+
+impl Serialize for U8s {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        u8s(&self.0, s)
+    }
+}
+
 /// A value as it crosses to the page.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Wire {

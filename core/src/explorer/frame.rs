@@ -72,25 +72,9 @@ pub struct Curve {
 #[cfg(feature = "serde")]
 impl serde::Serialize for Curve {
     fn serialize<S: serde::Serializer>(&self, s: S) -> core::result::Result<S::Ok, S::Error> {
+        use crate::wire::F64s;
+        use crate::wire::U8s;
         use serde::ser::SerializeStruct;
-        struct F64s(Vec<f64>);
-        impl serde::Serialize for F64s {
-            fn serialize<S: serde::Serializer>(
-                &self,
-                s: S,
-            ) -> core::result::Result<S::Ok, S::Error> {
-                super::wire::f64s(&self.0, s)
-            }
-        }
-        struct U8s(Vec<u8>);
-        impl serde::Serialize for U8s {
-            fn serialize<S: serde::Serializer>(
-                &self,
-                s: S,
-            ) -> core::result::Result<S::Ok, S::Error> {
-                super::wire::u8s(&self.0, s)
-            }
-        }
         let status: Vec<u8> = self
             .points
             .iter()

@@ -49,16 +49,8 @@ pub enum Stroke {
 #[cfg(feature = "serde")]
 impl serde::Serialize for Series {
     fn serialize<S: serde::Serializer>(&self, s: S) -> core::result::Result<S::Ok, S::Error> {
+        use crate::wire::F64s;
         use serde::ser::SerializeStruct;
-        struct F64s(Vec<f64>);
-        impl serde::Serialize for F64s {
-            fn serialize<S: serde::Serializer>(
-                &self,
-                s: S,
-            ) -> core::result::Result<S::Ok, S::Error> {
-                crate::wire::f64s(&self.0, s)
-            }
-        }
         let mut st = s.serialize_struct("Series", 7)?;
         st.serialize_field("name", &self.name)?;
         st.serialize_field("short", &self.short)?;
