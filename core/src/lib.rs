@@ -39,40 +39,48 @@ extern crate alloc;
 #[cfg(feature = "std")]
 extern crate std;
 
-pub mod accuracy;
-pub mod analytic;
-pub mod atlas;
-pub mod batch;
-#[cfg(feature = "alloc")]
+// The tree by concern: the scene's input side; the pair's laws (normal, tangential, other
+// models); one collision; numerics; fits; measured data; what the law does elsewhere; figures;
+// the explorer shared by every surface (feature `explorer`); the wire to the web page.
+pub mod applications;
 pub mod collision;
-pub mod contact;
-pub mod dem;
+pub mod data;
 pub mod error;
+#[cfg(feature = "explorer")]
 pub mod explorer;
 pub mod figure;
 pub mod fit;
 #[cfg(feature = "alloc")]
-pub mod fit_scene;
-pub mod kinematics;
-pub mod limits;
-mod math;
-pub mod merge;
+pub mod format;
 pub mod models;
 pub mod normal;
 pub mod numerics;
-pub mod ode;
-pub mod params;
-pub mod ring;
-#[cfg(feature = "alloc")]
-pub mod ring_sizes;
 pub mod scene;
-pub mod stick;
-pub mod sweep;
 pub mod tangential;
-pub mod tidal;
-pub mod units;
 #[cfg(all(feature = "serde", feature = "alloc"))]
 pub mod wire;
+
+// The paths the modules had before they moved into folders (issue 36) keep working.
+#[cfg(feature = "alloc")]
+#[doc(no_inline)]
+pub use applications::ring_sizes;
+#[doc(no_inline)]
+pub use applications::{dem, merge, ring, stick, tidal};
+#[doc(no_inline)]
+pub use collision::kinematics;
+#[doc(no_inline)]
+pub use data::atlas;
+#[doc(no_inline)]
+pub use figure::sweep;
+#[cfg(feature = "alloc")]
+#[doc(no_inline)]
+pub use fit::scene as fit_scene;
+#[doc(no_inline)]
+pub use normal::{analytic, batch};
+#[doc(no_inline)]
+pub use numerics::{accuracy, ode};
+#[doc(no_inline)]
+pub use scene::{contact, limits, params, units};
 
 pub use accuracy::Accuracy;
 pub use contact::Contact;

@@ -20,10 +20,10 @@
 //! case. A frictionless contact (`μ = 0`) is sliding everywhere with `ε_T = 1`, including the point
 //! `g_T = 0` where the ratio is undefined (there `g'_T = 0` whatever ε_T is).
 
-use crate::accuracy::Accuracy;
-use crate::contact::Contact;
 use crate::error::{Error, Result, within};
-use crate::math::{atan2, sqrt};
+use crate::numerics::accuracy::Accuracy;
+use crate::numerics::math::{atan2, sqrt};
+use crate::scene::contact::Contact;
 use crate::scene::{Friction, SlidingLaw};
 
 /// The class of a point `(g_N, g_T)` of the stick map (docs/physics.md#decision-7).
@@ -314,7 +314,7 @@ impl Contact {
             1.0,
             "must lie in (0, 1]",
         )?;
-        let max = crate::limits::SPEED_MAX;
+        let max = crate::scene::limits::SPEED_MAX;
         let g_n = within("g_n", g_n, 0.0, max, "speed must lie in [0, 1e6] m/s")?;
         let g_t = within("g_t", g_t, 0.0, max, "speed must lie in [0, 1e6] m/s")?;
         let eps_n_of_gn = self.eps_n(g_n, accuracy)?;

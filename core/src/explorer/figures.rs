@@ -66,7 +66,7 @@ pub fn eps_log_floor<'a>(curves: impl IntoIterator<Item = &'a [f64]>) -> i32 {
         .filter(|e| e.is_finite() && *e > 0.0)
         .fold(f64::INFINITY, f64::min);
     if min.is_finite() {
-        (libm::floor(crate::math::log10(min)) as i32).clamp(-12, -1)
+        (libm::floor(crate::numerics::math::log10(min)) as i32).clamp(-12, -1)
     } else {
         -3
     }
@@ -309,7 +309,7 @@ pub fn eps_figure(frame: &Frame, view: &View, version: &str) -> Figure {
         Axis {
             label: "normal restitution ε_N (log; sticking, ε_N = 0, not shown)".to_string(),
             log: true,
-            min: crate::sweep::exact_decade(floor),
+            min: crate::numerics::grid::exact_decade(floor),
             max: 1.0,
         }
     } else {
@@ -509,7 +509,7 @@ mod tests {
             bridges < scene,
             "measured law must be drawn first (beneath)"
         );
-        let [lo, hi] = crate::atlas::PENDULUM_SPEED;
+        let [lo, hi] = crate::data::atlas::PENDULUM_SPEED;
         for &(g, e) in &fig.series[bridges].points {
             assert!(
                 g >= lo && g <= hi,
@@ -543,7 +543,9 @@ mod tests {
                 .flat_map(|s| s.points.iter().map(|p| p.1))
                 .filter(|e| e.is_finite() && *e > 0.0)
                 .fold(f64::INFINITY, f64::min);
-            crate::sweep::exact_decade((libm::floor(crate::math::log10(min)) as i32).clamp(-12, -1))
+            crate::numerics::grid::exact_decade(
+                (libm::floor(crate::numerics::math::log10(min)) as i32).clamp(-12, -1),
+            )
         };
         assert_eq!(zoomed.y.min, floor(&zoomed));
         assert!(
@@ -566,7 +568,7 @@ mod tests {
         };
         let log = eps_figure(&f, &view, "test");
         assert!(log.y.log && log.y.min > 0.0 && log.y.max == 1.0);
-        let floor = crate::math::log10(log.y.min);
+        let floor = crate::numerics::math::log10(log.y.min);
         assert_eq!(floor, libm::round(floor), "a whole decade");
     }
 
@@ -615,9 +617,9 @@ mod tests {
         let mut sets: Vec<_> = (0..COMPARISONS.len())
             .map(|k| comparison(k, scene))
             .collect();
-        let mut all: Vec<Overlay> = crate::atlas::ENTRIES
+        let mut all: Vec<Overlay> = crate::data::atlas::ENTRIES
             .iter()
-            .filter(|e| e.kind != crate::atlas::Kind::Threshold)
+            .filter(|e| e.kind != crate::data::atlas::Kind::Threshold)
             .map(Overlay::Atlas)
             .collect();
         all.extend(
@@ -767,9 +769,9 @@ mod render_tests {
         let mut req = Request::new(scene, Accuracy::Fast);
         req.points = 24;
         req.map_n = 4;
-        req.overlays = crate::atlas::ENTRIES
+        req.overlays = crate::data::atlas::ENTRIES
             .iter()
-            .filter(|e| e.kind != crate::atlas::Kind::Threshold)
+            .filter(|e| e.kind != crate::data::atlas::Kind::Threshold)
             .map(Overlay::Atlas)
             .chain(
                 [

@@ -9,9 +9,9 @@
 
 use super::limits::speed_is_valid;
 use super::range::{MapRange, auto_map_range, chart_decades};
+use crate::figure::sweep::{StickMap, log_space};
 use crate::normal::memo::{LayerMemo, NoMemo};
 use crate::normal::{Normal, Status};
-use crate::sweep::{StickMap, log_space};
 use crate::{Accuracy, Contact};
 use crate::{Scene, error::Error};
 use alloc::format;
@@ -345,7 +345,7 @@ pub fn stick_threshold_within(
         return Ok(None);
     }
     for _ in 0..80 {
-        let mid = crate::math::sqrt(lo * hi);
+        let mid = crate::numerics::math::sqrt(lo * hi);
         if stuck(mid)? {
             lo = mid;
         } else {
@@ -378,7 +378,7 @@ pub fn overlay_curve(
     g: &[f64],
     accuracy: Accuracy,
 ) -> crate::Result<OverlayCurve> {
-    use crate::atlas::Kind;
+    use crate::data::atlas::Kind;
     match overlay {
         Overlay::Atlas(entry) => {
             let [lo, hi] = entry.valid_speed;
@@ -419,7 +419,7 @@ pub fn overlay_curve(
                         g: alloc::vec![lo, hi],
                         eps: band.to_vec(),
                         band: true,
-                        score: Some(crate::atlas::score(contact, accuracy, entry, radius)?),
+                        score: Some(crate::data::atlas::score(contact, accuracy, entry, radius)?),
                         speeds: Vec::new(),
                     })
                 }
@@ -436,7 +436,7 @@ pub fn overlay_curve(
                         g: gs,
                         eps,
                         band: false,
-                        score: Some(crate::atlas::score(contact, accuracy, entry, radius)?),
+                        score: Some(crate::data::atlas::score(contact, accuracy, entry, radius)?),
                         speeds: Vec::new(),
                     })
                 }
@@ -603,8 +603,8 @@ impl Plan {
         let (from, to) = req.speeds.unwrap_or_else(|| {
             let (lo, hi) = chart_decades(contact.as_ref().ok());
             (
-                crate::sweep::exact_decade(lo),
-                crate::sweep::exact_decade(hi),
+                crate::numerics::grid::exact_decade(lo),
+                crate::numerics::grid::exact_decade(hi),
             )
         });
         frame.g = alloc::vec![0.0; req.points];
@@ -652,11 +652,11 @@ impl Plan {
                 // A range the models refuse fails the map alone.
                 Err(format!(
                     "map_max: {max} m/s is not a speed in {} m/s",
-                    crate::limits::SPEED_DOMAIN
+                    crate::scene::limits::SPEED_DOMAIN
                 ))
             } else {
                 let mut g = alloc::vec![0.0; req.map_n];
-                crate::sweep::linear_space(max, &mut g);
+                crate::figure::sweep::linear_space(max, &mut g);
                 Ok(g)
             };
             PlannedMap { max, auto, grid }
@@ -790,9 +790,15 @@ impl Plan {
                 };
                 let mut eps = alloc::vec![0.0; g.len()];
                 Some(Output::MapRows(
-                    crate::sweep::eps_n_into_with(&self.contact, g, req.accuracy, &mut eps, memo)
-                        .map(|evaluations| (eps, evaluations))
-                        .map_err(|e| format!("{e}")),
+                    crate::figure::sweep::eps_n_into_with(
+                        &self.contact,
+                        g,
+                        req.accuracy,
+                        &mut eps,
+                        memo,
+                    )
+                    .map(|evaluations| (eps, evaluations))
+                    .map_err(|e| format!("{e}")),
                 ))
             }
         }
@@ -940,7 +946,7 @@ impl Plan {
                 let n = g.len();
                 let mut class = alloc::vec![crate::tangential::StickClass::Undefined; n * n];
                 let mut eps_t = alloc::vec![0.0; n * n];
-                crate::sweep::stick_map_into(&contact, &g, &eps_n, &mut class, &mut eps_t)
+                crate::figure::sweep::stick_map_into(&contact, &g, &eps_n, &mut class, &mut eps_t)
                     .map_err(|e| format!("{e}"))?;
                 Ok(StickMap {
                     g,
@@ -1120,7 +1126,7 @@ mod tests {
         assert_eq!(f.overlays.len(), 2, "{:?}", f.errors);
         assert!(f.errors.iter().any(|e| e.part == "model:thornton1997"));
         let law = &f.overlays[0];
-        let entry = crate::atlas::find("bridges1984").unwrap();
+        let entry = crate::data::atlas::find("bridges1984").unwrap();
         assert_eq!(law.g.first(), Some(&entry.valid_speed[0]));
         assert_eq!(law.g.last(), Some(&entry.valid_speed[1]));
         for (g, e) in law.g.iter().zip(&law.eps) {
@@ -1129,7 +1135,7 @@ mod tests {
         let c = Contact::new(&req.scene).unwrap();
         assert_eq!(
             law.score,
-            Some(crate::atlas::score(&c, Accuracy::Fast, entry, None).unwrap())
+            Some(crate::data::atlas::score(&c, Accuracy::Fast, entry, None).unwrap())
         );
         assert_eq!(f.overlays[1].g, f.g);
         assert!(Overlay::parse("atlas:nope").is_err() && Overlay::parse("bridges1984").is_err());

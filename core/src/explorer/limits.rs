@@ -1,6 +1,6 @@
 //! Limits every surface enforces on what a user may ask for.
 
-pub use crate::limits::{SPEED_DOMAIN, SPEED_MAX, speed_is_valid};
+pub use crate::scene::limits::{SPEED_DOMAIN, SPEED_MAX, speed_is_valid};
 /// Smallest (positive) speed a chart or a speed list may start at \[m/s\].
 pub const SPEED_MIN: f64 = 1e-12;
 /// The domain of [`chart_speed_is_valid`] as messages write it (unit m/s apart).

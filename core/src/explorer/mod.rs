@@ -10,7 +10,7 @@
 #[cfg(feature = "explorer")]
 pub mod figures;
 #[cfg(feature = "alloc")]
-pub use crate::figure::format;
+pub use crate::format;
 #[cfg(feature = "explorer")]
 pub mod frame;
 pub use crate::figure::words as help;

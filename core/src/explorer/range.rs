@@ -1,8 +1,8 @@
 //! The one range policy of the ε_N chart and the stick map.
 
 use super::limits::SPEED_MAX;
-use crate::contact::Contact;
-use crate::math::log10;
+use crate::numerics::math::log10;
+use crate::scene::contact::Contact;
 
 /// Multiple of the largest critical speed that the automatic stick-map range spans: the sticking
 /// corner (below g_s) then takes a fifth of each axis, and the regimes above it stay visible.
@@ -56,7 +56,7 @@ pub fn nice_ceil(v: f64) -> f64 {
         return 1.0;
     }
     // The nearest double to the decade, so that 5 × 10^k is the double `5e{k}` a user would type.
-    let base = crate::sweep::exact_decade(libm::floor(log10(v)) as i32);
+    let base = crate::numerics::grid::exact_decade(libm::floor(log10(v)) as i32);
     for m in [1.0, 2.0, 5.0, 10.0] {
         if m * base >= v * (1.0 - 1e-12) {
             return m * base;

@@ -9,9 +9,9 @@
 //! (pipes want bare CSV), and readers skip it with `comment="#"`.
 
 use super::frame::{Frame, SWEEPS};
+use crate::figure::sweep::StickMap;
 use crate::normal::Normal;
-use crate::params::{PARAMETERS, Value};
-use crate::sweep::StickMap;
+use crate::scene::params::{PARAMETERS, Value};
 use alloc::format;
 use alloc::string::String;
 use core::fmt::Write as _;
@@ -318,7 +318,7 @@ pub struct AtlasRecord {
     /// `law`, `range` or `threshold`.
     pub kind: &'static str,
     /// The source.
-    pub citation: crate::atlas::Citation,
+    pub citation: crate::data::atlas::Citation,
     /// What was measured.
     pub material: &'static str,
     /// The law as published.
@@ -345,7 +345,7 @@ pub struct AtlasRecord {
 
 impl AtlasRecord {
     /// The record of an atlas entry.
-    pub fn new(e: &crate::atlas::Entry) -> Self {
+    pub fn new(e: &crate::data::atlas::Entry) -> Self {
         AtlasRecord {
             id: e.id,
             kind: e.kind.name(),
@@ -382,7 +382,7 @@ pub struct LawRecord {
 
 impl LawRecord {
     /// The record of a law's evaluation.
-    pub fn new(e: &crate::atlas::Evaluation) -> Self {
+    pub fn new(e: &crate::data::atlas::Evaluation) -> Self {
         LawRecord {
             g_n: e.g,
             eps_n: e.eps,
@@ -430,11 +430,11 @@ impl StickRecord {
     /// the measured µm-ice threshold where `t` lies inside the measurement's radii and
     /// temperatures (the atlas' `gundlach2015`).
     pub fn new(
-        t: &crate::stick::Threshold,
-        convention: crate::stick::Convention,
+        t: &crate::applications::stick::Threshold,
+        convention: crate::applications::stick::Convention,
         damping_time: f64,
     ) -> Self {
-        let measured = crate::stick::in_measured_regime(t);
+        let measured = crate::applications::stick::in_measured_regime(t);
         StickRecord {
             radius: t.radius,
             temperature: t.temperature,
@@ -444,7 +444,7 @@ impl StickRecord {
             v_elastic: t.v_elastic,
             v_stick: t.v_stick,
             damping_time,
-            measured_v_stick: measured.then_some(crate::stick::MEASURED_UM_ICE),
+            measured_v_stick: measured.then_some(crate::applications::stick::MEASURED_UM_ICE),
         }
     }
 }
@@ -495,7 +495,7 @@ pub struct FitRecord<'a> {
     /// Residuals ε_data − ε_fit.
     pub residuals: &'a [f64],
     /// The runs test on the residuals' signs.
-    pub runs_test: Option<crate::fit_scene::RunsTest>,
+    pub runs_test: Option<crate::fit::scene::RunsTest>,
     /// Whether χ² is scaled by the data's uncertainties.
     pub chi2_scaled: bool,
     /// The fitted scene.
@@ -508,8 +508,8 @@ pub struct FitRecord<'a> {
 impl<'a> FitRecord<'a> {
     /// The record of fit `f` of `points` to `source`.
     pub fn new(
-        f: &'a crate::fit_scene::SceneFit,
-        points: &'a crate::fit_scene::Points,
+        f: &'a crate::fit::scene::SceneFit,
+        points: &'a crate::fit::scene::Points,
         source: &'a str,
     ) -> Self {
         let params: alloc::vec::Vec<FitParamRecord> = f
@@ -566,7 +566,10 @@ pub struct TidalRecord {
 
 impl TidalRecord {
     /// The record of `input` and its result `t`.
-    pub fn new(input: &crate::tidal::TidalInput, t: &crate::tidal::Tidal) -> Self {
+    pub fn new(
+        input: &crate::applications::tidal::TidalInput,
+        t: &crate::applications::tidal::Tidal,
+    ) -> Self {
         TidalRecord {
             values: alloc::vec![
                 ("planet_mass", Some(input.planet_mass), "kg"),
@@ -635,7 +638,7 @@ pub struct RingOutput {
 
 impl RingOutput {
     /// The output of `rec` with its damping note.
-    pub fn new(rec: &crate::ring::RingRecord, damping_note: Option<String>) -> Self {
+    pub fn new(rec: &crate::applications::ring::RingRecord, damping_note: Option<String>) -> Self {
         let p = rec.prediction();
         let mut values: alloc::vec::Vec<(String, Option<f64>, &'static str)> = alloc::vec![
             ("tau".into(), Some(rec.tau), "1"),

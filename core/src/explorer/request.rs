@@ -23,7 +23,7 @@
 //! ```
 
 use super::limits::{MAX_CURVE_POINTS, MAX_MAP_SIDE, SPEED_MAX, SPEED_MIN, chart_speed_is_valid};
-use crate::params::Value;
+use crate::scene::params::Value;
 use crate::{Accuracy, Scene, error::Error};
 use alloc::format;
 use alloc::string::String;
@@ -154,9 +154,9 @@ impl Sweep {
 /// Something drawn over the ε_N chart beside the scene's own model.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Overlay {
-    /// A measured law or range of the data atlas ([`crate::atlas`]), drawn only over its measured
+    /// A measured law or range of the data atlas ([`crate::data::atlas`]), drawn only over its measured
     /// speeds; `radius` for entries that need one (the scene's reduced radius when `None`).
-    Atlas(&'static crate::atlas::Entry),
+    Atlas(&'static crate::data::atlas::Entry),
     /// Another collision model on the same scene ([`crate::models`]), with its characteristic speeds.
     Model(crate::models::Model),
 }
@@ -169,7 +169,7 @@ impl Overlay {
             expected: "atlas:ID (see rime data) or model:NAME (see rime compare --list)",
         };
         match text.split_once(':') {
-            Some(("atlas", id)) => crate::atlas::find(id).map(Overlay::Atlas).ok_or(bad),
+            Some(("atlas", id)) => crate::data::atlas::find(id).map(Overlay::Atlas).ok_or(bad),
             Some(("model", name)) => crate::models::Model::from_name(name)
                 .map(Overlay::Model)
                 .ok_or(bad),

@@ -1,22 +1,22 @@
 //! The ring card (issue 24): what the scene's law does to a ring, built once for every surface.
 //!
 //! Given the scene, τ and Ω (or a planet and a distance), [`ring_card`] runs
-//! [`crate::ring::equilibrium`] and returns what a card draws: the ε_cr line for the ε_N chart (a
+//! [`crate::applications::ring::equilibrium`] and returns what a card draws: the ε_cr line for the ε_N chart (a
 //! figure series, so every surface draws it alike), where the scene's ε_N(g) curve meets it, the
 //! ring's mean impact speed as a chart marker, c and H in words and the plain verdict. The physics
 //! and its limits are in docs/physics.md#ring.
 
-use crate::accuracy::Accuracy;
-use crate::contact::Contact;
+use crate::applications::ring::{
+    FLOOR_IN_R_OMEGA, RingInput, RingRecord, SLOW_REGIME_LIMIT, Verdict, equilibrium,
+};
 use crate::error::{Error, Result};
 use crate::explorer::format::{qty, sig};
 use crate::explorer::palette;
 use crate::figure::{Figure, Marker, Series, Stroke};
-use crate::math::{exp, ln};
-use crate::ring::{
-    FLOOR_IN_R_OMEGA, RingInput, RingRecord, SLOW_REGIME_LIMIT, Verdict, equilibrium,
-};
+use crate::numerics::accuracy::Accuracy;
+use crate::numerics::math::{exp, ln};
 use crate::scene::Scene;
+use crate::scene::contact::Contact;
 use alloc::format;
 use alloc::string::{String, ToString};
 use alloc::vec;
@@ -246,7 +246,7 @@ fn meeting(contact: &Contact, eps_cr: f64, from: f64, to: f64) -> Result<Option<
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ring::Orbit;
+    use crate::applications::ring::Orbit;
     use crate::scene::Preset;
 
     fn ice(radius: f64, friction: bool) -> Scene {
@@ -334,7 +334,7 @@ mod tests {
             let (number, scale) = match shown.split_once(' ') {
                 Some((n, u)) => (
                     n,
-                    crate::units::parse_quantity("unit", &format!("1 {u}"), unit).unwrap(),
+                    crate::scene::units::parse_quantity("unit", &format!("1 {u}"), unit).unwrap(),
                 ),
                 None => (shown, 1.0),
             };

@@ -16,9 +16,9 @@
 //! assert!(figure.x.log && figure.y.log);
 //! ```
 
+use crate::applications::stick::{MEASURED_UM_ICE, ThresholdTable};
 use crate::explorer::palette;
 use crate::figure::{Axis, Figure, Series, Stroke};
-use crate::stick::{MEASURED_UM_ICE, ThresholdTable};
 use alloc::format;
 use alloc::string::{String, ToString};
 use alloc::vec::Vec;
@@ -40,7 +40,7 @@ fn log_axis(label: &str, v: impl Iterator<Item = f64>) -> Axis {
         (1e-3, 1.0)
     };
     let decade = |x: f64, up: bool| {
-        let e = crate::math::log10(x);
+        let e = crate::numerics::math::log10(x);
         let e = if up { libm::ceil(e) } else { libm::floor(e) };
         libm::pow(10.0, e)
     };
@@ -61,20 +61,21 @@ pub fn thresholds_figure(table: &ThresholdTable) -> Figure {
     let mut series = Vec::with_capacity(2 * nt + 1);
     for (j, t) in table.temperatures.iter().enumerate() {
         let color = palette::SERIES_OVERLAY + j % palette::OVERLAYS.len();
-        let column = |f: &dyn Fn(&crate::stick::Threshold) -> Option<f64>| -> Vec<(f64, f64)> {
-            table
-                .radii
-                .iter()
-                .enumerate()
-                .map(|(i, r)| {
-                    let v = table
-                        .cell(i, j)
-                        .and_then(|c| c.threshold.as_ref())
-                        .and_then(f);
-                    (*r, v.unwrap_or(f64::NAN))
-                })
-                .collect()
-        };
+        let column =
+            |f: &dyn Fn(&crate::applications::stick::Threshold) -> Option<f64>| -> Vec<(f64, f64)> {
+                table
+                    .radii
+                    .iter()
+                    .enumerate()
+                    .map(|(i, r)| {
+                        let v = table
+                            .cell(i, j)
+                            .and_then(|c| c.threshold.as_ref())
+                            .and_then(f);
+                        (*r, v.unwrap_or(f64::NAN))
+                    })
+                    .collect()
+            };
         let stick = column(&|th| th.v_stick);
         let always = stick.iter().filter(|p| p.1.is_nan()).count();
         let note = if always > 0 {

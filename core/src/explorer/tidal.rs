@@ -3,9 +3,9 @@
 //! compared by the one rule ([`agrees_to_printed`]), the notes on the rows the paper gets wrong, and
 //! the one verdict ([`Tidal::holds`]). Surfaces lay the card out; they decide nothing.
 
+use crate::applications::tidal::{PAPER_QUOTED, Tidal, TidalInput, tidal};
 use crate::explorer::format::{agrees_to_printed, sig};
 use crate::scene::Scene;
-use crate::tidal::{PAPER_QUOTED, Tidal, TidalInput, tidal};
 use alloc::format;
 use alloc::string::{String, ToString};
 use alloc::vec::Vec;
@@ -272,7 +272,7 @@ mod tests {
 
     /// Issue 36: one comparison rule. On the paper's example ΔF, πγr and d_Roche reproduce the
     /// print to its digits; F_s (πγR_eff, half the print), d_min (3.08e5 vs 5.43e4 m) and r_max
-    /// (37.72 vs 37.6 m, +0.3 %) do not — the module docs of `crate::tidal` derive each.
+    /// (37.72 vs 37.6 m, +0.3 %) do not — the module docs of `crate::applications::tidal` derive each.
     #[test]
     fn issue_36_the_paper_example_compares_row_by_row() {
         let c = card(TidalInput::default(), false).unwrap();

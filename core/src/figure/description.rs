@@ -2,11 +2,11 @@
 //! the model ([`paper`], [`experiments`]).
 
 use super::palette;
-use crate::accuracy::Accuracy;
-use crate::contact::Contact;
 use crate::error::Result;
+use crate::figure::sweep;
+use crate::numerics::accuracy::Accuracy;
 use crate::scene::Scene;
-use crate::sweep;
+use crate::scene::contact::Contact;
 use crate::tangential::StickClass;
 use alloc::format;
 use alloc::string::{String, ToString};
@@ -284,7 +284,7 @@ pub fn eps_points(
 /// The experimental context of the ε_N charts.
 pub mod experiments {
     use super::*;
-    use crate::figure::format::qty;
+    use crate::format::qty;
 
     /// Bridges, Hatzes & Lin (1984), Nature 309, 333: ε = 0.32 (v / 1 cm/s)^−0.234 (frosty ice at
     /// ~185 K), drawn over `from..to`.
@@ -304,11 +304,11 @@ pub mod experiments {
     }
 
     /// The Bridges et al. (1984) law over the part of `from..to` where it was measured
-    /// ([`crate::atlas::PENDULUM_SPEED`], 0.15–20 mm/s), unclamped (it stays below 1 there); `None`
+    /// ([`crate::data::atlas::PENDULUM_SPEED`], 0.15–20 mm/s), unclamped (it stays below 1 there); `None`
     /// when the ranges do not overlap. Outside its speeds the law is an extrapolation that would
     /// read as data (below 77 µm/s it exceeds 1), so the explorer never draws it there.
     pub fn bridges_measured(from: f64, to: f64, color: usize) -> Option<Series> {
-        let [lo, hi] = crate::atlas::PENDULUM_SPEED;
+        let [lo, hi] = crate::data::atlas::PENDULUM_SPEED;
         let (a, b) = (from.max(lo), to.min(hi));
         if !(a < b) {
             return None;
@@ -327,12 +327,12 @@ pub mod experiments {
         })
     }
 
-    /// The measured ranges of the data atlas ([`crate::atlas::Kind::Range`]: the microgravity ice
+    /// The measured ranges of the data atlas ([`crate::data::atlas::Kind::Range`]: the microgravity ice
     /// experiments of Heißelmann et al. 2010 and Hill et al. 2015) as boxes over their speeds and
     /// their ε, in palette colour `color` (the experiments' one colour). Labels are built from each
     /// entry's citation and grain size, so the chart says what the atlas says.
     pub fn bands(color: usize) -> Vec<Band> {
-        crate::atlas::ENTRIES
+        crate::data::atlas::ENTRIES
             .iter()
             .filter_map(|e| {
                 let [lo, hi] = e.band()?;

@@ -46,7 +46,7 @@ impl Corner {
 }
 
 /// `n`·10^`e` written exactly: plain between 0.01 and 1e5 (`0.25`, `1500`), else with an
-/// exponent (`2.5e-9`, `1e-3`, `1e6`), as [`crate::figure::format::decade`] writes decades. Built from the digits of `n`, so no float noise can appear.
+/// exponent (`2.5e-9`, `1e-3`, `1e6`), as [`crate::format::decade`] writes decades. Built from the digits of `n`, so no float noise can appear.
 pub fn decimal_label(n: i64, e: i32) -> String {
     if n == 0 {
         return "0".to_string();
@@ -83,11 +83,11 @@ pub fn decimal_label(n: i64, e: i32) -> String {
 
 /// `floor(log10(v))` for a positive finite `v`, exact at powers of ten.
 fn decade_of(v: f64) -> i32 {
-    let mut k = libm::floor(crate::math::log10(v)) as i32;
+    let mut k = libm::floor(crate::numerics::math::log10(v)) as i32;
     // log10 can land a hair off at exact powers of ten.
-    if crate::sweep::exact_decade(k) > v {
+    if crate::numerics::grid::exact_decade(k) > v {
         k -= 1;
-    } else if crate::sweep::exact_decade(k + 1) <= v {
+    } else if crate::numerics::grid::exact_decade(k + 1) <= v {
         k += 1;
     }
     k
@@ -126,7 +126,7 @@ fn inside(v: f64, lo: f64, hi: f64) -> bool {
 
 fn log_ticks(lo: f64, hi: f64, max_labels: usize) -> Vec<Tick> {
     let (k_lo, k_hi) = (decade_of(lo), decade_of(hi));
-    let span = crate::math::log10(hi) - crate::math::log10(lo);
+    let span = crate::numerics::math::log10(hi) - crate::numerics::math::log10(lo);
     // Which mantissas carry labels: 1 (decades), 1 2 5, or 1…9.
     let mantissas: &[i64] = if span < 1.0 {
         &[1, 2, 3, 4, 5, 6, 7, 8, 9]
@@ -140,7 +140,7 @@ fn log_ticks(lo: f64, hi: f64, max_labels: usize) -> Vec<Tick> {
             .filter(|k| k.rem_euclid(step) == 0)
             .flat_map(|k| {
                 ms.iter()
-                    .map(move |m| (*m as f64) * crate::sweep::exact_decade(k))
+                    .map(move |m| (*m as f64) * crate::numerics::grid::exact_decade(k))
             })
             .filter(|v| inside(*v, lo, hi))
             .count()
@@ -157,7 +157,7 @@ fn log_ticks(lo: f64, hi: f64, max_labels: usize) -> Vec<Tick> {
     let mut out = Vec::new();
     for k in k_lo..=k_hi {
         for m in 1..=9_i64 {
-            let v = (m as f64) * crate::sweep::exact_decade(k);
+            let v = (m as f64) * crate::numerics::grid::exact_decade(k);
             if !inside(v, lo, hi) {
                 continue;
             }
@@ -175,7 +175,7 @@ fn linear_ticks(lo: f64, hi: f64, max_labels: usize) -> Vec<Tick> {
     let mut m_idx = 0;
     const MS: [i64; 3] = [1, 2, 5];
     let count = |m: i64, e: i32| -> f64 {
-        let step = (m as f64) * crate::sweep::exact_decade(e);
+        let step = (m as f64) * crate::numerics::grid::exact_decade(e);
         libm::floor(hi / step + 1e-9) - libm::ceil(lo / step - 1e-9) + 1.0
     };
     while count(MS[m_idx], e) > max_labels as f64 {
@@ -186,14 +186,14 @@ fn linear_ticks(lo: f64, hi: f64, max_labels: usize) -> Vec<Tick> {
         }
     }
     let m = MS[m_idx];
-    let step = (m as f64) * crate::sweep::exact_decade(e);
+    let step = (m as f64) * crate::numerics::grid::exact_decade(e);
     let (i0, i1) = (
         libm::ceil(lo / step - 1e-9) as i64,
         libm::floor(hi / step + 1e-9) as i64,
     );
     (i0..=i1)
         .map(|i| Tick {
-            value: (i * m) as f64 * crate::sweep::exact_decade(e),
+            value: (i * m) as f64 * crate::numerics::grid::exact_decade(e),
             label: Some(decimal_label(i * m, e)),
         })
         .collect()
@@ -205,7 +205,7 @@ impl Axis {
     pub fn fraction(&self, v: f64) -> Option<f64> {
         let t = |v: f64| {
             if self.log {
-                (v > 0.0).then(|| crate::math::log10(v))
+                (v > 0.0).then(|| crate::numerics::math::log10(v))
             } else {
                 Some(v)
             }

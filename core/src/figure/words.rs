@@ -135,7 +135,7 @@ pub const GLOSSARY: [(&str, &str); 21] = [
 /// Bridges law.
 #[cfg(feature = "alloc")]
 pub fn experiment_sources() -> alloc::vec::Vec<alloc::string::String> {
-    use crate::figure::format::qty;
+    use crate::format::qty;
     use alloc::format;
     let speeds = |[lo, hi]: [f64; 2]| {
         let (a, b) = (qty(lo, "m/s"), qty(hi, "m/s"));
@@ -145,11 +145,14 @@ pub fn experiment_sources() -> alloc::vec::Vec<alloc::string::String> {
         }
     };
     let mut out = alloc::vec::Vec::new();
-    if let Some(b) = crate::atlas::find("bridges1984") {
+    if let Some(b) = crate::data::atlas::find("bridges1984") {
         let label = crate::fit::BRIDGES_1984_LABEL;
         out.push(format!("{label}, measured {}", speeds(b.valid_speed)));
     }
-    for e in crate::atlas::ENTRIES.iter().filter(|e| e.band().is_some()) {
+    for e in crate::data::atlas::ENTRIES
+        .iter()
+        .filter(|e| e.band().is_some())
+    {
         out.push(format!(
             "{} {}: {}",
             e.citation.short_authors(),
@@ -160,7 +163,7 @@ pub fn experiment_sources() -> alloc::vec::Vec<alloc::string::String> {
     out
 }
 
-/// One line of help for a parameter of [`crate::params::PARAMETERS`] (by path).
+/// One line of help for a parameter of [`crate::scene::params::PARAMETERS`] (by path).
 pub fn parameter_help(path: &str) -> Option<&'static str> {
     Some(match path {
         "grains.radius_1" => "radius of the first sphere; the contact uses R_eff = R₁R₂/(R₁+R₂)",
@@ -261,7 +264,7 @@ the paper does not mention it. Walton's sliding law has no gap.";
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::params::{Kind, PARAMETERS};
+    use crate::scene::params::{Kind, PARAMETERS};
 
     #[test]
     fn every_parameter_has_help_and_every_option_a_name() {

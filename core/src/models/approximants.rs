@@ -3,7 +3,7 @@
 //! Both are written in Schwager and Pöschel's variable `x = √(1.5 δ)` (their `β^(1/2) g^(1/10)`,
 //! `β = (3/2) A α^(2/5)`), with δ of docs/physics.md#decision-3.
 
-use crate::analytic::SCHWAGER_POSCHEL_C1;
+use crate::normal::analytic::SCHWAGER_POSCHEL_C1;
 
 /// `C₂ = (3/5) C₁² = 0.798…` (Ramírez et al. 1999; Schwager & Pöschel 2008).
 pub const SCHWAGER_POSCHEL_C2: f64 = 0.6 * SCHWAGER_POSCHEL_C1 * SCHWAGER_POSCHEL_C1;
@@ -26,7 +26,7 @@ pub fn series(delta: f64) -> (f64, bool) {
 
 /// The Müller–Pöschel [1/4] Padé approximant at damping δ; in (0, 1] for every δ ≥ 0.
 pub fn pade(delta: f64) -> f64 {
-    let x = crate::math::sqrt(1.5 * delta);
+    let x = crate::numerics::math::sqrt(1.5 * delta);
     let [a1, b2, b3, b4] = MULLER_POSCHEL_PADE;
     let num = 1.0 + a1 * x;
     let den = num + x * x * (b2 + x * (b3 + x * b4));

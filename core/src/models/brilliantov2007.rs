@@ -31,9 +31,9 @@ pub use super::brilliantov2007_motion::{
     Collision, DELTA_LIMIT, LoopPoint, MAX_SPEED, Outcome, Sticking, end_hysteresis_constant,
     energy_margin, hysteresis_constant,
 };
-use crate::contact::Contact;
 use crate::error::{Error, Result};
-use crate::math::{powf, sqrt};
+use crate::numerics::math::{powf, sqrt};
+use crate::scene::contact::Contact;
 
 use crate::scene::JkrEnd;
 /// The constants of one collision of a scene at one impact speed.
@@ -141,7 +141,7 @@ impl Dynamic {
     pub fn eps_tabulated(
         &self,
         g: f64,
-        resolution: crate::master::Resolution,
+        resolution: crate::normal::viscoelastic::master::Resolution,
         rtol: f64,
     ) -> Result<(f64, Outcome)> {
         let g = Self::check_speed(g)?;
@@ -320,7 +320,7 @@ mod tests {
         assert!((eps - 1.0).abs() < 1e-9, "{eps}");
         assert!((x_max - libm::pow(1.25, 0.4)).abs() < 1e-10);
         assert!(
-            (s_c - crate::analytic::HERTZ_CONTACT_TIME).abs() < 1e-8,
+            (s_c - crate::normal::analytic::HERTZ_CONTACT_TIME).abs() < 1e-8,
             "{s_c}"
         );
     }

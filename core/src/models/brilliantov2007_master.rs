@@ -15,7 +15,7 @@
 //! `H(δ, r) = ε / (ε₀(δ) √(1 − r))`,
 //!
 //! smooth, positive and `H(δ, 0) = 1`, where ε₀(δ) is ε_N without adhesion: exactly the viscoelastic
-//! master curve with the zero-overlap end ([`crate::master`], its fine table at both levels):
+//! master curve with the zero-overlap end ([`crate::normal::viscoelastic::master`], its fine table at both levels):
 //!
 //! * `ln κ_cr` as Chebyshev series on segments in δ: the first segment linear in δ ∈ [0, 10^U_START],
 //!   the others on the segments of u = log₁₀ δ between [`U_BREAKS`], up to [`U_END`];
@@ -34,8 +34,8 @@
 
 #[cfg(feature = "std")]
 use super::brilliantov2007_motion::{Outcome, energy_margin};
-use crate::master::Resolution;
-use crate::math::{cbrt, clenshaw, exp, log10, powf};
+use crate::normal::viscoelastic::master::Resolution;
+use crate::numerics::math::{cbrt, clenshaw, exp, log10, powf};
 use crate::scene::{ContactEnd, JkrEnd};
 
 use super::brilliantov2007_table as generated;
@@ -79,7 +79,7 @@ pub const EPS_FLOOR: f64 = 1e-8;
 /// against rtol 1e-12, whose own error is ~1e-10 here, ≤ 1.8e-10), docs/physics.md#brilliantov2007-tables.
 pub const PRECISE_BOUND: f64 = 1e-10;
 /// What the tests hold `precise` to where ε_N < 1e-6, a range where no level claims a bound
-/// ([`crate::accuracy::ERROR_BOUND_DOMAIN`]): measured ≤ 3.4e-11 against rtol 1e-14.
+/// ([`crate::numerics::accuracy::ERROR_BOUND_DOMAIN`]): measured ≤ 3.4e-11 against rtol 1e-14.
 pub const PRECISE_BOUND_TINY: f64 = 1e-9;
 /// The bound of `fast` on ε_N (relative) where ε_N ≥ 1e-6: measured ≤ 1.9e-7 the same way.
 pub const FAST_BOUND: f64 = 1e-6;
@@ -161,7 +161,7 @@ fn y_cell(r: f64) -> (usize, f64) {
         return (0, (4.0 * cbrt(r) - 1.0).clamp(-1.0, 1.0));
     }
     let half = 0.5 * (W_TOP - W_LOW);
-    let x = (crate::math::sqrt(1.0 - r) - W_LOW) / half;
+    let x = (crate::numerics::math::sqrt(1.0 - r) - W_LOW) / half;
     let seg = (x as usize).min(1);
     (1 + seg, (2.0 * (x - seg as f64) - 1.0).clamp(-1.0, 1.0))
 }
@@ -204,7 +204,11 @@ impl Table {
             return Lookup::Live;
         }
         // The fine master table at both levels: with the coarse one `fast` spent 7.8e-7 of its 1e-6.
-        let eps0 = crate::master::eps(delta, ContactEnd::ZeroOverlap, Resolution::Fine);
+        let eps0 = crate::normal::viscoelastic::master::eps(
+            delta,
+            ContactEnd::ZeroOverlap,
+            Resolution::Fine,
+        );
         // Without adhesion H ≡ 1 by definition: the surface is the master curve itself (exactly 1
         // in the elastic limit, where the series would carry its ~1e-12 of fitting noise).
         let h = if kappa == 0.0 {
@@ -212,7 +216,7 @@ impl Table {
         } else {
             self.quotient(seg, t, r, resolution)
         };
-        let eps = eps0 * crate::math::sqrt(1.0 - r) * h;
+        let eps = eps0 * crate::numerics::math::sqrt(1.0 - r) * h;
         if !(EPS_FLOOR..=1.0).contains(&eps) {
             return Lookup::Live;
         }
@@ -269,14 +273,14 @@ pub fn live_critical_kappa(delta: f64, end: JkrEnd, rtol: f64) -> crate::Result<
         }
     }
     while hi / lo - 1.0 > 1e-14 {
-        let mid = crate::math::sqrt(lo * hi);
+        let mid = crate::numerics::math::sqrt(lo * hi);
         if stuck(mid)? {
             hi = mid;
         } else {
             lo = mid;
         }
     }
-    Ok(crate::math::sqrt(lo * hi))
+    Ok(crate::numerics::math::sqrt(lo * hi))
 }
 
 /// The quotient `H = ε/(ε₀ √(1 − r))` at `(δ, κ = κ_cr r)` by live integration, with `eps0 = ε₀(δ)`
@@ -641,7 +645,7 @@ mod tests {
     #[test]
     fn outside_the_box_a_scene_gets_exactly_the_live_result() {
         use super::super::brilliantov2007::Dynamic;
-        use crate::contact::Contact;
+        use crate::scene::contact::Contact;
         use crate::scene::{Damping, Preset};
         for end in [JkrEnd::Neck, JkrEnd::PullOffForce] {
             let mut scene = Preset::IceSticky.scene();
@@ -707,7 +711,11 @@ mod tests {
                 let Lookup::PullOff(eps) = lookup(delta, 0.0, end, Resolution::Fine) else {
                     panic!("δ={delta}: not a pull-off");
                 };
-                let master = crate::master::eps(delta, ContactEnd::ZeroOverlap, Resolution::Fine);
+                let master = crate::normal::viscoelastic::master::eps(
+                    delta,
+                    ContactEnd::ZeroOverlap,
+                    Resolution::Fine,
+                );
                 assert_eq!(eps, master);
                 let live = energy_margin(delta, 0.0, end, 1e-14).unwrap().0.sqrt();
                 assert!(

@@ -4,8 +4,8 @@
 //! (its table) both read it; neither reads the other's internals, so the three form no circle.
 
 use crate::error::{Error, Result};
-use crate::math::{powf, sqrt};
-use crate::ode::{Direction, Dopri5, OdeSystem, StepOutcome, Tolerances};
+use crate::numerics::math::{powf, sqrt};
+use crate::numerics::ode::{Direction, Dopri5, OdeSystem, StepOutcome, Tolerances};
 use crate::scene::JkrEnd;
 
 /// δ beyond which the collision is reported overdamped without integration (as for the paper's
@@ -29,7 +29,7 @@ pub fn hysteresis_constant() -> f64 {
 }
 
 /// The largest impact speed every model accepts \[m/s\] (`g_n` ∈ (0, 1e6]).
-pub const MAX_SPEED: f64 = crate::limits::SPEED_MAX;
+pub const MAX_SPEED: f64 = crate::scene::limits::SPEED_MAX;
 
 /// Where impacts stick: the model's sticking threshold `g_cr`.
 #[derive(Debug, Clone, Copy, PartialEq)]

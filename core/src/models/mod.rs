@@ -14,12 +14,12 @@ mod brilliantov2007_motion;
 mod brilliantov2007_table;
 pub mod thornton1997;
 
-use crate::accuracy::Accuracy;
-use crate::contact::Contact;
 use crate::error::{Error, Result};
-use crate::master::Resolution;
 use crate::normal::Status;
+use crate::normal::viscoelastic::master::Resolution;
+use crate::numerics::accuracy::Accuracy;
 use crate::scene::Scene;
+use crate::scene::contact::Contact;
 
 /// A model of the normal collision.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -387,7 +387,7 @@ impl Evaluator {
                 let a = self.contact.delta(1.0);
                 if a > 0.0 {
                     let d = approximants::SERIES_LIMIT / 1.5;
-                    let g = crate::math::powf(d / a, 5.0);
+                    let g = crate::numerics::math::powf(d / a, 5.0);
                     if g.is_finite() && g > 0.0 {
                         out.push("g_validity", g);
                     }
@@ -434,12 +434,12 @@ fn threshold(
         }
     }
     while hi / lo - 1.0 > 1e-10 {
-        let mid = crate::math::sqrt(lo * hi);
+        let mid = crate::numerics::math::sqrt(lo * hi);
         if stuck(mid)? {
             lo = mid;
         } else {
             hi = mid;
         }
     }
-    Ok(Some(Sticking::Below(crate::math::sqrt(lo * hi))))
+    Ok(Some(Sticking::Below(crate::numerics::math::sqrt(lo * hi))))
 }

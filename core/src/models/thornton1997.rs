@@ -7,7 +7,7 @@
 //! radius `R_p = 4E*a_p³/(3F_max)` with `a_p = √(R ξ_max)`. No viscous damping.
 
 use crate::error::Result;
-use crate::math::{powf, sqrt};
+use crate::numerics::math::{powf, sqrt};
 
 /// The constants of one scene.
 #[derive(Debug, Clone, Copy, PartialEq)]

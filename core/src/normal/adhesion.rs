@@ -18,7 +18,7 @@ pub fn apply(eps_v: f64, g: f64, g_s: f64) -> Option<f64> {
     }
     let ratio = g_s / rebound;
     // 1 − ratio² written as (1 − ratio)(1 + ratio) to keep digits near the threshold.
-    Some(eps_v * crate::math::sqrt((1.0 - ratio) * (1.0 + ratio)))
+    Some(eps_v * crate::numerics::math::sqrt((1.0 - ratio) * (1.0 + ratio)))
 }
 
 #[cfg(test)]

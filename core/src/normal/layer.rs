@@ -2,8 +2,8 @@
 
 use super::trace::{Kind, Nothing, Recorder, StateMap, Tail};
 use crate::error::Result;
-use crate::math::{cbrt, ln, powf, sqrt};
-use crate::ode::{Direction, Dopri5, OdeSystem, StepOutcome, Tolerances};
+use crate::numerics::math::{cbrt, ln, powf, sqrt};
+use crate::numerics::ode::{Direction, Dopri5, OdeSystem, StepOutcome, Tolerances};
 use crate::scene::ContactEnd;
 
 /// Time to crush the layer in stage 1 (Eq. (8) top) from impact speed 1 through thickness `d`, in the
@@ -42,14 +42,14 @@ pub fn crush_time_with_gap(d: f64, r: f64, gap: f64) -> f64 {
         let f = |p: f64| {
             let s3 = sqrt(3.0);
             (-ln(1.0 - p) + 0.5 * ln(p * p + p + 1.0)
-                - s3 * crate::math::atan((2.0 * p + 1.0) / s3))
+                - s3 * crate::numerics::math::atan((2.0 * p + 1.0) / s3))
                 / 3.0
         };
         // −ln(1 − a) from the gap: 1 − a³ = (1 − a)(1 + a + a²).
         let one_minus_a = gap / (1.0 + a + a * a);
         let s3 = sqrt(3.0);
         let f_a = (-ln(one_minus_a) + 0.5 * ln(a * a + a + 1.0)
-            - s3 * crate::math::atan((2.0 * a + 1.0) / s3))
+            - s3 * crate::numerics::math::atan((2.0 * a + 1.0) / s3))
             / 3.0;
         (f_a - f(0.0)) / (a * a)
     };
@@ -90,8 +90,9 @@ pub fn exit_time(d: f64, g_s: f64, eps: f64) -> f64 {
     } else {
         let s3 = sqrt(3.0);
         let log_part = ln((1.0 - b + b * b) / ((1.0 + b) * (1.0 + b))) / (6.0 * b);
-        let atan_part =
-            (crate::math::atan((2.0 - b) / (b * s3)) + core::f64::consts::PI / 6.0) / (b * s3);
+        let atan_part = (crate::numerics::math::atan((2.0 - b) / (b * s3))
+            + core::f64::consts::PI / 6.0)
+            / (b * s3);
         log_part + atan_part
     };
     2.0 * d / g_s * integral

@@ -1,18 +1,23 @@
 //! Normal restitution: viscoelastic (Eq. (4)–(5)), soft layer (Eq. (8)–(10)), adhesion (Eq. (11)–(17)), and
 //! their composition (layer, then adhesion on its rebound, as the paper's §4 prescribes).
 
+pub mod analytic;
+pub mod batch;
+
 pub mod adhesion;
 pub mod layer;
 pub mod memo;
+// Read by the collision's time course, which needs `alloc`.
+#[cfg_attr(not(feature = "alloc"), allow(dead_code))]
 pub(crate) mod trace;
 pub mod viscoelastic;
 
-use crate::accuracy::Accuracy;
-use crate::contact::Contact;
 use crate::error::{Error, Result};
-use crate::master::Resolution;
-use crate::math::powf;
+use crate::normal::viscoelastic::master::Resolution;
+use crate::numerics::accuracy::Accuracy;
+use crate::numerics::math::powf;
 use crate::scene::LayerReading;
+use crate::scene::contact::Contact;
 use memo::{LayerMemo, LiteralKey};
 pub use viscoelastic::OVERDAMPED_THRESHOLD;
 
@@ -103,7 +108,7 @@ pub struct Normal {
     /// Maximum compression ξ_max \[m\] (including the crushed layer).
     pub xi_max: f64,
     /// Estimated bound on the relative error of `eps` at the requested accuracy; infinite (no
-    /// bound) where the rebound ε_N lies below [`crate::accuracy::ERROR_BOUND_DOMAIN`], outside the
+    /// bound) where the rebound ε_N lies below [`crate::numerics::accuracy::ERROR_BOUND_DOMAIN`], outside the
     /// bounds' domain (only its order of magnitude is promised there).
     pub error_estimate: f64,
     /// Right-hand-side evaluations of the integrator spent on this result (0 for table lookups and
@@ -116,16 +121,26 @@ fn viscoelastic(contact: &Contact, g: f64, accuracy: Accuracy) -> Result<(f64, f
     let delta = contact.delta(g);
     let r = match accuracy {
         // The master curve: no integration (docs/physics.md#accuracy).
-        Accuracy::Fast => crate::master::lookup(delta, contact.contact_end, Resolution::Coarse),
+        Accuracy::Fast => crate::normal::viscoelastic::master::lookup(
+            delta,
+            contact.contact_end,
+            Resolution::Coarse,
+        ),
         // Precise: the fine table, built by the same integrator at rtol 1e-14 and verified to
         // 1e-10 against an independent computation; live integration via Accuracy::Tolerance.
-        Accuracy::Precise => crate::master::lookup(delta, contact.contact_end, Resolution::Fine),
+        Accuracy::Precise => crate::normal::viscoelastic::master::lookup(
+            delta,
+            contact.contact_end,
+            Resolution::Fine,
+        ),
         // Far beyond the tables' end ε < 1e-11 (overdamped) and follows the measured power laws;
         // the integrator's step budget does not reach there (δ ~ 1e29 for A from viscosities with
         // ν = 1e-12), so every level uses the asymptote.
-        _ if delta > DELTA_ASYMPTOTIC => {
-            crate::master::lookup(delta, contact.contact_end, Resolution::Fine)
-        }
+        _ if delta > DELTA_ASYMPTOTIC => crate::normal::viscoelastic::master::lookup(
+            delta,
+            contact.contact_end,
+            Resolution::Fine,
+        ),
         _ => viscoelastic::dimensionless(delta, contact.contact_end, accuracy.integrator_rtol())?,
     };
     Ok((
@@ -141,7 +156,7 @@ pub(crate) const DELTA_ASYMPTOTIC: f64 = 1e7;
 
 /// An impact speed every model accepts: finite, positive, at most 1e6 m/s (errors name `g_n`).
 pub(crate) fn check_speed(g: f64) -> Result<f64> {
-    if crate::limits::speed_is_valid(g) {
+    if crate::scene::limits::speed_is_valid(g) {
         Ok(g)
     } else {
         Err(Error::OutOfRange {
@@ -204,7 +219,7 @@ impl Contact {
                 LayerReading::Literal => {
                     let xi_star = self.length_scale(g);
                     let d = layer.thickness / xi_star;
-                    let lambda = layer.drag * xi_star * crate::math::sqrt(xi_star) / g;
+                    let lambda = layer.drag * xi_star * crate::numerics::math::sqrt(xi_star) / g;
                     let (delta, rtol) = (self.delta(g), accuracy.integrator_rtol());
                     let key = LiteralKey::new(delta, lambda, d, self.contact_end, rtol);
                     let out = match memo.get(&key) {
@@ -266,7 +281,7 @@ impl Contact {
         };
         // Below the bounds' domain no relative error is promised: say so (infinite), rather than
         // claim the level's bound (docs/physics.md#accuracy).
-        if eps_v < crate::accuracy::ERROR_BOUND_DOMAIN {
+        if eps_v < crate::numerics::accuracy::ERROR_BOUND_DOMAIN {
             error_estimate = f64::INFINITY;
         }
         let status = if eps < OVERDAMPED_THRESHOLD {
@@ -310,8 +325,9 @@ impl Contact {
         };
         // log₁₀ δ = log₁₀(A α^(2/5)) + 0.2 log₁₀ g, with ln (cheaper than log10 here).
         let u = self.log10_delta_coefficient
-            + (0.2 * core::f64::consts::LOG10_E) * crate::math::ln(g_bulk);
-        let mut eps = crate::master::eps_log10(u, self.contact_end, resolution);
+            + (0.2 * core::f64::consts::LOG10_E) * crate::numerics::math::ln(g_bulk);
+        let mut eps =
+            crate::normal::viscoelastic::master::eps_log10(u, self.contact_end, resolution);
         if g_bulk != g {
             eps *= g_bulk / g;
         }

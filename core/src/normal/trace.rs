@@ -2,7 +2,7 @@
 //! collision can be drawn and its energy ledger computed (`crate::collision`) from the very code
 //! path that gives ε_N. Without a recorder ([`Nothing`]) the integrators do what they always did.
 
-use crate::ode::DenseStep;
+use crate::numerics::ode::DenseStep;
 
 /// Which force acts during a recorded step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -44,7 +44,7 @@ impl StateMap {
     /// Clock time at `s`.
     pub fn clock(&self, s: f64) -> f64 {
         if self.sigma_clock {
-            crate::math::sqrt(s.max(0.0))
+            crate::numerics::math::sqrt(s.max(0.0))
         } else {
             s - self.s_offset
         }

@@ -9,8 +9,8 @@ pub mod master;
 
 use super::trace::{Kind, Nothing, Recorder, StateMap};
 use crate::error::{Error, Result};
-use crate::math::{powf, sqrt};
-use crate::ode::{Direction, Dopri5, OdeSystem, StepOutcome, Tolerances};
+use crate::numerics::math::{powf, sqrt};
+use crate::numerics::ode::{Direction, Dopri5, OdeSystem, StepOutcome, Tolerances};
 use crate::scene::ContactEnd;
 
 /// ε_N below this is reported as [`crate::Status::Overdamped`] (docs/physics.md#decision-2).
@@ -222,6 +222,7 @@ pub fn dimensionless_with_budget(
 }
 
 /// [`dimensionless`], handing every accepted step to `recorder` (the collision trajectory).
+#[cfg_attr(not(feature = "alloc"), allow(dead_code))]
 pub(crate) fn dimensionless_recorded(
     delta: f64,
     end: ContactEnd,

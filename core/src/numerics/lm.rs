@@ -1,5 +1,5 @@
 //! The one Levenberg–Marquardt loop of the crate: the Eq. (27) fit ([`crate::fit`], four parameters
-//! in stack matrices, no allocation) and the fit of scene parameters (`crate::fit_scene`, any number
+//! in stack matrices, no allocation) and the fit of scene parameters (`crate::fit::scene`, any number
 //! of parameters in heap matrices) run this loop over their own normal equations.
 //!
 //! The schedule: start at λ = 1e-3; a step that lowers the cost is taken and multiplies λ by 0.3

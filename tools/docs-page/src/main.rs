@@ -177,7 +177,7 @@ mod tests {
             ("physics.md#decision-2", link("#decision-2")),
             ("#models", link("#models")),
             ("https://doi.org/x", link("https://doi.org/x")),
-            ("../core/src/fit.rs", text("core/src/fit.rs")),
+            ("../core/src/fit/mod.rs", text("core/src/fit/mod.rs")),
             ("cli.md#records", text("cli.md#records")),
         ] {
             assert_eq!(target(dest, "physics.md"), want, "{dest}");
@@ -201,11 +201,11 @@ mod tests {
 
     #[test]
     fn anchors_survive_and_repository_links_do_not_dangle() {
-        let md = "<a id=\"decision-2\"></a>\n\n### 2. End\n\nSee [the fit](../core/src/fit.rs) and [two](physics.md#decision-2); η* stays η*.\n";
+        let md = "<a id=\"decision-2\"></a>\n\n### 2. End\n\nSee [the fit](../core/src/fit/mod.rs) and [two](physics.md#decision-2); η* stays η*.\n";
         let html = page(md, "physics.md", "t");
         assert!(html.contains("<a id=\"decision-2\"></a>"), "{html}");
         assert!(
-            html.contains("the fit (<code>core/src/fit.rs</code>)"),
+            html.contains("the fit (<code>core/src/fit/mod.rs</code>)"),
             "{html}"
         );
         assert!(html.contains("<a href=\"#decision-2\">two</a>"), "{html}");

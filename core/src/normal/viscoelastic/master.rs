@@ -23,8 +23,8 @@
 //! [`crate::normal::viscoelastic::creep_eps`]); the force-zero duration is
 //! [`strong_damping_duration`], which grows with ln δ.
 
-use crate::math::{exp, log10, powf};
 use crate::normal::viscoelastic::Dimensionless;
+use crate::numerics::math::{exp, log10, powf};
 use crate::scene::ContactEnd;
 
 /// Lower end of the tables in u = log₁₀ δ.
@@ -144,7 +144,8 @@ pub const STRONG_DAMPING_DURATION_OFFSET: f64 = 1.304_942_716_806_366;
 /// O(δ^(−5/3) ln² δ) (below 1e-10 from δ = 1e7; derivation in docs/physics.md#decision-2, checked
 /// against the independent integration `tests/reference/strong_damping.py`).
 pub fn strong_damping_duration(delta: f64) -> f64 {
-    powf(delta, -2.0 / 3.0) * (20.0 / 9.0 * crate::math::ln(delta) + STRONG_DAMPING_DURATION_OFFSET)
+    powf(delta, -2.0 / 3.0)
+        * (20.0 / 9.0 * crate::numerics::math::ln(delta) + STRONG_DAMPING_DURATION_OFFSET)
 }
 
 /// Evaluates the master curve at `delta ≥ 0` (no integration).
@@ -165,10 +166,10 @@ pub fn eps(delta: f64, end: ContactEnd, resolution: Resolution) -> f64 {
     with_table!(end, resolution, |t| t.eps(delta))
 }
 
-/// [`crate::math::clenshaw`] on one row of coefficients.
+/// [`crate::numerics::math::clenshaw`] on one row of coefficients.
 #[inline]
 fn clenshaw<const D: usize>(c: &[f64; D], t: f64) -> f64 {
-    crate::math::clenshaw(c, t)
+    crate::numerics::math::clenshaw(c, t)
 }
 
 impl<const D: usize> Table<D> {
@@ -176,8 +177,8 @@ impl<const D: usize> Table<D> {
     #[inline]
     pub fn lookup(&self, delta: f64) -> Dimensionless {
         let (hertz_s, hertz_x) = (
-            crate::analytic::HERTZ_CONTACT_TIME,
-            crate::analytic::HERTZ_MAX_COMPRESSION,
+            crate::normal::analytic::HERTZ_CONTACT_TIME,
+            crate::normal::analytic::HERTZ_MAX_COMPRESSION,
         );
         let point = |eps: f64, s_c: f64, x_max: f64| Dimensionless {
             eps,
@@ -193,7 +194,7 @@ impl<const D: usize> Table<D> {
             // Schwager–Pöschel: ε = 1 − 1.5 C1 δ + O(δ²), with O(δ²) < 2e-18 here; s_c and x_max
             // are elastic to O(δ) < 1e-9 relative.
             return point(
-                1.0 - crate::analytic::SMALL_DELTA_SLOPE * delta,
+                1.0 - crate::normal::analytic::SMALL_DELTA_SLOPE * delta,
                 hertz_s,
                 hertz_x,
             );
@@ -519,7 +520,7 @@ mod tests {
             assert!((above - below).abs() < 1e-12, "{above} vs {below}");
             assert_eq!(eps(0.0, end, Resolution::Coarse), 1.0);
             let l = lookup(1e-13, end, Resolution::Fine);
-            assert!(rel(l.s_c, crate::analytic::HERTZ_CONTACT_TIME) < 1e-11);
+            assert!(rel(l.s_c, crate::normal::analytic::HERTZ_CONTACT_TIME) < 1e-11);
         }
     }
 

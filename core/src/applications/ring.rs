@@ -18,12 +18,12 @@
 //! Rayleigh-distributed with scale √2 c; the tangential speed is the independent 2-D Gaussian
 //! magnitude (same scale), grain spins neglected.
 
-use crate::accuracy::Accuracy;
-use crate::contact::Contact;
+use crate::applications::tidal::G;
 use crate::error::{Error, Result, positive, within};
-use crate::math::{exp, ln, sqrt};
+use crate::numerics::accuracy::Accuracy;
+use crate::numerics::math::{exp, ln, sqrt};
 use crate::scene::Scene;
-use crate::tidal::G;
+use crate::scene::contact::Contact;
 use core::f64::consts::PI;
 
 /// The monolayer floor of the dispersion, in units of `RΩ`: the non-local (finite-size) viscous
@@ -47,7 +47,7 @@ pub enum Orbit {
     /// Orbital (Kepler) frequency Ω \[1/s\].
     Omega(f64),
     /// A planet of mass \[kg\] and a distance from its centre \[m\]: `Ω = √(GM/d³)` with the `G` of
-    /// [`crate::tidal`].
+    /// [`crate::applications::tidal`].
     Planet {
         /// Planet mass \[kg\].
         planet_mass: f64,
@@ -58,7 +58,7 @@ pub enum Orbit {
 
 impl Orbit {
     /// The tidal appendix's planet and distance (the explorer's tidal card), as an orbit.
-    pub fn of_tidal(input: &crate::tidal::TidalInput) -> Orbit {
+    pub fn of_tidal(input: &crate::applications::tidal::TidalInput) -> Orbit {
         Orbit::Planet {
             planet_mass: input.planet_mass,
             distance: input.distance,
@@ -335,7 +335,7 @@ impl RingPatch {
     /// `scale_damping=True`).
     #[cfg(feature = "alloc")]
     pub fn damping_note(&self, rec: &RingRecord, flag: &str) -> Option<alloc::string::String> {
-        use crate::figure::format::shortest as num;
+        use crate::format::shortest as num;
         if self.scaled {
             Some(alloc::format!(
                 "A scaled to {} s = A·R/R_set for R = {} m (A was set for {} m grains): this keeps \
@@ -401,7 +401,7 @@ pub(crate) struct PairAverage {
 }
 
 /// The impact averages of a pair whose normal impact speed is Rayleigh with scale `s` per component
-/// (`s = √2 c` for one size; a ring of many sizes, `crate::ring_sizes`, passes each pair's):
+/// (`s = √2 c` for one size; a ring of many sizes, `crate::applications::ring_sizes`, passes each pair's):
 /// the one place the loss, exchange and sticking averages are integrated (Simpson nodes in
 /// `x = g/s`). `fields` names the inputs an error blames.
 pub(crate) fn pair_average(
@@ -834,7 +834,7 @@ mod tests {
         let expected = (G * 5.688e26 / 1.336e8f64.powi(3)).sqrt();
         assert!((rec.omega - expected).abs() < 1e-18);
         // The tidal appendix's example is that planet and distance.
-        let tidal = crate::tidal::TidalInput::default();
+        let tidal = crate::applications::tidal::TidalInput::default();
         assert_eq!(Orbit::of_tidal(&tidal), planet.orbit);
         let mut bad = input(0.5);
         bad.orbit = Orbit::Omega(-1.0);

@@ -13,10 +13,10 @@
 //!
 //! Static data, no allocation: usable with `no_std`.
 
-use crate::accuracy::Accuracy;
-use crate::contact::Contact;
 use crate::error::{Error, Result};
-use crate::math::{exp, ln, log10, powf};
+use crate::numerics::accuracy::Accuracy;
+use crate::numerics::math::{exp, ln, log10, powf};
+use crate::scene::contact::Contact;
 
 /// What an entry describes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -680,7 +680,7 @@ pub fn score(
         });
     }
     let mut g = [0.0; SCORE_POINTS];
-    crate::sweep::log_space(lo, hi, &mut g);
+    crate::numerics::grid::log_space(lo, hi, &mut g);
     let mut sum = 0.0;
     for &gi in &g {
         let e = contact.eps_n(gi, accuracy)?;
@@ -698,7 +698,7 @@ pub fn score(
         };
         sum += d * d;
     }
-    Ok(crate::math::sqrt(sum / SCORE_POINTS as f64))
+    Ok(crate::numerics::math::sqrt(sum / SCORE_POINTS as f64))
 }
 
 #[cfg(test)]

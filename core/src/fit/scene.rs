@@ -15,14 +15,14 @@
 //! A parameter whose effect is off in the scene (e.g. `layer.viscosity` without a layer) is refused:
 //! the fit never switches an effect on.
 
-use crate::accuracy::Accuracy;
-use crate::contact::Contact;
 use crate::error::Number;
-use crate::figure::format::sig;
-use crate::math::{exp, ln, sqrt};
+use crate::format::sig;
+use crate::numerics::accuracy::Accuracy;
 use crate::numerics::lm::{LeastSquares, Schedule, damped_diagonal, minimise};
-use crate::params::{Kind, Value, parameter};
+use crate::numerics::math::{exp, ln, sqrt};
 use crate::scene::Scene;
+use crate::scene::contact::Contact;
+use crate::scene::params::{Kind, Value, parameter};
 use alloc::format;
 use alloc::string::{String, ToString};
 use alloc::vec;
@@ -117,7 +117,7 @@ fn cell_unit(cell: &str) -> Option<&str> {
 
 /// Factor to m/s of the g column's unit, or an error naming the column.
 fn speed_factor(cell: &str, unit: &str) -> core::result::Result<f64, String> {
-    crate::units::parse_quantity("g", &format!("1 {unit}"), "m/s").map_err(|_| {
+    crate::scene::units::parse_quantity("g", &format!("1 {unit}"), "m/s").map_err(|_| {
         format!(
             "column '{cell}': unknown unit '{unit}' for the impact speed (m/s, cm/s, mm/s, um/s, \
              km/s)"
@@ -513,11 +513,11 @@ pub const LAW_POINTS: usize = 40;
 /// the model's misfit to the law, not measurement noise.
 pub fn fit_to_entry(
     scene: &Scene,
-    entry: &crate::atlas::Entry,
+    entry: &crate::data::atlas::Entry,
     paths: &[&str],
     accuracy: Accuracy,
 ) -> core::result::Result<SceneFit, String> {
-    if entry.kind != crate::atlas::Kind::Law {
+    if entry.kind != crate::data::atlas::Kind::Law {
         return Err(format!(
             "{}: not a law (ranges and thresholds cannot be fitted to)",
             entry.id
@@ -529,7 +529,7 @@ pub fn fit_to_entry(
         None
     };
     let mut g = vec![0.0; LAW_POINTS];
-    crate::sweep::log_space(entry.valid_speed[0], entry.valid_speed[1], &mut g);
+    crate::numerics::grid::log_space(entry.valid_speed[0], entry.valid_speed[1], &mut g);
     let mut eps = Vec::with_capacity(LAW_POINTS);
     for &x in &g {
         let e = entry
@@ -800,7 +800,7 @@ mod tests {
         // Fitting A to the Bridges law never leaves the scene farther from it than it started.
         let f = fit_to_entry(
             &crate::Preset::Ice.scene(),
-            crate::atlas::find("bridges1984").unwrap(),
+            crate::data::atlas::find("bridges1984").unwrap(),
             &["bulk.damping.time"],
             Accuracy::Fast,
         )
@@ -808,23 +808,23 @@ mod tests {
         assert_eq!(f.params.len(), 1);
         assert!(f.params[0].value > 0.0 && f.rms_error < 0.2, "{f:?}");
         // The fitted scene is at least as close to the law as the starting one.
-        let start = crate::atlas::score(
+        let start = crate::data::atlas::score(
             &Contact::new(&crate::Preset::Ice.scene()).unwrap(),
             Accuracy::Fast,
-            crate::atlas::find("bridges1984").unwrap(),
+            crate::data::atlas::find("bridges1984").unwrap(),
             None,
         )
         .unwrap();
-        let end = crate::atlas::score(
+        let end = crate::data::atlas::score(
             &Contact::new(&f.scene).unwrap(),
             Accuracy::Fast,
-            crate::atlas::find("bridges1984").unwrap(),
+            crate::data::atlas::find("bridges1984").unwrap(),
             None,
         )
         .unwrap();
         assert!(end <= start, "{end} > {start}");
         // A measured range is not a law to fit to.
-        let range = crate::atlas::find("hill2015").unwrap();
+        let range = crate::data::atlas::find("hill2015").unwrap();
         let scene = crate::Preset::Ice.scene();
         assert!(fit_to_entry(&scene, range, &["bulk.damping.time"], Accuracy::Fast).is_err());
     }
@@ -946,7 +946,7 @@ mod tests {
     #[test]
     fn fit_warns_on_systematic_residuals_and_bad_chi2_issue_22() {
         let mut g = vec![0.0; 16];
-        crate::sweep::log_space(1e-4, 1.0, &mut g);
+        crate::numerics::grid::log_space(1e-4, 1.0, &mut g);
         let model = model_points(1e-4, &g);
         let fit_a = |eps: &[f64], sigma: Option<&[f64]>| {
             fit(

@@ -4,6 +4,11 @@
 //! by the CLI, the terminal explorer and the web page (see `docs/cli.md#scene-json`). Effects that are `None`
 //! cost nothing when evaluating: *model only what a scene requires*.
 
+pub mod contact;
+pub mod limits;
+pub mod params;
+pub mod units;
+
 use crate::error::{Error, Result, within};
 
 /// The two colliding grains: homogeneous spheres of one material.

@@ -2,11 +2,11 @@
 //! page's sliders.
 
 use crate::error::{Error, Result};
+use crate::scene::units::parse_quantity;
 use crate::scene::{
     AdhesionModulus, ContactEnd, Damping, DampingFormula, JkrEnd, LayerReading, Scene, SlidingLaw,
     Viscosities,
 };
-use crate::units::parse_quantity;
 
 /// What kind of value a parameter holds.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -242,7 +242,7 @@ pub fn notch(
     let next = if log {
         let f = if fine { LOG_NOTCH.1 } else { LOG_NOTCH.0 };
         if value > 0.0 {
-            value * crate::math::powf(f, dir)
+            value * crate::numerics::math::powf(f, dir)
         } else if up && min <= 0.0 {
             return Err(NotchError::LogFromZero);
         } else {

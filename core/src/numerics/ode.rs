@@ -10,7 +10,7 @@
 //! \[2\] Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.5–6 (the `dopri5` dense output and step control).
 
 use crate::error::{Error, Result};
-use crate::math::{powf, sqrt};
+use crate::numerics::math::{powf, sqrt};
 
 /// A first-order system `y' = f(t, y)` with `N` states and `M` event functions.
 pub trait OdeSystem<const N: usize, const M: usize> {

@@ -3,9 +3,9 @@
 //!
 //! These are independent of the integrators and serve as limits and cross-checks for them.
 
-use crate::contact::Contact;
 use crate::error::{Result, positive};
-use crate::math::{cbrt, sqrt};
+use crate::numerics::math::{cbrt, sqrt};
+use crate::scene::contact::Contact;
 
 /// Critical velocity of a soft layer, Eq. (10): `g_s = √R_eff η* D^(3/2)/m_eff` \[m/s\], with
 /// `η* = 1/K` the layer viscosity \[Pa s\], `D = D₁ + D₂` the total thickness \[m\], `R_eff` \[m\] and
@@ -16,7 +16,7 @@ pub fn critical_velocity_layer(r_eff: f64, m_eff: f64, thickness: f64, viscosity
     sqrt(r_eff) * viscosity * thickness * sqrt(thickness) / m_eff
 }
 
-pub use crate::contact::{EQ12_CONSTANT, EQ15_CONSTANT, adhesion_modulus};
+pub use crate::scene::contact::{EQ12_CONSTANT, EQ15_CONSTANT, adhesion_modulus};
 
 /// JKR separation energy, Eq. (12): `W_s = 7.09 (γ⁵R_eff⁴/E²)^(1/3)` \[J\], with surface energy `γ`
 /// \[J/m²\], `R_eff` \[m\] and modulus `E` \[Pa\] (`Y/(1−ν²)` as printed, docs/physics.md#decision-5).
@@ -95,8 +95,8 @@ pub fn eps_small_delta(delta: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::accuracy::Accuracy;
     use crate::normal::viscoelastic::dimensionless;
+    use crate::numerics::accuracy::Accuracy;
     use crate::scene::{AdhesionModulus, ContactEnd, Damping, Preset, Scene};
 
     fn rel(a: f64, b: f64) -> f64 {

@@ -10,7 +10,7 @@ use crate::error::{Error, Result};
 /// (issue 12: the old default integrated every contact, 100× slower at a 1e4 times looser bound).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum Accuracy {
-    /// `fast`: the coarse table of the master curve ([`crate::master`]; brilliantov2007: of its own
+    /// `fast`: the coarse table of the master curve ([`crate::normal::viscoelastic::master`]; brilliantov2007: of its own
     /// master surface, [`crate::models::brilliantov2007_master`]): relative error ≤ 1e-6.
     Fast,
     /// `integrated` (formerly `balanced`, still accepted): integrates every contact with adaptive

@@ -18,7 +18,7 @@
 //! `ΔF` and `d_Roche` reproduce the printed values to all printed digits.
 
 use crate::error::{Error, Result, non_negative, positive};
-use crate::math::cbrt;
+use crate::numerics::math::cbrt;
 use core::f64::consts::PI;
 
 /// The gravitational constant \[N m²/kg²\] as the paper uses it: `6.672e-11` (printed as `6.672`
@@ -143,7 +143,7 @@ impl Tidal {
         if self.holds() {
             alloc::format!(
                 "ΔF < F_s + F_g (×{}): the pair stays in contact",
-                crate::figure::format::sig(self.margin(), 2)
+                crate::format::sig(self.margin(), 2)
             )
         } else {
             alloc::string::String::from("ΔF ≥ F_s + F_g: the tide pulls the pair apart")

@@ -29,13 +29,13 @@
 //! overdamped rule), so [`LammpsMapping::run_time`] is only a guard: a bound of rime's integrated
 //! contact duration at every δ (test `issue_35_run_time_covers_rimes_duration_at_any_damping`).
 
-use crate::accuracy::Accuracy;
-use crate::analytic::{HERTZ_CONTACT_TIME, HERTZ_MAX_COMPRESSION};
-use crate::contact::Contact;
 use crate::error::{Error, Result};
-use crate::math::{powf, sqrt};
 use crate::models::{Evaluator, Model, ModelStatus};
 use crate::normal::OVERDAMPED_THRESHOLD;
+use crate::normal::analytic::{HERTZ_CONTACT_TIME, HERTZ_MAX_COMPRESSION};
+use crate::numerics::accuracy::Accuracy;
+use crate::numerics::math::{powf, sqrt};
+use crate::scene::contact::Contact;
 use crate::scene::{ContactEnd, JkrEnd, Scene};
 
 /// LAMMPS's JKR contact holds while the separation is below `R₁ + R₂ + JKRPREFIX (R γ²/E_eff²)^(1/3)`,

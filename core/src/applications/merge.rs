@@ -27,9 +27,9 @@
 //! # Ok::<(), rime_core::Error>(())
 //! ```
 
+use crate::collision::kinematics::{SOLID_SPHERE, Vector3};
 use crate::error::{Error, Result, positive};
-use crate::kinematics::{SOLID_SPHERE, Vector3};
-use crate::math::cbrt;
+use crate::numerics::math::cbrt;
 
 /// A grain with a position: what a merge needs of each of the two.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1,7 +1,7 @@
 //! A ring of many sizes: the velocity dispersion and thickness of every size bin and the ring's
 //! kinematic viscosity (docs/physics.md#ring-sizes, issue 38).
 //!
-//! The one-size closure of [`crate::ring`] extended to a mixture. Species `i` (radius `R_i`,
+//! The one-size closure of [`crate::applications::ring`] extended to a mixture. Species `i` (radius `R_i`,
 //! number fraction `f_i`, optical depth `τ_i = τ f_i R_i²/Σ f_k R_k²`) has its own dispersion `c_i`
 //! and balances its viscous gain against its collisional change with every species `j`:
 //!
@@ -19,22 +19,22 @@
 //! partners (`2RΩ` for one size). The system is solved species by species (Gauss–Seidel sweeps,
 //! each a root in ln c).
 
-use crate::contact::Contact;
-use crate::error::{Error, Result, positive, within};
-use crate::math::{exp, ln, sqrt};
-use crate::ring::{
+use crate::applications::ring::{
     self, AGGREGATE_FRACTION, Orbit, PairAverage, SLOW_REGIME_LIMIT, Verdict, pair_average,
     vertical_fraction,
 };
+use crate::error::{Error, Result, positive, within};
+use crate::numerics::math::{exp, ln, sqrt};
+use crate::scene::contact::Contact;
 
 /// The inputs an impact average's error blames for a ring of many sizes.
 const RADII: &str = "tau, omega, radii";
+use crate::applications::tidal::G;
 use crate::scene::{Damping, Scene};
-use crate::tidal::G;
 use alloc::vec::Vec;
 use core::f64::consts::PI;
 
-/// Highest dispersion searched \[m/s\] (as [`crate::ring`]).
+/// Highest dispersion searched \[m/s\] (as [`crate::applications::ring`]).
 const C_MAX: f64 = 1e3;
 /// Most bins of a power law (or radii of a list): the balance costs about N³ impact averages
 /// (12 bins: 2.5 s).
@@ -106,7 +106,7 @@ fn moment(q: f64, k: f64, a: f64, b: f64) -> f64 {
     if p.abs() < 1e-12 {
         ln(b / a)
     } else {
-        (crate::math::powf(b, p) - crate::math::powf(a, p)) / p
+        (crate::numerics::math::powf(b, p) - crate::numerics::math::powf(a, p)) / p
     }
 }
 
@@ -336,7 +336,7 @@ struct Model {
 
 struct State {
     c: Vec<f64>,
-    /// One size: the record of [`crate::ring::equilibrium`] (c and H are its numbers).
+    /// One size: the record of [`crate::applications::ring::equilibrium`] (c and H are its numbers).
     one_size: Option<ring::RingRecord>,
 }
 
@@ -632,8 +632,8 @@ fn build(scene: &Scene, tau: f64, omega: f64, bins: &[Bin], rule: DampingRule) -
             let mut contact = Contact::new(&pair)?;
             if rule == DampingRule::KeepEpsilon {
                 let a = a_ref
-                    * crate::math::powf(contact.r_eff / reference.r_eff, -0.2)
-                    * crate::math::powf(contact.m_eff / reference.m_eff, 0.4);
+                    * crate::numerics::math::powf(contact.r_eff / reference.r_eff, -0.2)
+                    * crate::numerics::math::powf(contact.m_eff / reference.m_eff, 0.4);
                 pair.bulk.damping = Damping::Time(positive("damping_time", a)?);
                 contact = Contact::new(&pair)?;
             }
@@ -883,8 +883,8 @@ pub fn equilibrium(scene: &Scene, input: &SizeRingInput) -> Result<SizeRingRecor
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::accuracy::Accuracy;
-    use crate::ring::{RingInput, equilibrium as one_size};
+    use crate::applications::ring::{RingInput, equilibrium as one_size};
+    use crate::numerics::accuracy::Accuracy;
     use crate::scene::Preset;
 
     const SATURN_A_RING_OMEGA: f64 = 1.3143527e-4;
@@ -1083,7 +1083,7 @@ mod tests {
         let loss =
             p.collision_frequency * omega * (1.0 - p.eps_effective * p.eps_effective) * c * c / 2.0;
         assert!((heating / loss - 1.0).abs() < 1e-5, "{heating} vs {loss}");
-        let phi = crate::ring::filling_factor(0.5, c, omega, 0.02);
+        let phi = crate::applications::ring::filling_factor(0.5, c, omega, 0.02);
         let y = (1.0 - phi / 2.0) / (1.0 - phi).powi(3);
         let e = p.eps_effective;
         let want = 0.8 * phi * y * (1.0 + e) * nu.translational

@@ -1,7 +1,7 @@
 //! Derived contact constants, computed once per scene.
 
 use crate::error::{Error, Result};
-use crate::math::{powf, sqrt};
+use crate::numerics::math::{powf, sqrt};
 use crate::scene::{AdhesionModulus, ContactEnd, Friction, LayerReading, Scene};
 
 /// Constants of the soft layer model, Eq. (8)–(10).
@@ -210,8 +210,8 @@ impl Contact {
             layer,
             adhesion,
             friction: scene.friction,
-            log10_delta_coefficient: crate::math::log10(damping_time)
-                + 0.4 * crate::math::log10(alpha),
+            log10_delta_coefficient: crate::numerics::math::log10(damping_time)
+                + 0.4 * crate::numerics::math::log10(alpha),
         })
     }
 

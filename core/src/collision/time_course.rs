@@ -1,23 +1,12 @@
-//! Inside one collision: the time course ξ(t), ξ'(t), the normal force F(t), the phases, and the
-//! energy ledger (docs/physics.md#collision).
-//!
-//! The trajectory is the one the ε_N of [`Contact::normal`] comes from: the same integrators
-//! (`normal::viscoelastic`, `normal::layer`) hand their dense output to a recorder, and closed-form
-//! phases (the offset reading's crushing, Eq. (9); the literal reading's coast and way out through
-//! the layer) are sampled from their closed forms. Levels served by a table (fast, precise)
-//! integrate live at the level's tolerance (rtol 1e-9, 1e-13) for the trajectory; `t_c`, `xi_max`,
-//! `eps_n` and `status` are [`Contact::normal`]'s own. Sampling costs in proportion to the points
-//! asked; every ledger term is a quadrature of its own force over the trajectory.
-//!
-//! Units are SI; ξ' > 0 while the grains approach; F > 0 pushes them apart.
+//! The time course inside one collision (re-exported by [`crate::collision`], which describes it).
 
-use crate::accuracy::Accuracy;
-use crate::contact::Contact;
 use crate::error::{Error, Result};
-use crate::math::{powf, sqrt};
 use crate::normal::trace::{Kind, Recorder, StateMap, Tail};
 use crate::normal::{Normal, Status, layer, viscoelastic};
-use crate::ode::DenseStep;
+use crate::numerics::accuracy::Accuracy;
+use crate::numerics::math::{powf, sqrt};
+use crate::numerics::ode::DenseStep;
+use crate::scene::contact::Contact;
 use crate::scene::{ContactEnd, LayerReading};
 use alloc::vec::Vec;
 
@@ -814,7 +803,7 @@ pub struct Oblique {
 impl Contact {
     /// An oblique impact of two solid spheres of radii `radius_1`, `radius_2` \[m\] at normal and
     /// tangential speeds `g_n`, `g_t` \[m/s\], without spin before: ε_N and ε_T from the scene,
-    /// applied by the core's kinematics ([`crate::kinematics::collide`], Eq. (2)).
+    /// applied by the core's kinematics ([`crate::collision::kinematics::collide`], Eq. (2)).
     pub fn oblique(
         &self,
         radius_1: f64,
@@ -823,7 +812,7 @@ impl Contact {
         g_t: f64,
         accuracy: Accuracy,
     ) -> Result<Oblique> {
-        use crate::kinematics::{
+        use crate::collision::kinematics::{
             GrainState, Vector3, collide, effective_tangential_mass, relative_surface_velocity,
         };
         let tangential = self.tangential(g_n, g_t, accuracy)?;

@@ -58,7 +58,7 @@ pub fn underflows(number: &str, value: f64) -> bool {
 }
 
 /// Parses `text` as a number with an optional unit compatible with `unit` (the SI unit of the
-/// field, as written in [`crate::params::PARAMETERS`]); returns the value in that SI unit.
+/// field, as written in [`crate::scene::params::PARAMETERS`]); returns the value in that SI unit.
 /// A nonzero number below a double's range is refused ([`UNDERFLOW`]), not read as 0.
 pub fn parse_quantity(field: &'static str, text: &str, unit: &str) -> Result<f64> {
     let text = text.trim();

@@ -13,8 +13,9 @@
 #[cfg(feature = "alloc")]
 mod description;
 #[cfg(feature = "alloc")]
-pub mod format;
+pub use crate::format;
 pub mod palette;
+pub mod sweep;
 pub mod words;
 #[cfg(feature = "alloc")]
 pub use description::*;

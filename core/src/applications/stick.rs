@@ -1,6 +1,6 @@
 //! Sticking thresholds for dust codes: v_stick(radius, temperature) of two equal grains.
 //!
-//! The surface energy comes from the Musiolik & Wurm (2019) entry of the [`crate::atlas`]
+//! The surface energy comes from the Musiolik & Wurm (2019) entry of the [`crate::data::atlas`]
 //! (γ(T) rising from 0.0029 to 0.19 J/m² between 175 and 200 K). Two thresholds are given:
 //!
 //! * `v_elastic`: Eq. (15) alone, g_s = (14.18/m_eff)^{1/2}(γ⁵R_eff⁴/E²)^{1/6} — the speed below
@@ -13,12 +13,12 @@
 //! F_c = (3/2)πγR_eff, i.e. it is the work of adhesion w = 2γ_s of two surfaces of surface energy
 //! γ_s. [`Convention::SurfaceEnergy`] (the default) reads the source's γ as γ_s and uses w = 2γ_s.
 
-use crate::accuracy::Accuracy;
-use crate::atlas;
-use crate::contact::Contact;
+use crate::data::atlas;
 use crate::error::{Error, Result};
-use crate::math::{ln, sqrt};
 use crate::normal::Status;
+use crate::numerics::accuracy::Accuracy;
+use crate::numerics::math::{ln, sqrt};
+use crate::scene::contact::Contact;
 use crate::scene::{Adhesion, AdhesionModulus, Scene};
 
 /// How to read the source's γ.
@@ -57,13 +57,13 @@ pub const MEASURED_UM_ICE: f64 = 9.6;
 /// Whether threshold `t` lies where µm ice was measured to stick (the atlas' `gundlach2015`:
 /// inside its radii, at or below its warmest temperature), so [`MEASURED_UM_ICE`] compares.
 pub fn in_measured_regime(t: &Threshold) -> bool {
-    crate::atlas::find("gundlach2015").is_some_and(|e| {
+    crate::data::atlas::find("gundlach2015").is_some_and(|e| {
         t.radius >= e.radius[0] && t.radius <= e.radius[1] && t.temperature <= e.temperature[1]
     })
 }
 
 /// Largest speed searched for the full-model threshold \[m/s\].
-pub const SEARCH_MAX: f64 = crate::limits::SPEED_MAX;
+pub const SEARCH_MAX: f64 = crate::scene::limits::SPEED_MAX;
 
 /// Sticking thresholds of two equal grains.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -296,7 +296,7 @@ impl ThresholdTable {
 
     /// What `v_stick` uses from the scene, for its column header: `A = 1e-4 s` (and the layer).
     pub fn v_stick_note(&self) -> alloc::string::String {
-        let a = crate::figure::format::qty3(self.damping_time, "s");
+        let a = crate::format::qty3(self.damping_time, "s");
         if self.layer {
             alloc::format!("the scene's A = {a} and layer")
         } else {

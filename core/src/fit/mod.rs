@@ -8,9 +8,12 @@
 //! Every fit reports its parameters, the rms and maximum absolute error over the fitted points and
 //! the range of speeds it was fitted on (its validity range).
 
+#[cfg(feature = "alloc")]
+pub mod scene;
+
 use crate::error::{Error, Result};
-use crate::math::{exp, ln, powf, sqrt};
 use crate::numerics::lm::{LeastSquares, Schedule, damped_diagonal, minimise};
+use crate::numerics::math::{exp, ln, powf, sqrt};
 use nalgebra::{SMatrix, SVector};
 
 /// Eq. (27) fitted to a curve.
@@ -340,7 +343,7 @@ mod tests {
         // Points generated from known parameters: the fit must find them again.
         let (a, b, c, d) = (0.2, -0.1, 3e3, 1.3);
         let mut g = [0.0; 40];
-        crate::sweep::log_space(1e-5, 1.0, &mut g);
+        crate::numerics::grid::log_space(1e-5, 1.0, &mut g);
         let e: [f64; 40] = core::array::from_fn(|i| eq27(a, b, c, d, g[i]));
         let fit = fit_eq27(&g, &e).unwrap();
         assert!(fit.max_error < 1e-9, "{fit:?}");

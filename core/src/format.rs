@@ -3,7 +3,7 @@
 //! files ([`shortest`]) and values a user edits ([`editable`]). Never `NaN` or `inf`: non-finite
 //! values read `—`. Needs `alloc`.
 
-use crate::math::log10;
+use crate::numerics::math::log10;
 use alloc::format;
 use alloc::string::{String, ToString};
 
@@ -219,7 +219,7 @@ mod tests {
         assert_eq!(editable(900.0, "kg/m³"), "900");
         for (v, unit) in [(noisy, "s"), (6.62e-6, "m/s"), (9.1e9, "Pa")] {
             let text = editable(v, unit);
-            let back = crate::units::parse_quantity("x", &text, unit).unwrap();
+            let back = crate::scene::units::parse_quantity("x", &text, unit).unwrap();
             assert!(((back - v) / v).abs() < 1e-11, "{v} → {text} → {back}");
         }
     }
