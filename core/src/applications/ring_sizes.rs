@@ -880,6 +880,25 @@ pub fn equilibrium(scene: &Scene, input: &SizeRingInput) -> Result<SizeRingRecor
     })
 }
 
+/// The kinematic viscosity of the ring of [`crate::applications::ring::equilibrium`]: the scene's
+/// one size as a one-bin distribution (which reproduces that ring's c and H to the digit; the
+/// test `issue_38_one_size_reproduces_todays_answers`). Errors as [`equilibrium`]'s.
+pub fn one_size_viscosity(
+    scene: &Scene,
+    input: &crate::applications::ring::RingInput,
+) -> Result<Viscosity> {
+    let one = SizeRingInput {
+        tau: input.tau,
+        orbit: input.orbit,
+        sizes: SizeDistribution::List {
+            radii: alloc::vec![scene.grains.radius_1],
+            fractions: alloc::vec![1.0],
+        },
+        damping_rule: DampingRule::Same,
+    };
+    Ok(equilibrium(scene, &one)?.viscosity)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

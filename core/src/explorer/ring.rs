@@ -9,6 +9,9 @@
 use crate::applications::ring::{
     FLOOR_IN_R_OMEGA, RingInput, RingRecord, SLOW_REGIME_LIMIT, Verdict, equilibrium,
 };
+use crate::applications::ring_sizes::{
+    self, DampingRule, SizeDistribution, SizeRingInput, SizeRingRecord, Viscosity,
+};
 use crate::error::{Error, Result};
 use crate::explorer::format::{qty, sig};
 use crate::explorer::palette;
@@ -51,12 +54,103 @@ pub struct RingCard {
     /// c, H, the impact speed, ε_cr, ε̄, the equilibration time (and the smooth-grain
     /// alternative when the scene has friction), printed.
     pub rows: Vec<RingRow>,
-    /// The verdict word(s): [`Verdict::words`].
+    /// The verdict word(s): [`Verdict::words`] of the ring of many sizes when the card has one, else
+    /// of the scene's one size.
     pub verdict: &'static str,
     /// Whether the ring settles ([`Verdict::is_equilibrium`]).
     pub equilibrium: bool,
     /// The verdict in a plain sentence.
     pub sentence: String,
+    /// The ring's kinematic viscosity (docs/physics.md#ring-sizes): of the scene's one size, or of
+    /// the size distribution when the card has one.
+    pub viscosity: Viscosity,
+    /// The ring of many sizes the card describes besides the scene's one size (issue 38): its
+    /// ring-wide c and H and its bins, smallest first; `None` for one size.
+    pub sizes: Option<SizeRingRecord>,
+}
+
+/// The ring card's size choices, the same on every surface (issue 38): the scene's one size, or
+/// `dN/dR ∝ R^−3` (Saturn's rings' q ≈ 2.75–3) from the scene's radius R to 5R or 10R in three
+/// bins equal in log R, with A the same for every pair (a material constant). `rime ring
+/// --radii … --q …` takes any other distribution.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum CardSizeChoice {
+    /// The scene's grains only.
+    #[default]
+    #[cfg_attr(feature = "serde", serde(rename = "one"))]
+    One,
+    /// R to 5R, q = 3.
+    #[cfg_attr(feature = "serde", serde(rename = "to_5r"))]
+    ToFiveR,
+    /// R to 10R, q = 3.
+    #[cfg_attr(feature = "serde", serde(rename = "to_10r"))]
+    ToTenR,
+}
+
+impl CardSizeChoice {
+    /// Every choice, in the order a key cycles through them.
+    pub const ALL: [CardSizeChoice; 3] = [Self::One, Self::ToFiveR, Self::ToTenR];
+
+    /// The size exponent q of the distributions.
+    pub const Q: f64 = 3.0;
+
+    /// The number of bins of the distributions.
+    pub const BINS: usize = 3;
+
+    /// Its name in JSON and links (`one`, `to_5r`, `to_10r`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::One => "one",
+            Self::ToFiveR => "to_5r",
+            Self::ToTenR => "to_10r",
+        }
+    }
+
+    /// What a person reads: `one size`, `R–5R, q = 3`.
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::One => "one size",
+            Self::ToFiveR => "R–5R, q = 3",
+            Self::ToTenR => "R–10R, q = 3",
+        }
+    }
+
+    /// The next choice (after the last, the first).
+    pub fn next(self) -> Self {
+        match self {
+            Self::One => Self::ToFiveR,
+            Self::ToFiveR => Self::ToTenR,
+            Self::ToTenR => Self::One,
+        }
+    }
+
+    /// The distribution for grains of radius `radius` \[m\]; `None` for one size.
+    pub fn sizes(self, radius: f64) -> Option<CardSizes> {
+        let top = match self {
+            Self::One => return None,
+            Self::ToFiveR => 5.0,
+            Self::ToTenR => 10.0,
+        };
+        Some(CardSizes {
+            sizes: SizeDistribution::PowerLaw {
+                q: Self::Q,
+                radius_min: radius,
+                radius_max: top * radius,
+                bins: Self::BINS,
+            },
+            damping_rule: DampingRule::Same,
+        })
+    }
+}
+
+/// A size distribution for the ring card: the sizes and the rule for A across them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CardSizes {
+    /// The sizes (a power law or a list).
+    pub sizes: SizeDistribution,
+    /// How A follows from the scene's for every pair.
+    pub damping_rule: DampingRule,
 }
 
 impl RingCard {
@@ -89,6 +183,20 @@ fn row(label: &str, text: String) -> RingRow {
 // Long by design: the card's rows in the order they are shown, each from the one equilibrium
 // record.
 pub fn ring_card(scene: &Scene, input: &RingInput, chart: (f64, f64)) -> Result<RingCard> {
+    ring_card_with_sizes(scene, input, None, chart)
+}
+
+/// [`ring_card`] with a size distribution (issue 38): the card's chart parts and first rows stay
+/// the ring of the scene's one size; rows for the ring of many sizes follow (ring-wide c and H,
+/// the smallest and largest bins, ν). Errors name the field (`q`, `radius_min`, `bins`, …).
+// Long by design: the card's rows in the order they are shown, each from the one equilibrium
+// record.
+pub fn ring_card_with_sizes(
+    scene: &Scene,
+    input: &RingInput,
+    sizes: Option<&CardSizes>,
+    chart: (f64, f64),
+) -> Result<RingCard> {
     let (from, to) = chart;
     if !(from.is_finite() && to.is_finite() && from > 0.0 && to > from) {
         return Err(Error::InvalidValue {
@@ -145,6 +253,40 @@ pub fn ring_card(scene: &Scene, input: &RingInput, chart: (f64, f64)) -> Result<
             },
         ),
     ];
+    let sizes = match sizes {
+        Some(s) => Some(ring_sizes::equilibrium(
+            scene,
+            &SizeRingInput {
+                tau: input.tau,
+                orbit: input.orbit,
+                sizes: s.sizes.clone(),
+                damping_rule: s.damping_rule,
+            },
+        )?),
+        None => None,
+    };
+    let viscosity = match &sizes {
+        Some(rec) => rec.viscosity,
+        None => ring_sizes::one_size_viscosity(scene, input)?,
+    };
+    // With sizes, what the user asked for comes first (a small terminal cuts the card from the
+    // bottom); the one-size rows, which the chart's overlay belongs to, follow under their header.
+    if let Some(rec) = &sizes {
+        let one_size = core::mem::take(&mut rows);
+        rows.extend(size_rows(rec));
+        rows.push(row("viscosity ν (all sizes)", viscosity_text(&viscosity)));
+        rows.push(row(
+            "one size",
+            format!(
+                "R = {}, as on the chart (ε_cr line, meeting point, impact speed):",
+                qty(record.radius, "m")
+            ),
+        ));
+        rows.extend(one_size);
+    }
+    if sizes.is_none() {
+        rows.push(row("viscosity ν", viscosity_text(&viscosity)));
+    }
     if record.friction {
         let s = record.smooth;
         rows.push(row(
@@ -166,17 +308,77 @@ pub fn ring_card(scene: &Scene, input: &RingInput, chart: (f64, f64)) -> Result<
             ),
         ));
     }
-    let sentence = sentence(&record, r_omega);
+    // The verdict at the top is the ring the user asked for: of many sizes when given.
+    let shown = sizes.as_ref().map_or(p.verdict, |s| s.verdict);
+    let mut sentence = sentence(&record, r_omega);
+    if sizes.is_some() {
+        sentence = format!("For the scene's one size: {sentence}");
+    }
     Ok(RingCard {
         record,
         eps_cr_line,
         meeting,
         impact_marker,
         rows,
-        verdict: p.verdict.words(),
-        equilibrium: p.verdict.is_equilibrium(),
+        verdict: shown.words(),
+        equilibrium: shown.is_equilibrium(),
         sentence,
+        viscosity,
+        sizes,
     })
+}
+
+/// ν with its two parts and d ln ν/d ln τ, as a row prints it.
+fn viscosity_text(v: &Viscosity) -> String {
+    format!(
+        "{} (translational {}, collisional {}); d ln ν/d ln τ = {}",
+        qty(v.total, "m²/s"),
+        qty(v.translational, "m²/s"),
+        qty(v.collisional, "m²/s"),
+        sig(v.dlnnu_dlntau, 3)
+    )
+}
+
+/// The rows of a ring of many sizes: ring-wide c and H with the verdict, then the smallest and
+/// largest bins (c and H each).
+fn size_rows(rec: &SizeRingRecord) -> Vec<RingRow> {
+    let range = match (rec.size_bins.first(), rec.size_bins.last()) {
+        (Some(a), Some(b)) => format!("{}–{}", qty(a.radius_min, "m"), qty(b.radius_max, "m")),
+        _ => "—".to_string(),
+    };
+    let mut rows = vec![row(
+        &format!("sizes {range}, all grains"),
+        format!(
+            "c = {}, H = {}: {} (rms over the grains; A {})",
+            qty(rec.velocity_dispersion, "m/s"),
+            qty(rec.thickness, "m"),
+            rec.verdict.words(),
+            match rec.damping_rule {
+                DampingRule::Same => "the same for all pairs",
+                DampingRule::KeepEpsilon => "scaled so all pairs keep ε_N(g)",
+            }
+        ),
+    )];
+    let bin = |label: &str, b: &ring_sizes::BinPrediction| {
+        row(
+            label,
+            format!(
+                "{}–{}: c = {}, H = {}{}",
+                qty(b.radius_min, "m"),
+                qty(b.radius_max, "m"),
+                qty(b.velocity_dispersion, "m/s"),
+                qty(b.thickness, "m"),
+                if b.at_floor { " (at its floor)" } else { "" }
+            ),
+        )
+    };
+    if let (Some(first), Some(last)) = (rec.size_bins.first(), rec.size_bins.last()) {
+        rows.push(bin("smallest grains", first));
+        if rec.size_bins.len() > 1 {
+            rows.push(bin("largest grains", last));
+        }
+    }
+    rows
 }
 
 fn sentence(record: &RingRecord, r_omega: f64) -> String {
@@ -369,5 +571,130 @@ mod tests {
             ring_card(&ice(0.02, true), &bad, (1e-7, 1.0)),
             Err(Error::OutOfRange { field: "tau", .. })
         ));
+    }
+
+    fn power_law(q: f64, from: f64, to: f64, bins: usize) -> CardSizes {
+        CardSizes {
+            sizes: SizeDistribution::PowerLaw {
+                q,
+                radius_min: from,
+                radius_max: to,
+                bins,
+            },
+            damping_rule: DampingRule::Same,
+        }
+    }
+
+    /// The card of one size shows ν of that ring: the one-bin ring of many sizes, which the
+    /// card with a list of the scene's one radius must give too (two paths to the same ring).
+    #[test]
+    fn issue_38_the_card_shows_the_rings_viscosity() {
+        let scene = ice(0.02, true);
+        let card = ring_card(&scene, &a_ring(), (1e-7, 1.0)).unwrap();
+        let one = CardSizes {
+            sizes: SizeDistribution::List {
+                radii: vec![0.02],
+                fractions: vec![1.0],
+            },
+            damping_rule: DampingRule::Same,
+        };
+        let listed = ring_card_with_sizes(&scene, &a_ring(), Some(&one), (1e-7, 1.0)).unwrap();
+        assert_eq!(card.viscosity, listed.viscosity);
+        assert!(card.sizes.is_none());
+        // ν = ν_trans + ν_coll > 0, and the row prints the total with its unit.
+        let v = card.viscosity;
+        assert!(v.translational > 0.0 && v.collisional > 0.0);
+        assert_eq!(v.total, v.translational + v.collisional);
+        let row = card.rows.iter().find(|r| r.label == "viscosity ν").unwrap();
+        assert!(row.text.starts_with(&qty(v.total, "m²/s")), "{}", row.text);
+    }
+
+    /// A distribution adds its rows after the one-size rows and leaves the chart's parts alone;
+    /// the bins' edges are equal in log R (1–5 cm in three bins: 5^(1/3) and 5^(2/3) cm).
+    #[test]
+    fn issue_38_the_card_shows_the_smallest_and_largest_bins() {
+        let scene = ice(0.02, true);
+        let plain = ring_card(&scene, &a_ring(), (1e-7, 1.0)).unwrap();
+        let sizes = power_law(3.0, 0.01, 0.05, 3);
+        let card = ring_card_with_sizes(&scene, &a_ring(), Some(&sizes), (1e-7, 1.0)).unwrap();
+        assert_eq!(card.eps_cr_line, plain.eps_cr_line);
+        assert_eq!(card.meeting, plain.meeting);
+        // The sizes' rows come first; the one-size rows follow their header, unchanged.
+        let one = plain
+            .rows
+            .iter()
+            .position(|r| r.label == "viscosity ν")
+            .unwrap();
+        let header = card
+            .rows
+            .iter()
+            .position(|r| r.label == "one size")
+            .unwrap();
+        assert_eq!(card.rows[header + 1..header + 1 + one], plain.rows[..one]);
+        assert_eq!(
+            card.rows[0].label,
+            format!("sizes {}–{}, all grains", qty(0.01, "m"), qty(0.05, "m"))
+        );
+        let rec = card.sizes.as_ref().unwrap();
+        assert_eq!(rec.size_bins.len(), 3);
+        assert_eq!(card.viscosity, rec.viscosity);
+        let text = |label: &str| {
+            card.rows
+                .iter()
+                .find(|r| r.label == label)
+                .map(|r| r.text.clone())
+                .unwrap()
+        };
+        let edge1 = 0.01 * 5f64.powf(1.0 / 3.0);
+        let edge2 = 0.01 * 5f64.powf(2.0 / 3.0);
+        let small = text("smallest grains");
+        assert!(
+            small.starts_with(&format!("{}–{}", qty(0.01, "m"), qty(edge1, "m"))),
+            "{small}"
+        );
+        let large = text("largest grains");
+        assert!(
+            large.starts_with(&format!("{}–{}", qty(edge2, "m"), qty(0.05, "m"))),
+            "{large}"
+        );
+        // Small grains move faster than large ones (partial equipartition, Salo 1992).
+        let (s, l) = (rec.size_bins[0], rec.size_bins[2]);
+        assert!(s.velocity_dispersion > l.velocity_dispersion);
+        assert!(small.contains(&qty(s.velocity_dispersion, "m/s")));
+        assert!(text("viscosity ν (all sizes)").starts_with(&qty(rec.viscosity.total, "m²/s")));
+    }
+
+    #[test]
+    fn issue_38_a_bad_distribution_names_the_field() {
+        let bad = power_law(3.0, 0.05, 0.01, 3);
+        assert!(matches!(
+            ring_card_with_sizes(&ice(0.02, true), &a_ring(), Some(&bad), (1e-7, 1.0)),
+            Err(Error::OutOfRange {
+                field: "radius_max",
+                ..
+            })
+        ));
+    }
+
+    #[test]
+    fn issue_38_the_size_choices_cycle_and_scale_with_the_grains() {
+        let mut c = CardSizeChoice::default();
+        let mut seen = vec![];
+        for _ in 0..3 {
+            seen.push(c);
+            c = c.next();
+        }
+        assert_eq!(seen, CardSizeChoice::ALL);
+        assert_eq!(c, CardSizeChoice::One);
+        assert!(CardSizeChoice::One.sizes(0.02).is_none());
+        match CardSizeChoice::ToTenR.sizes(0.02).map(|s| s.sizes) {
+            Some(SizeDistribution::PowerLaw {
+                q,
+                radius_min,
+                radius_max,
+                bins,
+            }) => assert_eq!((q, radius_min, radius_max, bins), (3.0, 0.02, 0.2, 3)),
+            other => panic!("{other:?}"),
+        }
     }
 }

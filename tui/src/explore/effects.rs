@@ -156,7 +156,13 @@ impl App {
         else {
             return;
         };
-        let key = (self.scene, self.ring_tau, self.tidal_factor, chart);
+        let key = (
+            self.scene,
+            self.ring_tau,
+            self.ring_sizes,
+            self.tidal_factor,
+            chart,
+        );
         if self.ring_key == Some(key) {
             return;
         }
@@ -167,8 +173,13 @@ impl App {
             damping_set_for_radius: None,
         };
         self.ring_card = Some(
-            rime_core::explorer::ring::ring_card(&self.scene, &input, chart)
-                .map_err(|e| e.to_string()),
+            rime_core::explorer::ring::ring_card_with_sizes(
+                &self.scene,
+                &input,
+                self.ring_sizes.sizes(self.scene.grains.radius_1).as_ref(),
+                chart,
+            )
+            .map_err(|e| e.to_string()),
         );
         self.ring_key = Some(key);
     }

@@ -155,6 +155,8 @@ pub enum Action {
     RingThinner,
     /// Ring optical depth ×1.25.
     RingDenser,
+    /// The ring card's grain sizes: one, R–5R, R–10R.
+    RingSizes,
     /// Tidal planet distance ÷1.05.
     TidalNearer,
     /// Tidal planet distance ×1.05.
@@ -327,12 +329,13 @@ pub const KEYMAP: &[Row] = &[
         ],
     },
     Row {
-        keys: "r  (then ( ) < >)",
-        does: "ring card: what this law does to a ring (τ ÷/×1.25)",
+        keys: "r  (then ( ) < > g)",
+        does: "ring card: what this law does to a ring (τ ÷/×1.25, g grain sizes)",
         bindings: &[
             (Key::Char('r'), Action::Ring),
             (Key::Char('('), Action::RingThinner),
             (Key::Char(')'), Action::RingDenser),
+            (Key::Char('g'), Action::RingSizes),
         ],
     },
     Row {

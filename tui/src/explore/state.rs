@@ -44,6 +44,15 @@ pub enum Tone {
     Error,
 }
 
+/// What a ring card was computed for: scene, τ, sizes, planet-distance factor, chart speeds.
+pub type RingKey = (
+    Scene,
+    f64,
+    rime_core::explorer::ring::CardSizeChoice,
+    f64,
+    (f64, f64),
+);
+
 /// The explorer's whole state.
 #[derive(Debug, Clone)]
 pub struct App {
@@ -105,10 +114,12 @@ pub struct App {
     pub ring: bool,
     /// The ring card's optical depth τ.
     pub ring_tau: f64,
+    /// The ring card's grain sizes (`g`): one size or a power law from the scene's radius.
+    pub ring_sizes: rime_core::explorer::ring::CardSizeChoice,
     /// The ring card (or why it could not be computed), for [`App::ring_key`].
     pub ring_card: Option<Result<rime_core::explorer::ring::RingCard, String>>,
-    /// What the ring card was computed for: scene, τ, planet-distance factor, chart speeds.
-    pub ring_key: Option<(Scene, f64, f64, (f64, f64))>,
+    /// What the ring card was computed for: scene, τ, sizes, planet-distance factor, chart speeds.
+    pub ring_key: Option<RingKey>,
     /// Planet distance of the tidal calculator as a multiple of the paper's (Encke division).
     pub tidal_factor: f64,
     /// Path being typed after `o` (None when not opening a scene file).
@@ -249,6 +260,7 @@ impl App {
             ring_tau: RING_TAU,
             ring_card: None,
             ring_key: None,
+            ring_sizes: Default::default(),
             open: None,
             map_shown: false,
             help_scroll: 0,
@@ -367,6 +379,9 @@ impl App {
         }
         if self.ring_tau != RING_TAU {
             lost.push("the ring's τ");
+        }
+        if self.ring_sizes != Default::default() {
+            lost.push("the ring's sizes");
         }
         lost
     }

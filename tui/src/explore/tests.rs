@@ -1036,6 +1036,42 @@ fn the_ring_card_opens_on_r_and_draws_eps_cr_on_the_chart_issue_24() {
     assert!(!text(&screen(&app, 160, 45)).contains("ring: what the law does to it"));
 }
 
+/// Issue 38: `g` cycles the ring card's grain sizes (one, R–5R, R–10R, one); a distribution's rows
+/// show on the screen, start at the scene's radius and end at 5R; leaving asks about them.
+#[test]
+fn issue_38_g_cycles_the_ring_cards_grain_sizes() {
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('g'));
+    assert!(app.ring_sizes == Default::default(), "g without the card");
+    update(&mut app, ch('r'));
+    assert!(matches!(&app.ring_card, Some(Ok(c)) if c.sizes.is_none()));
+    update(&mut app, ch('g'));
+    let card = match app.ring_card.clone() {
+        Some(Ok(card)) => card,
+        other => panic!("no ring card: {other:?}"),
+    };
+    let rec = card.sizes.clone().expect("a distribution");
+    let r = app.scene.grains.radius_1;
+    assert_eq!(rec.size_bins.len(), 3);
+    assert_eq!(rec.size_bins[0].radius_min, r);
+    assert!((rec.size_bins[2].radius_max - 5.0 * r).abs() <= 1e-15 * r);
+    assert_eq!(card.verdict, rec.verdict.words());
+    let s = text(&screen(&app, 160, 60));
+    // Every row's label is on the screen (texts wrap), and the ring-wide c in its words.
+    for row in &card.rows {
+        assert!(s.contains(&row.label), "missing {}\n{s}", row.label);
+    }
+    let c = rime_core::explorer::format::qty(rec.velocity_dispersion, "m/s");
+    assert!(s.contains(&format!("c = {c}")), "{c}\n{s}");
+    assert!(app.view_to_lose().contains(&"the ring's sizes"));
+    update(&mut app, ch('g'));
+    assert!(
+        matches!(&app.ring_card, Some(Ok(c)) if c.sizes.as_ref().is_some_and(|s| s.size_bins[2].radius_max > 9.9 * r))
+    );
+    update(&mut app, ch('g'));
+    assert!(matches!(&app.ring_card, Some(Ok(c)) if c.sizes.is_none()));
+}
+
 /// Issue 22: the `v` panel is computed for the scene's A (it kept the A it was opened with): at
 /// A = 0 the full model sticks exactly up to Eq. (15)'s g_s, evaluated here from the closed form;
 /// at A = 100 µs damping raises the threshold; the titles say which A each table uses.

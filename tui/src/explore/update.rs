@@ -404,6 +404,23 @@ impl App {
             (Action::RingThinner | Action::RingDenser, _) => {
                 self.info("( ) change the ring card's optical depth: press r first");
             }
+            (Action::RingSizes, _) if self.ring => {
+                self.ring_sizes = self.ring_sizes.next();
+                self.info(format!(
+                    "ring: grain sizes {}",
+                    match self.ring_sizes.sizes(self.scene.grains.radius_1) {
+                        Some(_) => format!(
+                            "{} (dN/dR ∝ R^−3 in {} bins, A the same for every pair)",
+                            self.ring_sizes.label(),
+                            rime_core::explorer::ring::CardSizeChoice::BINS
+                        ),
+                        None => "one size (the scene's grains)".to_string(),
+                    }
+                ));
+            }
+            (Action::RingSizes, _) => {
+                self.info("g changes the ring card's grain sizes: press r first");
+            }
             (Action::TidalNearer | Action::TidalFarther, _) if self.tidal || self.ring => {
                 self.tidal_distance(action)
             }
@@ -917,7 +934,7 @@ impl App {
     pub(crate) fn toggle_ring(&mut self) {
         self.ring = !self.ring;
         self.info(if self.ring {
-            "ring card: ε_cr(τ) on the ε_N chart · ( ) optical depth · < > planet distance · r closes"
+            "ring card: ε_cr(τ) on the ε_N chart · ( ) optical depth · < > planet distance · g grain sizes · r closes"
         } else {
             "ring card closed"
         });

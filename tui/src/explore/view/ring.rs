@@ -55,7 +55,7 @@ fn draw(frame: &mut Frame, area: Rect, text: Text<'static>) {
         frame,
         area,
         "ring: what the law does to it",
-        "( ) τ · < > planet distance · r closes",
+        "( ) τ · < > planet distance · g sizes · r closes",
     );
     let text = fit_rows(text, inner.width, inner.height);
     frame.render_widget(Paragraph::new(text).wrap(Wrap { trim: false }), inner);
