@@ -376,6 +376,15 @@ def _spins(spins, n):
     return np.ascontiguousarray(w)
 
 
+def _still_attached(sim, link):
+    """Whether ``link`` is ``sim``'s own attachment, not a freed simulation's at the same address:
+    REBOUND still calls the handler's resolve or heartbeat (a new simulation starts without them)."""
+    resolve = ctypes.cast(sim._collision_resolve, ctypes.c_void_p).value or 0
+    beat = ctypes.cast(sim._heartbeat, ctypes.c_void_p).value or 0
+    return resolve == link.handler.function_address or (
+        link.heartbeat is not None and beat == link.handler.heartbeat_address)
+
+
 def _edges(edges):
     """Histogram edges as a list of floats (checked by the native side)."""
     try:
@@ -454,6 +463,11 @@ def attach(sim, scene, *, length_unit, time_unit, mass_unit, density="particles"
         raise ValueError(f"cache_size: expected a whole number of pairs >= 2 (got {cache_size!r})")
     address = ctypes.addressof(sim)
     previous = _ATTACHED.get(address)
+    if previous is not None and not _still_attached(sim, previous):
+        # A simulation freed before left its registration at this address (issue 38: its spins
+        # went to the next simulation allocated there): not this simulation's.
+        del _ATTACHED[address]
+        previous = None
     if spins is not None:
         if not track_spins:
             raise ValueError("spins: given with track_spins=False")

@@ -799,3 +799,20 @@ def test_issue_38_patch_flux_per_step_agrees_with_a_brute_force_count_across_gho
             checked += 1
     assert checked >= 5, checked
     assert crossing >= 1, "no collision across the x edge in this patch: choose another seed"
+
+
+def test_issue_38_a_new_simulation_at_a_freed_ones_address_starts_from_rest():
+    """A simulation freed while attached leaves its registration under its address; a new one
+    allocated there must not inherit its spins (the shearing-sheet runs of issue 38 did, so runs of
+    a distribution depended on memory reuse). Reuse is simulated: B's address given A's link."""
+    a = pair_sim([-0.021, 0, 0], [0.005, 0, 0], [0.021, 0, 0], [-0.005, 0, 0])
+    spins = np.array([[1.0, 2.0, 3.0], [-1.0, 0.5, 0.25]])
+    att_a = rime.rebound.attach(a, rime.Scene(), length_unit=1, time_unit=1, mass_unit=1, spins=spins)
+    b = pair_sim([-0.021, 0, 0], [0.005, 0, 0], [0.021, 0, 0], [-0.005, 0, 0])
+    rime.rebound._ATTACHED[ctypes.addressof(b)] = rime.rebound._ATTACHED[ctypes.addressof(a)]
+    att_b = rime.rebound.attach(b, rime.Scene(), length_unit=1, time_unit=1, mass_unit=1)
+    assert np.array_equal(att_b.spins, np.zeros((2, 3)))
+    # A's handler is untouched: still registered, its spins kept, its collisions resolved.
+    assert np.array_equal(att_a.spins, spins)
+    a.integrate(1.0)
+    assert att_a.counts()["bounces"] == 1 and att_a.error is None
