@@ -207,6 +207,10 @@ def run_sizes(pred, radii_spec, q, tau, n, orbits, seed, per_orbit=16):
     samples = max(8, int(per_orbit * orbits))
     half = samples // 2
     per_bin_c, per_bin_h, ring_c, ring_h, nu_t = [], [], [], [], []
+    stress, energy, times = [], [], []
+    masses = np.zeros(n)
+    sim.serialize_particle_data(m=masses)
+    inertia = 0.4 * masses * placed_r**2  # the handler's spins: solid spheres
     deepest, overlapped, checked = 0.0, 0, 0
     sums = placed_r[:, None] + placed_r[None, :]
     xyz, v = np.zeros(3 * n), np.zeros(3 * n)
@@ -226,6 +230,14 @@ def run_sizes(pred, radii_spec, q, tau, n, orbits, seed, per_orbit=16):
         ring_c.append(math.sqrt(np.mean(e)))
         ring_h.append(float(np.sqrt(np.mean(z**2))))
         nu_t.append(att.translational_viscosity())
+        # The energy of the peculiar motion (Hill's equations: d/dt of the horizontal part is
+        # (3/2)Ω Σ m u v′; the vertical part is conserved between collisions), spins included.
+        vp = u[:, 1] + 1.5 * OMEGA * p[:, 0]
+        stress.append(float(np.sum(masses * u[:, 0] * vp)))
+        energy.append(float(0.5 * np.sum(masses * (u[:, 0]**2 + vp**2 + u[:, 2]**2
+                                                   + (OMEGA * p[:, 2])**2))
+                            + 0.5 * np.sum(inertia * np.sum(att.spins**2, axis=1))))
+        times.append(sim.t)
         if k % 4 == 0:
             depth = 1 - np.linalg.norm(sheared_separations(p, box, sim.t), axis=2) / sums
             np.fill_diagonal(depth, 0.0)
@@ -236,6 +248,15 @@ def run_sizes(pred, radii_spec, q, tau, n, orbits, seed, per_orbit=16):
     cost = (time.perf_counter() - start) / orbits
     counters = att.counters()
     assert att.error is None, att.error
+    # The energy balance over the counters' window (the last half): the change of the peculiar
+    # energy = the translational heating (3/2)Ω ∫Σ m u v′ dt (trapezoids over the samples) + the
+    # collisional heating (3/2)Ω F − the collisions' loss. Exact but for the sampled integral: a
+    # check of ν_trans and ν_coll as measured, independent of any kinetic theory.
+    w = slice(half - 1, samples)
+    heat_trans = 1.5 * OMEGA * float(np.trapezoid(stress[w], times[w]))
+    heat_coll = 1.5 * OMEGA * counters["angular_momentum_flux"]
+    change = energy[samples - 1] - energy[half - 1]
+    residual = change - (heat_trans + heat_coll - counters["energy_loss"])
     return {
         "c_bins": np.nanmean(np.array(per_bin_c[half:]), axis=0),
         "h_bins": np.nanmean(np.array(per_bin_h[half:]), axis=0),
@@ -245,6 +266,7 @@ def run_sizes(pred, radii_spec, q, tau, n, orbits, seed, per_orbit=16):
         "deepest_hit": counters["overlaps"]["max_depth"],
         "deepest": deepest, "overlapped": overlapped, "checked": checked, "cost": cost,
         "grains": np.bincount(which, minlength=len(bins)),
+        "energy_residual": residual / counters["energy_loss"],
     }
 
 
@@ -316,6 +338,10 @@ def main_sizes(a, n, orbits):
               f"with one > 1 %: {overlapped}/{checked}; handler: {deep}/{hits} collisions of the "
               f"last half found deeper than 10 %, deepest {max(r['deepest_hit'] for r in results):.3f}"
               f" | CPU {cost:.2f} s/orbit")
+        balance = [r["energy_residual"] for r in results]
+        print(f"{name} | energy balance | heating by the measured ν_trans and ν_coll − the "
+              f"collisions' loss − the change of the peculiar energy, over the loss: "
+              f"{', '.join(f'{b:+.2%}' for b in balance)} (seeds)")
         sys.stdout.flush()
     return 1 if failures else 0
 

@@ -244,6 +244,8 @@ class Attachment:
           ``above``; ``None`` without ``speed_edges``;
         * ``angular_momentum_flux``: Σ m₁ Δv₁,y (x₁ − x₂) over the collisions (mass × length² /
           time; for a merge, Δv₁ is p₁'s change to the pair's common velocity);
+        * ``energy_loss``: the kinetic energy (translation + spin) the collisions took (mass ×
+          length² / time², each pair's before minus after in one frame);
         * ``overlaps``: ``threshold`` (fraction of r₁ + r₂), ``deeper`` (collisions found deeper),
           ``max_depth``, ``sum_depth`` of 1 − d/(r₁ + r₂) when REBOUND found the pair;
         * ``collisional_viscosity_si`` [m²/s]: flux / (duration · (3/2) Ω · Σ m) with Ω =

@@ -46,6 +46,8 @@ pub struct Hit {
     /// m₁ Δv₁,y (x₁ − x₂): the y-momentum p₁ received from p₂ times the x-distance it crossed
     /// (x₁ with the ghost-box shift; the same as m₂ Δv₂,y (x₂ − x₁)).
     pub transfer: f64,
+    /// The kinetic energy (translation + spin) the pair lost.
+    pub energy_loss: f64,
 }
 
 /// What happened to the pair.
@@ -74,6 +76,7 @@ pub struct Counters {
     below: u64,
     above: u64,
     transfer: f64,
+    energy_loss: f64,
     /// Overlaps deeper than this fraction of r₁ + r₂ are counted.
     depth_threshold: f64,
     deeper: u64,
@@ -97,6 +100,7 @@ impl Counters {
             below: 0,
             above: 0,
             transfer: 0.0,
+            energy_loss: 0.0,
             depth_threshold,
             deeper: 0,
             max_depth: 0.0,
@@ -137,6 +141,7 @@ impl Counters {
             }
         }
         self.transfer += hit.transfer;
+        self.energy_loss += hit.energy_loss;
         if hit.depth > self.depth_threshold {
             self.deeper += 1;
         }
@@ -166,6 +171,7 @@ impl Counters {
             d.set_item("speed_histogram", h)?;
         }
         d.set_item("angular_momentum_flux", self.transfer)?;
+        d.set_item("energy_loss", self.energy_loss)?;
         let o = PyDict::new(py);
         o.set_item("threshold", self.depth_threshold)?;
         o.set_item("deeper", self.deeper)?;

@@ -516,6 +516,7 @@ impl State {
             tangential_speed: g_t.norm(),
             depth: 1.0 - scale,
             transfer: 0.0,
+            energy_loss: 0.0,
         };
         let contact = &pair.contact;
         let (eps_n, eps_t) = if contact.friction.is_some() && gt_si > 0.0 {
@@ -537,7 +538,8 @@ impl State {
             if merge {
                 // p1 takes the merged grain; p2 is removed (REBOUND shifts the particles after it).
                 let (dx, dv) = ([-gb[0], -gb[1], -gb[2]], [-gb[3], -gb[4], -gb[5]]);
-                self.merge(spins.as_deref_mut(), &p1, &p2, dx, dv, w1, w2)
+                hit.energy_loss = self
+                    .merge(spins.as_deref_mut(), &p1, &p2, dx, dv, w1, w2)
                     .map_err(field)?;
                 self.merges.fetch_add(1, Ordering::Relaxed);
                 // p1's share of the common velocity: the y-momentum it received from p2.
@@ -559,7 +561,9 @@ impl State {
         // SAFETY: offset from rebound's ctypes class of struct reb_simulation.
         let v_min = unsafe { *(sim.add(self.layout.minimum_collision_velocity) as *const f64) };
         let eps = rime_core::kinematics::restitution_with_floor(eps_n, g_n, v_min);
+        let energy_before = gi.kinetic_energy() + gj.kinetic_energy();
         collide(&mut gi, &mut gj, &n, eps, eps_t).map_err(field)?;
+        hit.energy_loss = energy_before - gi.kinetic_energy() - gj.kinetic_energy();
         // The y-momentum p1 received, carried across the x-distance of the pair (ghost frame).
         hit.transfer = p1.m * (gi.velocity[1] - v1[1]) * d[0];
         self.tally(outcome, &hit);
@@ -586,7 +590,7 @@ impl State {
         dv: [f64; 3],
         w_keep: Vector3<f64>,
         w_other: Vector3<f64>,
-    ) -> rime_core::Result<()> {
+    ) -> rime_core::Result<f64> {
         let body = |p: &Particle, dx: [f64; 3], dv: [f64; 3], w| {
             Body::solid_sphere(
                 p.m,
@@ -596,10 +600,18 @@ impl State {
                 w,
             )
         };
-        let one = merge(
-            &body(keep, [0.0; 3], [0.0; 3], w_keep),
-            &body(other, dx, dv, w_other),
-        )?;
+        let (a, b) = (
+            body(keep, [0.0; 3], [0.0; 3], w_keep),
+            body(other, dx, dv, w_other),
+        );
+        let one = merge(&a, &b)?;
+        // Kinetic energy (translation + spin) before and after, in one frame.
+        let energy = |x: &Body| {
+            0.5 * x.mass
+                * (x.velocity.norm_squared()
+                    + x.inertia_factor * x.radius * x.radius * x.spin.norm_squared())
+        };
+        let lost = energy(&a) + energy(&b) - energy(&one);
         self.store(
             spins.as_deref_mut(),
             keep,
@@ -615,7 +627,7 @@ impl State {
         {
             s.remove(other.index);
         }
-        Ok(())
+        Ok(lost)
     }
 }
 

@@ -725,6 +725,10 @@ def test_issue_38_two_body_flux_and_speeds_agree_with_a_brute_force_count():
     assert got["overlaps"]["max_depth"] == pytest.approx(depth, rel=1e-12, abs=1e-15)
     assert got["overlaps"]["deeper"] == 1 and got["overlaps"]["threshold"] == 0.0
     assert got["t_end"] == sim.t and got["t_start"] == 0.0 and got["duration"] == sim.t
+    # The kinetic energy lost, translation and spin (the spins start at 0; I = 2/5 m r²).
+    energy = [0.5 * MASS * (s[1] @ s[1] + 0.4 * RADIUS**2 * (s[2] @ s[2])) for s in before + after]
+    assert got["energy_loss"] == pytest.approx(energy[0] + energy[1] - energy[2] - energy[3], rel=1e-9)
+    assert got["energy_loss"] > 0
     # Not a shearing sheet: no viscosity from it.
     assert got["collisional_viscosity_si"] is None
     # Reset: a new window from now, the same edges.
@@ -755,6 +759,16 @@ def test_issue_38_merge_flux_is_p1s_share_of_the_common_velocity():
     v_common = (m1 * vs[0][1] + m2 * vs[1][1]) / (m1 + m2)
     want = m1 * (v_common - vs[0][1]) * (x1_end[0] - x2_end[0])
     got = att.counters()
+    # The energy lost: before (both grains, their spins) minus the merged grain's, from momentum
+    # and angular momentum (the merged spin read back from the handler).
+    q = sim.particles[0]
+    w_after = att.spins[0]
+    v_after = np.array(q.vxyz)
+    assert np.allclose(v_after, (m1 * vs[0] + m2 * vs[1]) / (m1 + m2), rtol=1e-12, atol=1e-20)
+    after = 0.5 * q.m * (v_after @ v_after + 0.4 * q.r**2 * (w_after @ w_after))
+    spins0 = np.array([[0.001, -0.002, 0.0005], [-0.001, 0.0005, 0.002]])
+    before_e = sum(0.5 * m * (v @ v + 0.4 * RADIUS**2 * (w @ w)) for m, v, w in zip((m1, m2), vs, spins0))
+    assert got["energy_loss"] == pytest.approx(before_e - after, rel=1e-9)
     assert got["merges"] == 1 and got["collisions"] == 1 and want != 0
     assert got["angular_momentum_flux"] == pytest.approx(want, rel=1e-9)
 
