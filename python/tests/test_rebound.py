@@ -380,6 +380,15 @@ def test_a_speed_beyond_the_models_stops_the_integration_with_a_message():
     (dict(sticking="glue"), "sticking"),
     (dict(accuracy="best"), "accuracy"),
     (dict(spins=np.zeros((3, 3))), "spins"),
+    # Issue 38: the counters' settings.
+    (dict(speed_edges=[0.01]), "speed_edges"),
+    (dict(speed_edges=[0.02, 0.01]), "speed_edges"),
+    (dict(speed_edges=[-1.0, 1.0]), "speed_edges"),
+    (dict(speed_edges=[[0.0, 1.0]]), "speed_edges"),
+    (dict(speed_edges="fast"), "speed_edges"),
+    (dict(overlap_depth=1.5), "overlap_depth"),
+    (dict(overlap_depth=float("nan")), "overlap_depth"),
+    (dict(overlap_depth="deep"), "overlap_depth"),
 ])
 def test_attach_bad_input_names_the_field(kwargs, field):
     sim = pair_sim([-0.021, 0, 0], [0.005, 0, 0], [0.021, 0, 0], [-0.005, 0, 0])
@@ -739,6 +748,10 @@ def test_issue_38_two_body_flux_and_speeds_agree_with_a_brute_force_count():
     assert fresh["speed_histogram"]["edges"] == [0.0, 0.005, 0.01, 0.02]
     att.reset_counters(speed_edges=[])
     assert att.counters()["speed_histogram"] is None
+    with pytest.raises(ValueError, match="^speed_edges: edges must increase"):
+        att.reset_counters(speed_edges=[1.0, 1.0])
+    with pytest.raises(ValueError, match="^reset: expected True or False"):
+        att.counters(reset=1)
     # The cumulative counts are not windowed.
     assert att.counts()["bounces"] == 1
 
