@@ -843,3 +843,28 @@ def test_issue_38_a_new_simulation_at_a_freed_ones_address_starts_from_rest():
     assert np.array_equal(att_a.spins, spins)
     a.integrate(1.0)
     assert att_a.counts()["bounces"] == 1 and att_a.error is None
+
+
+def test_issue_38_viscosities_by_hand_in_cm_grams_seconds():
+    """ν_coll = F / (T (3/2) Ω Σm) and ν_trans = Σ m u (v_y + 3/2 Ω x) / ((3/2) Ω Σm), by hand in
+    code units (cm, g, s), then × 1e-4 to m²/s. Ω is only read (a leapfrog pair, not a sheet)."""
+    omega = 2e-3  # per code second
+    r, m = 2.0, MASS * 1e3  # cm, g
+    sim = pair_sim([-3.6, 1.2, 0.4], [1.0, 0.2, -0.1], [0.0, 0.0, 0.0], [-0.1, -0.3, 0.0],
+                   mass=m, radius=r, dt=1e-3)
+    sim.OMEGA = omega
+    att = rime.rebound.attach(sim, rime.Scene.preset("ice"), length_unit="cm", time_unit="s", mass_unit="g")
+    before, after = step_to_collision(sim, att)
+    sim.integrate(sim.t + 0.25)  # the window goes on after the hit
+    c = att.counters()
+    flux = m * (after[0][1][1] - before[0][1][1]) * (after[0][0][0] - after[1][0][0])
+    assert c["angular_momentum_flux"] == pytest.approx(flux, rel=1e-12)
+    want = flux / (sim.t * 1.5 * omega * 2 * m) * 1e-4
+    assert c["collisional_viscosity_si"] == pytest.approx(want, rel=1e-12)
+    p = [(np.array(q.xyz), np.array(q.vxyz)) for q in sim.particles]
+    stress = sum(m * v[0] * (v[1] + 1.5 * omega * x[0]) for x, v in p)
+    assert att.translational_viscosity() == pytest.approx(stress / (1.5 * omega * 2 * m) * 1e-4, rel=1e-12)
+    sim.OMEGA = 0.0
+    with pytest.raises(ValueError, match="^sim.OMEGA"):
+        att.translational_viscosity()
+    assert att.counters()["collisional_viscosity_si"] is None
