@@ -46,6 +46,18 @@ simulation would otherwise restart its spins at 0 silently).
 
 The contact constants of each pair of (radius, mass) are cached, at most ``cache_size`` pairs
 (the least recently used go first); ``Attachment.cache_info()`` reports entries, hits and misses.
+
+Counters over a window (issue 38; docs/physics.md#handler-counters)
+    ``Attachment.counters(reset=False)`` reports, since the window began (``attach`` or the last
+    reset), the collisions (bounces, stays, merges), the normal and tangential impact speeds
+    (count, sum, sum of squares, max; a histogram of the normal speed with ``speed_edges=``), the
+    overlaps REBOUND found them at (deeper than ``overlap_depth`` of r₁ + r₂, the deepest), and
+    the collisional momentum transfer Σ m₁ Δv₁,y (x₁ − x₂) over the collisions (p₁'s change of
+    y-velocity, x₁ − x₂ the radial distance across the pair, ghost-box shift included; positive
+    when y-momentum flows toward +x). In a shearing sheet (``sim.OMEGA`` set) it gives
+    ν_collisional = transfer / (duration · (3/2) Ω · Σ m), in m²/s; ``translational_viscosity()``
+    gives ν_translational = Σ m u (v_y + (3/2) Ω x) / ((3/2) Ω Σ m) from the particles now. Per
+    orbit: ``sim.integrate(t + orbit)`` then ``att.counters(reset=True)``, in a loop.
 """
 
 import ctypes
@@ -199,7 +211,8 @@ class Attachment:
     same simulation.
     """
 
-    def __init__(self, sim, link, track_spins, description):
+    def __init__(self, sim, link, track_spins, description, units):
+        self._units = units
         self._sim = sim
         self._link = link
         self._handler = link.handler
@@ -218,6 +231,66 @@ class Attachment:
     def counts(self):
         """How many collisions bounced, merged, or stuck and stayed apart."""
         return self._handler.counts()
+
+    def counters(self, reset=False):
+        """The counters of the present window (code units unless named ``_si``); ``reset=True``
+        then starts a new window at ``sim.t`` (same histogram edges). Keys:
+
+        * ``t_start``, ``t_end``, ``duration``: the window (code time);
+        * ``collisions`` = ``bounces`` + ``stays`` + ``merges``;
+        * ``normal_speed``, ``tangential_speed``: ``count``, ``sum``, ``sum_squares``, ``max`` of
+          g_N and |g_T| (Eq. (2), at the contact point, spins included);
+        * ``speed_histogram``: ``edges``, ``counts`` (edges[k] <= g_N < edges[k+1]), ``below``,
+          ``above``; ``None`` without ``speed_edges``;
+        * ``angular_momentum_flux``: Σ m₁ Δv₁,y (x₁ − x₂) over the collisions (mass × length² /
+          time; for a merge, Δv₁ is p₁'s change to the pair's common velocity);
+        * ``energy_loss``: the kinetic energy (translation + spin) the collisions took (mass ×
+          length² / time², each pair's before minus after in one frame);
+        * ``overlaps``: ``threshold`` (fraction of r₁ + r₂), ``deeper`` (collisions found deeper),
+          ``max_depth``, ``sum_depth`` of 1 − d/(r₁ + r₂) when REBOUND found the pair;
+        * ``collisional_viscosity_si`` [m²/s]: flux / (duration · (3/2) Ω · Σ m) with Ω =
+          ``sim.OMEGA`` and the particles' mass now; ``None`` when ``sim.OMEGA`` is 0 or the
+          window is empty.
+        """
+        if not isinstance(reset, bool):
+            raise ValueError(f"reset: expected True or False (got {reset!r})")
+        c = self._handler.counters()
+        c["duration"] = c["t_end"] - c["t_start"]
+        omega, mass = self._sim.OMEGA, self._total_mass()
+        if omega > 0 and c["duration"] > 0 and mass > 0:
+            nu = c["angular_momentum_flux"] / (c["duration"] * 1.5 * omega * mass)
+            c["collisional_viscosity_si"] = nu * self._units[0] ** 2 / self._units[1]
+        else:
+            c["collisional_viscosity_si"] = None
+        if reset:
+            self._handler.reset_counters()
+        return c
+
+    def reset_counters(self, speed_edges=None):
+        """Starts a new window of the counters at ``sim.t``; ``speed_edges`` (increasing normal
+        speeds, code units; ``[]`` for none) replace the histogram's when given."""
+        self._handler.reset_counters(None if speed_edges is None else _edges(speed_edges))
+
+    def translational_viscosity(self):
+        """ν_translational [m²/s] of the particles now: Σ m u (v_y + (3/2) Ω x) / ((3/2) Ω Σ m)
+        (u = v_x; the velocity relative to the shear flow v_y = −(3/2) Ω x of REBOUND's
+        shearing sheet, Ω = ``sim.OMEGA``). Average it over time as the counters average the
+        collisional part."""
+        omega = self._sim.OMEGA
+        if not omega > 0:
+            raise ValueError(f"sim.OMEGA: a shearing sheet needs Ω > 0 (got {omega!r})")
+        n = self._sim.N
+        m, xyz, v = np.zeros(n), np.zeros(3 * n), np.zeros(3 * n)
+        self._sim.serialize_particle_data(m=m, xyz=xyz, vxvyvz=v)
+        xyz, v = xyz.reshape(n, 3), v.reshape(n, 3)
+        stress = float(np.sum(m * v[:, 0] * (v[:, 1] + 1.5 * omega * xyz[:, 0])))
+        nu = stress / (1.5 * omega * float(np.sum(m)))
+        return nu * self._units[0] ** 2 / self._units[1]
+
+    def _total_mass(self):
+        m = np.zeros(self._sim.N)
+        self._sim.serialize_particle_data(m=m)
+        return float(np.sum(m))
 
     @property
     def cached_pairs(self):
@@ -305,6 +378,26 @@ def _spins(spins, n):
     return np.ascontiguousarray(w)
 
 
+def _still_attached(sim, link):
+    """Whether ``link`` is ``sim``'s own attachment, not a freed simulation's at the same address:
+    REBOUND still calls the handler's resolve or heartbeat (a new simulation starts without them)."""
+    resolve = ctypes.cast(sim._collision_resolve, ctypes.c_void_p).value or 0
+    beat = ctypes.cast(sim._heartbeat, ctypes.c_void_p).value or 0
+    return resolve == link.handler.function_address or (
+        link.heartbeat is not None and beat == link.handler.heartbeat_address)
+
+
+def _edges(edges):
+    """Histogram edges as a list of floats (checked by the native side)."""
+    try:
+        e = np.asarray(edges, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"speed_edges: expected increasing speeds (got {type(edges).__name__})") from None
+    if e.ndim != 1:
+        raise ValueError(f"speed_edges: expected a list of speeds (got shape {e.shape})")
+    return e.tolist()
+
+
 def _time_unit(sim, time_unit, omega):
     """The code time unit in seconds: ``time_unit``, or one orbit with ``omega``; ``sim.OMEGA``,
     when set, must be Ω in code units."""
@@ -327,7 +420,7 @@ def _time_unit(sim, time_unit, omega):
 
 def attach(sim, scene, *, length_unit, time_unit, mass_unit, density="particles",
            sticking="merge", track_spins=True, accuracy="precise", spins=None, omega=None,
-           cache_size=CACHE_SIZE):
+           cache_size=CACHE_SIZE, speed_edges=None, overlap_depth=0.1):
     """Sets ``sim.collision_resolve`` to rime's handler for ``scene``; returns the ``Attachment``.
 
     ``length_unit``, ``time_unit``, ``mass_unit``: one code unit in SI (a number) or as a string
@@ -337,7 +430,10 @@ def attach(sim, scene, *, length_unit, time_unit, mass_unit, density="particles"
     documentation); ``accuracy``: the level of ε_N and ε_T (default ``"precise"``); ``spins``:
     initial spins, an (N, 3) array [rad per code time] or one number for all (required past
     t = 0: ``load_spins(filename, sim)`` for a reloaded simulation, 0 to start from rest);
-    ``cache_size``: at most this many pairs' contact constants are kept.
+    ``cache_size``: at most this many pairs' contact constants are kept; ``speed_edges``:
+    increasing normal impact speeds (code units) for the counters' histogram; ``overlap_depth``:
+    the counters count collisions found deeper than this fraction of r₁ + r₂ (see
+    ``Attachment.counters``).
 
     >>> import rebound, rime_grains as rime
     >>> sim = rebound.Simulation()
@@ -362,10 +458,18 @@ def attach(sim, scene, *, length_unit, time_unit, mass_unit, density="particles"
              "mass_unit": unit("mass_unit", mass_unit)}
     if not isinstance(track_spins, bool):
         raise ValueError(f"track_spins: expected True or False (got {track_spins!r})")
+    if isinstance(overlap_depth, bool) or not isinstance(overlap_depth, (int, float)):
+        raise ValueError(f"overlap_depth: expected a fraction of r1 + r2 in [0, 1) (got {overlap_depth!r})")
+    speed_edges = [] if speed_edges is None else _edges(speed_edges)
     if not isinstance(cache_size, int) or isinstance(cache_size, bool) or cache_size < 2:
         raise ValueError(f"cache_size: expected a whole number of pairs >= 2 (got {cache_size!r})")
     address = ctypes.addressof(sim)
     previous = _ATTACHED.get(address)
+    if previous is not None and not _still_attached(sim, previous):
+        # A simulation freed before left its registration at this address (issue 38: its spins
+        # went to the next simulation allocated there): not this simulation's.
+        del _ATTACHED[address]
+        previous = None
     if spins is not None:
         if not track_spins:
             raise ValueError("spins: given with track_spins=False")
@@ -386,7 +490,8 @@ def attach(sim, scene, *, length_unit, time_unit, mass_unit, density="particles"
     handler = _native._attach(address, _layout(rebound), scene, units["length_unit"],
                               units["time_unit"], units["mass_unit"], density, sticking,
                               track_spins, accuracy, cache_size,
-                              ctypes.cast(before, ctypes.c_void_p).value or 0)
+                              ctypes.cast(before, ctypes.c_void_p).value or 0,
+                              speed_edges, float(overlap_depth))
     link = _Link(handler, before)
     g = scene.get("grains.density")
     description = (
@@ -396,7 +501,8 @@ def attach(sim, scene, *, length_unit, time_unit, mass_unit, density="particles"
         + f"; sticking={sticking!r}, accuracy={accuracy!r}, units: {units['length_unit']:g} m, "
         f"{units['time_unit']:g} s, {units['mass_unit']:g} kg; spins "
         + ("tracked (rime's own table)" if track_spins else "not tracked (0)"))
-    attachment = Attachment(sim, link, track_spins, description)
+    attachment = Attachment(sim, link, track_spins, description,
+                            (units["length_unit"], units["time_unit"], units["mass_unit"]))
     if track_spins:
         if spins is None and previous is not None and previous.handler is not None:
             try:

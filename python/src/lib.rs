@@ -5,6 +5,7 @@
 //! the GIL while it computes, and raises `ValueError` naming the offending field (no panic reaches
 //! Python: the crate denies `unwrap`/`expect`/`panic` like the rest of the workspace).
 
+mod counters;
 mod rebound;
 mod ring;
 

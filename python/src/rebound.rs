@@ -20,6 +20,7 @@
 // come from rebound's ctypes classes and are checked at attach time against the particle size.
 #![allow(unsafe_code)]
 
+use crate::counters::{Counters, Hit, Outcome, check_edges};
 use crate::{core_error, value_error};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -208,6 +209,8 @@ struct State {
     bounces: AtomicU64,
     merges: AtomicU64,
     stays: AtomicU64,
+    /// The counters of the present window (`Attachment.counters`).
+    counters: Mutex<Counters>,
 }
 
 /// The simulations with a handler attached: (address, state). A handful at most, so a scan.
@@ -396,6 +399,13 @@ impl State {
         unsafe { *(sim.add(self.layout.status) as *mut c_int) = STATUS_GENERIC_ERROR };
     }
 
+    /// Adds one collision to the window's counters.
+    fn tally(&self, outcome: Outcome, hit: &Hit) {
+        if let Ok(mut c) = self.counters.lock() {
+            c.add(outcome, hit);
+        }
+    }
+
     /// The contact constants of a pair (SI radii and masses), from the cache or computed once.
     fn pair(&self, r1: f64, m1: f64, r2: f64, m2: f64) -> rime_core::Result<Pair> {
         // Symmetric key: the pair sorted by (radius, mass); the scene's density ignores masses.
@@ -501,6 +511,13 @@ impl State {
             )
         };
         let pair = self.pair(p1.r, p1.m, p2.r, p2.m).map_err(field)?;
+        let mut hit = Hit {
+            normal_speed: -g_n,
+            tangential_speed: g_t.norm(),
+            depth: 1.0 - scale,
+            transfer: 0.0,
+            energy_loss: 0.0,
+        };
         let contact = &pair.contact;
         let (eps_n, eps_t) = if contact.friction.is_some() && gt_si > 0.0 {
             let t = contact
@@ -521,20 +538,35 @@ impl State {
             if merge {
                 // p1 takes the merged grain; p2 is removed (REBOUND shifts the particles after it).
                 let (dx, dv) = ([-gb[0], -gb[1], -gb[2]], [-gb[3], -gb[4], -gb[5]]);
-                self.merge(spins.as_deref_mut(), &p1, &p2, dx, dv, w1, w2)
+                hit.energy_loss = self
+                    .merge(spins.as_deref_mut(), &p1, &p2, dx, dv, w1, w2)
                     .map_err(field)?;
                 self.merges.fetch_add(1, Ordering::Relaxed);
+                // p1's share of the common velocity: the y-momentum it received from p2.
+                let v_common = (v1[1] * p1.m + v2[1] * p2.m) / (p1.m + p2.m);
+                hit.transfer = p1.m * (v_common - v1[1]) * d[0];
+                self.tally(Outcome::Merge, &hit);
                 return Ok(REMOVE_P2);
             }
             self.stays.fetch_add(1, Ordering::Relaxed);
         } else {
             self.bounces.fetch_add(1, Ordering::Relaxed);
         }
+        let outcome = if eps_n == 0.0 {
+            Outcome::Stay
+        } else {
+            Outcome::Bounce
+        };
         // REBOUND's floor on the separation speed (sim.minimum_collision_velocity, code units).
         // SAFETY: offset from rebound's ctypes class of struct reb_simulation.
         let v_min = unsafe { *(sim.add(self.layout.minimum_collision_velocity) as *const f64) };
         let eps = rime_core::kinematics::restitution_with_floor(eps_n, g_n, v_min);
+        let energy_before = gi.kinetic_energy() + gj.kinetic_energy();
         collide(&mut gi, &mut gj, &n, eps, eps_t).map_err(field)?;
+        hit.energy_loss = energy_before - gi.kinetic_energy() - gj.kinetic_energy();
+        // The y-momentum p1 received, carried across the x-distance of the pair (ghost frame).
+        hit.transfer = p1.m * (gi.velocity[1] - v1[1]) * d[0];
+        self.tally(outcome, &hit);
         let v1_new = [
             gi.velocity[0] - gb[3],
             gi.velocity[1] - gb[4],
@@ -558,7 +590,7 @@ impl State {
         dv: [f64; 3],
         w_keep: Vector3<f64>,
         w_other: Vector3<f64>,
-    ) -> rime_core::Result<()> {
+    ) -> rime_core::Result<f64> {
         let body = |p: &Particle, dx: [f64; 3], dv: [f64; 3], w| {
             Body::solid_sphere(
                 p.m,
@@ -568,10 +600,18 @@ impl State {
                 w,
             )
         };
-        let one = merge(
-            &body(keep, [0.0; 3], [0.0; 3], w_keep),
-            &body(other, dx, dv, w_other),
-        )?;
+        let (a, b) = (
+            body(keep, [0.0; 3], [0.0; 3], w_keep),
+            body(other, dx, dv, w_other),
+        );
+        let one = merge(&a, &b)?;
+        // Kinetic energy (translation + spin) before and after, in one frame.
+        let energy = |x: &Body| {
+            0.5 * x.mass
+                * (x.velocity.norm_squared()
+                    + x.inertia_factor * x.radius * x.radius * x.spin.norm_squared())
+        };
+        let lost = energy(&a) + energy(&b) - energy(&one);
         self.store(
             spins.as_deref_mut(),
             keep,
@@ -587,7 +627,7 @@ impl State {
         {
             s.remove(other.index);
         }
-        Ok(())
+        Ok(lost)
     }
 }
 
@@ -690,6 +730,39 @@ impl Handler {
         Ok(d)
     }
 
+    /// The counters of the present window (code units) up to the simulation's present time.
+    fn counters<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        // SAFETY: the attachment holds the simulation's Python object, so `sim` is alive.
+        let t = unsafe { State::field::<f64>(self.sim as *mut u8, self.state.layout.t) };
+        let c = self
+            .state
+            .counters
+            .lock()
+            .map_err(|_| value_error("counters", "unusable (a thread panicked)"))?;
+        c.to_dict(py, t)
+    }
+
+    /// Starts a new window at the simulation's present time; `edges` (normal speeds, code units)
+    /// replace the histogram's when given (an empty list: no histogram).
+    #[pyo3(signature = (edges=None))]
+    fn reset_counters(&self, edges: Option<Vec<f64>>) -> PyResult<()> {
+        if let Some(e) = &edges {
+            check_edges(e).map_err(|m| value_error("speed_edges", m))?;
+        }
+        // SAFETY: the attachment holds the simulation's Python object, so `sim` is alive.
+        let t = unsafe { State::field::<f64>(self.sim as *mut u8, self.state.layout.t) };
+        let mut c = self
+            .state
+            .counters
+            .lock()
+            .map_err(|_| value_error("counters", "unusable (a thread panicked)"))?;
+        *c = match edges {
+            Some(e) => Counters::new(t, e, c.depth_threshold()),
+            None => c.restarted(t),
+        };
+        Ok(())
+    }
+
     /// Number of (radius, mass) pairs whose contact constants are cached.
     #[getter]
     fn cached_pairs(&self) -> usize {
@@ -775,7 +848,7 @@ fn positive(field: &str, v: f64) -> PyResult<f64> {
 
 /// Registers the handler for the simulation at `sim` (see `rime_grains.rebound.attach`).
 #[pyfunction]
-#[pyo3(signature = (sim, layout, scene, length_unit, time_unit, mass_unit, density, sticking, track_spins, accuracy, cache_size, previous_heartbeat))]
+#[pyo3(signature = (sim, layout, scene, length_unit, time_unit, mass_unit, density, sticking, track_spins, accuracy, cache_size, previous_heartbeat, speed_edges, overlap_depth))]
 #[allow(clippy::too_many_arguments)]
 // Long by design: checks every argument of the REBOUND handler at the Python boundary, one named
 // error each, before the C callback is registered.
@@ -792,7 +865,16 @@ fn _attach(
     accuracy: &str,
     cache_size: usize,
     previous_heartbeat: usize,
+    speed_edges: Vec<f64>,
+    overlap_depth: f64,
 ) -> PyResult<Handler> {
+    check_edges(&speed_edges).map_err(|m| value_error("speed_edges", m))?;
+    if !(overlap_depth.is_finite() && (0.0..1.0).contains(&overlap_depth)) {
+        return Err(value_error(
+            "overlap_depth",
+            format!("a fraction of r1 + r2 in [0, 1) (got {overlap_depth})"),
+        ));
+    }
     if cache_size < 2 {
         return Err(value_error(
             "cache_size",
@@ -891,6 +973,9 @@ fn _attach(
             ));
         }
     };
+    // SAFETY: `sim` is the address of the live simulation the caller passes (its t offset from
+    // rebound's ctypes class, checked 8-aligned above).
+    let t_now = unsafe { State::field::<f64>(sim as *mut u8, layout.t) };
     let state = Arc::new(State {
         layout,
         scene: scene.scene,
@@ -912,6 +997,7 @@ fn _attach(
         bounces: AtomicU64::new(0),
         merges: AtomicU64::new(0),
         stays: AtomicU64::new(0),
+        counters: Mutex::new(Counters::new(t_now, speed_edges, overlap_depth)),
     });
     scene.scene.validate().map_err(core_error)?;
     let mut registry = REGISTRY.write().map_err(|_| {

@@ -15,10 +15,10 @@ def snippets():
 
 
 def test_the_section_has_its_examples():
-    assert len(snippets()) == 4
+    assert len(snippets()) == 5
 
 
-@pytest.mark.parametrize("index", range(4))
+@pytest.mark.parametrize("index", range(5))
 def test_readme_example_runs(index, tmp_path, monkeypatch, capsys):
     monkeypatch.chdir(tmp_path)  # the REBOUND example writes run.bin
     with warnings.catch_warnings():
@@ -30,3 +30,7 @@ def test_readme_example_runs(index, tmp_path, monkeypatch, capsys):
         assert "'bounces': 1" in out
     if index == 3:  # the ring (issue 24): 2 cm ice in the A ring sits at the monolayer floor
         assert out.startswith("monolayer_floor ")
+    if index == 4:  # the handler's counters in a 1–5 cm shearing sheet (issue 38), one window an orbit
+        lines = out.splitlines()
+        assert [line.split(":")[0] for line in lines[:4]] == [f"orbit {k}" for k in range(1, 5)]
+        assert lines[4].startswith("predicted: ν_trans")

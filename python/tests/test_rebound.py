@@ -380,6 +380,15 @@ def test_a_speed_beyond_the_models_stops_the_integration_with_a_message():
     (dict(sticking="glue"), "sticking"),
     (dict(accuracy="best"), "accuracy"),
     (dict(spins=np.zeros((3, 3))), "spins"),
+    # Issue 38: the counters' settings.
+    (dict(speed_edges=[0.01]), "speed_edges"),
+    (dict(speed_edges=[0.02, 0.01]), "speed_edges"),
+    (dict(speed_edges=[-1.0, 1.0]), "speed_edges"),
+    (dict(speed_edges=[[0.0, 1.0]]), "speed_edges"),
+    (dict(speed_edges="fast"), "speed_edges"),
+    (dict(overlap_depth=1.5), "overlap_depth"),
+    (dict(overlap_depth=float("nan")), "overlap_depth"),
+    (dict(overlap_depth="deep"), "overlap_depth"),
 ])
 def test_attach_bad_input_names_the_field(kwargs, field):
     sim = pair_sim([-0.021, 0, 0], [0.005, 0, 0], [0.021, 0, 0], [-0.005, 0, 0])
@@ -690,3 +699,172 @@ def test_issue_35_detaching_a_replaced_attachment_leaves_the_newer_one():
     assert new.counts()["bounces"] == 1 and old.counts()["bounces"] == 0
     want = cli("eps", "--preset", "ice", "--g", "0.01")[0]["eps_n"]
     assert (sim.particles[1].vx - sim.particles[0].vx) / 0.01 == pytest.approx(want, rel=1e-12)
+
+
+# Issue 38: the handler's counters. The brute-force side reads the particles' velocities before and
+# after each step in Python and computes m₁ Δv₁,y (x₁ − x₂) itself.
+
+def test_issue_38_two_body_flux_and_speeds_agree_with_a_brute_force_count():
+    """An oblique hit with friction (Δv_y from both the normal and the tangential impulse)."""
+    sim = pair_sim([-0.036, 0.012, 0.004], [0.01, 0.002, -0.001], [0.0, 0.0, 0.0], [-0.001, -0.003, 0.0])
+    att = rime.rebound.attach(sim, rime.Scene.preset("ice"), length_unit=1, time_unit=1, mass_unit=1,
+                              speed_edges=[0.0, 0.005, 0.01, 0.02], overlap_depth=0.0)
+    before, after = step_to_collision(sim, att)
+    dx = after[0][0] - after[1][0]  # positions where REBOUND found the pair (a bounce keeps them)
+    dv1 = after[0][1] - before[0][1]
+    want_flux = MASS * dv1[1] * dx[0]
+    n = dx / np.linalg.norm(dx)
+    want_gn = -(before[0][1] - before[1][1]) @ n  # the spins start at 0: Eq. (2) is v₁ − v₂
+    got = att.counters()
+    assert dv1[1] != 0 and dx[0] != 0
+    assert got["collisions"] == got["bounces"] == 1 and got["stays"] == got["merges"] == 0
+    assert got["angular_momentum_flux"] == pytest.approx(want_flux, rel=1e-12)
+    # p₂'s side of the same transfer: m₂ Δv₂,y (x₂ − x₁), the same number.
+    dv2 = after[1][1] - before[1][1]
+    assert MASS * dv2[1] * -dx[0] == pytest.approx(want_flux, rel=1e-12)
+    s = got["normal_speed"]
+    assert s["count"] == 1 and s["sum"] == pytest.approx(want_gn, rel=1e-12)
+    assert s["sum_squares"] == pytest.approx(want_gn**2, rel=1e-12) and s["max"] == s["sum"]
+    g_rel = before[0][1] - before[1][1]
+    assert got["tangential_speed"]["sum"] == pytest.approx(np.linalg.norm(g_rel - (g_rel @ n) * n), rel=1e-12)
+    h = got["speed_histogram"]
+    assert h["counts"] == [int(0 <= want_gn < 0.005), int(0.005 <= want_gn < 0.01), int(0.01 <= want_gn < 0.02)]
+    assert h["below"] == 0 and h["above"] == int(want_gn >= 0.02)
+    depth = 1 - np.linalg.norm(dx) / (2 * RADIUS)
+    assert got["overlaps"]["max_depth"] == pytest.approx(depth, rel=1e-12, abs=1e-15)
+    assert got["overlaps"]["deeper"] == 1 and got["overlaps"]["threshold"] == 0.0
+    assert got["t_end"] == sim.t and got["t_start"] == 0.0 and got["duration"] == sim.t
+    # The kinetic energy lost, translation and spin (the spins start at 0; I = 2/5 m r²).
+    energy = [0.5 * MASS * (s[1] @ s[1] + 0.4 * RADIUS**2 * (s[2] @ s[2])) for s in before + after]
+    assert got["energy_loss"] == pytest.approx(energy[0] + energy[1] - energy[2] - energy[3], rel=1e-9)
+    assert got["energy_loss"] > 0
+    # Not a shearing sheet: no viscosity from it.
+    assert got["collisional_viscosity_si"] is None
+    # Reset: a new window from now, the same edges.
+    again = att.counters(reset=True)
+    assert again["angular_momentum_flux"] == got["angular_momentum_flux"]
+    fresh = att.counters()
+    assert fresh["collisions"] == 0 and fresh["angular_momentum_flux"] == 0.0 and fresh["t_start"] == sim.t
+    assert fresh["speed_histogram"]["edges"] == [0.0, 0.005, 0.01, 0.02]
+    att.reset_counters(speed_edges=[])
+    assert att.counters()["speed_histogram"] is None
+    with pytest.raises(ValueError, match="^speed_edges: edges must increase"):
+        att.reset_counters(speed_edges=[1.0, 1.0])
+    with pytest.raises(ValueError, match="^reset: expected True or False"):
+        att.counters(reset=1)
+    # The cumulative counts are not windowed.
+    assert att.counts()["bounces"] == 1
+
+
+def test_issue_38_merge_flux_is_p1s_share_of_the_common_velocity():
+    sim, att = sticky_pair("merge", g_t=3e-6)
+    p = [(np.array(q.xyz), np.array(q.vxyz), q.m) for q in sim.particles]
+    x1_end = x2_end = None
+    for _ in range(200000):
+        xs = [np.array(q.xyz) + np.array(q.vxyz) * sim.dt for q in sim.particles]  # leapfrog, no forces
+        vs = [np.array(q.vxyz) for q in sim.particles]
+        sim.steps(1)
+        if sim.N == 1:
+            x1_end, x2_end = xs
+            break
+    assert x1_end is not None and att.counts()["merges"] == 1
+    (_, _, m1), (_, _, m2) = p
+    v_common = (m1 * vs[0][1] + m2 * vs[1][1]) / (m1 + m2)
+    want = m1 * (v_common - vs[0][1]) * (x1_end[0] - x2_end[0])
+    got = att.counters()
+    # The energy lost: before (both grains, their spins) minus the merged grain's, from momentum
+    # and angular momentum (the merged spin read back from the handler).
+    q = sim.particles[0]
+    w_after = att.spins[0]
+    v_after = np.array(q.vxyz)
+    assert np.allclose(v_after, (m1 * vs[0] + m2 * vs[1]) / (m1 + m2), rtol=1e-12, atol=1e-20)
+    after = 0.5 * q.m * (v_after @ v_after + 0.4 * q.r**2 * (w_after @ w_after))
+    spins0 = np.array([[0.001, -0.002, 0.0005], [-0.001, 0.0005, 0.002]])
+    before_e = sum(0.5 * m * (v @ v + 0.4 * RADIUS**2 * (w @ w)) for m, v, w in zip((m1, m2), vs, spins0))
+    assert got["energy_loss"] == pytest.approx(before_e - after, rel=1e-9)
+    assert got["merges"] == 1 and got["collisions"] == 1 and want != 0
+    assert got["angular_momentum_flux"] == pytest.approx(want, rel=1e-9)
+
+
+def test_issue_38_patch_flux_per_step_agrees_with_a_brute_force_count_across_ghost_boxes():
+    """A shearing patch (sei, shear boundary, ghost boxes): every step with one collision, the
+    handler's increment of the flux equals m_i Δv_i,y (x_i − x_j) from the two particles whose
+    velocities differ from a copy stepped without collisions, x_i − x_j by the minimum image."""
+    import warnings
+
+    sim, att = ring(orbits=0.0, collision="direct", n=36)
+    box = sim.root_size
+    checked, crossing, total = 0, 0, 0.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # REBOUND's "reset function pointers" on copy
+        for _ in range(400):
+            free = sim.copy()
+            free.collision = "none"
+            c0 = att.counters()
+            sim.steps(1)
+            free.steps(1)
+            c1 = att.counters()
+            if c1["collisions"] - c0["collisions"] != 1:
+                continue
+            n = sim.N
+            v, vf = np.zeros(3 * n), np.zeros(3 * n)
+            x = np.zeros(3 * n)
+            sim.serialize_particle_data(vxvyvz=v, xyz=x)
+            free.serialize_particle_data(vxvyvz=vf)
+            dv, x = (v - vf).reshape(n, 3), x.reshape(n, 3)
+            moved = np.flatnonzero(np.linalg.norm(dv, axis=1) > 1e-9 * np.max(np.abs(v)))
+            assert len(moved) == 2, moved
+            i, j = moved
+            dxij = x[i, 0] - x[j, 0]
+            if abs(dxij) > box / 2:
+                crossing += 1
+            dxij -= box * np.round(dxij / box)
+            want = sim.particles[int(i)].m * dv[i, 1] * dxij
+            step = c1["angular_momentum_flux"] - c0["angular_momentum_flux"]
+            assert step == pytest.approx(want, rel=1e-9, abs=1e-12), (i, j)
+            total += want
+            checked += 1
+    assert checked >= 5, checked
+    assert crossing >= 1, "no collision across the x edge in this patch: choose another seed"
+
+
+def test_issue_38_a_new_simulation_at_a_freed_ones_address_starts_from_rest():
+    """A simulation freed while attached leaves its registration under its address; a new one
+    allocated there must not inherit its spins (the shearing-sheet runs of issue 38 did, so runs of
+    a distribution depended on memory reuse). Reuse is simulated: B's address given A's link."""
+    a = pair_sim([-0.021, 0, 0], [0.005, 0, 0], [0.021, 0, 0], [-0.005, 0, 0])
+    spins = np.array([[1.0, 2.0, 3.0], [-1.0, 0.5, 0.25]])
+    att_a = rime.rebound.attach(a, rime.Scene(), length_unit=1, time_unit=1, mass_unit=1, spins=spins)
+    b = pair_sim([-0.021, 0, 0], [0.005, 0, 0], [0.021, 0, 0], [-0.005, 0, 0])
+    rime.rebound._ATTACHED[ctypes.addressof(b)] = rime.rebound._ATTACHED[ctypes.addressof(a)]
+    att_b = rime.rebound.attach(b, rime.Scene(), length_unit=1, time_unit=1, mass_unit=1)
+    assert np.array_equal(att_b.spins, np.zeros((2, 3)))
+    # A's handler is untouched: still registered, its spins kept, its collisions resolved.
+    assert np.array_equal(att_a.spins, spins)
+    a.integrate(1.0)
+    assert att_a.counts()["bounces"] == 1 and att_a.error is None
+
+
+def test_issue_38_viscosities_by_hand_in_cm_grams_seconds():
+    """ν_coll = F / (T (3/2) Ω Σm) and ν_trans = Σ m u (v_y + 3/2 Ω x) / ((3/2) Ω Σm), by hand in
+    code units (cm, g, s), then × 1e-4 to m²/s. Ω is only read (a leapfrog pair, not a sheet)."""
+    omega = 2e-3  # per code second
+    r, m = 2.0, MASS * 1e3  # cm, g
+    sim = pair_sim([-3.6, 1.2, 0.4], [1.0, 0.2, -0.1], [0.0, 0.0, 0.0], [-0.1, -0.3, 0.0],
+                   mass=m, radius=r, dt=1e-3)
+    sim.OMEGA = omega
+    att = rime.rebound.attach(sim, rime.Scene.preset("ice"), length_unit="cm", time_unit="s", mass_unit="g")
+    before, after = step_to_collision(sim, att)
+    sim.integrate(sim.t + 0.25)  # the window goes on after the hit
+    c = att.counters()
+    flux = m * (after[0][1][1] - before[0][1][1]) * (after[0][0][0] - after[1][0][0])
+    assert c["angular_momentum_flux"] == pytest.approx(flux, rel=1e-12)
+    want = flux / (sim.t * 1.5 * omega * 2 * m) * 1e-4
+    assert c["collisional_viscosity_si"] == pytest.approx(want, rel=1e-12)
+    p = [(np.array(q.xyz), np.array(q.vxyz)) for q in sim.particles]
+    stress = sum(m * v[0] * (v[1] + 1.5 * omega * x[0]) for x, v in p)
+    assert att.translational_viscosity() == pytest.approx(stress / (1.5 * omega * 2 * m) * 1e-4, rel=1e-12)
+    sim.OMEGA = 0.0
+    with pytest.raises(ValueError, match="^sim.OMEGA"):
+        att.translational_viscosity()
+    assert att.counters()["collisional_viscosity_si"] is None

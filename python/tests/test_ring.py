@@ -118,3 +118,93 @@ def test_issue_38_a_ring_of_many_sizes_agrees_with_the_cli_to_the_digit():
         rime.ring.equilibrium(ice, tau=0.5, omega=OMEGA, radii=[0.02], damping_rule="other")
     with pytest.raises(ValueError, match="^radii:"):
         rime.ring.equilibrium(ice, tau=0.5, omega=OMEGA, radii=[0.02], radius=0.02)
+
+
+def size_sheet(index, n, orbits, seeds):
+    """scripts/ring-nbody.py's size case INDEX, reduced: the prediction and its rows."""
+    name, radii, q, tau = nbody.SIZE_CASES[index]
+    pred = nbody.size_prediction(radii, q, tau)
+    runs = [nbody.run_sizes(pred, radii, q, tau, n, orbits, 2000 + s) for s in range(seeds)]
+    return pred, runs, {label: (p, got, tol) for label, p, got, tol, _, _ in nbody.size_rows(pred, runs)}
+
+
+def test_issue_38_one_size_sheet_viscosity_matches_the_prediction():
+    """2 cm ice, τ = 0.5: ν_trans from the particles and ν_coll from the handler's flux within the
+    script's tolerance (a factor 2; 250 grains × 3 seeds measured 0.95 and 1.06 of the prediction)."""
+    pred, runs, rows = size_sheet(1, n=100, orbits=4.0, seeds=2)
+    for label in ("c bin 1", "H bin 1", "ν translational", "ν collisional", "ν total"):
+        p, got, tol = next(v for k, v in rows.items() if k.startswith(label))
+        assert abs(math.log(got.mean() / p)) <= tol, (label, got / p)
+    assert all(r["nu_c"] > 0 and r["nu_t"] > 0 for r in runs)
+    # The measured ν_trans and ν_coll heat the sheet exactly as much as its collisions dissipate
+    # (energy of the peculiar motion; exact but for the sampled time integral: 0.05–2 % measured;
+    # a wrong factor or sign of the flux misses by 15–90 %).
+    assert all(abs(r["energy_residual"]) < 0.05 for r in runs), [r["energy_residual"] for r in runs]
+
+
+def test_issue_38_a_small_size_distribution_sheet_matches_within_the_tolerance():
+    """1–5 cm ice, q = 3, τ = 0.5, 120 grains, 2 seeds: every bin's c, the ring's c and H, ν_coll and
+    ν_total within a factor 2 of `rime ring --radii`; small grains faster than large ones. ν_trans
+    is the closure's known miss (docs/physics.md#ring-sizes: the N-body ν_trans of a distribution is
+    about half the prediction, the largest grains, which carry the mass, being cooler than their
+    floor): here it must lie below the prediction and within a factor 4 (the factor 2 of c,
+    squared: ν_trans ∝ c² in the closure)."""
+    pred, runs, rows = size_sheet(3, n=120, orbits=4.0, seeds=2)
+    for label, (p, got, tol) in rows.items():
+        ratio = got.mean() / p
+        if label.startswith("ν translational"):
+            assert 0.25 <= ratio < 1.0, (label, ratio)
+        elif not label.startswith("H bin"):  # per-bin H: a few grains in the largest bin
+            assert abs(math.log(ratio)) <= tol, (label, ratio)
+    c = np.mean([r["c_bins"] for r in runs], axis=0)
+    assert c[0] > c[1] > c[2], c
+    # The handler saw every collision: none found deeper than half the contact distance.
+    assert all(r["deepest_hit"] < 0.5 and r["collisions"] > 0 for r in runs)
+    assert all(abs(r["energy_residual"]) < 0.05 for r in runs), [r["energy_residual"] for r in runs]
+
+
+def test_issue_38_overlap_check_uses_the_sheared_image():
+    """The script's overlap check takes the nearest image of REBOUND's shearing sheet (shifted in y
+    by the shear): a pair REBOUND resolves across the x edge is in contact there (|d| <= R_i + R_j)."""
+    import warnings
+
+    import rebound
+
+    rng = np.random.default_rng(14)
+    sim = rebound.Simulation()
+    sim.OMEGA = OMEGA
+    sim.dt = 1e-3 * 2 * math.pi / OMEGA
+    box = 20.0
+    sim.root_size = box
+    sim.N_ghost_x, sim.N_ghost_y = 2, 2
+    sim.integrator, sim.boundary, sim.gravity, sim.collision = "sei", "shear", "none", "direct"
+    placed = []
+    while len(placed) < 36:
+        x = [rng.uniform(-box / 2, box / 2), rng.uniform(-box / 2, box / 2), rng.normal(0, 1)]
+        if all(np.linalg.norm(np.subtract(x, q)) > 2.2 for q in placed):
+            placed.append(x)
+            sim.add(m=400 * 4 / 3 * math.pi, r=1.0, x=x[0], y=x[1], z=x[2], vx=rng.normal(0, 2e-3),
+                    vy=-1.5 * x[0] * OMEGA + rng.normal(0, 2e-3), vz=rng.normal(0, 2e-3))
+    att = rime.rebound.attach(sim, rime.Scene.preset("ice"), length_unit=1, time_unit=1, mass_unit=1)
+    crossing = 0
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # REBOUND's "reset function pointers" on copy
+        for _ in range(1500):
+            free = sim.copy()
+            free.collision = "none"
+            before = att.counters()["collisions"]
+            sim.steps(1)
+            free.steps(1)
+            if att.counters()["collisions"] - before != 1:
+                continue
+            n = sim.N
+            v, vf, x = np.zeros(3 * n), np.zeros(3 * n), np.zeros(3 * n)
+            sim.serialize_particle_data(vxvyvz=v, xyz=x)
+            free.serialize_particle_data(vxvyvz=vf)
+            x = x.reshape(n, 3)
+            i, j = np.flatnonzero(np.linalg.norm((v - vf).reshape(n, 3), axis=1) > 1e-9 * np.abs(v).max())
+            if abs(x[i, 0] - x[j, 0]) < box / 2:
+                continue
+            crossing += 1
+            assert np.linalg.norm(nbody.sheared_separations(x, box, sim.t)[i, j]) <= 2.0
+    assert crossing >= 3, crossing
