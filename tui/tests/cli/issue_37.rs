@@ -851,3 +851,29 @@ fn issue_37_json_keys_come_in_the_documented_order() {
         }
     }
 }
+
+/// Issue 37 (review F6): `rime tidal`'s table and CSV write the density's and surface energy's
+/// units as a person reads them (`kg/m³`, `J/m²`, as the explorer and the page write them), not
+/// `kg/m3`, `J/m2`; the JSON keys stay.
+#[test]
+fn issue_37_tidal_units_read_as_written_elsewhere() {
+    for format in ["table", "csv"] {
+        let text = ok(&["tidal", "--format", format]);
+        let unit_of = |name: &str| {
+            let line = text
+                .lines()
+                .find(|l| l.trim_start().starts_with(name))
+                .unwrap_or_else(|| panic!("{format}: no {name}: {text}"));
+            line.split([',', ' '])
+                .rfind(|c| !c.is_empty())
+                .unwrap()
+                .to_string()
+        };
+        assert_eq!(unit_of("density"), "kg/m³", "{format}: {text}");
+        assert_eq!(unit_of("surface_energy"), "J/m²", "{format}: {text}");
+    }
+    let json: serde_json::Value =
+        serde_json::from_str(&ok(&["tidal", "--format", "json"])).unwrap();
+    assert_eq!(json["density"].as_f64(), Some(900.0));
+    assert_eq!(json["surface_energy"].as_f64(), Some(0.1));
+}
