@@ -143,8 +143,8 @@ impl App {
         self.inside_key = Some((self.scene, self.accuracy));
     }
 
-    /// Recomputes the ring card when its inputs changed: the scene, τ, the planet distance (the
-    /// tidal appendix's planet, so both cards describe one ring) or the chart's speeds.
+    /// Recomputes the ring card when its inputs changed: the scene, τ, the planet distance (`<` `>`
+    /// move the A ring with the tidal card's planet) or the chart's speeds.
     pub(crate) fn refresh_ring(&mut self) {
         if !self.ring {
             return;
@@ -160,10 +160,11 @@ impl App {
         if self.ring_key == Some(key) {
             return;
         }
-        let planet = super::tidal::view(&self.scene, self.tidal_factor).input;
+        // Kepler: at `tidal_factor` × the A ring's distance, Ω ∝ d^(−3/2).
+        let omega = super::state::RING_OMEGA * self.tidal_factor.powf(-1.5);
         let input = rime_core::ring::RingInput {
             tau: self.ring_tau,
-            orbit: rime_core::ring::Orbit::of_tidal(&planet),
+            orbit: rime_core::ring::Orbit::Omega(omega),
             damping_set_for_radius: None,
         };
         self.ring_card = Some(

@@ -2628,3 +2628,47 @@ fn issue_37_the_legend_is_never_cut_mid_word() {
         }
     }
 }
+
+/// Issue 37 (review E16): the ring card opens on the Ω of the README's worked example and of the
+/// page's card (Saturn's A ring; it took the tidal card's Encke division and printed c = 5.046
+/// µm/s against the README's 5.26 µm/s for the same preset), and says which Ω it is. The numbers
+/// are read from README.md and www/ring.js; c at the monolayer floor is 2RΩ.
+#[test]
+fn issue_37_the_ring_card_opens_on_the_readmes_omega_and_names_it() {
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/..");
+    let readme = std::fs::read_to_string(format!("{root}/README.md")).expect("README");
+    let after = readme
+        .split("Worked example, Saturn's A ring\n(Ω = ")
+        .nth(1)
+        .expect("the README's worked example names its Ω");
+    let readme_omega: f64 = after.split(' ').next().unwrap().parse().expect("Ω");
+    let page = std::fs::read_to_string(format!("{root}/www/ring.js")).expect("ring.js");
+    let page_omega: f64 = page
+        .split("omega: ")
+        .nth(1)
+        .and_then(|s| s.split(',').next())
+        .expect("the page's default Ω")
+        .parse()
+        .expect("Ω");
+    assert_eq!(readme_omega, page_omega);
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('r'));
+    let card = match app.ring_card.clone() {
+        Some(Ok(card)) => card,
+        other => panic!("no ring card: {other:?}"),
+    };
+    assert_eq!(card.record.omega, readme_omega);
+    let s = text(&screen(&app, 120, 40));
+    assert!(s.contains("(Saturn's A ring)"), "{s}");
+    // The ice preset's 2 cm grains sit at the floor, c = 2RΩ (README: 5.26 µm/s).
+    let floor = 2.0 * 0.02 * readme_omega;
+    assert!((floor * 1e6 - 5.257).abs() < 5e-4, "{floor}");
+    assert!(
+        s.contains("velocity dispersion c: 5.257 µm/s (2 RΩ)"),
+        "{s}"
+    );
+    // Moved with the planet, the card says how far.
+    update(&mut app, ch('>'));
+    let s = text(&screen(&app, 120, 40));
+    assert!(s.contains("(A ring, d ×1.05)"), "{s}");
+}
