@@ -2672,3 +2672,35 @@ fn issue_37_the_ring_card_opens_on_the_readmes_omega_and_names_it() {
     let s = text(&screen(&app, 120, 40));
     assert!(s.contains("(A ring, d ×1.05)"), "{s}");
 }
+
+/// Issue 37 (review E12): the stick map's x axis carries its title (g_T), as its y axis carries
+/// "g_N ↑" and the exported stick_map.png "tangential speed g_T [m/s]": on the row of the x tick
+/// labels, at 80×24 (the map in the shared pane), 120×40 and 200×60.
+#[test]
+fn issue_37_the_stick_map_names_its_x_axis() {
+    for (w, h) in [(80u16, 24u16), (120, 40), (200, 60)] {
+        let mut app = app_on(Scene::default());
+        app.size = (w, h);
+        if w == 80 {
+            update(&mut app, key(KeyCode::Tab));
+            update(&mut app, key(KeyCode::Tab));
+        }
+        let s = text(&screen(&app, w, h));
+        let lines: Vec<&str> = s.lines().collect();
+        let top = lines
+            .iter()
+            .position(|l| l.contains("stick map"))
+            .unwrap_or_else(|| panic!("{w}×{h}: no map\n{s}"));
+        // The x tick row: the map's "0 … 0.5 … 1" below its top; the title is on it.
+        let ticks = lines[top..]
+            .iter()
+            .find(|l| {
+                // Right of the parameters' pane: "0 … 1" (g_T from 0 to the map's 1 m/s).
+                let pane = l.rsplit(['│', '┃']).next().unwrap_or(l);
+                let words: Vec<&str> = pane.split_whitespace().collect();
+                words.first() == Some(&"0") && words.last() == Some(&"1")
+            })
+            .unwrap_or_else(|| panic!("{w}×{h}: no x tick row\n{s}"));
+        assert!(ticks.contains("g_T"), "{w}×{h}: {ticks}\n{s}");
+    }
+}
