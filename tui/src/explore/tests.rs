@@ -2704,3 +2704,31 @@ fn issue_37_the_stick_map_names_its_x_axis() {
         assert!(ticks.contains("g_T"), "{w}×{h}: {ticks}\n{s}");
     }
 }
+
+/// Issue 37 (review E13): the `i` panel's F(ξ) plot labels its origin `0` on the frosted preset,
+/// whose overlap starts at a float-noise 2.7e-26 m (the tick at 0 fell off the axis: the row read
+/// `5e-7  1e-6  1.5e-6` with nothing under the origin).
+#[test]
+fn issue_37_the_force_overlap_plot_labels_its_origin() {
+    let mut app = app_on(Preset::IceFrost.scene());
+    update(&mut app, ch('i'));
+    settle(&mut app);
+    let s = text(&screen(&app, 120, 40));
+    let title = s
+        .lines()
+        .position(|l| l.contains("overlap ξ [m]") && l.contains("time t [s]"))
+        .unwrap_or_else(|| panic!("no F(ξ) plot\n{s}"));
+    let ticks = s.lines().nth(title - 1).unwrap();
+    let axis = s.lines().nth(title - 2).unwrap();
+    // The F(ξ) plot is the right one: its axis line starts at the second └.
+    let origin = axis.char_indices().filter(|(_, c)| *c == '└').nth(1);
+    let (byte, _) = origin.unwrap_or_else(|| panic!("no second axis\n{s}"));
+    let column = axis[..byte].chars().count();
+    let right: String = ticks.chars().skip(column).collect();
+    let words: Vec<&str> = right.split_whitespace().collect();
+    assert_eq!(words.first(), Some(&"0"), "{right}\n{s}");
+    assert!(
+        axis.chars().nth(column + 1) == Some('┼'),
+        "no tick at the origin: {axis}"
+    );
+}
