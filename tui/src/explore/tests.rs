@@ -2732,3 +2732,36 @@ fn issue_37_the_force_overlap_plot_labels_its_origin() {
         "no tick at the origin: {axis}"
     );
 }
+
+/// Issue 37 (review E14): an open or a save names its file one way, the path it used (`./…` under
+/// the working folder, absolute elsewhere): a missing file read `./nothere.json` and an existing
+/// one `bad-scene.json`.
+#[test]
+fn issue_37_open_and_save_name_the_file_they_used() {
+    // The tests run in the crate's folder: Cargo.toml exists there (and is no scene), the other
+    // name does not.
+    let mut app = app_on(Scene::default());
+    for name in ["Cargo.toml", "nothere-issue-37.json"] {
+        app.open_scene(name);
+        let (msg, tone) = app.message.clone().expect("message");
+        assert_eq!(tone, Tone::Error);
+        assert!(
+            msg.starts_with(&format!("open ./{name}: ")),
+            "{name}: {msg}"
+        );
+        assert!(msg.ends_with("(scene unchanged)"), "{msg}");
+    }
+    // Outside the working folder: the absolute path, for a save and the open of what it wrote.
+    let dir = std::env::temp_dir().join(format!("rime-issue-37-e14-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("dir");
+    app.out_dir = dir.clone();
+    update(&mut app, ch('w'));
+    let file = dir.join("rime-scene.json");
+    let (msg, _) = app.message.clone().expect("message");
+    assert_eq!(msg, format!("saved scene to {}", file.display()));
+    app.open_scene(&file.display().to_string());
+    let (msg, tone) = app.message.clone().expect("message");
+    assert_eq!(tone, Tone::Info, "{msg}");
+    assert_eq!(msg, format!("opened scene {} (u undoes)", file.display()));
+    let _ = std::fs::remove_dir_all(&dir);
+}
