@@ -497,7 +497,7 @@ def attach(sim, scene, *, length_unit, time_unit, mass_unit, density="particles"
     description = (
         f"eps_N and eps_T from the scene with each pair's own radii and "
         + ("the particles' own density (m_eff of their masses)" if density == "particles"
-           else f"the scene's density {g:g} kg/m3 (impulses use the particles' masses)")
+           else f"the scene's density {g:g} kg/m³ (impulses use the particles' masses)")
         + f"; sticking={sticking!r}, accuracy={accuracy!r}, units: {units['length_unit']:g} m, "
         f"{units['time_unit']:g} s, {units['mass_unit']:g} kg; spins "
         + ("tracked (rime's own table)" if track_spins else "not tracked (0)"))

@@ -186,7 +186,7 @@ impl PyScene {
             effects.push("friction");
         }
         format!(
-            "Scene(radius_1={:?} m, radius_2={:?} m, density={:?} kg/m3, A={:?} s, effects=[{}])",
+            "Scene(radius_1={:?} m, radius_2={:?} m, density={:?} kg/m³, A={:?} s, effects=[{}])",
             g.radius_1,
             g.radius_2,
             g.density,

@@ -152,7 +152,7 @@ def test_density_400_gives_the_density_400_eps():
     # density="scene" keeps the scene's 900 for ε_N (the impulses still use the masses), and says so.
     eps_scene, _, att = head_on_eps(ice, mass_400, density="scene")
     assert eps_scene == pytest.approx(want_900, rel=1e-12)
-    assert "the scene's density 900 kg/m3 (impulses use the particles' masses)" in repr(att)
+    assert "the scene's density 900 kg/m³ (impulses use the particles' masses)" in repr(att)
 
 
 def test_particle_radii_are_used_not_the_scenes():

@@ -183,12 +183,28 @@ pub fn table(header: &[&str], rows: &[Vec<String>]) -> String {
     out
 }
 
+/// The documented order of an output's JSON keys (issue 37 C5: `tidal`, `ring` and `compare`
+/// printed their keys sorted, not in the order docs/cli.md lists them). One entry per object: its
+/// path from the top (`""`, `"ledger"`, `"size_bins"` — an array's elements share its path) and its
+/// keys in order. A key not listed follows the listed ones, sorted; an object not listed is sorted.
+pub type KeyOrder<'a> = [(&'a str, &'a [&'a str])];
+
 /// JSON for people and programs alike: objects and arrays of objects indented two spaces (as
 /// `serde_json::to_string_pretty`, what `rime eps` prints), arrays of numbers or strings on one
-/// line each, so a map or a trajectory stays readable (`rime map`, `rime collision`).
-pub fn pretty_json(v: &serde_json::Value) -> String {
+/// line each, so a map or a trajectory stays readable (`rime map`, `rime collision`); each
+/// object's keys in the order `order` gives.
+pub fn pretty_json(v: &serde_json::Value, order: &KeyOrder) -> String {
     let mut out = String::new();
-    write_json(v, 0, &mut out);
+    write_json(v, 0, "", order, true, &mut out);
+    out.push('\n');
+    out
+}
+
+/// JSON exactly as `serde_json::to_string_pretty` writes it (every array element on its own line),
+/// with each object's keys in the order `order` gives.
+pub fn json_in_order(v: &serde_json::Value, order: &KeyOrder) -> String {
+    let mut out = String::new();
+    write_json(v, 0, "", order, false, &mut out);
     out.push('\n');
     out
 }
@@ -197,11 +213,36 @@ fn scalar(v: &serde_json::Value) -> bool {
     !(v.is_array() || v.is_object())
 }
 
-fn write_json(v: &serde_json::Value, indent: usize, out: &mut String) {
+/// `m`'s entries, the keys `order` lists for `path` first (in its order), then the rest sorted.
+fn ordered<'m>(
+    m: &'m serde_json::Map<String, serde_json::Value>,
+    path: &str,
+    order: &KeyOrder,
+) -> Vec<(&'m String, &'m serde_json::Value)> {
+    let listed: &[&str] = order
+        .iter()
+        .find(|(p, _)| *p == path)
+        .map_or(&[], |(_, keys)| keys);
+    let rank = |k: &str| listed.iter().position(|l| *l == k).unwrap_or(listed.len());
+    let mut entries: Vec<_> = m.iter().collect();
+    // Stable: the unlisted keys keep the map's sorted order.
+    entries.sort_by_key(|(k, _)| rank(k));
+    entries
+}
+
+fn write_json(
+    v: &serde_json::Value,
+    indent: usize,
+    path: &str,
+    order: &KeyOrder,
+    inline_scalar_arrays: bool,
+    out: &mut String,
+) {
     use serde_json::Value;
     let pad = |n: usize| " ".repeat(n);
     match v {
-        Value::Array(a) if a.iter().all(scalar) => {
+        Value::Array(a) if a.is_empty() => out.push_str("[]"),
+        Value::Array(a) if inline_scalar_arrays && a.iter().all(scalar) => {
             out.push('[');
             for (k, x) in a.iter().enumerate() {
                 if k > 0 {
@@ -215,7 +256,7 @@ fn write_json(v: &serde_json::Value, indent: usize, out: &mut String) {
             out.push_str("[\n");
             for (k, x) in a.iter().enumerate() {
                 out.push_str(&pad(indent + 2));
-                write_json(x, indent + 2, out);
+                write_json(x, indent + 2, path, order, inline_scalar_arrays, out);
                 out.push_str(if k + 1 < a.len() { ",\n" } else { "\n" });
             }
             out.push_str(&pad(indent));
@@ -224,11 +265,16 @@ fn write_json(v: &serde_json::Value, indent: usize, out: &mut String) {
         Value::Object(m) if m.is_empty() => out.push_str("{}"),
         Value::Object(m) => {
             out.push_str("{\n");
-            for (k, (key, x)) in m.iter().enumerate() {
+            for (k, (key, x)) in ordered(m, path, order).into_iter().enumerate() {
                 out.push_str(&pad(indent + 2));
                 out.push_str(&Value::String(key.clone()).to_string());
                 out.push_str(": ");
-                write_json(x, indent + 2, out);
+                let inner = if path.is_empty() {
+                    key.clone()
+                } else {
+                    format!("{path}.{key}")
+                };
+                write_json(x, indent + 2, &inner, order, inline_scalar_arrays, out);
                 out.push_str(if k + 1 < m.len() { ",\n" } else { "\n" });
             }
             out.push_str(&pad(indent));
@@ -240,7 +286,7 @@ fn write_json(v: &serde_json::Value, indent: usize, out: &mut String) {
 
 #[cfg(test)]
 mod tests {
-    use super::pretty_json;
+    use super::{json_in_order, pretty_json};
 
     #[test]
     fn pretty_json_reads_back_as_the_same_value_issue_22() {
@@ -251,8 +297,13 @@ mod tests {
             "d": {"e": [], "f": "µ ü"},
             "g": true
         });
-        let text = pretty_json(&v);
+        let text = pretty_json(&v, &[]);
         assert_eq!(serde_json::from_str::<serde_json::Value>(&text).unwrap(), v);
+        // Without an order, the other writer is serde_json's own pretty form.
+        assert_eq!(
+            json_in_order(&v, &[]),
+            serde_json::to_string_pretty(&v).unwrap() + "\n"
+        );
         assert!(
             text.contains("\n  \"a\": [1.0, 2.5e-300, -0.0],\n"),
             "{text}"

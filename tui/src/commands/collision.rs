@@ -92,7 +92,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
             let record =
                 rime_core::explorer::records::CollisionRecord::new(args.g, &tr, oblique.as_ref());
             let v = serde_json::to_value(&record).map_err(|e| CliError::input(e.to_string()))?;
-            crate::output::pretty_json(&v)
+            crate::output::pretty_json(&v, &COLLISION_KEYS)
         }
         Format::Csv => {
             let mut s = String::from("t [s],xi [m],xi_dot [m/s],force [N]\n");
@@ -155,3 +155,50 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         }
     })
 }
+
+/// The JSON keys in the order docs/cli.md lists them (issue 37 C5: they were sorted): the impact
+/// speed, the series, the phases, the four values of `rime eps`, the ledger, the tangential part.
+const COLLISION_KEYS: [(&str, &[&str]); 4] = [
+    (
+        "",
+        &[
+            "g",
+            "t",
+            "xi",
+            "xi_dot",
+            "force",
+            "phases",
+            "t_c",
+            "xi_max",
+            "eps_n",
+            "status",
+            "resolved",
+            "ledger",
+            "tangential",
+        ],
+    ),
+    ("phases", &["name", "t"]),
+    (
+        "ledger",
+        &[
+            "kinetic_in",
+            "kinetic_out",
+            "dissipated_bulk",
+            "dissipated_layer",
+            "elastic_retained",
+            "adhesion",
+            "closure",
+        ],
+    ),
+    (
+        "tangential",
+        &[
+            "eps_t",
+            "class",
+            "energy_before",
+            "energy_after",
+            "friction_work",
+            "spin_change",
+        ],
+    ),
+];

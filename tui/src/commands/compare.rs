@@ -267,14 +267,12 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         }
     }
     Ok(match common.format {
-        // Through a value: the keys sorted, as this output has always printed them.
-        Format::Json => to_json(
-            &serde_json::to_value(CompareOutput {
-                records,
-                characteristic_speeds: speeds,
-            })
-            .map_err(|e| CliError::input(e.to_string()))?,
-        )?,
+        // The record's own order, the documented one: `records`, then `characteristic_speeds`
+        // (issue 37 C5: the keys were sorted).
+        Format::Json => to_json(&CompareOutput {
+            records,
+            characteristic_speeds: speeds,
+        })?,
         Format::Csv => CompareOutput {
             records,
             characteristic_speeds: speeds,

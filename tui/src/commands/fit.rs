@@ -86,8 +86,9 @@ fn render(common: &Common, f: &SceneFit, points: &Points, what: &str) -> CliResu
         Format::Json => {
             // The core's record of this fit (field names are a contract, docs/cli.md).
             let record = rime_core::explorer::records::FitRecord::new(f, points, what);
-            let v = serde_json::to_value(&record).map_err(|e| CliError::input(e.to_string()))?;
-            format!("{v:#}\n")
+            // The record's own order, the documented one (issue 37 C5: the keys were sorted).
+            serde_json::to_string_pretty(&record).map_err(|e| CliError::input(e.to_string()))?
+                + "\n"
         }
         _ => {
             let mut s = format!("fit to {what} ({n} points");

@@ -85,7 +85,8 @@ pub fn run(common: &Common, max: f64, n: usize) -> CliResult<String> {
             };
             let value =
                 serde_json::to_value(&record).map_err(|e| CliError::input(e.to_string()))?;
-            output::pretty_json(&value)
+            // The keys in the order docs/cli.md lists them (issue 37 C5: they were sorted).
+            output::pretty_json(&value, &[("", &["g", "class", "eps_t", "eps_n"])])
         }
         Format::Csv => rime_core::explorer::records::map_csv(&map),
         Format::Table => {

@@ -188,9 +188,9 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     let (values, verdicts) = (&out.values, out.verdicts);
     Ok(match common.format {
         Format::Json => {
-            // Through a value: the keys sorted, as this output has always printed them.
+            // The keys in the order docs/cli.md lists them (issue 37 C5: they were sorted).
             let v = serde_json::to_value(&out).map_err(|e| CliError::input(e.to_string()))?;
-            serde_json::to_string_pretty(&v).map_err(|e| CliError::input(e.to_string()))? + "\n"
+            crate::output::json_in_order(&v, &RING_KEYS)
         }
         Format::Csv => {
             let mut s = String::from("name,value,unit\n");
@@ -320,7 +320,8 @@ fn run_sizes(
                 map.insert("verdict_words".into(), rec.verdict.words().into());
                 map.insert("prediction".into(), prediction.into());
             }
-            serde_json::to_string_pretty(&v).map_err(|e| CliError::input(e.to_string()))? + "\n"
+            // The keys in the order docs/cli.md lists them (issue 37 C5: they were sorted).
+            crate::output::json_in_order(&v, &RING_SIZES_KEYS)
         }
         Format::Csv => {
             let mut s = String::from("name,value,unit\n");
@@ -468,3 +469,101 @@ fn bin_values(b: &rime_core::ring_sizes::BinPrediction) -> Vec<(&'static str, f6
         ("viscosity_translational", b.viscosity_translational, "m²/s"),
     ]
 }
+
+/// One size's JSON keys in the order docs/cli.md lists them (issue 37 C5: they were sorted): the
+/// verdicts, what the ring does, the inputs, then each prediction.
+const RING_KEYS: [(&str, &[&str]); 3] = [
+    (
+        "",
+        &[
+            "verdict",
+            "equilibrium",
+            "verdict_words",
+            "prediction",
+            "velocity_dispersion",
+            "velocity_dispersion_r_omega",
+            "thickness",
+            "mean_impact_speed",
+            "eps_cr",
+            "eps_cr_dilute",
+            "eps_effective",
+            "equilibration_orbits",
+            "floor_dispersion",
+            "tau",
+            "omega",
+            "radius",
+            "damping_time",
+            "scaled_damping_time",
+            "damping_note",
+            "smooth",
+            "rough",
+        ],
+    ),
+    ("smooth", &PREDICTION_KEYS),
+    ("rough", &PREDICTION_KEYS),
+];
+
+const PREDICTION_KEYS: [&str; 8] = [
+    "velocity_dispersion",
+    "thickness",
+    "mean_impact_speed",
+    "eps_effective",
+    "eps_cr",
+    "sticking_fraction",
+    "equilibration_orbits",
+    "verdict",
+];
+
+/// Many sizes' JSON keys in the order docs/cli.md lists them (issue 37 C5: they were sorted).
+const RING_SIZES_KEYS: [(&str, &[&str]); 3] = [
+    (
+        "",
+        &[
+            "verdict",
+            "equilibrium",
+            "verdict_words",
+            "prediction",
+            "velocity_dispersion",
+            "thickness",
+            "mean_impact_speed",
+            "sticking_fraction",
+            "filling_factor",
+            "tau",
+            "omega",
+            "damping_time",
+            "damping_reference_radius",
+            "damping_rule",
+            "friction",
+            "size_bins",
+            "viscosity",
+        ],
+    ),
+    (
+        "size_bins",
+        &[
+            "radius_min",
+            "radius_max",
+            "radius",
+            "number_fraction",
+            "tau",
+            "velocity_dispersion",
+            "thickness",
+            "floor_dispersion",
+            "at_floor",
+            "mean_impact_speed",
+            "sticking_fraction",
+            "collision_frequency",
+            "viscosity_translational",
+        ],
+    ),
+    (
+        "viscosity",
+        &[
+            "translational",
+            "collisional",
+            "total",
+            "dlnnu_dlntau",
+            "overstability",
+        ],
+    ),
+];

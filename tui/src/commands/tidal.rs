@@ -12,9 +12,10 @@ pub fn run(common: &Common, input: &TidalInput) -> CliResult<String> {
     let record = rime_core::explorer::records::TidalRecord::new(input, &t);
     Ok(match common.format {
         Format::Json => {
-            // Through a value: the keys sorted, as this output has always printed them.
-            let v = serde_json::to_value(&record).map_err(|e| CliError::input(e.to_string()))?;
-            serde_json::to_string_pretty(&v).map_err(|e| CliError::input(e.to_string()))? + "\n"
+            // The record's own order, the documented one: the named values as the CSV rows
+            // list them, then `stays_in_contact` and `verdict` (issue 37 C5: the keys were sorted).
+            serde_json::to_string_pretty(&record).map_err(|e| CliError::input(e.to_string()))?
+                + "\n"
         }
         Format::Csv => {
             let mut s = TIDAL_HEADER.join(",") + "\n";

@@ -25,16 +25,14 @@ impl App {
                 let preset = Preset::ALL.iter().position(|p| p.scene() == next);
                 self.replace_scene(next, preset);
                 self.saved = next;
-                self.info(format!("opened scene {} (u undoes)", path.display()));
+                self.info(format!("opened scene {} (u undoes)", shown_path(&path)));
             }
             Err(e) => {
-                // load_scene words its errors for the command line (`--scene FILE: …`).
-                let text = e
-                    .message
-                    .strip_prefix("--scene ")
-                    .unwrap_or(&e.message)
-                    .to_string();
-                self.error(format!("open {text} (scene unchanged)"));
+                // load_scene words its errors for the command line (`--scene FILE: …`); the
+                // file is named as every open and save names it.
+                let prefix = format!("--scene {}", path.display());
+                let why = e.message.strip_prefix(&prefix).unwrap_or(&e.message);
+                self.error(format!("open {}{why} (scene unchanged)", shown_path(&path)));
             }
         }
     }
@@ -95,7 +93,7 @@ impl App {
             Ok(bytes) => {
                 self.saved = self.scene;
                 self.wrote_scene_file = Some(bytes);
-                self.info(format!("saved scene to {}", path.display()));
+                self.info(format!("saved scene to {}", shown_path(&path)));
             }
             Err(e) => self.error(format!("save failed: {e}")),
         }
@@ -143,8 +141,8 @@ impl App {
         self.inside_key = Some((self.scene, self.accuracy));
     }
 
-    /// Recomputes the ring card when its inputs changed: the scene, τ, the planet distance (the
-    /// tidal appendix's planet, so both cards describe one ring) or the chart's speeds.
+    /// Recomputes the ring card when its inputs changed: the scene, τ, the planet distance (`<` `>`
+    /// move the A ring with the tidal card's planet) or the chart's speeds.
     pub(crate) fn refresh_ring(&mut self) {
         if !self.ring {
             return;
@@ -166,10 +164,11 @@ impl App {
         if self.ring_key == Some(key) {
             return;
         }
-        let planet = super::tidal::view(&self.scene, self.tidal_factor).input;
+        // Kepler: at `tidal_factor` × the A ring's distance, Ω ∝ d^(−3/2).
+        let omega = super::state::RING_OMEGA * self.tidal_factor.powf(-1.5);
         let input = rime_core::ring::RingInput {
             tau: self.ring_tau,
-            orbit: rime_core::ring::Orbit::of_tidal(&planet),
+            orbit: rime_core::ring::Orbit::Omega(omega),
             damping_set_for_radius: None,
         };
         self.ring_card = Some(
@@ -183,4 +182,29 @@ impl App {
         );
         self.ring_key = Some(key);
     }
+}
+
+/// A file as the explorer names it after an open or a save (issue 37 E14: a missing file read
+/// `./nothere.json`, an existing one `bad-scene.json`): the path it used, `./…` under the working
+/// folder, `~/…` under the home folder, else absolute.
+pub(crate) fn shown_path(path: &std::path::Path) -> String {
+    let Ok(full) = std::path::absolute(path) else {
+        return path.display().to_string();
+    };
+    // `a/./b` and `./b` read as `a/b` and `b` (absolute keeps the `.` of a relative path).
+    let full: std::path::PathBuf = full
+        .components()
+        .filter(|c| *c != std::path::Component::CurDir)
+        .collect();
+    if let Ok(rest) = std::env::current_dir()
+        .map_err(|_| ())
+        .and_then(|cwd| full.strip_prefix(cwd).map_err(|_| ()))
+    {
+        return format!("./{}", rest.display());
+    }
+    let home = std::env::var_os("HOME").filter(|h| !h.is_empty());
+    if let Some(rest) = home.and_then(|h| full.strip_prefix(h).ok().map(|r| r.to_path_buf())) {
+        return format!("~/{}", rest.display());
+    }
+    full.display().to_string()
 }

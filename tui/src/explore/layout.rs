@@ -98,11 +98,21 @@ pub struct LogAxis {
 
 impl LogAxis {
     /// The column where log10 value `t` is drawn (ratatui's canvas: two Braille dots a cell, rounded).
+    /// A value within 1e-9 of the span outside an end is drawn at that end (issue 37 E13: the
+    /// `i` panel's overlap starts at a float-noise 2.7e-26 m, so the tick at 0 fell off the axis
+    /// and the origin had no `0`).
     pub fn column(&self, t: f64) -> Option<u16> {
         let span = self.hi - self.lo;
-        if self.width == 0 || span.is_nan() || span <= 0.0 || t < self.lo || t > self.hi {
+        let slack = 1e-9 * span;
+        if self.width == 0
+            || span.is_nan()
+            || span <= 0.0
+            || t < self.lo - slack
+            || t > self.hi + slack
+        {
             return None;
         }
+        let t = t.clamp(self.lo, self.hi);
         let dots = f64::from(self.width) * 2.0 - 1.0;
         let dot = ((t - self.lo) * dots / (self.hi - self.lo)).round() as u16;
         Some(self.x + dot / 2)

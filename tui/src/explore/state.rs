@@ -217,6 +217,11 @@ pub(crate) fn nearest(g: &[f64], target: f64) -> usize {
 
 /// The ring card's optical depth when it opens: Saturn's A ring.
 pub const RING_TAU: f64 = 0.5;
+/// The ring card's Ω when it opens, in 1/s: Saturn's A ring, the Ω of the README's worked example,
+/// `rime ring --help` and the page's card (issue 37 E16: the card took the tidal card's Encke
+/// division, 1.26153e-4 1/s, and printed another c than the README for the same preset). `<` `>`
+/// move the ring with the planet distance: Ω ∝ d^(−3/2).
+pub const RING_OMEGA: f64 = 1.3143527e-4;
 /// Factor by which `(` / `)` change the ring card's optical depth.
 pub const RING_TAU_STEP: f64 = 1.25;
 

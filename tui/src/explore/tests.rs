@@ -2664,3 +2664,140 @@ fn issue_37_the_legend_is_never_cut_mid_word() {
         }
     }
 }
+
+/// Issue 37 (review E16): the ring card opens on the Ω of the README's worked example and of the
+/// page's card (Saturn's A ring; it took the tidal card's Encke division and printed c = 5.046
+/// µm/s against the README's 5.26 µm/s for the same preset), and says which Ω it is. The numbers
+/// are read from README.md and www/ring.js; c at the monolayer floor is 2RΩ.
+#[test]
+fn issue_37_the_ring_card_opens_on_the_readmes_omega_and_names_it() {
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/..");
+    let readme = std::fs::read_to_string(format!("{root}/README.md")).expect("README");
+    let after = readme
+        .split("Worked example, Saturn's A ring\n(Ω = ")
+        .nth(1)
+        .expect("the README's worked example names its Ω");
+    let readme_omega: f64 = after.split(' ').next().unwrap().parse().expect("Ω");
+    let page = std::fs::read_to_string(format!("{root}/www/ring.js")).expect("ring.js");
+    let page_omega: f64 = page
+        .split("omega: ")
+        .nth(1)
+        .and_then(|s| s.split(',').next())
+        .expect("the page's default Ω")
+        .parse()
+        .expect("Ω");
+    assert_eq!(readme_omega, page_omega);
+    let mut app = app_on(Scene::default());
+    update(&mut app, ch('r'));
+    let card = match app.ring_card.clone() {
+        Some(Ok(card)) => card,
+        other => panic!("no ring card: {other:?}"),
+    };
+    assert_eq!(card.record.omega, readme_omega);
+    let s = text(&screen(&app, 120, 40));
+    assert!(s.contains("(Saturn's A ring)"), "{s}");
+    // The ice preset's 2 cm grains sit at the floor, c = 2RΩ (README: 5.26 µm/s).
+    let floor = 2.0 * 0.02 * readme_omega;
+    assert!((floor * 1e6 - 5.257).abs() < 5e-4, "{floor}");
+    assert!(
+        s.contains("velocity dispersion c: 5.257 µm/s (2 RΩ)"),
+        "{s}"
+    );
+    // Moved with the planet, the card says how far.
+    update(&mut app, ch('>'));
+    let s = text(&screen(&app, 120, 40));
+    assert!(s.contains("(A ring, d ×1.05)"), "{s}");
+}
+
+/// Issue 37 (review E12): the stick map's x axis carries its title (g_T), as its y axis carries
+/// "g_N ↑" and the exported stick_map.png "tangential speed g_T [m/s]": on the row of the x tick
+/// labels, at 80×24 (the map in the shared pane), 120×40 and 200×60.
+#[test]
+fn issue_37_the_stick_map_names_its_x_axis() {
+    for (w, h) in [(80u16, 24u16), (120, 40), (200, 60)] {
+        let mut app = app_on(Scene::default());
+        app.size = (w, h);
+        if w == 80 {
+            update(&mut app, key(KeyCode::Tab));
+            update(&mut app, key(KeyCode::Tab));
+        }
+        let s = text(&screen(&app, w, h));
+        let lines: Vec<&str> = s.lines().collect();
+        let top = lines
+            .iter()
+            .position(|l| l.contains("stick map"))
+            .unwrap_or_else(|| panic!("{w}×{h}: no map\n{s}"));
+        // The x tick row: the map's "0 … 0.5 … 1" below its top; the title is on it.
+        let ticks = lines[top..]
+            .iter()
+            .find(|l| {
+                // Right of the parameters' pane: "0 … 1" (g_T from 0 to the map's 1 m/s).
+                let pane = l.rsplit(['│', '┃']).next().unwrap_or(l);
+                let words: Vec<&str> = pane.split_whitespace().collect();
+                words.first() == Some(&"0") && words.last() == Some(&"1")
+            })
+            .unwrap_or_else(|| panic!("{w}×{h}: no x tick row\n{s}"));
+        assert!(ticks.contains("g_T"), "{w}×{h}: {ticks}\n{s}");
+    }
+}
+
+/// Issue 37 (review E13): the `i` panel's F(ξ) plot labels its origin `0` on the frosted preset,
+/// whose overlap starts at a float-noise 2.7e-26 m (the tick at 0 fell off the axis: the row read
+/// `5e-7  1e-6  1.5e-6` with nothing under the origin).
+#[test]
+fn issue_37_the_force_overlap_plot_labels_its_origin() {
+    let mut app = app_on(Preset::IceFrost.scene());
+    update(&mut app, ch('i'));
+    settle(&mut app);
+    let s = text(&screen(&app, 120, 40));
+    let title = s
+        .lines()
+        .position(|l| l.contains("overlap ξ [m]") && l.contains("time t [s]"))
+        .unwrap_or_else(|| panic!("no F(ξ) plot\n{s}"));
+    let ticks = s.lines().nth(title - 1).unwrap();
+    let axis = s.lines().nth(title - 2).unwrap();
+    // The F(ξ) plot is the right one: its axis line starts at the second └.
+    let origin = axis.char_indices().filter(|(_, c)| *c == '└').nth(1);
+    let (byte, _) = origin.unwrap_or_else(|| panic!("no second axis\n{s}"));
+    let column = axis[..byte].chars().count();
+    let right: String = ticks.chars().skip(column).collect();
+    let words: Vec<&str> = right.split_whitespace().collect();
+    assert_eq!(words.first(), Some(&"0"), "{right}\n{s}");
+    assert!(
+        axis.chars().nth(column + 1) == Some('┼'),
+        "no tick at the origin: {axis}"
+    );
+}
+
+/// Issue 37 (review E14): an open or a save names its file one way, the path it used (`./…` under
+/// the working folder, absolute elsewhere): a missing file read `./nothere.json` and an existing
+/// one `bad-scene.json`.
+#[test]
+fn issue_37_open_and_save_name_the_file_they_used() {
+    // The tests run in the crate's folder: Cargo.toml exists there (and is no scene), the other
+    // name does not.
+    let mut app = app_on(Scene::default());
+    for name in ["Cargo.toml", "nothere-issue-37.json"] {
+        app.open_scene(name);
+        let (msg, tone) = app.message.clone().expect("message");
+        assert_eq!(tone, Tone::Error);
+        assert!(
+            msg.starts_with(&format!("open ./{name}: ")),
+            "{name}: {msg}"
+        );
+        assert!(msg.ends_with("(scene unchanged)"), "{msg}");
+    }
+    // Outside the working folder: the absolute path, for a save and the open of what it wrote.
+    let dir = std::env::temp_dir().join(format!("rime-issue-37-e14-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("dir");
+    app.out_dir = dir.clone();
+    update(&mut app, ch('w'));
+    let file = dir.join("rime-scene.json");
+    let (msg, _) = app.message.clone().expect("message");
+    assert_eq!(msg, format!("saved scene to {}", file.display()));
+    app.open_scene(&file.display().to_string());
+    let (msg, tone) = app.message.clone().expect("message");
+    assert_eq!(tone, Tone::Info, "{msg}");
+    assert_eq!(msg, format!("opened scene {} (u undoes)", file.display()));
+    let _ = std::fs::remove_dir_all(&dir);
+}

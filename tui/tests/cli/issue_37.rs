@@ -512,3 +512,368 @@ fn issue_37_small_error_texts() {
     assert!(!fit.contains("from the header"), "{fit}");
     assert!(fit.contains("the law's measured speeds"), "{fit}");
 }
+
+/// Every object's keys of a JSON text in the order they are written, by path (`""` for the top,
+/// `"ledger"`, `"size_bins"` for an array's elements): read from the text itself, as a person
+/// reads it (a parsed `serde_json::Value` would sort them).
+fn key_order(text: &str) -> Vec<(String, Vec<String>)> {
+    enum Ctx {
+        Object(String),
+        Array(String),
+    }
+    let mut out: Vec<(String, Vec<String>)> = Vec::new();
+    let mut stack: Vec<Ctx> = Vec::new();
+    let mut last_string = String::new();
+    let mut pending_key: Option<String> = None;
+    let mut chars = text.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '"' => {
+                last_string.clear();
+                while let Some(c) = chars.next() {
+                    match c {
+                        '\\' => {
+                            chars.next();
+                        }
+                        '"' => break,
+                        c => last_string.push(c),
+                    }
+                }
+            }
+            ':' => {
+                let Some(Ctx::Object(path)) = stack.last() else {
+                    panic!("a key outside an object")
+                };
+                let path = path.clone();
+                match out.iter_mut().find(|(p, _)| *p == path) {
+                    Some((_, keys)) if !keys.contains(&last_string) => {
+                        keys.push(last_string.clone())
+                    }
+                    Some(_) => {}
+                    None => out.push((path.clone(), vec![last_string.clone()])),
+                }
+                pending_key = Some(if path.is_empty() {
+                    last_string.clone()
+                } else {
+                    format!("{path}.{last_string}")
+                });
+            }
+            '{' | '[' => {
+                // An object or array is the value of the pending key, or an element of an array.
+                let path = match (pending_key.take(), stack.last()) {
+                    (Some(k), _) => k,
+                    (None, Some(Ctx::Array(p))) | (None, Some(Ctx::Object(p))) => p.clone(),
+                    (None, None) => String::new(),
+                };
+                stack.push(if c == '{' {
+                    Ctx::Object(path)
+                } else {
+                    Ctx::Array(path)
+                });
+            }
+            '}' | ']' => {
+                stack.pop();
+            }
+            ',' => pending_key = None,
+            _ => {}
+        }
+    }
+    out
+}
+
+/// Issue 37 (review C5): every JSON output writes its keys in the order docs/cli.md lists them
+/// (`tidal`, `ring`, `compare`, `collision`, `map` and `fit` printed them sorted). The expected
+/// orders are docs/cli.md's, copied here section by section.
+#[test]
+fn issue_37_json_keys_come_in_the_documented_order() {
+    let ring_prediction = [
+        "velocity_dispersion",
+        "thickness",
+        "mean_impact_speed",
+        "eps_effective",
+        "eps_cr",
+        "sticking_fraction",
+        "equilibration_orbits",
+        "verdict",
+    ];
+    // `rime tidal`: the named values as the CSV lists them, then `stays_in_contact`, `verdict`.
+    let tidal_csv = ok(&["tidal", "--format", "csv"]);
+    let mut tidal: Vec<&str> = tidal_csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').next().unwrap())
+        .collect();
+    tidal.extend(["stays_in_contact", "verdict"]);
+    let scene_keys = key_order(&ok(&["scene"]));
+    let cases: Vec<(Vec<&str>, Vec<(&str, Vec<&str>)>)> = vec![
+        (vec!["tidal"], vec![("", tidal)]),
+        (
+            vec!["ring", "--tau", "0.1", "--omega", "1.3143527e-4"],
+            vec![
+                (
+                    "",
+                    vec![
+                        "verdict",
+                        "equilibrium",
+                        "verdict_words",
+                        "prediction",
+                        "velocity_dispersion",
+                        "velocity_dispersion_r_omega",
+                        "thickness",
+                        "mean_impact_speed",
+                        "eps_cr",
+                        "eps_cr_dilute",
+                        "eps_effective",
+                        "equilibration_orbits",
+                        "floor_dispersion",
+                        "tau",
+                        "omega",
+                        "radius",
+                        "damping_time",
+                        "scaled_damping_time",
+                        "damping_note",
+                        "smooth",
+                        "rough",
+                    ],
+                ),
+                ("smooth", ring_prediction.to_vec()),
+                ("rough", ring_prediction.to_vec()),
+            ],
+        ),
+        (
+            vec![
+                "ring",
+                "--tau",
+                "0.1",
+                "--omega",
+                "1.3143527e-4",
+                "--radii",
+                "1cm..5cm",
+                "--q",
+                "3",
+                "--bins",
+                "2",
+            ],
+            vec![
+                (
+                    "",
+                    vec![
+                        "verdict",
+                        "equilibrium",
+                        "verdict_words",
+                        "prediction",
+                        "velocity_dispersion",
+                        "thickness",
+                        "mean_impact_speed",
+                        "sticking_fraction",
+                        "filling_factor",
+                        "tau",
+                        "omega",
+                        "damping_time",
+                        "damping_reference_radius",
+                        "damping_rule",
+                        "friction",
+                        "size_bins",
+                        "viscosity",
+                    ],
+                ),
+                (
+                    "size_bins",
+                    vec![
+                        "radius_min",
+                        "radius_max",
+                        "radius",
+                        "number_fraction",
+                        "tau",
+                        "velocity_dispersion",
+                        "thickness",
+                        "floor_dispersion",
+                        "at_floor",
+                        "mean_impact_speed",
+                        "sticking_fraction",
+                        "collision_frequency",
+                        "viscosity_translational",
+                    ],
+                ),
+                (
+                    "viscosity",
+                    vec![
+                        "translational",
+                        "collisional",
+                        "total",
+                        "dlnnu_dlntau",
+                        "overstability",
+                    ],
+                ),
+            ],
+        ),
+        (
+            vec![
+                "compare",
+                "--models",
+                "hertzsch2002,atlas:bridges1984",
+                "--g",
+                "0.01",
+            ],
+            vec![
+                ("", vec!["records", "characteristic_speeds"]),
+                ("records", vec!["model", "g_n", "eps_n", "status"]),
+                (
+                    "characteristic_speeds",
+                    vec!["model", "name", "value", "status"],
+                ),
+            ],
+        ),
+        (
+            vec![
+                "collision",
+                "--g",
+                "0.01",
+                "--gt",
+                "0.01",
+                "--points",
+                "3",
+                "--set",
+                "friction.coefficient=0.3",
+            ],
+            vec![
+                (
+                    "",
+                    vec![
+                        "g",
+                        "t",
+                        "xi",
+                        "xi_dot",
+                        "force",
+                        "phases",
+                        "t_c",
+                        "xi_max",
+                        "eps_n",
+                        "status",
+                        "resolved",
+                        "ledger",
+                        "tangential",
+                    ],
+                ),
+                ("phases", vec!["name", "t"]),
+                (
+                    "ledger",
+                    vec![
+                        "kinetic_in",
+                        "kinetic_out",
+                        "dissipated_bulk",
+                        "dissipated_layer",
+                        "elastic_retained",
+                        "adhesion",
+                        "closure",
+                    ],
+                ),
+                (
+                    "tangential",
+                    vec![
+                        "eps_t",
+                        "class",
+                        "energy_before",
+                        "energy_after",
+                        "friction_work",
+                        "spin_change",
+                    ],
+                ),
+            ],
+        ),
+        (
+            vec!["map", "--max", "0.1", "--n", "3"],
+            vec![("", vec!["g", "class", "eps_t", "eps_n"])],
+        ),
+        (
+            vec!["fit", "--law", "bridges1984"],
+            vec![
+                (
+                    "",
+                    vec![
+                        "source",
+                        "params",
+                        "correlation",
+                        "rms_error",
+                        "reduced_chi2",
+                        "dof",
+                        "points",
+                        "weighted",
+                        "header",
+                        "g_unit",
+                        "g_unit_assumed",
+                        "warnings",
+                        "residuals",
+                        "runs_test",
+                        "chi2_scaled",
+                        "scene",
+                        "param",
+                        "value",
+                        "unit",
+                        "standard_error",
+                    ],
+                ),
+                ("params", vec!["param", "value", "unit", "standard_error"]),
+                (
+                    "runs_test",
+                    vec!["runs", "expected", "positive", "negative", "p"],
+                ),
+                // The scene as `rime scene` writes it (docs/cli.md, Scene JSON).
+                (
+                    "scene",
+                    scene_keys[0].1.iter().map(String::as_str).collect(),
+                ),
+            ],
+        ),
+        (
+            vec!["tangential", "--gn", "0.01", "--gt", "0.01"],
+            vec![("", vec!["g_n", "g_t", "eps_t", "eps_n", "class"])],
+        ),
+        (
+            vec!["eps", "--g", "0.01"],
+            vec![(
+                "",
+                vec!["g_n", "eps_n", "status", "t_c", "xi_max", "error_estimate"],
+            )],
+        ),
+    ];
+    for (args, expected) in cases {
+        let mut full = args.clone();
+        full.extend(["--format", "json"]);
+        let text = ok(&full);
+        let got = key_order(&text);
+        for (path, keys) in expected {
+            let written = got
+                .iter()
+                .find(|(p, _)| p == path)
+                .unwrap_or_else(|| panic!("{args:?}: no object at {path:?}: {got:?}"));
+            assert_eq!(written.1, keys, "{args:?}: the keys of {path:?}");
+        }
+    }
+}
+
+/// Issue 37 (review F6): `rime tidal`'s table and CSV write the density's and surface energy's
+/// units as a person reads them (`kg/m³`, `J/m²`, as the explorer and the page write them), not
+/// `kg/m3`, `J/m2`; the JSON keys stay.
+#[test]
+fn issue_37_tidal_units_read_as_written_elsewhere() {
+    for format in ["table", "csv"] {
+        let text = ok(&["tidal", "--format", format]);
+        let unit_of = |name: &str| {
+            let line = text
+                .lines()
+                .find(|l| l.trim_start().starts_with(name))
+                .unwrap_or_else(|| panic!("{format}: no {name}: {text}"));
+            line.split([',', ' '])
+                .rfind(|c| !c.is_empty())
+                .unwrap()
+                .to_string()
+        };
+        assert_eq!(unit_of("density"), "kg/m³", "{format}: {text}");
+        assert_eq!(unit_of("surface_energy"), "J/m²", "{format}: {text}");
+    }
+    let json: serde_json::Value =
+        serde_json::from_str(&ok(&["tidal", "--format", "json"])).unwrap();
+    assert_eq!(json["density"].as_f64(), Some(900.0));
+    assert_eq!(json["surface_energy"].as_f64(), Some(0.1));
+}

@@ -364,31 +364,73 @@ fn draw_axes(buf: &mut Buffer, plot: Rect, labels: &AxisLabels, fig: &rime_core:
             );
         }
     }
-    // X labels centred on their columns where they fit, then the axis' title with its unit.
+    // X labels centred on their columns where they fit, then the axis' title with its unit in
+    // the widest gap between them (issue 37 E12: the title was looked for only right of the last
+    // label, which sits at the axis' end, so g_T had none). Fewer ticks where "g_T [m/s]" would
+    // not fit between them.
     let ly = plot.y + plot.height;
-    let mut taken: Vec<(u16, u16)> = Vec::new();
-    let x_ticks = fig.x.ticks(usize::from((plot.width / 9).max(2)));
-    for t in &x_ticks {
-        let Some(label) = &t.label else { continue };
-        let w = label.chars().count() as u16;
-        let c = plot.x + col_of(t.value);
-        let start = c
-            .saturating_sub(w / 2)
-            .max(plot.x)
-            .min((plot.x + plot.width).saturating_sub(w));
-        if taken.iter().all(|(a, b)| start + w < *a || start > *b + 1) {
-            buf.set_string(start, ly, label, gray);
-            taken.push((start, start + w));
-        }
-    }
-    let free_from = taken.iter().map(|(_, b)| *b + 2).max().unwrap_or(plot.x);
     let end = plot.x + plot.width;
+    let layout = |count: usize| -> Vec<(u16, u16, String)> {
+        let mut taken: Vec<(u16, u16, String)> = Vec::new();
+        for t in fig.x.ticks(count) {
+            let Some(label) = t.label else { continue };
+            let w = label.chars().count() as u16;
+            let c = plot.x + col_of(t.value);
+            let start = c
+                .saturating_sub(w / 2)
+                .max(plot.x)
+                .min(end.saturating_sub(w));
+            if taken
+                .iter()
+                .all(|(a, b, _)| start + w < *a || start > *b + 1)
+            {
+                taken.push((start, start + w, label));
+            }
+        }
+        taken.sort_unstable();
+        taken
+    };
+    let widest_gap = |taken: &[(u16, u16, String)]| -> (u16, u16) {
+        let mut gaps = Vec::new();
+        let mut from = plot.x;
+        for (a, b, _) in taken {
+            gaps.push((from, a.saturating_sub(2)));
+            from = *b + 2;
+        }
+        gaps.push((from, end));
+        gaps.into_iter()
+            .max_by_key(|(a, b)| b.saturating_sub(*a))
+            .unwrap_or((plot.x, plot.x))
+    };
+    let short_title = "g_T [m/s]".chars().count() as u16;
+    let mut count = usize::from((plot.width / 9).max(2));
+    let mut taken = layout(count);
+    while count > 2 && {
+        let (a, b) = widest_gap(&taken);
+        b.saturating_sub(a) < short_title
+    } {
+        count = (count * 2 / 3).max(2);
+        taken = layout(count);
+    }
+    for (start, _, label) in &taken {
+        buf.set_string(*start, ly, label, gray);
+    }
+    // The longest tail of "tangential speed g_T [m/s]" that fits the widest gap, centred; else
+    // "g_T →" left of the ticks, under the y axis' "g_N ↑".
+    let (gap_start, gap_end) = widest_gap(&taken);
+    let room = gap_end.saturating_sub(gap_start);
     let words: Vec<&str> = fig.x.label.split(' ').collect();
-    if let Some(tail) = (0..words.len())
+    match (0..words.len())
         .map(|k| words[k..].join(" "))
-        .find(|t| free_from + t.chars().count() as u16 <= end)
+        .take_while(|t| t.contains("g_T"))
+        .find(|t| t.chars().count() as u16 <= room)
     {
-        let w = tail.chars().count() as u16;
-        buf.set_string(end - w, ly, &tail, gray);
+        Some(tail) => {
+            let w = tail.chars().count() as u16;
+            buf.set_string(gap_start + (room - w) / 2, ly, &tail, gray);
+        }
+        None => {
+            buf.set_stringn(labels.left, ly, "g_T →", (labels.width - 1) as usize, gray);
+        }
     }
 }

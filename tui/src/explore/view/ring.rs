@@ -27,7 +27,8 @@ pub fn lines(card: &RingCard) -> Vec<Line<'static>> {
             Span::styled("τ ", dim),
             Span::raw(sig(r.tau, 4)),
             Span::styled("  Ω ", dim),
-            Span::raw(format!("{} 1/s", sig(r.omega, 6))),
+            Span::raw(format!("{} 1/s", sig(r.omega, 4))),
+            Span::styled(format!(" ({})", orbit_words(r.omega)), dim),
             Span::styled("  R ", dim),
             Span::raw(qty(r.radius, "m")),
         ]),
@@ -42,6 +43,17 @@ pub fn lines(card: &RingCard) -> Vec<Line<'static>> {
     }
     out.push(Line::from(card.sentence.clone()));
     out
+}
+
+/// Which Ω the card uses, in words: Saturn's A ring (as the README and `rime ring --help`), or
+/// that ring moved with the planet distance (`<` `>`; Ω ∝ d^(−3/2)).
+fn orbit_words(omega: f64) -> String {
+    let factor = (crate::explore::state::RING_OMEGA / omega).powf(2.0 / 3.0);
+    if (factor - 1.0).abs() < 1e-9 {
+        "Saturn's A ring".into()
+    } else {
+        format!("A ring, d ×{}", sig(factor, 3))
+    }
 }
 
 /// Draws the card over `area`.
