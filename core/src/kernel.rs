@@ -502,6 +502,7 @@ fn scaling_law_threshold(
     ln_gamma56: f64,
     end: ContactEnd,
     resolution: Resolution,
+    grid: Option<&PsiGrid>,
 ) -> Option<f64> {
     let g_cap = SEARCH_MAX - law.layer_gs;
     if !(g_cap > 0.0) {
@@ -528,6 +529,19 @@ fn scaling_law_threshold(
     let mut fa = f(a);
     if a >= b {
         return None;
+    }
+    // Where Ψ is increasing, its grid narrows the bracket to one cell around the only root.
+    if let Some(grid) = grid {
+        let k = grid.psi.partition_point(|&p| p <= c);
+        if k >= 1 && k < grid.psi.len() {
+            let (ua, ub) = (grid.u(k - 1), grid.u(k));
+            if ua > a {
+                (a, fa) = (ua, grid.psi[k - 1] - c);
+            }
+            if ub < b {
+                (b, fb) = (ub, grid.psi[k] - c);
+            }
+        }
     }
     // Illinois false position, kept inside the bracket (midpoint when it leaves it or f is not
     // finite); fa ≤ 0 < fb throughout.
@@ -559,6 +573,41 @@ fn scaling_law_threshold(
     }
     let v_bulk = exp(k * (b - l));
     Some(law.layer_gs + v_bulk.min(g_cap))
+}
+
+/// Ψ(u) = 5 ln 10 u + ln ε(u) on a grid of u = log₁₀ δ, kept only where it increases
+/// strictly (the force-zero master curve; checked on the grid itself).
+#[derive(Debug, Clone)]
+struct PsiGrid {
+    u0: f64,
+    step: f64,
+    psi: Vec<f64>,
+}
+
+impl PsiGrid {
+    /// Lowest and highest u of the grid, and its cells per unit of u.
+    const RANGE: (f64, f64, f64) = (-12.0, 12.0, 64.0);
+
+    fn u(&self, k: usize) -> f64 {
+        self.u0 + k as f64 * self.step
+    }
+
+    fn new(end: ContactEnd, resolution: Resolution) -> Option<PsiGrid> {
+        let (lo, hi, per_unit) = Self::RANGE;
+        let n = ((hi - lo) * per_unit) as usize + 1;
+        let mut grid = PsiGrid {
+            u0: lo,
+            step: 1.0 / per_unit,
+            psi: Vec::with_capacity(n),
+        };
+        let k5 = 5.0 * LN10;
+        for i in 0..n {
+            let u = grid.u(i);
+            grid.psi
+                .push(k5 * u + ln(master::eps_log10(u, end, resolution)));
+        }
+        grid.psi.windows(2).all(|w| w[1] > w[0]).then_some(grid)
+    }
 }
 
 /// Checks radii and temperatures (errors name `radii`, `temperatures`).
@@ -664,6 +713,7 @@ pub fn table(
                 }
             }
             let end = base.contact_end;
+            let grid = PsiGrid::new(end, resolution);
             for (t, g) in gammas.iter().enumerate() {
                 let ln_gamma56 = 5.0 / 6.0 * ln(g.gamma);
                 let mut k = 0;
@@ -673,7 +723,13 @@ pub fn table(
                             t,
                             i,
                             j,
-                            scaling_law_threshold(&laws[k], ln_gamma56, end, resolution),
+                            scaling_law_threshold(
+                                &laws[k],
+                                ln_gamma56,
+                                end,
+                                resolution,
+                                grid.as_ref(),
+                            ),
                         );
                         k += 1;
                     }
@@ -734,11 +790,19 @@ pub fn fit_measured(base: &Scene, m: &MeasuredSpeed, options: &KernelOptions) ->
     let elastic = Contact::new(&pair_scene(base, m.radius, m.radius, g.gamma, Some(0.0))?)?;
     let v_elastic = elastic.adhesion.map_or(0.0, |a| a.critical_velocity);
     let target = v_elastic / m.speed;
-    if !(target < 1.0) || base.layer.is_some_and(|l| l.thickness > 0.0) {
+    if base.layer.is_some_and(|l| l.thickness > 0.0) {
         return Err(Error::InvalidValue {
             field: "fit",
-            expected: "a measured speed above the elastic threshold g_s of Eq. (15) (no A ≥ 0 \
-                       lowers the threshold below g_s) and a scene without a layer",
+            expected: "a scene without a layer (the fit inverts the clean master curve)",
+        });
+    }
+    if !(target < 1.0) {
+        return Err(Error::OutOfRange {
+            field: "fit",
+            value: v_elastic,
+            expected: "the reference pair's elastic threshold g_s of Eq. (15) must lie below the \
+                       measured speed: no A ≥ 0 lowers the threshold below g_s (choose a larger \
+                       reference radius or a colder temperature)",
         });
     }
     // ε(u) falls monotonically from 1: bisect ln ε(u) = ln target in u = log₁₀ δ.
@@ -790,3 +854,6 @@ pub fn fit_measured(base: &Scene, m: &MeasuredSpeed, options: &KernelOptions) ->
 
 #[cfg(test)]
 mod tests;
+
+pub mod figure;
+pub use figure::diagonal_figure;
