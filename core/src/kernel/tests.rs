@@ -310,3 +310,20 @@ fn issue_39_the_rebound_speed_grows_with_the_impact_speed_under_force_zero() {
         assert!((slope0 - 5.0).abs() < 1e-6, "{slope0}");
     }
 }
+
+#[test]
+fn issue_39_threads_give_the_same_table_bit_for_bit() {
+    let temps = [140.0, 176.0, 181.0, 190.0, 199.0, 230.0, 187.5];
+    let options = KernelOptions::default();
+    let one = table(&Scene::default(), &RADII, &temps, &options).unwrap();
+    for threads in [2, 3, 7, 16] {
+        let many = table_parallel(&Scene::default(), &RADII, &temps, &options, threads).unwrap();
+        assert_eq!(many.status, one.status);
+        let bits = |k: &Kernel| k.v_stick.iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&many), bits(&one), "{threads} threads");
+    }
+    // Each temperature's block is that temperature's own table.
+    let single = table(&Scene::default(), &RADII, &[190.0], &options).unwrap();
+    let nn = RADII.len() * RADII.len();
+    assert_eq!(one.v_stick[3 * nn..4 * nn], single.v_stick[..]);
+}

@@ -322,8 +322,14 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
         accuracy: common.accuracy,
         ..args.options
     };
-    let k =
-        kernel::table(&common.scene, &args.radii, &args.temperatures, &options).map_err(flagged)?;
+    let k = kernel::table_parallel(
+        &common.scene,
+        &args.radii,
+        &args.temperatures,
+        &options,
+        crate::parallel::threads(),
+    )
+    .map_err(flagged)?;
     let mut note = String::new();
     if let Some(path) = &args.svg {
         let (lo, hi) = args.range.unwrap_or_else(|| {
