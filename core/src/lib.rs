@@ -63,7 +63,7 @@ pub mod wire;
 // The paths the modules had before they moved into folders (issue 36) keep working.
 #[cfg(feature = "alloc")]
 #[doc(no_inline)]
-pub use applications::ring_sizes;
+pub use applications::{kernel, ring_sizes};
 #[doc(no_inline)]
 pub use applications::{dem, merge, ring, stick, tidal};
 #[doc(no_inline)]
