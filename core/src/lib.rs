@@ -53,6 +53,8 @@ pub mod figure;
 pub mod fit;
 #[cfg(feature = "alloc")]
 pub mod fit_scene;
+#[cfg(feature = "alloc")]
+pub mod kernel;
 pub mod kinematics;
 pub mod limits;
 mod math;

@@ -85,6 +85,24 @@ impl DampingRule {
             DampingRule::KeepEpsilon => "keep_epsilon",
         }
     }
+
+    /// The damping time A \[s\] of the pair `pair` when the pair `reference` has `a_ref`:
+    /// `a_ref` itself ([`DampingRule::Same`]) or
+    /// `a_ref·(R_eff/R_eff,ref)^(−1/5)·(m_eff/m_eff,ref)^(2/5)` ([`DampingRule::KeepEpsilon`]),
+    /// which keeps `A α^(2/5)` and so δ(g) and ε_N(g) of Eq. (4) (docs/physics.md#decision-3)
+    /// equal to the reference pair's (both pairs of one material: α ∝ √R_eff/m_eff). The error
+    /// names `damping_time` when the scaled A is not a finite positive number.
+    pub fn damping_time(self, a_ref: f64, reference: &Contact, pair: &Contact) -> Result<f64> {
+        match self {
+            DampingRule::Same => Ok(a_ref),
+            DampingRule::KeepEpsilon => positive(
+                "damping_time",
+                a_ref
+                    * crate::math::powf(pair.r_eff / reference.r_eff, -0.2)
+                    * crate::math::powf(pair.m_eff / reference.m_eff, 0.4),
+            ),
+        }
+    }
 }
 
 /// One size bin: its range, representative radius and number fraction.
@@ -631,10 +649,8 @@ fn build(scene: &Scene, tau: f64, omega: f64, bins: &[Bin], rule: DampingRule) -
             pair.grains.radius_2 = bj.radius;
             let mut contact = Contact::new(&pair)?;
             if rule == DampingRule::KeepEpsilon {
-                let a = a_ref
-                    * crate::math::powf(contact.r_eff / reference.r_eff, -0.2)
-                    * crate::math::powf(contact.m_eff / reference.m_eff, 0.4);
-                pair.bulk.damping = Damping::Time(positive("damping_time", a)?);
+                let a = rule.damping_time(a_ref, &reference, &contact)?;
+                pair.bulk.damping = Damping::Time(a);
                 contact = Contact::new(&pair)?;
             }
             if row_c.is_empty() && contacts.is_empty() {

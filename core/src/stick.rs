@@ -106,6 +106,36 @@ fn sticks(contact: &Contact, g: f64, accuracy: Accuracy) -> Result<bool> {
     Ok(matches!(n.status, Status::StuckByAdhesion | Status::StuckInLayer) || n.eps <= 0.0)
 }
 
+/// The smallest impact speed \[m/s\] at which `contact` rebounds with every effect its scene
+/// enables (the full model of [`Contact::normal`]), found by bisection in ln g to 1e-10; `None`
+/// when it sticks at every speed up to [`SEARCH_MAX`]. The rebound speed ε g grows with g, so the
+/// speeds that stick lie below this one.
+pub fn first_rebound_speed(contact: &Contact, accuracy: Accuracy) -> Result<Option<f64>> {
+    let v_elastic = contact.adhesion.map_or(0.0, |a| a.critical_velocity);
+    // The rebound speed ε g grows with g: bisect in ln g for the first rebounding speed.
+    Ok(if sticks(contact, SEARCH_MAX, accuracy)? {
+        None
+    } else {
+        let mut lo = v_elastic.max(1e-300) * 0.5;
+        while !sticks(contact, lo, accuracy)? {
+            lo *= 0.5;
+            if lo < 1e-300 {
+                break;
+            }
+        }
+        let mut hi = SEARCH_MAX;
+        while ln(hi / lo) > 1e-10 {
+            let mid = sqrt(lo * hi);
+            if sticks(contact, mid, accuracy)? {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        Some(hi)
+    })
+}
+
 /// Sticking thresholds for grains of `radius` \[m\] at `temperature` \[K\] in `base`'s material.
 pub fn threshold(
     base: &Scene,
@@ -123,28 +153,7 @@ pub fn threshold(
     let scene = scene_for(base, radius, gamma)?;
     let contact = Contact::new(&scene)?;
     let v_elastic = contact.adhesion.map_or(0.0, |a| a.critical_velocity);
-    // The rebound speed ε g grows with g: bisect in ln g for the first rebounding speed.
-    let v_stick = if sticks(&contact, SEARCH_MAX, accuracy)? {
-        None
-    } else {
-        let mut lo = v_elastic.max(1e-300) * 0.5;
-        while !sticks(&contact, lo, accuracy)? {
-            lo *= 0.5;
-            if lo < 1e-300 {
-                break;
-            }
-        }
-        let mut hi = SEARCH_MAX;
-        while ln(hi / lo) > 1e-10 {
-            let mid = sqrt(lo * hi);
-            if sticks(&contact, mid, accuracy)? {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        Some(hi)
-    };
+    let v_stick = first_rebound_speed(&contact, accuracy)?;
     Ok(Threshold {
         radius,
         temperature,
