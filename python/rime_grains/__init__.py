@@ -43,7 +43,9 @@ __all__ = [
     "collision",
     "thresholds",
     "compare",
+    "kernel",
     "data",
+    "dustpy",
     "rebound",
     "ring",
     "ACCURACY_LEVELS",
@@ -166,6 +168,47 @@ def compare(models, g, scene, accuracy="precise"):
     return _native.compare(list(models), g, _scene(scene), _accuracy(accuracy))
 
 
+def kernel(radii, temperatures, scene, *, a_rule="given", fit=None, temperature_rule="hold",
+           convention="surface", accuracy="fast"):
+    """The sticking speed of every pair of ``radii`` [m] at every temperature [K], as ``rime
+    kernel``: a dict with ``v_stick`` [m/s], shape (T, N, N), symmetric in the last two axes and
+    ``inf`` where the pair sticks at every speed (``status`` ``"always_sticks"``, else
+    ``"threshold"``), and what it was computed with (``gammas``: γ(T) per temperature and whether
+    it was measured there or held, ``damping_time``, ``fit``, ``method``, …).
+
+    The pair's R_eff and m_eff come from the two radii and the scene's density; A across sizes
+    follows ``a_rule`` (``"given"``, ``"keep_epsilon"``, ``"fit_measured"`` with ``fit=None`` for
+    Gundlach & Blum 2015 or ``fit=(radius [m], temperature [K], speed [m/s])``); γ(T) is Musiolik &
+    Wurm (2019), measured over 175–200 K and held at its ends outside (``temperature_rule="hold"``)
+    or refused (``"refuse"``). Equal radii give ``thresholds``'s ``stick`` for that pair:
+
+    >>> import numpy as np, rime_grains as rime
+    >>> ice = rime.Scene.preset("ice")
+    >>> k = rime.kernel([1e-4, 1e-3], [150.0, 200.0], ice)
+    >>> k["v_stick"].shape, [g["range"] for g in k["gammas"]]
+    ((2, 2, 2), ['held_cold', 'measured'])
+    >>> bool(np.array_equal(k["v_stick"], k["v_stick"].transpose(0, 2, 1)))
+    True
+    >>> rime.kernel([1e-4], [150.0], ice, temperature_rule="refuse")
+    Traceback (most recent call last):
+    ...
+    ValueError: temperatures: ...
+    """
+    import numpy as np
+
+    radii = np.atleast_1d(np.asarray(radii, dtype=float)).ravel()
+    temperatures = np.atleast_1d(np.asarray(temperatures, dtype=float)).ravel()
+    v, status, info = _native.kernel_table(list(radii), list(temperatures), _scene(scene),
+                                           a_rule=a_rule, fit=fit,
+                                           temperature_rule=temperature_rule,
+                                           convention=convention, accuracy=_accuracy(accuracy))
+    shape = (len(temperatures), len(radii), len(radii))
+    names = np.array(["threshold", "always_sticks"])
+    return {"radii": radii, "temperatures": temperatures, "v_stick": v.reshape(shape),
+            "status": names[status.reshape(shape)], **info}
+
+
 from . import data  # noqa: E402
 from . import ring  # noqa: E402
 from . import rebound  # noqa: E402
+from . import dustpy  # noqa: E402

@@ -5,6 +5,7 @@
 //! the GIL while it computes, and raises `ValueError` naming the offending field (no panic reaches
 //! Python: the crate denies `unwrap`/`expect`/`panic` like the rest of the workspace).
 
+mod kernel;
 mod rebound;
 mod ring;
 
@@ -677,6 +678,9 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(law_eval, m)?)?;
     m.add_function(wrap_pyfunction!(compare, m)?)?;
     m.add_function(wrap_pyfunction!(bench_batch, m)?)?;
+    m.add_function(wrap_pyfunction!(kernel::kernel_table, m)?)?;
+    m.add_function(wrap_pyfunction!(kernel::dustpy_p_stick, m)?)?;
+    m.add_function(wrap_pyfunction!(kernel::dustpy_p_frag_step, m)?)?;
     rebound::register(m)?;
     Ok(())
 }
