@@ -36,6 +36,15 @@ fn tables(c: &mut Criterion) {
             }
         }
     }
+    // A dust code's first update: one table per distinct temperature of 100 radial cells.
+    let temps: Vec<f64> = (0..100).map(|i| 40.0 + 2.1 * i as f64).collect();
+    let options = KernelOptions::default();
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    for threads in [1, cores] {
+        group.bench_function(format!("120x120x100/given/fast/{threads}threads"), |b| {
+            b.iter(|| kernel::table_parallel(&scene, black_box(&r), &temps, &options, threads))
+        });
+    }
     group.finish();
 }
 

@@ -502,6 +502,7 @@ fn scaling_law_threshold(
     ln_gamma56: f64,
     end: ContactEnd,
     resolution: Resolution,
+    grid: Option<&PsiGrid>,
 ) -> Option<f64> {
     let g_cap = SEARCH_MAX - law.layer_gs;
     if !(g_cap > 0.0) {
@@ -528,6 +529,19 @@ fn scaling_law_threshold(
     let mut fa = f(a);
     if a >= b {
         return None;
+    }
+    // Where Ψ is increasing, its grid narrows the bracket to one cell around the only root.
+    if let Some(grid) = grid {
+        let k = grid.psi.partition_point(|&p| p <= c);
+        if k >= 1 && k < grid.psi.len() {
+            let (ua, ub) = (grid.u(k - 1), grid.u(k));
+            if ua > a {
+                (a, fa) = (ua, grid.psi[k - 1] - c);
+            }
+            if ub < b {
+                (b, fb) = (ub, grid.psi[k] - c);
+            }
+        }
     }
     // Illinois false position, kept inside the bracket (midpoint when it leaves it or f is not
     // finite); fa ≤ 0 < fb throughout.
@@ -559,6 +573,41 @@ fn scaling_law_threshold(
     }
     let v_bulk = exp(k * (b - l));
     Some(law.layer_gs + v_bulk.min(g_cap))
+}
+
+/// Ψ(u) = 5 ln 10 u + ln ε(u) on a grid of u = log₁₀ δ, kept only where it increases
+/// strictly (the force-zero master curve; checked on the grid itself).
+#[derive(Debug, Clone)]
+struct PsiGrid {
+    u0: f64,
+    step: f64,
+    psi: Vec<f64>,
+}
+
+impl PsiGrid {
+    /// Lowest and highest u of the grid, and its cells per unit of u.
+    const RANGE: (f64, f64, f64) = (-12.0, 12.0, 64.0);
+
+    fn u(&self, k: usize) -> f64 {
+        self.u0 + k as f64 * self.step
+    }
+
+    fn new(end: ContactEnd, resolution: Resolution) -> Option<PsiGrid> {
+        let (lo, hi, per_unit) = Self::RANGE;
+        let n = ((hi - lo) * per_unit) as usize + 1;
+        let mut grid = PsiGrid {
+            u0: lo,
+            step: 1.0 / per_unit,
+            psi: Vec::with_capacity(n),
+        };
+        let k5 = 5.0 * LN10;
+        for i in 0..n {
+            let u = grid.u(i);
+            grid.psi
+                .push(k5 * u + ln(master::eps_log10(u, end, resolution)));
+        }
+        grid.psi.windows(2).all(|w| w[1] > w[0]).then_some(grid)
+    }
 }
 
 /// Checks radii and temperatures (errors name `radii`, `temperatures`).
@@ -595,6 +644,70 @@ fn check_grid(radii: &[f64], temperatures: &[f64]) -> Result<()> {
     Ok(())
 }
 
+/// What every temperature of a table shares: the pairs' laws (scaling law) or scenes' rule
+/// (bisection).
+struct Plan<'a> {
+    base: &'a Scene,
+    radii: &'a [f64],
+    damping: PairDamping,
+    accuracy: Accuracy,
+    /// The scaling law's per-pair constants (unordered pairs, i ≤ j, row by row), its table level
+    /// and Ψ's grid; `None`: bisection.
+    law: Option<(Vec<PairLaw>, Resolution, Option<PsiGrid>)>,
+}
+
+impl Plan<'_> {
+    /// Fills one temperature's N × N block (`v`, `status`, row-major, symmetric).
+    fn fill(&self, g: &Gamma, v: &mut [f64], status: &mut [StickStatus]) -> Result<()> {
+        let n = self.radii.len();
+        let mut put = |i: usize, j: usize, threshold: Option<f64>| {
+            let (value, s) = match threshold {
+                Some(x) => (x, StickStatus::Threshold),
+                None => (f64::INFINITY, StickStatus::AlwaysSticks),
+            };
+            for idx in [i * n + j, j * n + i] {
+                v[idx] = value;
+                status[idx] = s;
+            }
+        };
+        let end = self.base.contact_end;
+        match &self.law {
+            Some((laws, resolution, grid)) => {
+                let ln_gamma56 = 5.0 / 6.0 * ln(g.gamma);
+                let mut k = 0;
+                for i in 0..n {
+                    for j in i..n {
+                        put(
+                            i,
+                            j,
+                            scaling_law_threshold(
+                                &laws[k],
+                                ln_gamma56,
+                                end,
+                                *resolution,
+                                grid.as_ref(),
+                            ),
+                        );
+                        k += 1;
+                    }
+                }
+            }
+            None => {
+                for i in 0..n {
+                    for j in i..n {
+                        let scene =
+                            self.damping
+                                .scene(self.base, self.radii[i], self.radii[j], g.gamma)?;
+                        let c = Contact::new(&scene)?;
+                        put(i, j, stick::first_rebound_speed(&c, self.accuracy)?);
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
 /// The sticking kernel of `base`'s material: `v_stick` of every pair of `radii` \[m\] at every
 /// temperature of `temperatures` \[K\], with A across sizes by `options.a_rule`.
 ///
@@ -605,11 +718,26 @@ fn check_grid(radii: &[f64], temperatures: &[f64]) -> Result<()> {
 /// with no layer or an offset layer at `fast`/`precise` accuracy, each entry is one root on the
 /// master curve ([`Method::ScalingLaw`], module docs), otherwise a bisection on the full model.
 /// Errors name `radii`, `temperatures` or the scene field; on error nothing is returned.
+/// One thread; [`table_parallel`] spreads the temperatures over threads.
 pub fn table(
     base: &Scene,
     radii: &[f64],
     temperatures: &[f64],
     options: &KernelOptions,
+) -> Result<Kernel> {
+    table_parallel(base, radii, temperatures, options, 1)
+}
+
+/// [`table`] with the temperatures spread over up to `threads` threads (each temperature's
+/// block is computed by one thread exactly as [`table`] computes it: the result is bit for bit
+/// the same). `threads` ≤ 1, a single temperature, or a target without threads (wasm32, no
+/// `std`): one thread.
+pub fn table_parallel(
+    base: &Scene,
+    radii: &[f64],
+    temperatures: &[f64],
+    options: &KernelOptions,
+    threads: usize,
 ) -> Result<Kernel> {
     check_grid(radii, temperatures)?;
     base.validate()?;
@@ -626,27 +754,9 @@ pub fn table(
     let layer_ok = base
         .layer
         .is_none_or(|l| l.thickness == 0.0 || l.reading == LayerReading::Offset);
-    let method = if resolution.is_some() && layer_ok {
-        Method::ScalingLaw
-    } else {
-        Method::Bisection
-    };
     let n = radii.len();
-    let nt = gammas.len();
-    let mut v_stick = alloc::vec![f64::INFINITY; nt * n * n];
-    let mut status = alloc::vec![StickStatus::AlwaysSticks; nt * n * n];
-    let mut put = |t: usize, i: usize, j: usize, v: Option<f64>| {
-        let (value, s) = match v {
-            Some(v) => (v, StickStatus::Threshold),
-            None => (f64::INFINITY, StickStatus::AlwaysSticks),
-        };
-        for idx in [(t * n + i) * n + j, (t * n + j) * n + i] {
-            v_stick[idx] = value;
-            status[idx] = s;
-        }
-    };
-    match (method, resolution) {
-        (Method::ScalingLaw, Some(resolution)) => {
+    let law = match resolution {
+        Some(resolution) if layer_ok => {
             // γ = 1 J/m²: g_s of every temperature is this one times γ^(5/6) (Eq. (15)).
             let mut laws = Vec::with_capacity(n * (n + 1) / 2);
             for i in 0..n {
@@ -663,34 +773,26 @@ pub fn table(
                     });
                 }
             }
-            let end = base.contact_end;
-            for (t, g) in gammas.iter().enumerate() {
-                let ln_gamma56 = 5.0 / 6.0 * ln(g.gamma);
-                let mut k = 0;
-                for i in 0..n {
-                    for j in i..n {
-                        put(
-                            t,
-                            i,
-                            j,
-                            scaling_law_threshold(&laws[k], ln_gamma56, end, resolution),
-                        );
-                        k += 1;
-                    }
-                }
-            }
+            Some((laws, resolution, PsiGrid::new(base.contact_end, resolution)))
         }
-        _ => {
-            for (t, g) in gammas.iter().enumerate() {
-                for i in 0..n {
-                    for j in i..n {
-                        let c = Contact::new(&damping.scene(base, radii[i], radii[j], g.gamma)?)?;
-                        put(t, i, j, stick::first_rebound_speed(&c, options.accuracy)?);
-                    }
-                }
-            }
-        }
-    }
+        _ => None,
+    };
+    let method = if law.is_some() {
+        Method::ScalingLaw
+    } else {
+        Method::Bisection
+    };
+    let plan = Plan {
+        base,
+        radii,
+        damping,
+        accuracy: options.accuracy,
+        law,
+    };
+    let nt = gammas.len();
+    let mut v_stick = alloc::vec![f64::INFINITY; nt * n * n];
+    let mut status = alloc::vec![StickStatus::AlwaysSticks; nt * n * n];
+    fill_blocks(&plan, &gammas, &mut v_stick, &mut status, threads)?;
     Ok(Kernel {
         radii: radii.into(),
         gammas,
@@ -702,6 +804,67 @@ pub fn table(
         convention: options.convention,
         temperature_rule: options.temperature_rule,
         method,
+    })
+}
+
+/// Every temperature's block, on this thread.
+fn fill_sequential(
+    plan: &Plan,
+    gammas: &[Gamma],
+    v_stick: &mut [f64],
+    status: &mut [StickStatus],
+) -> Result<()> {
+    let nn = plan.radii.len() * plan.radii.len();
+    for ((g, v), s) in gammas
+        .iter()
+        .zip(v_stick.chunks_mut(nn))
+        .zip(status.chunks_mut(nn))
+    {
+        plan.fill(g, v, s)?;
+    }
+    Ok(())
+}
+
+#[cfg(not(all(feature = "std", not(target_arch = "wasm32"))))]
+fn fill_blocks(
+    plan: &Plan,
+    gammas: &[Gamma],
+    v_stick: &mut [f64],
+    status: &mut [StickStatus],
+    _threads: usize,
+) -> Result<()> {
+    fill_sequential(plan, gammas, v_stick, status)
+}
+
+/// The temperatures in contiguous runs, one run per thread (each block is the temperature's own
+/// contiguous N × N slice, so no two threads write the same memory).
+#[cfg(all(feature = "std", not(target_arch = "wasm32")))]
+fn fill_blocks(
+    plan: &Plan,
+    gammas: &[Gamma],
+    v_stick: &mut [f64],
+    status: &mut [StickStatus],
+    threads: usize,
+) -> Result<()> {
+    let threads = threads.min(gammas.len());
+    if threads <= 1 {
+        return fill_sequential(plan, gammas, v_stick, status);
+    }
+    let nn = plan.radii.len() * plan.radii.len();
+    let per = gammas.len().div_ceil(threads);
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = gammas
+            .chunks(per)
+            .zip(v_stick.chunks_mut(per * nn))
+            .zip(status.chunks_mut(per * nn))
+            .map(|((g, v), s)| scope.spawn(move || fill_sequential(plan, g, v, s)))
+            .collect();
+        handles.into_iter().try_for_each(|h| {
+            h.join().unwrap_or(Err(Error::InvalidValue {
+                field: "threads",
+                expected: "every kernel thread to finish (one panicked)",
+            }))
+        })
     })
 }
 
@@ -734,11 +897,19 @@ pub fn fit_measured(base: &Scene, m: &MeasuredSpeed, options: &KernelOptions) ->
     let elastic = Contact::new(&pair_scene(base, m.radius, m.radius, g.gamma, Some(0.0))?)?;
     let v_elastic = elastic.adhesion.map_or(0.0, |a| a.critical_velocity);
     let target = v_elastic / m.speed;
-    if !(target < 1.0) || base.layer.is_some_and(|l| l.thickness > 0.0) {
+    if base.layer.is_some_and(|l| l.thickness > 0.0) {
         return Err(Error::InvalidValue {
             field: "fit",
-            expected: "a measured speed above the elastic threshold g_s of Eq. (15) (no A ≥ 0 \
-                       lowers the threshold below g_s) and a scene without a layer",
+            expected: "a scene without a layer (the fit inverts the clean master curve)",
+        });
+    }
+    if !(target < 1.0) {
+        return Err(Error::OutOfRange {
+            field: "fit",
+            value: v_elastic,
+            expected: "the reference pair's elastic threshold g_s of Eq. (15) must lie below the \
+                       measured speed: no A ≥ 0 lowers the threshold below g_s (choose a larger \
+                       reference radius or a colder temperature)",
         });
     }
     // ε(u) falls monotonically from 1: bisect ln ε(u) = ln target in u = log₁₀ δ.
@@ -790,3 +961,6 @@ pub fn fit_measured(base: &Scene, m: &MeasuredSpeed, options: &KernelOptions) ->
 
 #[cfg(test)]
 mod tests;
+
+pub mod figure;
+pub use figure::diagonal_figure;

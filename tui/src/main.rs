@@ -43,6 +43,7 @@ fn run(command: Command) -> CliResult<Option<String>> {
         Command::Fit(c, a) => fit::run(&c, &a)?,
         Command::Data(c, a) => data::run(&c, &a)?,
         Command::Stick(c, a) => stick::run(&c, &a)?,
+        Command::Kernel(c, a) => kernel::run(&c, &a)?,
         Command::Ring(c, a) => ring::run(&c, &a)?,
         Command::Collision(c, a) => collision::run(&c, &a)?,
         Command::Figures(c, out, explorer) => figures::run(&c, &out, explorer.as_deref())?,

@@ -396,6 +396,63 @@ pub const SUBS: &[Sub] = &[
         example: "stick --radius 1e-6,1e-4 --temperature 150,200",
     },
     Sub {
+        name: "kernel",
+        usage: "kernel --radii R1..R2|LIST [--points N] [--temperatures LIST] [--a-rule RULE] [--svg FILE] [OPTIONS]",
+        about: "The sticking kernel for dust codes: v_stick(a_i, a_j, T) of every pair of radii at every \
+                temperature (γ(T) of Musiolik & Wurm 2019), with its provenance; --svg draws \
+                v_stick(a, a) per temperature with the measured 9.6 m/s of µm ice.",
+        flags: &[
+            f(
+                "--radii",
+                "R1..R2|LIST",
+                "a range, spaced equally in log (with --points), or a comma list; units allowed (1um..1cm)",
+            ),
+            f(
+                "--points",
+                "N",
+                "radii in a range (default 20, at most 1000)",
+            ),
+            f(
+                "--temperatures",
+                "LIST",
+                "temperatures in K (default 150,180,200)",
+            ),
+            f(
+                "--a-rule",
+                "RULE",
+                "A across sizes: given (default), keep-epsilon (A ∝ R_eff^-1/5 m_eff^2/5 from the scene's pair), fit-measured (one A fitted to 9.6 m/s, Gundlach & Blum 2015)",
+            ),
+            f(
+                "--fit-radius",
+                "R",
+                "fit-measured: both grains' radius of the reference pair (default 1.5 µm)",
+            ),
+            f(
+                "--fit-temperature",
+                "T",
+                "fit-measured: temperature of the reference pair in K (default 200)",
+            ),
+            f(
+                "--temperature-rule",
+                "RULE",
+                "outside γ(T)'s measured 175–200 K: hold (end values, default) or refuse",
+            ),
+            f(
+                "--gamma",
+                "READING",
+                "surface (γ is a surface energy, default) or adhesion (work of adhesion)",
+            ),
+            f(
+                "--svg",
+                "FILE",
+                "also draw v_stick(a, a) against a per temperature",
+            ),
+        ],
+        scene: true,
+        formats: ALL_FORMATS,
+        example: "kernel --radii 1um..1cm --points 20 --temperatures 150,200",
+    },
+    Sub {
         name: "collision",
         usage: "collision --g G [--gt G] [--points N] [OPTIONS]",
         about: "One collision from the inside: ξ(t), ξ'(t), the normal force F(t), its phases and the \

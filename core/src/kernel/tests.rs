@@ -56,6 +56,13 @@ fn issue_39_unequal_pairs_match_bisection_and_are_symmetric() {
         (Scene::default(), ARule::Given),
         (Scene::default(), ARule::KeepEpsilon),
         (layered, ARule::Given),
+        (
+            Scene {
+                contact_end: ContactEnd::ZeroOverlap,
+                ..Scene::default()
+            },
+            ARule::Given,
+        ),
     ] {
         let options = KernelOptions {
             a_rule: rule,
@@ -227,7 +234,7 @@ fn issue_39_fit_measured_reproduces_the_measured_speed() {
     let slow = MeasuredSpeed { speed: 0.1, ..m };
     assert!(matches!(
         fit_measured(&scene, &slow, &options),
-        Err(Error::InvalidValue { field: "fit", .. })
+        Err(Error::OutOfRange { field: "fit", .. })
     ));
 }
 
@@ -287,4 +294,36 @@ fn issue_39_bad_grids_are_refused_naming_the_field() {
     assert_eq!(field(table(&s, &[1e-3], &[], &o)), "temperatures");
     assert_eq!(field(table(&s, &[1e-3], &[f64::NAN], &o)), "temperatures");
     assert_eq!(field(table(&s, &[1e-3], &[0.0], &o)), "temperatures");
+}
+
+#[test]
+fn issue_39_the_rebound_speed_grows_with_the_impact_speed_under_force_zero() {
+    // g ε(δ(g)) increasing in g is what makes "sticks below v_stick" one threshold; Ψ's grid is
+    // kept only where it holds. Force zero: ε ~ (2/3) δ^(−5/3) for strong damping, Ψ' → 10/3.
+    for resolution in [Resolution::Coarse, Resolution::Fine] {
+        let grid = PsiGrid::new(ContactEnd::ForceZero, resolution).unwrap();
+        let n = grid.psi.len();
+        let slope = (grid.psi[n - 1] - grid.psi[n - 2]) / grid.step / LN10;
+        assert!((slope - 10.0 / 3.0).abs() < 1e-6, "{slope}");
+        // Weak damping: ε → 1, Ψ' → 5.
+        let slope0 = (grid.psi[1] - grid.psi[0]) / grid.step / LN10;
+        assert!((slope0 - 5.0).abs() < 1e-6, "{slope0}");
+    }
+}
+
+#[test]
+fn issue_39_threads_give_the_same_table_bit_for_bit() {
+    let temps = [140.0, 176.0, 181.0, 190.0, 199.0, 230.0, 187.5];
+    let options = KernelOptions::default();
+    let one = table(&Scene::default(), &RADII, &temps, &options).unwrap();
+    for threads in [2, 3, 7, 16] {
+        let many = table_parallel(&Scene::default(), &RADII, &temps, &options, threads).unwrap();
+        assert_eq!(many.status, one.status);
+        let bits = |k: &Kernel| k.v_stick.iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&many), bits(&one), "{threads} threads");
+    }
+    // Each temperature's block is that temperature's own table.
+    let single = table(&Scene::default(), &RADII, &[190.0], &options).unwrap();
+    let nn = RADII.len() * RADII.len();
+    assert_eq!(one.v_stick[3 * nn..4 * nn], single.v_stick[..]);
 }

@@ -12,6 +12,7 @@ pub mod export;
 pub mod figures;
 pub mod fit;
 pub mod help;
+pub mod kernel;
 pub mod lammps;
 pub mod map;
 pub mod ring;

@@ -23,7 +23,7 @@ pub struct Args {
     pub out: Option<PathBuf>,
 }
 
-fn list(flag: &str, text: &str, lo: f64, hi: f64, unit: &str) -> CliResult<Vec<f64>> {
+pub(crate) fn list(flag: &str, text: &str, lo: f64, hi: f64, unit: &str) -> CliResult<Vec<f64>> {
     let items: Vec<&str> = text.split(',').collect();
     if items.len() > 10_000 {
         return err(format!("{flag}: at most 10000 values"));

@@ -17,6 +17,7 @@ mod explorer_model;
 mod exported;
 mod issue_37;
 mod issue_38;
+mod issue_39;
 mod lammps;
 mod measured;
 mod models;
