@@ -71,7 +71,7 @@ class Kernel(TypedDict):
 
 def kernel(radii: ArrayLike, temperatures: ArrayLike, scene: Scene, *,
            a_rule: Literal["given", "keep_epsilon", "fit_measured"] = ...,
-           fit: Optional[tuple[float, float, float]] = ...,
+           fit: Optional[dict[str, Union[float, str]]] = ...,
            temperature_rule: Literal["hold", "refuse"] = ...,
            convention: Literal["surface", "adhesion"] = ...,
            accuracy: Accuracy = ...) -> Kernel: ...

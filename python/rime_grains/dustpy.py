@@ -1,28 +1,29 @@
-"""rime's sticking speeds inside DustPy: ``p.stick`` and ``p.frag`` updaters (DustPy 1.0.9).
+"""rime's sticking speeds inside DustPy 1.0.9: its ``p.stick`` (and ``p.frag``) updaters.
 
-``attach(sim, scene)`` replaces DustPy's two collision-outcome updaters, the recipe DustPy's
+``attach(sim, scene)`` replaces DustPy's sticking-probability updater, the recipe DustPy's
 maintainers give for new collision physics. Every collision of sizes (a_i, a_j) at relative speed
 Δv in a radial cell at gas temperature T then
 
-* **fragments** with DustPy's own probability: its ``pfrag`` at its fragmentation speed
-  ``sim.dust.v.frag`` (1 m/s by default), or at one you give with its source (``v_frag=``,
-  ``v_frag_source=``); rime has no fragmentation model;
+* **fragments** with DustPy's own probability: its ``p.frag`` updater is left as it is (DustPy's
+  ``pfrag`` at ``sim.dust.v.frag``, 1 m/s by default, or at a speed you give with its source:
+  ``v_frag=``, ``v_frag_source=``); rime has no fragmentation model;
 * **sticks** when its speed is below rime's sticking speed v_stick(a_i, a_j, T) of two compact
-  spheres (and below v_frag): the smallest impact speed at which the scene's model rebounds, with
-  γ(T) of Musiolik & Wurm (2019) and the rule for A across sizes you choose
-  (``rime_grains.kernel``, ``rime kernel``);
+  spheres and it does not fragment: p_stick = min(1 − p_frag, P(v < v_stick)); v_stick is the
+  smallest impact speed at which the scene's model rebounds, with γ(T) of Musiolik & Wurm (2019)
+  and the rule for A across sizes you choose (``rime_grains.kernel``, ``rime kernel``);
 * **bounces** otherwise: DustPy treats 1 − p_stick − p_frag as a collision without mass change.
 
 The speed of a collision is DustPy's: Δv is ``sim.dust.v.rel.tot`` (the rms of its Brownian,
 turbulent, drift and settling terms), and with ``velocity_distribution="maxwell"`` (default) the
 collision speeds follow the Maxwell–Boltzmann distribution DustPy 1.0.9's ``pfrag`` assumes: a
-collision exceeds v with probability F(v) = (1 + 3x/2)·exp(−3x/2), x = (v/Δv)², so
-p_frag = F(v_frag) and p_stick = 1 − F(min(v_stick, v_frag)). With ``"none"`` every collision has
-speed Δv: p_frag = [Δv ≥ v_frag], p_stick = [Δv < min(v_stick, v_frag)] (this changes DustPy's
-fragmentation too: its own formula always has the distribution). Where v_stick ≥ v_frag, p_stick is
-DustPy's own 1 − p_frag, bit for bit, so a scene that sticks at every speed reproduces DustPy's
-default run. Both arrays are symmetric in (i, j), p_stick + p_frag ≤ 1, and p_stick is 0 in the
-first and last radial cells (DustPy's boundary convention; its p_frag is 0 there too).
+collision exceeds v with probability F(v) = (1 + x)·exp(−x), x = 3/2 (v/Δv)², so with
+p_frag = F(v_frag), p_stick = 1 − F(min(v_stick, v_frag)). With ``"none"`` every collision has
+speed Δv: p_stick = [Δv < min(v_stick, v_frag)], and the p.frag updater is replaced by
+p_frag = [Δv ≥ v_frag] (DustPy's own formula always carries the distribution). Where v_stick is
+infinite (the pair sticks at every speed) p_stick is DustPy's own 1 − p_frag, bit for bit:
+``v_stick=np.inf`` reproduces DustPy's default run. Both arrays are symmetric in (i, j),
+p_stick + p_frag ≤ 1, and p_stick is 0 in the first and last radial cells (DustPy's boundary
+convention; its p_frag is 0 there too).
 
 Units: DustPy's side is cgs (sizes in cm, speeds in cm/s, density in g/cm³), in and out; rime's
 side (the scene, ``fit``) is SI as everywhere in rime_grains. The grain density is the
@@ -69,7 +70,7 @@ import warnings
 
 import numpy as np
 
-from . import _native
+from . import _fit_reference, _native, _positive
 
 __all__ = ["attach", "Attachment", "DensityWarning", "GammaRangeWarning", "DUSTPY_VERSION"]
 
@@ -96,43 +97,15 @@ class GammaRangeWarning(UserWarning):
     """Some radial cells lie outside the temperatures where γ(T) was measured."""
 
 
-def _positive(field, value):
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{field}: expected a number (got {value!r})") from None
-    if not (math.isfinite(x) and x > 0):
-        raise ValueError(f"{field}: must be finite and > 0 (got {value!r})")
-    return x
-
-
-def _fit(fit):
-    """``fit`` as the native (radius [m], temperature [K], speed [m/s]) and its source."""
-    if fit is None:
-        return None, None
-    if not isinstance(fit, dict):
-        raise ValueError("fit: expected a dict with radius [m], temperature [K], speed [m/s] and source")
-    unknown = set(fit) - {"radius", "temperature", "speed", "source"}
-    if unknown:
-        raise ValueError(f"fit: unknown keys {sorted(unknown)} (radius, temperature, speed, source)")
-    for key in ("radius", "temperature", "speed", "source"):
-        if key not in fit:
-            raise ValueError(f"fit.{key}: required (radius [m], temperature [K], speed [m/s], source)")
-    source = fit["source"]
-    if not isinstance(source, str) or not source.strip():
-        raise ValueError("fit.source: name where the measured speed comes from (a citation)")
-    return (_positive("fit.radius", fit["radius"]), _positive("fit.temperature", fit["temperature"]),
-            _positive("fit.speed", fit["speed"])), source
-
-
 class Attachment:
     """rime's updaters on one DustPy simulation (returned by ``attach``).
 
     ``provenance`` is a dict of everything the sticking probabilities came from (rime's version,
     the scene, the A rule and A, γ(T)'s source and range, the density, DustPy's fields used, the
     fragmentation speed and its source, what is not modelled); ``density`` the grain density
-    [g/cm³]; ``temperatures`` the rounded temperature [K] of every radial cell at the last update
-    (NaN at the boundary cells); ``gamma_ranges`` where each lies (``measured``, ``held_cold``,
+    [g/cm³]; ``temperatures`` the temperature [K] each radial cell's table was computed at, at the
+    last update (rounded; held at 175 K or 200 K beyond them under ``hold``; NaN at the boundary
+    cells); ``gamma_ranges`` where each cell's own temperature lies (``measured``, ``held_cold``,
     ``held_warm``; ``boundary``); ``cache_info()`` the table cache; ``v_stick(T)`` rime's table at
     one temperature [cm/s]; ``detach()`` restores DustPy's own updaters.
     """
@@ -323,7 +296,7 @@ class Attachment:
                 warnings.warn(
                     f"rime_grains.dustpy: γ(T) (Musiolik & Wurm 2019) is measured over "
                     f"{lo:g}–{hi:g} K; " + "; ".join(parts) + " (temperature_rule='hold')",
-                    GammaRangeWarning, stacklevel=5)
+                    GammaRangeWarning, stacklevel=4)
         self.gamma_ranges = ranges
         self.provenance["sticking"]["gamma"]["cells"] = {
             r: ranges.count(r) for r in ("measured", "held_cold", "held_warm", "boundary")}
@@ -436,9 +409,14 @@ def attach(sim, scene, *, a_rule="given", fit=None, temperature_rule="hold", con
         if not isinstance(scene, Scene):
             raise ValueError(f"scene: expected a rime_grains.Scene, e.g. Scene.preset('ice') "
                              f"(got {type(scene).__name__})")
+    if temperature_rule not in ("hold", "refuse"):
+        raise ValueError(f"temperature_rule: unknown rule {temperature_rule!r} (hold or refuse)")
+    if convention not in ("surface", "adhesion"):
+        raise ValueError(f"convention: unknown convention {convention!r} (surface or adhesion)")
+    a_rule = a_rule.replace("-", "_") if isinstance(a_rule, str) else a_rule
     if a_rule not in ("given", "keep_epsilon", "fit_measured"):
         raise ValueError(f"a_rule: unknown rule {a_rule!r} (one of given, keep_epsilon, fit_measured)")
-    native_fit, fit_source = _fit(fit)
+    native_fit, fit_source = _fit_reference(fit)
     if native_fit is not None and a_rule != "fit_measured":
         raise ValueError('fit: only with a_rule="fit_measured" (the other rules fit nothing)')
     step = float(temperature_step)

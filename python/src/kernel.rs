@@ -17,7 +17,8 @@ use rime_core::stick::Convention;
 /// The rule for A by name; `fit` (radius [m], temperature [K], speed [m/s]) only with
 /// `fit_measured` (default there: Gundlach & Blum 2015).
 fn a_rule(name: &str, fit: Option<(f64, f64, f64)>) -> PyResult<ARule> {
-    match (name, fit) {
+    // The command line's spellings (`keep-epsilon`) too.
+    match (name.replace('-', "_").as_str(), fit) {
         ("given", None) => Ok(ARule::Given),
         ("keep_epsilon", None) => Ok(ARule::KeepEpsilon),
         ("fit_measured", None) => Ok(ARule::FitMeasured(MeasuredSpeed::GUNDLACH_2015)),
@@ -92,8 +93,10 @@ pub(crate) fn kernel_table<'py>(
         accuracy: crate::accuracy(accuracy)?,
     };
     let base = scene.scene;
+    // Temperatures spread over the machine's threads (bit for bit the one-thread table).
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     let k = py
-        .detach(|| kernel::table(&base, &radii, &temperatures, &options))
+        .detach(|| kernel::table_parallel(&base, &radii, &temperatures, &options, threads))
         .map_err(core_error)?;
     let info = PyDict::new(py);
     let gammas = PyList::empty(py);
@@ -249,7 +252,7 @@ pub(crate) fn dustpy_p_stick<'py>(
             format!("no table {} (there are {k})", cells[at]),
         ));
     }
-    if let Some(at) = tab.iter().position(|x| !(*x > 0.0)) {
+    if let Some(at) = tab.iter().position(|x| x.is_nan() || *x <= 0.0) {
         return Err(value_error(
             &format!("tables[{at}]"),
             format!("a sticking speed must be > 0 cm/s (got {})", tab[at]),
@@ -269,9 +272,9 @@ pub(crate) fn dustpy_p_stick<'py>(
     let p = writable.as_slice_mut().map_err(|e| value_error("out", e))?;
     // The first entry read that is not a relative speed or a probability (index, which).
     let bad = py.detach(|| {
-        for ir in 0..nr {
+        for (ir, &table_of_cell) in cells.iter().enumerate() {
             let cell = ir * nm * nm;
-            let Ok(t) = usize::try_from(cells[ir]) else {
+            let Ok(t) = usize::try_from(table_of_cell) else {
                 // No table: p_stick = 0 (DustPy's boundary cells).
                 p[cell..cell + nm * nm].fill(0.0);
                 continue;
@@ -358,11 +361,11 @@ pub(crate) fn dustpy_p_frag_step<'py>(
     }
     let mut out = vec![0.0; nr * nm * nm];
     py.detach(|| {
-        for ir in 1..nr.saturating_sub(1) {
+        for (ir, &v_f) in vf.iter().enumerate().take(nr.saturating_sub(1)).skip(1) {
             let cell = ir * nm * nm;
             for i in 0..nm {
                 for j in i..nm {
-                    let p = if v[cell + i * nm + j] >= vf[ir] {
+                    let p = if v[cell + i * nm + j] >= v_f {
                         1.0
                     } else {
                         0.0
@@ -373,5 +376,5 @@ pub(crate) fn dustpy_p_frag_step<'py>(
             }
         }
     });
-    Ok(PyArray1::from_vec(py, out).reshape([nr, nm, nm])?)
+    PyArray1::from_vec(py, out).reshape([nr, nm, nm])
 }

@@ -362,6 +362,8 @@ def test_issue_39_bad_input_names_the_argument():
         (dict(cache_size=0), "cache_size"),
         (dict(v_stick=0.0), "v_stick"),
         (dict(accuracy="sloppy"), "accuracy"),
+        (dict(temperature_rule="extrapolate"), "temperature_rule"),
+        (dict(convention="energy"), "convention"),
     ]
     for kwargs, field in cases:
         with pytest.raises(ValueError, match=rf"^{field}: "):
