@@ -42,7 +42,7 @@ pub enum Command {
     /// `rime stick --radius LIST [--temperature LIST] [--gamma surface|adhesion] [--out DIR]`.
     Stick(Common, crate::commands::stick::Args),
     /// `rime kernel --radii R1..R2|LIST [--points N] [--temperatures LIST] [--a-rule RULE] [--svg FILE]`.
-    Kernel(Common, crate::commands::kernel::Args),
+    Kernel(Common, Box<crate::commands::kernel::Args>),
     /// `rime collision --g G [--gt G] [--points N]`.
     Collision(Common, crate::commands::collision::Args),
     /// `rime figures --out DIR`.
@@ -366,7 +366,7 @@ fn subcommand(sub: &'static Sub, common: Common, given: &Given) -> CliResult<Com
         "fit" => Command::Fit(common, crate::commands::fit::parse(&owned)?),
         "data" => Command::Data(common, crate::commands::data::parse(&owned)?),
         "stick" => Command::Stick(common, crate::commands::stick::parse(&owned)?),
-        "kernel" => Command::Kernel(common, crate::commands::kernel::parse(&owned)?),
+        "kernel" => Command::Kernel(common, Box::new(crate::commands::kernel::parse(&owned)?)),
         "ring" => Command::Ring(common, crate::commands::ring::parse(&owned, &given.sets)?),
         "collision" => Command::Collision(common, crate::commands::collision::parse(&owned)?),
         "bench" => {

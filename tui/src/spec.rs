@@ -634,7 +634,7 @@ pub const HELP_WIDTH: usize = 80;
 
 /// Wraps `text` after the verbatim `prefix` at [`HELP_WIDTH`] columns, continuation lines indented
 /// by `indent` spaces.
-fn wrap(prefix: &str, text: &str, indent: usize) -> String {
+pub(crate) fn wrap(prefix: &str, text: &str, indent: usize) -> String {
     let mut out = prefix.to_string();
     let mut width = prefix.chars().count();
     for (k, word) in text.split_whitespace().enumerate() {

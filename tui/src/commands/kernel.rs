@@ -59,8 +59,11 @@ fn log_spaced(lo: f64, hi: f64, n: usize) -> Vec<f64> {
     out
 }
 
+/// The radii, and the range they were spaced over (`R1..R2`).
+type Radii = (Vec<f64>, Option<(f64, f64)>);
+
 /// Reads `--radii R1..R2 [--points N]` or `--radii LIST`.
-fn parse_radii(get: &dyn Fn(&str) -> Option<String>) -> CliResult<(Vec<f64>, Option<(f64, f64)>)> {
+fn parse_radii(get: &dyn Fn(&str) -> Option<String>) -> CliResult<Radii> {
     let text = get("--radii").ok_or_else(|| {
         CliError::input(
             "--radii: required: a range R1..R2 (with --points) or a list, units allowed (1um..1cm)",
@@ -68,7 +71,8 @@ fn parse_radii(get: &dyn Fn(&str) -> Option<String>) -> CliResult<(Vec<f64>, Opt
     })?;
     if let Some((lo, hi)) = text.split_once("..") {
         let (lo, hi) = (radius("--radii", lo)?, radius("--radii", hi)?);
-        if !(hi > lo) {
+        // Both are finite (checked by `radius`).
+        if hi <= lo {
             return err(format!(
                 "--radii: the range's end {} must exceed its start {}",
                 Number(hi),
@@ -460,7 +464,11 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
             s.push_str(
                 "each unordered pair once (v_stick is symmetric); all pairs: --format csv|json\n",
             );
-            s.push_str(&provenance_lines(&k, ""));
+            // Wrapped at 80 columns (the CSV keeps one line each).
+            for line in provenance_lines(&k, "").lines() {
+                s.push_str(&crate::spec::wrap("", line, 2));
+                s.push('\n');
+            }
             s + &note
         }
     })
