@@ -26,7 +26,9 @@ Traceback (most recent call last):
 ValueError: layer.thickness: expected a length, e.g. 1e-6, 1 um, 2 cm
 
 ``rime_grains.rebound.attach`` sets a REBOUND collision handler (native code in this wheel);
-``rime_grains.data.law`` evaluates measured laws of ice.
+``rime_grains.data.law`` evaluates measured laws of ice; ``rime_grains.kernel`` gives the sticking
+speed of every pair of radii at every temperature, and ``rime_grains.dustpy.attach`` puts it into
+DustPy (cgs on DustPy's side).
 """
 
 from . import _native
@@ -200,7 +202,7 @@ def _fit_reference(fit):
 
 
 def kernel(radii, temperatures, scene, *, a_rule="given", fit=None, temperature_rule="hold",
-           convention="surface", accuracy="fast"):
+           convention="surface", accuracy="precise"):
     """The sticking speed of every pair of ``radii`` [m] at every temperature [K], as ``rime
     kernel``: a dict with ``v_stick`` [m/s], shape (T, N, N), symmetric in the last two axes and
     ``inf`` where the pair sticks at every speed (``status`` ``"always_sticks"``, else

@@ -351,7 +351,7 @@ class Attachment:
 
 
 def attach(sim, scene, *, a_rule="given", fit=None, temperature_rule="hold", convention="surface",
-           accuracy="fast", velocity_distribution="maxwell", v_frag=None, v_frag_source=None,
+           accuracy="precise", velocity_distribution="maxwell", v_frag=None, v_frag_source=None,
            v_stick=None, temperature_step=0.01, cache_size=256):
     """Sets ``sim.dust.p.stick`` and ``sim.dust.p.frag`` updaters from rime's sticking speed.
 
@@ -366,8 +366,8 @@ def attach(sim, scene, *, a_rule="given", fit=None, temperature_rule="hold", con
       200 K; or ``fit={"radius": m, "temperature": K, "speed": m/s, "source": "citation"}``).
     * ``temperature_rule``: ``"hold"`` or ``"refuse"`` outside γ(T)'s measured 175–200 K;
       ``convention``: ``"surface"`` (the source's γ is a surface energy, w = 2γ) or ``"adhesion"``;
-      ``accuracy``: ``"fast"`` or ``"precise"`` (the scaling law on the master curve), or a slower
-      level (bisection on the full model).
+      ``accuracy``: ``"precise"`` (default) or ``"fast"`` (the scaling law on the master curve's fine
+      or coarse table), or a slower level (bisection on the full model).
     * ``velocity_distribution``: ``"maxwell"`` (DustPy 1.0.9's, default) or ``"none"``.
     * ``v_frag`` [cm/s] (a number or one per radial cell) replaces ``sim.dust.v.frag`` and needs
       ``v_frag_source``, where the number comes from; default: DustPy's field as it is.

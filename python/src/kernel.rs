@@ -68,7 +68,7 @@ fn convention(name: &str) -> PyResult<Convention> {
 /// the pair sticks at every speed), the status codes (0 threshold, 1 always sticks) and a dict of
 /// what it was computed with.
 #[pyfunction]
-#[pyo3(signature = (radii, temperatures, scene, *, a_rule = "given", fit = None, temperature_rule = "hold", convention = "surface", accuracy = "fast"))]
+#[pyo3(signature = (radii, temperatures, scene, *, a_rule = "given", fit = None, temperature_rule = "hold", convention = "surface", accuracy = "precise"))]
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
 // Long by design: every keyword checked at the boundary with a named error, then one call.
 pub(crate) fn kernel_table<'py>(

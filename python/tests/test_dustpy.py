@@ -387,3 +387,31 @@ def test_issue_39_bad_input_names_the_argument():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         attach(sim, ice).detach()
+
+
+def test_issue_39_kernel_equals_the_command_line():
+    """rime_grains.kernel and `rime kernel` are the same core function behind two front ends:
+    every record, to the digit (JSON keeps every digit), with the same provenance numbers."""
+    ice = rime.Scene.preset("ice")
+    for rule, fit_args in (("given", []), ("fit_measured", ["--fit-radius", "2e-6"])):
+        args = [rime_binary(), "kernel", "--radii", "1um..1cm", "--points", "9", "--temperatures",
+                "150,180,200", "--a-rule", rule, *fit_args, "--format", "json"]
+        cli = json.loads(subprocess.run(args, check=True, capture_output=True, text=True).stdout)
+        radii = sorted({r["radius_1"] for r in cli["records"]})
+        fit = None if rule == "given" else {"radius": 2e-6, "temperature": 200.0, "speed": 9.6,
+                                            "source": "gundlach2015"}
+        k = rime.kernel(radii, [150.0, 180.0, 200.0], ice, a_rule=rule, fit=fit)
+        n = len(radii)
+        assert len(cli["records"]) == 3 * n * n
+        for index, record in enumerate(cli["records"]):
+            t, i, j = index // (n * n), index // n % n, index % n
+            assert (record["radius_1"], record["radius_2"]) == (radii[i], radii[j])
+            assert record["temperature"] == k["temperatures"][t]
+            got = k["v_stick"][t, i, j]
+            assert record["status"] == k["status"][t, i, j]
+            assert (record["v_stick"] is None and got == math.inf) or record["v_stick"] == got
+        assert [g["range"] for g in k["gammas"]] == [g["gamma_range"] for g in cli["temperatures"]]
+        assert k["damping_time"] == cli["provenance"]["damping_time"]
+        # Both outcomes compared (with the fitted A of 7 ns every pair has a threshold).
+        assert any(r["status"] == "threshold" for r in cli["records"])
+        assert any(r["status"] == "always_sticks" for r in cli["records"]) == (rule == "given")
