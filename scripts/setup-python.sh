@@ -28,6 +28,11 @@ for name, version in wanted:
 PY
 )
 if [ -n "$missing" ]; then
+  # DustPy ships as source only and its build needs a Fortran compiler: install it (as root) or
+  # say what is missing, before pip fails deep inside meson.
+  if echo "$missing" | grep -q '^dustpy==' && ! command -v gfortran >/dev/null; then
+    scripts/setup-apt.sh
+  fi
   echo "setup-python: installing $(echo $missing | tr '\n' ' ')"
   # shellcheck disable=SC2086
   "$venv/bin/python" -m pip install -q --disable-pip-version-check $missing

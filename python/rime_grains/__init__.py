@@ -26,7 +26,9 @@ Traceback (most recent call last):
 ValueError: layer.thickness: expected a length, e.g. 1e-6, 1 um, 2 cm
 
 ``rime_grains.rebound.attach`` sets a REBOUND collision handler (native code in this wheel);
-``rime_grains.data.law`` evaluates measured laws of ice.
+``rime_grains.data.law`` evaluates measured laws of ice; ``rime_grains.kernel`` gives the sticking
+speed of every pair of radii at every temperature, and ``rime_grains.dustpy.attach`` puts it into
+DustPy (cgs on DustPy's side).
 """
 
 from . import _native
@@ -43,7 +45,9 @@ __all__ = [
     "collision",
     "thresholds",
     "compare",
+    "kernel",
     "data",
+    "dustpy",
     "rebound",
     "ring",
     "ACCURACY_LEVELS",
@@ -166,6 +170,83 @@ def compare(models, g, scene, accuracy="precise"):
     return _native.compare(list(models), g, _scene(scene), _accuracy(accuracy))
 
 
+def _positive(field, value):
+    import math
+
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{field}: expected a number (got {value!r})") from None
+    if not (math.isfinite(x) and x > 0):
+        raise ValueError(f"{field}: must be finite and > 0 (got {value!r})")
+    return x
+
+
+def _fit_reference(fit):
+    """``fit`` as the native (radius [m], temperature [K], speed [m/s]) and its source."""
+    if fit is None:
+        return None, None
+    if not isinstance(fit, dict):
+        raise ValueError("fit: expected a dict with radius [m], temperature [K], speed [m/s] and source")
+    unknown = set(fit) - {"radius", "temperature", "speed", "source"}
+    if unknown:
+        raise ValueError(f"fit: unknown keys {sorted(unknown)} (radius, temperature, speed, source)")
+    for key in ("radius", "temperature", "speed", "source"):
+        if key not in fit:
+            raise ValueError(f"fit.{key}: required (radius [m], temperature [K], speed [m/s], source)")
+    source = fit["source"]
+    if not isinstance(source, str) or not source.strip():
+        raise ValueError("fit.source: name where the measured speed comes from (a citation)")
+    return (_positive("fit.radius", fit["radius"]), _positive("fit.temperature", fit["temperature"]),
+            _positive("fit.speed", fit["speed"])), source
+
+
+def kernel(radii, temperatures, scene, *, a_rule="given", fit=None, temperature_rule="hold",
+           convention="surface", accuracy="precise"):
+    """The sticking speed of every pair of ``radii`` [m] at every temperature [K], as ``rime
+    kernel``: a dict with ``v_stick`` [m/s], shape (T, N, N), symmetric in the last two axes and
+    ``inf`` where the pair sticks at every speed (``status`` ``"always_sticks"``, else
+    ``"threshold"``), and what it was computed with (``gammas``: γ(T) per temperature and whether
+    it was measured there or held, ``damping_time``, ``fit``, ``method``, …).
+
+    The pair's R_eff and m_eff come from the two radii and the scene's density; A across sizes
+    follows ``a_rule`` (``"given"``, ``"keep_epsilon"``, ``"fit_measured"`` with ``fit=None`` for
+    Gundlach & Blum 2015 or ``fit=(radius [m], temperature [K], speed [m/s])``); γ(T) is Musiolik &
+    Wurm (2019), measured over 175–200 K and held at its ends outside (``temperature_rule="hold"``)
+    or refused (``"refuse"``). ``fit`` is ``{"radius": m, "temperature": K, "speed": m/s,
+    "source": "citation"}`` (the source is kept in the result's ``fit.entry``). Equal radii give
+    ``thresholds``'s ``stick`` for that pair:
+
+    >>> import numpy as np, rime_grains as rime
+    >>> ice = rime.Scene.preset("ice")
+    >>> k = rime.kernel([1e-4, 1e-3], [150.0, 200.0], ice)
+    >>> k["v_stick"].shape, [g["range"] for g in k["gammas"]]
+    ((2, 2, 2), ['held_cold', 'measured'])
+    >>> bool(np.array_equal(k["v_stick"], k["v_stick"].transpose(0, 2, 1)))
+    True
+    >>> rime.kernel([1e-4], [150.0], ice, temperature_rule="refuse")
+    Traceback (most recent call last):
+    ...
+    ValueError: temperatures: ...
+    """
+    import numpy as np
+
+    radii = np.atleast_1d(np.asarray(radii, dtype=float)).ravel()
+    temperatures = np.atleast_1d(np.asarray(temperatures, dtype=float)).ravel()
+    reference, source = _fit_reference(fit)
+    v, status, info = _native.kernel_table(list(radii), list(temperatures), _scene(scene),
+                                           a_rule=a_rule, fit=reference,
+                                           temperature_rule=temperature_rule,
+                                           convention=convention, accuracy=_accuracy(accuracy))
+    shape = (len(temperatures), len(radii), len(radii))
+    names = np.array(["threshold", "always_sticks"])
+    if info["fit"] is not None and source is not None:
+        info["fit"]["entry"] = source
+    return {"radii": radii, "temperatures": temperatures, "v_stick": v.reshape(shape),
+            "status": names[status.reshape(shape)], **info}
+
+
 from . import data  # noqa: E402
 from . import ring  # noqa: E402
 from . import rebound  # noqa: E402
+from . import dustpy  # noqa: E402

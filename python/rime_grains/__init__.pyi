@@ -5,6 +5,7 @@ import numpy as np
 import numpy.typing as npt
 
 from . import data as data
+from . import dustpy as dustpy
 from . import rebound as rebound
 from . import ring as ring
 
@@ -52,3 +53,25 @@ class Thresholds(TypedDict):
 def thresholds(scene: Scene, accuracy: Accuracy = ...) -> Thresholds: ...
 def compare(models: Sequence[str], g: ArrayLike, scene: Scene,
             accuracy: Accuracy = ...) -> dict[str, Union[float, Speeds]]: ...
+
+class Kernel(TypedDict):
+    radii: npt.NDArray[np.float64]
+    temperatures: npt.NDArray[np.float64]
+    v_stick: npt.NDArray[np.float64]
+    status: npt.NDArray[np.str_]
+    gammas: list[dict[str, Any]]
+    a_rule: str
+    damping_time: float
+    fit: Optional[dict[str, Any]]
+    convention: str
+    temperature_rule: str
+    method: str
+    gamma_entry: str
+    measured_range: list[float]
+
+def kernel(radii: ArrayLike, temperatures: ArrayLike, scene: Scene, *,
+           a_rule: Literal["given", "keep_epsilon", "fit_measured"] = ...,
+           fit: Optional[dict[str, Union[float, str]]] = ...,
+           temperature_rule: Literal["hold", "refuse"] = ...,
+           convention: Literal["surface", "adhesion"] = ...,
+           accuracy: Accuracy = ...) -> Kernel: ...

@@ -6,6 +6,7 @@
 //! Python: the crate denies `unwrap`/`expect`/`panic` like the rest of the workspace).
 
 mod counters;
+mod kernel;
 mod rebound;
 mod ring;
 
@@ -678,6 +679,9 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(law_eval, m)?)?;
     m.add_function(wrap_pyfunction!(compare, m)?)?;
     m.add_function(wrap_pyfunction!(bench_batch, m)?)?;
+    m.add_function(wrap_pyfunction!(kernel::kernel_table, m)?)?;
+    m.add_function(wrap_pyfunction!(kernel::dustpy_p_stick, m)?)?;
+    m.add_function(wrap_pyfunction!(kernel::dustpy_p_frag_step, m)?)?;
     rebound::register(m)?;
     Ok(())
 }

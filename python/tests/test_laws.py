@@ -222,7 +222,8 @@ def test_type_stubs_are_shipped_and_cover_the_api():
 
     package = pathlib.Path(rime.__file__).parent
     assert (package / "py.typed").exists()
-    for module, stub in ((rime, "__init__.pyi"), (rime.rebound, "rebound.pyi"), (rime.data, "data.pyi")):
+    for module, stub in ((rime, "__init__.pyi"), (rime.rebound, "rebound.pyi"), (rime.data, "data.pyi"),
+                         (rime.dustpy, "dustpy.pyi")):
         tree = ast.parse((package / stub).read_text(encoding="utf-8"))
         names = {n.name for n in tree.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))}
         names |= {t.id for n in tree.body if isinstance(n, ast.AnnAssign) for t in [n.target]}

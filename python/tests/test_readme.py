@@ -15,15 +15,19 @@ def snippets():
 
 
 def test_the_section_has_its_examples():
-    assert len(snippets()) == 5
+    assert len(snippets()) == 6
 
 
-@pytest.mark.parametrize("index", range(5))
+@pytest.mark.parametrize("index", range(6))
 def test_readme_example_runs(index, tmp_path, monkeypatch, capsys):
+    from rime_grains.dustpy import GammaRangeWarning
+
     monkeypatch.chdir(tmp_path)  # the REBOUND example writes run.bin
     with warnings.catch_warnings():
         # REBOUND's reminder on loading a snapshot ("set function pointers again") is expected.
         warnings.simplefilter("ignore", RuntimeWarning)
+        # The DustPy example's disk is colder than 175 K outside 1.6 AU: γ held, as it says.
+        warnings.simplefilter("ignore", GammaRangeWarning)
         exec(compile(snippets()[index], f"README.md example {index + 1}", "exec"), {})
     out = capsys.readouterr().out
     if index == 2:
@@ -34,3 +38,7 @@ def test_readme_example_runs(index, tmp_path, monkeypatch, capsys):
         lines = out.splitlines()
         assert [line.split(":")[0] for line in lines[:4]] == [f"orbit {k}" for k in range(1, 5)]
         assert lines[4].startswith("predicted: ν_trans")
+    if index == 5:  # DustPy (issue 39): four active cells, the warm inner ones inside γ's range
+        lines = out.splitlines()
+        assert len(lines) == 4 and "(measured)" in lines[0] and "(held_cold)" in lines[-1]
+        assert all(" mm" in line for line in lines)

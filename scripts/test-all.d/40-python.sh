@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # rime from Python (issue 23): builds the abi3 wheel with maturin (in the workspace's target
 # directory), installs it into target/venv and runs the pytest suite there: python/tests (against
-# the `rime` binary and REBOUND 5.2.2), the doctests of the installed package and the README's
-# Python examples. Ends with pytest's summary line.
+# the `rime` binary, REBOUND 5.2.2 and DustPy 1.0.9), the doctests of the installed package and the
+# README's Python examples. Ends with pytest's summary line.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 scripts/setup-python.sh
@@ -22,6 +22,9 @@ echo "wheel: $(basename "$wheel"), $(du -k "$wheel" | cut -f1) KiB, built in ${b
 # The benchmark reports (never asserts): 1e6 speeds at `fast` against the Rust batch path, and the
 # cost per collision against REBOUND's hard-sphere resolve with a compiled C Bridges law.
 ("$venv/bin/python" python/bench/bench.py --quick || echo "benchmark failed (not a test)") |
+  sed 's/^/report: /'
+# rime_grains.dustpy's update cost on DustPy's default disk (100 cells × 120² pairs; issue 39).
+("$venv/bin/python" python/bench/dustpy_bench.py --quick || echo "DustPy benchmark failed (not a test)") |
   sed 's/^/report: /'
 # From the repository root: `python/` is not on sys.path, so the tests import the installed wheel.
 out=$(mktemp)
