@@ -27,7 +27,8 @@
 //! The crate is `#![no_std]` (its error implements `core::error::Error`); feature `std`
 //! (default) adds the platform's libm, `alloc` adds the `Vec` helpers, `serde` the JSON form of
 //! scenes, `explorer` (needs only `alloc`) the explorer model
-//! shared by the terminal and the web page, `plot` (needs `std`) rendering of figures with plotters.
+//! shared by the terminal and the web page, `plot` (needs `std`) rendering of figures with plotters,
+//! `json` (needs `std`) what the web page's binding does with JSON text (`explorer::page`).
 
 #![no_std]
 // `!(x > 0.0)` deliberately treats NaN as invalid; index loops mirror the formulas they implement.
@@ -73,6 +74,8 @@ pub mod tidal;
 pub mod units;
 #[cfg(all(feature = "serde", feature = "alloc"))]
 pub mod wire;
+#[cfg(feature = "json")]
+pub mod wire_read;
 
 pub use accuracy::Accuracy;
 pub use contact::Contact;
