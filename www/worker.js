@@ -12,7 +12,7 @@ import init, { Explorer, FrameShare, PendingFrame, computeFrame, ringCard } from
 
 let ready = null;
 // The other frame worker of the pool (a MessagePort the page hands over): a refinement's units are
-// split between the two when the refinement is dear (issue 26; wasm/src/split.rs). This worker
+// split between the two when the refinement is dear (issue 26; rime_core::explorer::share). This worker
 // helps with a share after its preview, and takes the other's share for its own refinements.
 let peer = null;
 let latestGen = 0; // the newest request this worker was asked for: a stale share stops

@@ -2,8 +2,10 @@
 //! without a path-tracking deserializer: `serde_json` says where in the text it failed (line and
 //! column), and the path is read off the text up to there. The wasm module carries one small
 //! scanner instead of a tracking wrapper around every type it reads (issue 36: that wrapper was
-//! 120 kB of the module).
+//! 120 kB of the module). A scene read this way is also validated ([`parse_scene`]).
 
+use super::limits::MAX_SCENE_BYTES;
+use crate::Scene;
 use alloc::format;
 use alloc::string::{String, ToString};
 use alloc::vec::Vec;
@@ -22,6 +24,34 @@ pub fn read<T: DeserializeOwned>(text: &str) -> Result<T, (String, String)> {
         };
         (path, message)
     })
+}
+
+/// Reads `text` as a `T`; an error names the JSON path of the offending field: `field` for the
+/// whole, else `field.path` (`nested`) or the path alone (a scene's fields are named as they are).
+pub fn read_named<T: DeserializeOwned>(text: &str, field: &str, nested: bool) -> Result<T, String> {
+    read(text).map_err(|(path, message)| {
+        let path = if path.is_empty() {
+            field.to_string()
+        } else if nested {
+            format!("{field}.{path}")
+        } else {
+            path
+        };
+        format!("{path}: {message}")
+    })
+}
+
+/// Parses scene JSON; errors name the JSON path (`layer.viscosity: ...`).
+pub fn parse_scene(text: &str) -> Result<Scene, String> {
+    if text.len() > MAX_SCENE_BYTES {
+        return Err(format!(
+            "scene: {} bytes; a scene is at most {MAX_SCENE_BYTES} bytes",
+            text.len()
+        ));
+    }
+    let scene: Scene = read_named(text, "scene", false)?;
+    scene.validate().map_err(|e| e.to_string())?;
+    Ok(scene)
 }
 
 /// The byte offset of `line` and `column` (1-based, as `serde_json` counts them).

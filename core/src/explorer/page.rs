@@ -8,7 +8,7 @@
 //! fails becomes a gap (NaN, status code [`FAILED`]), not a failed frame.
 
 use super::frame::{Frame, Request, compute_with};
-use super::limits::MAX_SCENE_BYTES;
+pub use super::json_path::{parse_scene, read_named};
 use super::session::{ParamValue, tidal_card};
 use super::tidal::TidalCard;
 use super::{figures, records};
@@ -27,34 +27,6 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value as Json;
 
 pub use super::frame::FAILED;
-
-/// Reads `text` as a `T`; an error names the JSON path of the offending field: `field` for the
-/// whole, else `field.path` (`nested`) or the path alone (a scene's fields are named as they are).
-pub fn read_named<T: DeserializeOwned>(text: &str, field: &str, nested: bool) -> Result<T, String> {
-    super::json_path::read(text).map_err(|(path, message)| {
-        let path = if path.is_empty() {
-            field.to_string()
-        } else if nested {
-            format!("{field}.{path}")
-        } else {
-            path
-        };
-        format!("{path}: {message}")
-    })
-}
-
-/// Parses scene JSON; errors name the JSON path (`layer.viscosity: ...`).
-pub fn parse_scene(text: &str) -> Result<Scene, String> {
-    if text.len() > MAX_SCENE_BYTES {
-        return Err(format!(
-            "scene: {} bytes; a scene is at most {MAX_SCENE_BYTES} bytes",
-            text.len()
-        ));
-    }
-    let scene: Scene = read_named(text, "scene", false)?;
-    scene.validate().map_err(|e| e.to_string())?;
-    Ok(scene)
-}
 
 /// What the page shows of a scene: the core's [`Request`] (accuracy, speeds, points, map, family,
 /// overlays; parsed and checked by the core, so the page refuses what every surface refuses) and

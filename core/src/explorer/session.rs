@@ -3,8 +3,8 @@
 //! record or an error that names the field (`layer.viscosity: must lie in [0, 1e15] Pa s (got -1)`).
 //! The wasm binding only turns these records into JSON.
 
+use super::json_path::{parse_scene, read_named};
 use super::limits::{CHART_SPEED_DOMAIN, MAX_CURVE_POINTS, chart_speed_is_valid, speed_is_valid};
-use super::page::read_named;
 use super::tidal::TidalCard;
 use crate::collision::Trajectory;
 use crate::params::Value;
@@ -262,13 +262,13 @@ impl Session {
     /// A scene from JSON.
     pub fn from_json(text: &str) -> Result<Session, String> {
         Ok(Session {
-            scene: super::page::parse_scene(text)?,
+            scene: parse_scene(text)?,
         })
     }
 
     /// Replaces the scene from JSON; on error the scene is unchanged.
     pub fn set_json(&mut self, text: &str) -> Result<(), String> {
-        self.scene = super::page::parse_scene(text)?;
+        self.scene = parse_scene(text)?;
         Ok(())
     }
 

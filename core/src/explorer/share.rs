@@ -16,6 +16,7 @@ use crate::normal::memo::LayerMemo;
 use crate::normal::{Normal, Status};
 use crate::wire::{F64s, U8s, Wire, to_wire};
 use crate::wire_read::from_wire;
+use alloc::boxed::Box;
 use alloc::format;
 use alloc::string::{String, ToString};
 use alloc::vec::Vec;
@@ -212,7 +213,7 @@ fn decode(share: &Wire, units: &[Unit]) -> Result<Vec<(usize, Output)>, String> 
 
 /// The plan of a request and its units, or the frame that ended while being planned (e.g. a scene
 /// without a contact).
-type Planned = Result<(Plan, Vec<Unit>), Frame>;
+type Planned = Result<(Plan, Vec<Unit>), Box<Frame>>;
 
 fn plan(req: &Request) -> Planned {
     match Plan::new(req) {
@@ -220,7 +221,7 @@ fn plan(req: &Request) -> Planned {
             let units = plan.units(Plan::UNIT_POINTS);
             Ok((plan, units))
         }
-        Err(frame) => Err(*frame),
+        Err(frame) => Err(frame),
     }
 }
 
@@ -363,7 +364,7 @@ impl Pending {
                 let outputs = self.outputs.into_iter().flatten().collect();
                 plan.assemble(&units, outputs)
             }
-            Err(frame) => frame,
+            Err(frame) => *frame,
         };
         page_wire(&self.view, &self.req, &f).map_err(|e| e.to_string())
     }
