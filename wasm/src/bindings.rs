@@ -397,7 +397,9 @@ impl Explorer {
     }
 
     /// ε_N for a Float64Array of speeds (|g|; NaN → NaN, 0 → the at-rest limit, 0 when stuck)
-    /// through the core's batch path (`rime_core::batch`); at most 1e7 speeds.
+    /// through the core's batch path (`rime_core::batch`); at most 1e7 speeds. Feature `batch`
+    /// (not in the page's module, which does not call it).
+    #[cfg(feature = "batch")]
     #[wasm_bindgen(js_name = epsNBatch)]
     pub fn eps_n_batch(&self, speeds: &[f64], accuracy: &str) -> Result<Vec<f64>, JsError> {
         self.inner.eps_n_batch(speeds, accuracy).map_err(js)
