@@ -53,14 +53,14 @@ pub struct View {
     pub records: bool,
 }
 
-/// The keys of a view that are the page's own (the others are the core request's). camelCase,
-/// as the page's links have always written them.
+/// The keys of a view that are the page's own (the others are the core request's); `yLog` as
+/// views were written before issue 36.
 #[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields, rename_all = "camelCase")]
+#[serde(deny_unknown_fields)]
 struct PageKeys {
     #[serde(default)]
     tidal: Option<TidalInput>,
-    #[serde(default, alias = "y_log")]
+    #[serde(default, alias = "yLog")]
     y_log: bool,
     #[serde(default = "default_true")]
     experiments: bool,
@@ -98,7 +98,7 @@ pub fn parse_view(text: &str) -> Result<View, String> {
         let text = serde_json::to_string(&keys).map_err(|e| format!("view: {e}"))?;
         super::json_path::read(&text).map_err(|(path, message)| {
             if path.is_empty() {
-                // The core's checks name their field first (`mapN: …`).
+                // The core's checks name their field first (`map_n: …`).
                 format!("view.{message}")
             } else {
                 format!("view.{path}: {message}")
@@ -495,7 +495,7 @@ mod tests {
         let page = read(
             &frame(
                 &text,
-                r#"{"points": 40, "mapN": 8, "overlays": ["model:muller_poschel2011"]}"#,
+                r#"{"points": 40, "map_n": 8, "overlays": ["model:muller_poschel2011"]}"#,
             )
             .unwrap(),
         );
@@ -520,7 +520,7 @@ mod tests {
     fn frame_matches_the_core_and_the_old_getters() {
         let scene = frost();
         let text = serde_json::to_string(&scene).unwrap();
-        let f = frame(&text, r#"{"points": 50, "mapN": 20}"#).unwrap();
+        let f = frame(&text, r#"{"points": 50, "map_n": 20}"#).unwrap();
         let j: Json = serde_json::from_str(&f.json).unwrap();
         assert_eq!(j["errors"], json!([]), "{}", j["errors"]);
         let g = get(&f, &j["g"]);
@@ -543,7 +543,8 @@ mod tests {
     fn the_frame_carries_the_cores_records_and_figures_issue_11() {
         let scene = frost();
         let text = serde_json::to_string(&scene).unwrap();
-        let view = r#"{"points": 30, "mapN": 6, "from": 1e-6, "to": 1, "yLog": true, "date": "D"}"#;
+        let view =
+            r#"{"points": 30, "map_n": 6, "from": 1e-6, "to": 1, "y_log": true, "date": "D"}"#;
         let f = frame(&text, view).unwrap();
         let j: Json = serde_json::from_str(&f.json).unwrap();
         let records: Json = serde_json::from_str(&f.records).unwrap();
@@ -589,10 +590,10 @@ mod tests {
         // A preview asks for no records (it is never exported): everything else is the frame with
         // them, bit for bit, and `records` says null.
         let text = serde_json::to_string(&frost()).unwrap();
-        let with = frame(&text, r#"{"points": 30, "mapN": 6, "date": "D"}"#).unwrap();
+        let with = frame(&text, r#"{"points": 30, "map_n": 6, "date": "D"}"#).unwrap();
         let without = frame(
             &text,
-            r#"{"points": 30, "mapN": 6, "date": "D", "records": false}"#,
+            r#"{"points": 30, "map_n": 6, "date": "D", "records": false}"#,
         )
         .unwrap();
         assert_eq!(without.records, "null");
@@ -620,7 +621,7 @@ mod tests {
         scene.grains.radius_2 = 2e-6;
         scene.layer.as_mut().unwrap().thickness = 1e-5;
         let text = serde_json::to_string(&scene).unwrap();
-        let f = frame(&text, r#"{"points": 20, "mapN": 10}"#).unwrap();
+        let f = frame(&text, r#"{"points": 20, "map_n": 10}"#).unwrap();
         let j: Json = serde_json::from_str(&f.json).unwrap();
         assert_eq!(j["map"]["max"], 1e6);
         assert!(
@@ -638,7 +639,7 @@ mod tests {
         let scene = frost();
         let text = serde_json::to_string(&scene).unwrap();
         // A map range the core refuses: the map alone fails, named.
-        let f = frame(&text, r#"{"points": 20, "mapN": 10, "mapMax": 2e6}"#).unwrap();
+        let f = frame(&text, r#"{"points": 20, "map_n": 10, "map_max": 2e6}"#).unwrap();
         let j: Json = serde_json::from_str(&f.json).unwrap();
         assert!(j["map"]["map"].is_null(), "{}", j["map"]);
         assert_eq!(j["errors"][0]["part"], "stick map");
@@ -657,9 +658,9 @@ mod tests {
                 .contains("colour")
         );
         assert!(
-            frame(&text, r#"{"mapN": 1}"#)
+            frame(&text, r#"{"map_n": 1}"#)
                 .unwrap_err()
-                .starts_with("view.mapN")
+                .starts_with("view.map_n")
         );
         assert!(frame("{", "{}").is_err());
         assert!(
@@ -678,7 +679,7 @@ mod tests {
         let text = serde_json::to_string(&frost()).unwrap();
         let f = frame(
             &text,
-            r#"{"points": 80, "mapN": 10, "fail": ["curve", "map", "marker", "tidal", "family"]}"#,
+            r#"{"points": 80, "map_n": 10, "fail": ["curve", "map", "marker", "tidal", "family"]}"#,
         )
         .unwrap();
         let j: Json = serde_json::from_str(&f.json).unwrap();
@@ -713,7 +714,7 @@ mod tests {
         let text = serde_json::to_string(&Scene::default()).unwrap();
         let f = frame(
             &text,
-            r#"{"points": 20, "mapN": 4, "overlays": ["atlas:bridges1984", "model:muller_poschel2011"]}"#,
+            r#"{"points": 20, "map_n": 4, "overlays": ["atlas:bridges1984", "model:muller_poschel2011"]}"#,
         )
         .unwrap();
         let j: Json = serde_json::from_str(&f.json).unwrap();
@@ -730,7 +731,7 @@ mod tests {
         // The core's sweep policy: η* with a layer, γ with adhesion, else A (×0.1, 0.3, 3, 10).
         let family = |scene: &Scene| -> Json {
             let text = serde_json::to_string(scene).unwrap();
-            let f = frame(&text, r#"{"points": 10, "mapN": 4}"#).unwrap();
+            let f = frame(&text, r#"{"points": 10, "map_n": 4}"#).unwrap();
             serde_json::from_str::<Json>(&f.json).unwrap()
         };
         let f = family(&Scene::default());
@@ -761,7 +762,7 @@ mod tests {
     #[test]
     fn issue_36_the_records_keep_their_keys() {
         let text = serde_json::to_string(&frost()).unwrap();
-        let f = frame(&text, r#"{"points": 12, "mapN": 4, "date": "D"}"#).unwrap();
+        let f = frame(&text, r#"{"points": 12, "map_n": 4, "date": "D"}"#).unwrap();
         let records: Json = serde_json::from_str(&f.records).unwrap();
         let keys = |j: &Json| {
             let mut k: Vec<String> = j.as_object().unwrap().keys().cloned().collect();
@@ -792,8 +793,8 @@ mod tests {
 
     #[test]
     fn issue_36_an_old_links_view_still_loads() {
-        // A link written before issue 36 (its view's keys camelCase, as the page has always
-        // written them) loads, and so does the snake_case spelling of the files.
+        // A view written before issue 36 (its keys camelCase, as the page wrote them) loads as
+        // the snake_case view the page writes now, to the same frame.
         let text = serde_json::to_string(&frost()).unwrap();
         let old = r#"{"accuracy": "balanced", "from": 1e-6, "to": 1, "points": 20, "mapN": 6,
             "mapMax": 0.5, "yLog": true, "experiments": false, "family": true,

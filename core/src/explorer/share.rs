@@ -435,11 +435,11 @@ mod tests {
             ),
             (
                 scene(IceSticky, &[]),
-                r#"{"accuracy": "integrated", "points": 61, "mapN": 21, "date": "D"}"#,
+                r#"{"accuracy": "integrated", "points": 61, "map_n": 21, "date": "D"}"#,
             ),
             (
                 scene(IceFrost, &[("layer.reading", "literal")]),
-                r#"{"accuracy": "precise", "points": 41, "mapN": 11, "date": "D"}"#,
+                r#"{"accuracy": "precise", "points": 41, "map_n": 11, "date": "D"}"#,
             ),
             (
                 scene(Ice, &[]),
