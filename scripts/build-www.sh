@@ -5,7 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 # The wasm-release profile (Cargo.toml): the release profile with LTO, one codegen unit and no debug
 # info, so the module is smaller and as fast; the function-name section is not shipped either.
-cargo build --locked --target wasm32-unknown-unknown --profile wasm-release -p rime-wasm
+# Without the `batch` feature: the page does not call `epsNBatch`, whose table is 98 KB of the module.
+cargo build --locked --target wasm32-unknown-unknown --profile wasm-release -p rime-wasm --no-default-features
 # Honour CARGO_TARGET_DIR (a worktree may build into its own target directory).
 target_dir=${CARGO_TARGET_DIR:-target}
 wasm-bindgen --target web --no-typescript --remove-name-section --remove-producers-section \

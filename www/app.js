@@ -46,7 +46,7 @@ function schedule() {
 function requestPinned() {
   const p = app.pinRequest;
   const view = {
-    accuracy: p.accuracy, from: p.from, to: p.to, mapN: 2, family: false,
+    accuracy: p.accuracy, from: p.from, to: p.to, map_n: 2, family: false,
     experiments: false, date: new Date().toISOString().slice(0, 19) + 'Z',
   };
   app.computer.request(p.scene, view, { pin: p, view: { accuracy: p.accuracy }, t0: performance.now(), calls: 0, format: 0 });
@@ -60,8 +60,8 @@ function request() {
   const v = app.view;
   const view = {
     // Points and map side are the core request's defaults (Request::POINTS, Request::MAP_N).
-    accuracy: v.accuracy, from: v.from, to: v.to, mapMax: v.mapMax,
-    tidal: app.tidalIn, overlays: [...v.overlays], yLog: v.yScale === 'log', experiments: v.experiments,
+    accuracy: v.accuracy, from: v.from, to: v.to, map_max: v.mapMax,
+    tidal: app.tidalIn, overlays: [...v.overlays], y_log: v.yScale === 'log', experiments: v.experiments,
     pinned: pinnedForRequest(app.wantScene), date: new Date().toISOString().slice(0, 19) + 'Z',
   };
   testView(view);

@@ -153,7 +153,7 @@ export function zoom(factor, shift = 0) {
   const lo = Math.log10(v.from), hi = Math.log10(v.to);
   const span = Math.max(0.2, (hi - lo) * factor);
   let c = (lo + hi) / 2 + shift * (hi - lo);
-  const min = Math.log10(HELP.limits.speedMin), max = Math.log10(HELP.limits.speedMax);
+  const min = Math.log10(HELP.limits.speed_min), max = Math.log10(HELP.limits.speed_max);
   const half = Math.min(span, max - min) / 2;
   c = Math.min(max - half, Math.max(min + half, c));
   v.from = Number(sig(10 ** (c - half), 6));

@@ -150,7 +150,7 @@ export class Computer {
   }
 
   /** Gives the two workers of the pool a channel of their own (again after a restart): a dear
-   *  refinement's units are split between them (wasm/src/split.rs). */
+   *  refinement's units are split between them (rime_core::explorer::share). */
   connect() {
     if (this.lanes.length !== 2) return;
     const { port1, port2 } = new MessageChannel();

@@ -11,7 +11,7 @@ export const calls = { compute: 0, format: 0 };
 
 /** The core's palette: {scene, critical, clean, experiment, family[], series[], overlays[], pinned, classes{}}. */
 export let PALETTE = null;
-/** The core's words: {paper, glossary[], parameters{path: {help, options}}, classes[], artifactNote}. */
+/** The core's words: {paper, glossary[], parameters{path: {help, options}}, classes[], artifact_note}. */
 export let HELP = null;
 export let Explorer = null;
 

@@ -9,7 +9,7 @@
  *  preview is on screen within the frame the edit was made in. Input to a worker's start, the
  *  page's handling and the painter take 4–5 ms of that frame on two cores; the literal reading's
  *  preview takes 5.3 ms in the worker at 31 points, 2.7 ms at 16. */
-export const PREVIEWS = [{ points: 121, mapN: 41 }, { points: 61, mapN: 21 }, { points: 31, mapN: 11 }, { points: 16, mapN: 11 }];
+export const PREVIEWS = [{ points: 121, map_n: 41 }, { points: 61, map_n: 21 }, { points: 31, map_n: 11 }, { points: 16, map_n: 11 }];
 /** A preview slower than this in the worker makes the next one coarser [ms]; one quicker than
  *  PREVIEW_QUICK_MS finer (half the points take about half the time, so a preview between the two
  *  stays where it is). */

@@ -124,7 +124,7 @@ export function drawLegend(res) {
   const shown = res.map && gap >= 0 && counts[gap] > 0;
   if (note.hidden !== !shown) {
     note.hidden = !shown;
-    note.replaceChildren(...(shown ? linked(HELP.artifactNote) : []));
+    note.replaceChildren(...(shown ? linked(HELP.artifact_note) : []));
   }
   let desc = '';
   if (res.map) {

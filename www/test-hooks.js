@@ -30,7 +30,7 @@
 // `refinement paused`, see `pauseRefinement`).
 //
 // Other hooks: parts of a frame to fail on purpose (`fail`, see the view's `fail` in
-// wasm/src/frame.rs); the family's swept parameter (`sweep`, a path of the core's sweeps: the
+// rime_core::explorer::page); the family's swept parameter (`sweep`, a path of the core's sweeps: the
 // frame benchmark's swept family); frames asked without a preview whatever they cost
 // (`noPreview`) or always with one (`alwaysPreview`); the next request's preview at the finest
 // level (`finestPreview`); a preview's time in the worker counted `previewExtraMs` longer (a test

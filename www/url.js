@@ -148,7 +148,7 @@ function readTidal(text, problems, validate) {
   let obj;
   try { obj = JSON.parse(text); } catch { problems.push('tidal: not JSON'); return null; }
   if (obj === null || typeof obj !== 'object') { problems.push('tidal: not an object'); return null; }
-  const out = { ...HELP.tidalPaper };
+  const out = { ...HELP.tidal_paper };
   for (const f of TIDAL_FIELDS) {
     if (obj[f.key] === undefined) continue;
     if (typeof obj[f.key] !== 'number' || !Number.isFinite(obj[f.key])) { problems.push(`tidal.${f.key}: not a finite number`); continue; }

@@ -12,7 +12,7 @@ import init, { Explorer, FrameShare, PendingFrame, computeFrame, ringCard } from
 
 let ready = null;
 // The other frame worker of the pool (a MessagePort the page hands over): a refinement's units are
-// split between the two when the refinement is dear (issue 26; wasm/src/split.rs). This worker
+// split between the two when the refinement is dear (issue 26; rime_core::explorer::share). This worker
 // helps with a share after its preview, and takes the other's share for its own refinements.
 let peer = null;
 let latestGen = 0; // the newest request this worker was asked for: a stale share stops
@@ -85,7 +85,7 @@ async function refine(gen, scene, view, split, pause) {
       // A share that has not come is computed here: the peer may stop.
       if (!share && peer) peer.postMessage({ type: 'done', gen });
       if (latestGen > gen) return null;
-      if (share && p.accept(share.numbers, share.meta)) helped = share.ms;
+      if (share && p.accept(share.numbers, share.codes, share.meta)) helped = share.ms;
     }
     return { f: p.finish(), helped, waited };
   } finally {
@@ -110,8 +110,10 @@ async function help(gen, scene, view) {
       await yieldNow();
       if (latestGen > gen || doneGen >= gen) return;
     }
+    // The share in the core's wire form (rime_core::wire): its JSON and two flat arrays.
     const numbers = run.numbers();
-    peer.postMessage({ type: 'share', gen, numbers, meta: run.meta(), ms, wall: performance.now() - t0 }, [numbers.buffer]);
+    const codes = run.codes();
+    peer.postMessage({ type: 'share', gen, numbers, codes, meta: run.meta(), ms, wall: performance.now() - t0 }, [numbers.buffer, codes.buffer]);
   } catch (e) {
     // The refinement computes the share itself.
   } finally {

@@ -27,7 +27,8 @@
 //! The crate is `#![no_std]` (its error implements `core::error::Error`); feature `std`
 //! (default) adds the platform's libm, `alloc` adds the `Vec` helpers, `serde` the JSON form of
 //! scenes, `explorer` (needs only `alloc`) the explorer model
-//! shared by the terminal and the web page, `plot` (needs `std`) rendering of figures with plotters.
+//! shared by the terminal and the web page, `plot` (needs `std`) rendering of figures with plotters,
+//! `json` (needs `std`) what the web page's binding does with JSON text (`explorer::page`).
 
 #![no_std]
 // `!(x > 0.0)` deliberately treats NaN as invalid; index loops mirror the formulas they implement.
@@ -59,6 +60,8 @@ pub mod scene;
 pub mod tangential;
 #[cfg(all(feature = "serde", feature = "alloc"))]
 pub mod wire;
+#[cfg(feature = "json")]
+pub mod wire_read;
 
 // The paths the modules had before they moved into folders (issue 36) keep working.
 #[cfg(feature = "alloc")]

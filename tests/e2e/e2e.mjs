@@ -821,7 +821,7 @@ try {
 
   await check('issue 26: a dear refinement split over the two frame workers is `rime curve --accuracy integrated` byte for byte', async () => {
     // ice at `integrated` costs more than a frame's time, so from the second edit on the preview's
-    // worker computes a share of the refinement's units and sends it to the other (wasm/src/split.rs).
+    // worker computes a share of the refinement's units and sends it to the other (rime_core::explorer::share).
     const ps = await openPreset(context, 'split', 'ice', 'integrated', '?workers=2');
     const slider = ps.locator('input[type=range][data-path="bulk.youngs_modulus"]');
     let split = false;

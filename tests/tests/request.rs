@@ -21,10 +21,10 @@ fn a_request_reads_back_what_it_writes_issue_21() {
     r.fail = vec!["map".into()];
     let text = serde_json::to_string(&r).unwrap();
     assert_eq!(parse(&text).unwrap(), r, "{text}");
-    // The keys are the page's (camelCase), the sweep its parameter path.
+    // The keys are snake_case, as in every file record (issue 36), the sweep its parameter path.
     for key in [
-        "\"mapN\":9",
-        "\"mapMax\":0.3",
+        "\"map_n\":9",
+        "\"map_max\":0.3",
         "\"from\":1e-6",
         "\"overlays\":[\"atlas:bridges1984\"]",
     ] {
@@ -41,16 +41,20 @@ fn an_empty_request_is_the_default_view_issue_21() {
 
 #[test]
 fn requests_written_before_the_one_request_still_load_issue_21() {
-    // `balanced` was the name of `integrated`; views once wrote snake-case map keys.
-    let r = parse(r#"{"accuracy": "balanced", "map_n": 12, "map_max": 0.5}"#).unwrap();
+    // `balanced` was the name of `integrated`; the page's views wrote camelCase map keys until
+    // issue 36.
+    let r = parse(r#"{"accuracy": "balanced", "mapN": 12, "mapMax": 0.5}"#).unwrap();
     assert_eq!(r.accuracy, Accuracy::Balanced);
     assert_eq!((r.map_n, r.map_max), (12, Some(0.5)));
+    let both = parse(r#"{"map_n": 12, "mapN": 13}"#).unwrap_err();
+    assert!(both.contains("duplicate field"), "{both}");
 }
 
 #[test]
 fn a_refused_request_names_its_field_issue_21() {
     for (text, field) in [
-        (r#"{"mapN": 1001}"#, "mapN"),
+        (r#"{"map_n": 1001}"#, "map_n"),
+        (r#"{"mapN": 1001}"#, "map_n"),
         (r#"{"points": 1}"#, "points"),
         (r#"{"points": 20001}"#, "points"),
         (r#"{"from": 1e-300, "to": 1}"#, "from"),

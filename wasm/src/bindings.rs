@@ -1,40 +1,61 @@
-//! The JavaScript interface (wasm32 only). Every method delegates to [`crate::explorer`].
+//! The JavaScript interface (wasm32 only). Every function delegates to the core's page logic
+//! (`rime_core::explorer::{page, session, catalogue, share}`); this module only crosses the
+//! boundary: text in, JSON text or the wire's flat arrays out, errors as exceptions.
 //!
 //! Codes: statuses are indices into `Explorer.statusNames()` (rebound, stuck_in_layer,
 //! stuck_by_adhesion, overdamped); classes are indices into `Explorer.classes()` (legend order of
 //! the core's `StickClass::ALL`).
 
-use crate::explorer;
-use crate::frame;
-use crate::split;
+use rime_core::explorer::page::{self, PageWire};
+use rime_core::explorer::session::{self, Session};
+use rime_core::explorer::{catalogue, share};
+use rime_core::normal::memo::SharedLayerMemo;
+use rime_core::wire::Wire;
+use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
 fn js(e: String) -> JsError {
     JsError::new(&e)
 }
 
-/// One frame of the page (see [`crate::frame`]): a JSON description and two flat arrays it points
-/// into. Each getter hands its part over once (a second call returns it empty).
+/// `value` as JSON text; a record that cannot be written is an exception naming `what`.
+fn json<T: Serialize>(what: &str, value: &T) -> Result<String, JsError> {
+    serde_json::to_string(value).map_err(|e| js(format!("{what}: {e}")))
+}
+
+/// A catalogue as JSON text (its records are plain data and always write; `null` otherwise).
+fn catalogue_json<T: Serialize>(value: &T) -> String {
+    serde_json::to_string(value).unwrap_or_else(|_| "null".to_string())
+}
+
+/// The literal layer reading's outcomes kept between this worker's frames (issue 26): an edit that
+/// leaves the layer stage's inputs unchanged is answered without integrating again. Each worker
+/// instantiates the module, so each has its own.
+static LAYER_MEMO: SharedLayerMemo = SharedLayerMemo::new();
+
+/// One frame of the page (`rime_core::explorer::page`): its wire form, a JSON description and two
+/// flat arrays it points into, and its records. Each getter hands its part over once (a second
+/// call returns it empty).
 #[wasm_bindgen]
 pub struct Frame {
-    inner: frame::Frame,
+    inner: PageWire,
 }
 
 #[wasm_bindgen]
 impl Frame {
     /// The frame's JSON: parts, `{at, len}` offsets into `numbers()`/`codes()`, and `errors`.
     pub fn json(&mut self) -> String {
-        std::mem::take(&mut self.inner.json)
+        std::mem::take(&mut self.inner.wire.json)
     }
 
     /// Every floating-point array of the frame, concatenated.
     pub fn numbers(&mut self) -> Vec<f64> {
-        std::mem::take(&mut self.inner.numbers)
+        std::mem::take(&mut self.inner.wire.numbers)
     }
 
     /// Every code array (statuses, stick classes), concatenated.
     pub fn codes(&mut self) -> Vec<u8> {
-        std::mem::take(&mut self.inner.codes)
+        std::mem::take(&mut self.inner.wire.codes)
     }
 
     /// The records (JSON, `null` for a view with `records: false`) as UTF-8 bytes: handed to the
@@ -50,17 +71,17 @@ impl Frame {
 #[wasm_bindgen(js_name = computeFrame)]
 pub fn compute_frame(scene: &str, view: &str) -> Result<Frame, JsError> {
     Ok(Frame {
-        inner: frame::frame(scene, view).map_err(js)?,
+        inner: page::frame(scene, view, &LAYER_MEMO).map_err(js)?,
     })
 }
 
-/// A frame computed with another worker's help (see [`crate::split`]): `new PendingFrame(scene,
+/// A frame computed with another worker's help (`rime_core::explorer::share`): `new PendingFrame(scene,
 /// view, of)` plans it, `runNext()` computes this worker's units one at a time, `accept(numbers,
 /// meta)` takes the helper's share, `finish()` computes what is missing and returns the [`Frame`],
 /// the one `computeFrame` returns, bit for bit.
 #[wasm_bindgen]
 pub struct PendingFrame {
-    inner: Option<split::Pending>,
+    inner: Option<share::Pending>,
 }
 
 #[wasm_bindgen]
@@ -69,21 +90,22 @@ impl PendingFrame {
     #[wasm_bindgen(constructor)]
     pub fn new(scene: &str, view: &str, of: usize) -> Result<PendingFrame, JsError> {
         Ok(PendingFrame {
-            inner: Some(split::Pending::begin(scene, view, of).map_err(js)?),
+            inner: Some(share::Pending::begin(scene, view, of).map_err(js)?),
         })
     }
 
     /// Computes this worker's next unit; false when none is left.
     #[wasm_bindgen(js_name = runNext)]
     pub fn run_next(&mut self) -> Result<bool, JsError> {
-        self.pending()?.run_next().map_err(js)
+        self.pending()?.run_next(&LAYER_MEMO).map_err(js)
     }
 
-    /// Takes a helper's share; false when it is not a share of this frame's plan.
-    pub fn accept(&mut self, numbers: &[f64], meta: &str) -> Result<bool, JsError> {
-        let share = split::Share {
+    /// Takes a helper's share (its wire form); false when it is not a share of this frame's plan.
+    pub fn accept(&mut self, numbers: &[f64], codes: &[u8], json: &str) -> Result<bool, JsError> {
+        let share = Wire {
+            json: json.to_string(),
             numbers: numbers.to_vec(),
-            meta: meta.to_string(),
+            codes: codes.to_vec(),
         };
         Ok(self.pending()?.accept(&share))
     }
@@ -95,22 +117,22 @@ impl PendingFrame {
             .take()
             .ok_or_else(|| js("frame: already finished".into()))?;
         Ok(Frame {
-            inner: pending.finish().map_err(js)?,
+            inner: pending.finish(&LAYER_MEMO).map_err(js)?,
         })
     }
 
-    fn pending(&mut self) -> Result<&mut split::Pending, JsError> {
+    fn pending(&mut self) -> Result<&mut share::Pending, JsError> {
         self.inner
             .as_mut()
             .ok_or_else(|| js("frame: already finished".into()))
     }
 }
 
-/// A helper's share of another worker's frame (see [`crate::split`]), a unit per `step()`.
+/// A helper's share of another worker's frame (`rime_core::explorer::share`), a unit per `step()`.
 #[wasm_bindgen]
 pub struct FrameShare {
-    inner: Option<split::ShareRun>,
-    done: split::Share,
+    inner: Option<share::ShareRun>,
+    done: Wire,
 }
 
 #[wasm_bindgen]
@@ -119,19 +141,20 @@ impl FrameShare {
     #[wasm_bindgen(constructor)]
     pub fn new(scene: &str, view: &str, share: usize, of: usize) -> Result<FrameShare, JsError> {
         Ok(FrameShare {
-            inner: Some(split::ShareRun::begin(scene, view, share, of).map_err(js)?),
-            done: split::Share::default(),
+            inner: Some(share::ShareRun::begin(scene, view, share, of).map_err(js)?),
+            done: Wire::default(),
         })
     }
 
-    /// Computes the next unit; false when the share is complete (then `numbers()` and `meta()`).
+    /// Computes the next unit; false when the share is complete (then `numbers()`, `codes()` and
+    /// `meta()`, its wire form).
     pub fn step(&mut self) -> Result<bool, JsError> {
         let Some(run) = self.inner.as_mut() else {
             return Ok(false);
         };
-        let more = run.step().map_err(js)?;
+        let more = run.step(&LAYER_MEMO).map_err(js)?;
         if !more && let Some(run) = self.inner.take() {
-            self.done = run.finish();
+            self.done = run.finish().map_err(js)?;
         }
         Ok(more)
     }
@@ -141,23 +164,30 @@ impl FrameShare {
         std::mem::take(&mut self.done.numbers)
     }
 
-    /// The share's units, kinds and words (JSON; once complete).
+    /// The share's codes (once complete; handed over once).
+    pub fn codes(&mut self) -> Vec<u8> {
+        std::mem::take(&mut self.done.codes)
+    }
+
+    /// The share's JSON (once complete).
     pub fn meta(&mut self) -> String {
-        std::mem::take(&mut self.done.meta)
+        std::mem::take(&mut self.done.json)
     }
 }
 
-/// The stick map's records from the frame's arrays (see [`explorer::map_records`]).
+/// The stick map's records from the frame's arrays (`rime_core::explorer::page::map_records`).
 #[wasm_bindgen(js_name = mapRecords)]
 pub fn map_records(g: &[f64], eps_t: &[f64], codes: &[u8]) -> Result<String, JsError> {
-    explorer::map_records(g, eps_t, codes).map_err(js)
+    page::map_records(g, eps_t, codes).map_err(js)
 }
 
-/// The ring card (issue 24) for `scene` and `input` (JSON; see [`explorer::ring_card_json`]).
+/// The ring card (issue 24) for `scene` and `input` (JSON; `rime_core::explorer::page::ring_page`):
+/// `{verdict, equilibrium, sentence, rows: [{label, text}], eps_cr_line: {name, short, points,
+/// color, stroke}, meeting: [g, ε] | null, impact_marker: {x, label, short, color}, record}`.
 /// Throws naming the field (`ring.tau: …`).
 #[wasm_bindgen(js_name = ringCard)]
 pub fn ring_card(scene: &str, input: &str) -> Result<String, JsError> {
-    explorer::ring_card_json(scene, input).map_err(js)
+    json("ring", &page::ring_page(scene, input).map_err(js)?)
 }
 
 /// The one colour palette of every surface (`rime_core::explorer::palette::palette_json`).
@@ -166,11 +196,11 @@ pub fn palette() -> String {
     rime_core::explorer::palette::palette_json()
 }
 
-/// The page's words: citation, glossary, parameter help, option names (see
-/// [`explorer::help_json`]).
+/// The page's words: citation, glossary, parameter help, option names
+/// (`rime_core::explorer::catalogue::help`).
 #[wasm_bindgen]
 pub fn help() -> String {
-    explorer::help_json()
+    catalogue_json(&catalogue::help())
 }
 
 /// `v` with `digits` significant digits (`rime_core::explorer::format::sig`); `—` when not finite.
@@ -234,28 +264,29 @@ pub fn printed_digits(v: f64) -> i32 {
     rime_core::explorer::format::printed_digits(v)
 }
 
-/// A typed speed with optional units for the view field `field` (see [`explorer::parse_speed`]).
+/// A typed speed with optional units for the view field `field` (`session::parse_speed`).
 #[wasm_bindgen(js_name = parseSpeed)]
 pub fn parse_speed(field: &str, text: &str) -> Result<f64, JsError> {
-    explorer::parse_speed(field, text).map_err(js)
+    session::parse_speed(field, text).map_err(js)
 }
 
-/// A typed end of the chart's speed range (see [`explorer::parse_chart_speed`]).
+/// A typed end of the chart's speed range (`session::parse_chart_speed`).
 #[wasm_bindgen(js_name = parseChartSpeed)]
 pub fn parse_chart_speed(field: &str, text: &str) -> Result<f64, JsError> {
-    explorer::parse_chart_speed(field, text).map_err(js)
+    session::parse_chart_speed(field, text).map_err(js)
 }
 
-/// A typed quantity with optional units compatible with `unit` (see [`explorer::parse_quantity`]).
+/// A typed quantity with optional units compatible with `unit` (`session::parse_quantity`).
 #[wasm_bindgen(js_name = parseQuantity)]
 pub fn parse_quantity(field: &str, text: &str, unit: &str) -> Result<f64, JsError> {
-    explorer::parse_quantity(field, text, unit).map_err(js)
+    session::parse_quantity(field, text, unit).map_err(js)
 }
 
-/// A scene being edited: validation of typed values, presets and readouts.
+/// A scene being edited: validation of typed values, presets and readouts
+/// (`rime_core::explorer::session::Session`).
 #[wasm_bindgen]
 pub struct Explorer {
-    inner: explorer::Explorer,
+    inner: Session,
 }
 
 #[wasm_bindgen]
@@ -264,7 +295,7 @@ impl Explorer {
     #[wasm_bindgen(constructor)]
     pub fn new() -> Explorer {
         Explorer {
-            inner: explorer::Explorer::new(),
+            inner: Session::new(),
         }
     }
 
@@ -272,7 +303,7 @@ impl Explorer {
     #[wasm_bindgen(js_name = fromJson)]
     pub fn from_json(text: &str) -> Result<Explorer, JsError> {
         let mut e = Explorer::new();
-        e.inner = explorer::Explorer::from_json(text).map_err(js)?;
+        e.inner = Session::from_json(text).map_err(js)?;
         Ok(e)
     }
 
@@ -307,40 +338,40 @@ impl Explorer {
 
     /// A parameter's value as JSON text (number, choice name, boolean, or `null` when inactive).
     pub fn get(&self, path: &str) -> Result<String, JsError> {
-        self.inner.get(path).map_err(js)
+        json(path, &self.inner.get(path).map_err(js)?)
     }
 
     /// The parameter registry as JSON text.
     pub fn parameters() -> String {
-        explorer::parameters_json()
+        catalogue_json(&catalogue::parameters())
     }
 
     /// What can be drawn over the ε_N chart (measured ice, other models) as JSON.
     pub fn overlays() -> String {
-        explorer::overlays_json()
+        catalogue_json(&catalogue::overlays())
     }
 
     /// The presets as JSON text (`[{name, description}]`).
     pub fn presets() -> String {
-        explorer::presets_json()
+        catalogue_json(&catalogue::presets())
     }
 
     /// The stick classes in code order as JSON text (`[{name, letter, description}]`).
     pub fn classes() -> String {
-        explorer::classes_json()
+        catalogue_json(&catalogue::classes())
     }
 
     /// The status names in code order as JSON text.
     #[wasm_bindgen(js_name = statusNames)]
     pub fn status_names() -> String {
-        explorer::statuses_json()
+        catalogue_json(&catalogue::statuses())
     }
 
     /// The experimental context of the ε_N chart as JSON text: `{bridges: {a, b, g0, label},
     /// bands: [{x: [lo, hi], y: [lo, hi], label}]}` (Bridges et al. 1984; Heißelmann et al. 2010,
     /// Hill et al. 2015).
     pub fn experiments() -> String {
-        explorer::experiments_json()
+        catalogue_json(&catalogue::experiments())
     }
 
     /// The crate version.
@@ -362,56 +393,46 @@ impl Explorer {
 
     /// The normal result at one speed as JSON text.
     pub fn normal(&self, g: f64, accuracy: &str) -> Result<String, JsError> {
-        self.inner.normal(g, accuracy).map_err(js)
+        json("normal", &self.inner.normal(g, accuracy).map_err(js)?)
     }
 
     /// ε_N for a Float64Array of speeds (|g|; NaN → NaN, 0 → the at-rest limit, 0 when stuck)
-    /// through the core's batch path (`rime_core::batch`); at most 1e7 speeds.
+    /// through the core's batch path (`rime_core::batch`); at most 1e7 speeds. Feature `batch`
+    /// (not in the page's module, which does not call it).
+    #[cfg(feature = "batch")]
     #[wasm_bindgen(js_name = epsNBatch)]
     pub fn eps_n_batch(&self, speeds: &[f64], accuracy: &str) -> Result<Vec<f64>, JsError> {
-        if speeds.len() > 10_000_000 {
-            return Err(js(format!(
-                "speeds: at most 1e7 values (got {})",
-                speeds.len()
-            )));
-        }
-        let accuracy = explorer::parse_accuracy(accuracy).map_err(js)?;
-        let contact = rime_core::Contact::new(&self.inner.scene).map_err(|e| js(e.to_string()))?;
-        let mut out = vec![0.0; speeds.len()];
-        contact
-            .eps_n_batch(speeds, &mut out, accuracy)
-            .map_err(|e| js(format!("speeds: {e}")))?;
-        Ok(out)
+        self.inner.eps_n_batch(speeds, accuracy).map_err(js)
     }
 
-    /// One collision from the inside at `g` for the current scene, as JSON (see the host-side
-    /// `Explorer::collision`).
+    /// One collision from the inside at `g` for the current scene, as JSON
+    /// (`Session::collision`).
     pub fn collision(&self, g: f64, points: f64, accuracy: &str) -> Result<String, JsError> {
-        let points = if points.is_finite() && points >= 0.0 && points.fract() == 0.0 {
-            points as usize
-        } else {
-            return Err(JsError::new(&format!(
-                "points: {points} is not a whole number"
-            )));
-        };
-        self.inner.collision(g, points, accuracy).map_err(js)
+        let points = session::whole("points", points).map_err(js)?;
+        json(
+            "collision",
+            &self.inner.collision(g, points, accuracy).map_err(js)?,
+        )
     }
 
-    /// Fits A to a measured law (`id`) and makes the fitted scene current; JSON (see the host-side
-    /// `Explorer::fit_to_entry`). Throws naming the cause; the scene is then unchanged.
+    /// Fits A to a measured law (`id`) and makes the fitted scene current; JSON
+    /// (`Session::fit_to_entry`). Throws naming the cause; the scene is then unchanged.
     #[wasm_bindgen(js_name = fitToEntry)]
     pub fn fit_to_entry(&mut self, id: &str, accuracy: &str) -> Result<String, JsError> {
-        self.inner.fit_to_entry(id, accuracy).map_err(js)
+        json("fit", &self.inner.fit_to_entry(id, accuracy).map_err(js)?)
     }
 
     /// The tangential result at one point as JSON text.
     pub fn tangential(&self, g_n: f64, g_t: f64, accuracy: &str) -> Result<String, JsError> {
-        self.inner.tangential(g_n, g_t, accuracy).map_err(js)
+        json(
+            "tangential",
+            &self.inner.tangential(g_n, g_t, accuracy).map_err(js)?,
+        )
     }
 
     /// The appendix values as JSON text; `input` is a TidalInput JSON or empty for the scene's grains.
     pub fn tidal(&self, input: &str) -> Result<String, JsError> {
-        self.inner.tidal(input).map_err(js)
+        json("tidal", &self.inner.tidal(input).map_err(js)?)
     }
 }
 

@@ -5,8 +5,13 @@
 //!
 //! The palette ([`palette`]) needs nothing and number formatting ([`format`]) needs `alloc`, so
 //! that figures and command-line output can use them without the `explorer` feature; the limits
-//! and range policy come with `explorer`.
+//! and range policy come with `explorer`; the web page's binding logic (JSON text in, the wire out:
+//! [`page`], [`session`], [`catalogue`], [`share`]) with `json`.
 
+#[cfg(feature = "json")]
+pub mod catalogue;
+#[cfg(feature = "explorer")]
+pub mod collision_rows;
 #[cfg(feature = "explorer")]
 pub mod figures;
 #[cfg(feature = "alloc")]
@@ -14,8 +19,12 @@ pub use crate::format;
 #[cfg(feature = "explorer")]
 pub mod frame;
 pub use crate::figure::words as help;
+#[cfg(feature = "json")]
+pub mod json_path;
 #[cfg(feature = "explorer")]
 pub mod limits;
+#[cfg(feature = "json")]
+pub mod page;
 pub use crate::figure::palette;
 #[cfg(feature = "explorer")]
 pub mod range;
@@ -25,6 +34,10 @@ pub mod records;
 pub mod request;
 #[cfg(feature = "explorer")]
 pub mod ring;
+#[cfg(feature = "json")]
+pub mod session;
+#[cfg(feature = "json")]
+pub mod share;
 #[cfg(feature = "explorer")]
 pub mod thresholds;
 #[cfg(feature = "explorer")]

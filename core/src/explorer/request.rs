@@ -4,10 +4,12 @@
 //! The command line's flags, the terminal's state, the page's link and view (through the wasm
 //! binding) all become a `Request`, and [`Request::validate`] is the one check: a surface refuses
 //! exactly what the core refuses. With the `serde` feature a request reads and writes its wire form
-//! (camelCase keys, unknown keys refused, every key optional): `{"scene": {…}, "accuracy":
-//! "precise", "from": 1e-7, "to": 10, "points": 241, "mapMax": null, "mapN": 81, "family": true,
+//! (snake_case keys, as every file record; unknown keys refused, every key optional): `{"scene":
+//! {…}, "accuracy": "precise", "from": 1e-7, "to": 10, "points": 241, "map_max": null, "map_n": 81,
+//! "family": true,
 //! "sweep": "bulk.viscosity.shear", "overlays": ["atlas:bridges1984"], "fail": []}`. Older forms
-//! still load: `balanced` for `integrated`, `map_n`/`map_max` for `mapN`/`mapMax`.
+//! still load: `balanced` for `integrated`, the page's links' `mapN`/`mapMax` (issue 36) for
+//! `map_n`/`map_max`.
 //!
 //! # Examples
 //!
@@ -372,7 +374,7 @@ mod wire {
     use alloc::vec::Vec;
 
     #[derive(serde::Serialize, serde::Deserialize)]
-    #[serde(deny_unknown_fields, rename_all = "camelCase")]
+    #[serde(deny_unknown_fields)]
     pub struct Wire {
         #[serde(default = "default_scene")]
         scene: Scene,
@@ -388,10 +390,10 @@ mod wire {
         to: Option<f64>,
         #[serde(default = "default_points")]
         points: usize,
-        // `map_max`/`map_n`: the snake-case keys of views written before the one request.
-        #[serde(default, alias = "map_max")]
+        // `mapMax`/`mapN`: the keys of the views and links written before issue 36.
+        #[serde(default, alias = "mapMax")]
         map_max: Option<f64>,
-        #[serde(default = "default_map_n", alias = "map_n")]
+        #[serde(default = "default_map_n", alias = "mapN")]
         map_n: usize,
         #[serde(default, skip_serializing_if = "Vec::is_empty")]
         fail: Vec<String>,
@@ -458,19 +460,9 @@ mod wire {
                 fail: w.fail,
                 overlays,
             };
-            request.validate().map_err(|e| wire_field(&e.to_string()))?;
+            request.validate().map_err(|e| e.to_string())?;
             Ok(request)
         }
-    }
-
-    /// The validation message with the field spelled as in the wire form (`map_n` → `mapN`).
-    fn wire_field(message: &str) -> String {
-        for (core, wire) in [("map_n", "mapN"), ("map_max", "mapMax")] {
-            if let Some(rest) = message.strip_prefix(core) {
-                return format!("{wire}{rest}");
-            }
-        }
-        message.to_string()
     }
 
     impl From<Request> for Wire {

@@ -350,3 +350,61 @@ mod cli {
         }
     }
 }
+
+/// Issue 36: the CSV (and the table) are the core's, beside its JSON record: the CSV's header names
+/// the record's arrays with their units, its rows are their samples to the digit, and each
+/// `# key,value,unit` line is the record's field at that key.
+#[test]
+fn issue_36_the_collision_csv_is_the_json_records_fields() {
+    let args = [
+        "collision",
+        "--g",
+        "0.02",
+        "--set",
+        "friction=on",
+        "--gt",
+        "0.01",
+    ];
+    let with = |format: &str| {
+        let mut a = args.to_vec();
+        a.extend(["--points", "25", "--format", format]);
+        let (code, out, err) = crate::bin::rime(&a);
+        assert_eq!(code, 0, "{err}");
+        out
+    };
+    let json: serde_json::Value = serde_json::from_str(&with("json")).unwrap();
+    let csv = with("csv");
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(header, ["t [s]", "xi [m]", "xi_dot [m/s]", "force [N]"]);
+    let row: Vec<f64> = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .map(|c| c.parse().unwrap())
+        .collect();
+    for (h, v) in header.iter().zip(&row) {
+        let key = h.split(' ').next().unwrap();
+        assert_eq!(json[key][0].as_f64(), Some(*v), "{key}");
+    }
+    let comment = |key: &str| {
+        csv.lines()
+            .find_map(|l| l.strip_prefix(&format!("# {key},")))
+            .unwrap_or_else(|| panic!("# {key} in the CSV"))
+            .to_string()
+    };
+    assert_eq!(
+        comment("status"),
+        format!("{},", json["status"].as_str().unwrap())
+    );
+    let closure = comment("ledger.closure");
+    assert_eq!(
+        closure.split(',').next().unwrap().parse::<f64>().ok(),
+        json["ledger"]["closure"].as_f64()
+    );
+    assert_eq!(
+        comment("tangential.class"),
+        format!("{},", json["tangential"]["class"].as_str().unwrap())
+    );
+    assert!(comment("tangential.spin_change_1").ends_with(",rad/s"));
+}

@@ -1,27 +1,32 @@
-//! One update of the web page in one call: a whole frame (curve, family, clean-surface curve,
-//! critical speeds, stick map, warnings, tidal appendix) computed from a scene and a view.
+//! The web page's frame and cards, from JSON text to the wire (`rime_core::wire`): the scene and
+//! the view as the page sends them (errors name the field: `view.from: …`, `layer.viscosity: …`),
+//! the core's frame with what only the page shows beside it ([`PageFrame`]), the records of the
+//! downloads, the stick map's records on download and the ring card.
 //!
 //! Every part fails on its own: a part that errors is left out and its message is listed in
 //! `errors` (`{part, message}`), the other parts are still computed. A speed on a curve whose ε_N
-//! fails becomes a gap (NaN, status code [`FAILED`]), not a failed frame. The frame is the core's
-//! frame's serde form with what only the page shows beside it (`PageFrame`), in its wire form
-//! (`rime_core::wire`): the number arrays in two flat buffers (`f64` and `u8`), the JSON
-//! giving each as `{"$f64": [at, len]}` or `{"$u8": [at, len]}`.
+//! fails becomes a gap (NaN, status code [`FAILED`]), not a failed frame.
 
-use crate::explorer::{parse_scene, tidal_json};
-use rime_core::explorer::frame::{Request, compute_with};
-use rime_core::explorer::wire::to_wire;
-use rime_core::explorer::{figures, records};
-use rime_core::figure::Figure;
-use rime_core::normal::memo::SharedLayerMemo;
-use rime_core::params::{PARAMETERS, Value};
-use rime_core::tidal::TidalInput;
-use rime_core::{Scene, Status};
+use super::frame::{Frame, Request, compute_with};
+pub use super::json_path::{parse_scene, read_named};
+use super::session::{ParamValue, tidal_card};
+use super::tidal::TidalCard;
+use super::{figures, records};
+use crate::figure::Figure;
+use crate::normal::memo::LayerMemo;
+use crate::params::PARAMETERS;
+use crate::tidal::TidalInput;
+use crate::wire::{Wire, to_wire};
+use crate::{Scene, Status, StickClass};
+use alloc::collections::BTreeMap;
+use alloc::format;
+use alloc::string::{String, ToString};
+use alloc::vec::Vec;
+use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 use serde_json::Value as Json;
 
-/// Status code of a speed whose ε_N could not be computed (a gap on the curve).
-pub use rime_core::explorer::frame::FAILED;
+pub use super::frame::FAILED;
 
 /// What the page shows of a scene: the core's [`Request`] (accuracy, speeds, points, map, family,
 /// overlays; parsed and checked by the core, so the page refuses what every surface refuses) and
@@ -48,13 +53,14 @@ pub struct View {
     pub records: bool,
 }
 
-/// The keys of a view that are the page's own (the others are the core request's).
+/// The keys of a view that are the page's own (the others are the core request's); `yLog` as
+/// views were written before issue 36.
 #[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields, rename_all = "camelCase")]
+#[serde(deny_unknown_fields)]
 struct PageKeys {
     #[serde(default)]
     tidal: Option<TidalInput>,
-    #[serde(default)]
+    #[serde(default, alias = "yLog")]
     y_log: bool,
     #[serde(default = "default_true")]
     experiments: bool,
@@ -85,24 +91,32 @@ pub struct PinnedCurve {
 /// The parts a view can fail on purpose (`curve` fails every 40th speed, a gap; the others whole).
 pub const FORCIBLE: [&str; 5] = ["curve", "family", "marker", "map", "tidal"];
 
-fn forced(part: &str) -> String {
-    format!("failure forced for testing ({part} in view.fail)")
-}
-
 /// Parses a view; errors name the field (`view.from: ...`).
 pub fn parse_view(text: &str) -> Result<View, String> {
-    let named = |path: String, message: String| {
-        if path == "." || path.is_empty() {
-            // The core's checks name their field first (`mapN: …`).
-            format!("view.{message}")
-        } else {
-            format!("view.{path}: {message}")
-        }
-    };
+    // Each part read from its own text, so that an error names the field in it.
+    fn part<T: DeserializeOwned>(keys: serde_json::Map<String, Json>) -> Result<T, String> {
+        let text = serde_json::to_string(&keys).map_err(|e| format!("view: {e}"))?;
+        super::json_path::read(&text).map_err(|(path, message)| {
+            if path.is_empty() {
+                // The core's checks name their field first (`map_n: …`).
+                format!("view.{message}")
+            } else {
+                format!("view.{path}: {message}")
+            }
+        })
+    }
     let mut keys: serde_json::Map<String, Json> =
         serde_json::from_str(text).map_err(|e| format!("view: {e}"))?;
     let mut page = serde_json::Map::new();
-    for k in ["tidal", "yLog", "experiments", "pinned", "date", "records"] {
+    for k in [
+        "tidal",
+        "yLog",
+        "y_log",
+        "experiments",
+        "pinned",
+        "date",
+        "records",
+    ] {
         if let Some(v) = keys.remove(k) {
             page.insert(k.into(), v);
         }
@@ -121,10 +135,8 @@ pub fn parse_view(text: &str) -> Result<View, String> {
         fail_tidal = parts.iter().any(|p| p == "tidal");
         parts.retain(|p| p != "tidal");
     }
-    let page: PageKeys = serde_path_to_error::deserialize(Json::Object(page))
-        .map_err(|e| named(e.path().to_string(), e.into_inner().to_string()))?;
-    let request: Request = serde_path_to_error::deserialize(Json::Object(keys))
-        .map_err(|e| named(e.path().to_string(), e.into_inner().to_string()))?;
+    let page: PageKeys = part(page)?;
+    let request: Request = part(keys)?;
     Ok(View {
         request,
         tidal: page.tidal,
@@ -137,52 +149,8 @@ pub fn parse_view(text: &str) -> Result<View, String> {
     })
 }
 
-/// A computed frame: one JSON text and two flat arrays it points into.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct Frame {
-    /// The frame's description (see the module docs).
-    pub json: String,
-    /// Every floating-point array, concatenated.
-    pub numbers: Vec<f64>,
-    /// Every code array (statuses, stick classes), concatenated.
-    pub codes: Vec<u8>,
-    /// The records as JSON, `{curve, family, map: null, context: {curve, family, map}}` (the CSV of
-    /// the downloads and their context lines), apart from `json` so that the page reads them only
-    /// when a download asks; `null` when the view asked for none (`records: false`).
-    pub records: String,
-}
-
-/// Every parameter's value (number, choice name, boolean, or `null` when inactive), by path.
-fn values(scene: &Scene) -> Json {
-    let mut m = serde_json::Map::new();
-    for p in PARAMETERS.iter() {
-        let v = match scene.get(p.path) {
-            Ok(Value::Number(x)) => Json::from(x),
-            Ok(Value::Choice(c)) => Json::from(c),
-            Ok(Value::Enabled(b)) => Json::from(b),
-            Ok(Value::Inactive) | Err(_) => Json::Null,
-        };
-        m.insert(p.path.to_string(), v);
-    }
-    Json::Object(m)
-}
-
-/// The literal layer reading's outcomes kept between this worker's frames (issue 26): an edit that
-/// leaves the layer stage's inputs unchanged is answered without integrating again. Each worker
-/// instantiates the module, so each has its own.
-pub(crate) static LAYER_MEMO: SharedLayerMemo = SharedLayerMemo::new();
-
-/// Computes the frame of `scene` as seen through `view`. Fails only for a request that is not
-/// valid (scene or view naming the field); a part that fails is listed in `errors` instead.
-pub fn frame(scene_json: &str, view_json: &str) -> Result<Frame, String> {
-    let (view, req) = prepare(scene_json, view_json)?;
-    // The one explorer model of the core computes every part; this binding only packs it.
-    let f = compute_with(&req, &|| false, &LAYER_MEMO).ok_or("frame: cancelled")?;
-    pack_frame(&view, &req, &f)
-}
-
 /// The view of `view_json` and the core's request for `scene_json` seen through it.
-pub(crate) fn prepare(scene_json: &str, view_json: &str) -> Result<(View, Request), String> {
+pub fn prepare(scene_json: &str, view_json: &str) -> Result<(View, Request), String> {
     let scene = parse_scene(scene_json)?;
     let view = parse_view(view_json)?;
     let mut req = view.request.clone();
@@ -190,39 +158,64 @@ pub(crate) fn prepare(scene_json: &str, view_json: &str) -> Result<(View, Reques
     Ok((view, req))
 }
 
+/// A frame as it crosses to the page: its wire form and, apart, its records.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct PageWire {
+    /// The [`PageFrame`] in its wire form.
+    pub wire: Wire,
+    /// The records as JSON, `{curve, family, map: null, context: {curve, family, map}}` (the CSV of
+    /// the downloads and their context lines), apart from the frame so that the page reads them
+    /// only when a download asks; `null` when the view asked for none (`records: false`).
+    pub records: String,
+}
+
+/// Computes the frame of `scene_json` as seen through `view_json`, with `memo` keeping the literal
+/// layer reading's outcomes between frames. Fails only for a request that is not valid (scene or
+/// view naming the field); a part that fails is listed in `errors` instead.
+pub fn frame(scene_json: &str, view_json: &str, memo: &dyn LayerMemo) -> Result<PageWire, String> {
+    let (view, req) = prepare(scene_json, view_json)?;
+    let f = compute_with(&req, &|| false, memo).ok_or("frame: cancelled")?;
+    page_wire(&view, &req, &f)
+}
+
 /// What crosses to the page besides the core's frame: the scene's values, the figures, the tidal
-/// card and the status names. Its wire form (`rime_core::wire`) is the page's frame.
+/// card and the status names. Its wire form is the page's frame.
 #[derive(Serialize)]
-struct PageFrame<'a> {
+pub struct PageFrame<'a> {
     /// The core's frame, field for field (its serde form).
     #[serde(flatten)]
-    frame: &'a rime_core::explorer::frame::Frame,
+    pub frame: &'a Frame,
     /// Every parameter's value by path.
-    values: Json,
+    pub values: BTreeMap<&'static str, ParamValue>,
     /// The side of the stick map asked for.
-    map_n: usize,
+    pub map_n: usize,
     /// The figure descriptions, built by the core for every surface.
-    figures: Vec<Figure>,
+    pub figures: Vec<Figure>,
     /// The tidal card, or `{"error": …}`.
-    tidal: Tidal,
+    pub tidal: Tidal,
     /// The status names in code order ([`Status::ALL`]).
-    status_names: [&'static str; 4],
+    pub status_names: [&'static str; 4],
 }
 
 /// The tidal card as it crosses: the card, or why there is none.
 #[derive(Serialize)]
 #[serde(untagged)]
-enum Tidal {
-    Card(Json),
-    Error { error: String },
+pub enum Tidal {
+    /// The card.
+    Card(TidalCard),
+    /// Why there is none.
+    Error {
+        /// The message, naming the field.
+        error: String,
+    },
 }
 
-/// The frame's records, the CSV of the downloads (see [`Frame::records`]).
+/// The frame's records, the CSV of the downloads (see [`PageWire::records`]).
 #[derive(Serialize)]
 struct Records {
     curve: String,
     family: String,
-    /// Formatted on download (`mapRecords`), never in the frame.
+    /// Formatted on download ([`map_records`]), never in the frame.
     map: Option<String>,
     context: RecordsContext,
 }
@@ -235,12 +228,19 @@ struct RecordsContext {
     map: String,
 }
 
-/// The page's frame (JSON, arrays, records) of the core's frame `f` of `req` seen through `view`.
-pub(crate) fn pack_frame(
-    view: &View,
-    req: &Request,
-    f: &rime_core::explorer::frame::Frame,
-) -> Result<Frame, String> {
+/// Every parameter's value (number, choice name, boolean, or `null` when inactive), by path.
+fn values(scene: &Scene) -> BTreeMap<&'static str, ParamValue> {
+    PARAMETERS
+        .iter()
+        .map(|p| {
+            let v = scene.get(p.path).map_or(ParamValue::Inactive, Into::into);
+            (p.path, v)
+        })
+        .collect()
+}
+
+/// The page's frame (wire, records) of the core's frame `f` of `req` seen through `view`.
+pub fn page_wire(view: &View, req: &Request, f: &Frame) -> Result<PageWire, String> {
     let version = env!("CARGO_PKG_VERSION");
     let pinned = match &view.pinned {
         Some(p) if p.g.len() != p.eps.len() => {
@@ -254,12 +254,10 @@ pub(crate) fn pack_frame(
         None => None,
     };
     // The one CSV contract, built by the core for every surface; the map's records are formatted
-    // on download (`mapRecords`), not every frame.
-    // The one CSV contract, built by the core for every surface; the map's records are formatted
-    // on download (`mapRecords`), not every frame.
-    let records = if view.records {
+    // on download (`map_records`), not every frame.
+    let records = view.records.then(|| {
         let ctx = |what: &str| records::context(f, what, version, &view.date);
-        Some(Records {
+        Records {
             curve: records::frame_curve_csv(f),
             // Every curve the chart draws, the pinned one included (issue 37).
             family: records::family_csv_pinned(f, pinned.as_ref()),
@@ -269,19 +267,17 @@ pub(crate) fn pack_frame(
                 family: ctx(records::FAMILY_WHAT),
                 map: ctx(records::MAP_WHAT),
             },
-        })
-    } else {
-        None
-    };
+        }
+    });
     let fig_view = figures::View {
         y_log: view.y_log,
         experiments: view.experiments,
         pinned,
     };
     let tidal = if view.fail_tidal {
-        Err(forced("tidal"))
+        Err("failure forced for testing (tidal in view.fail)".to_string())
     } else {
-        tidal_json(&req.scene, view.tidal)
+        tidal_card(&req.scene, view.tidal)
     };
     let page = PageFrame {
         frame: f,
@@ -291,21 +287,160 @@ pub(crate) fn pack_frame(
         tidal: tidal.map_or_else(|error| Tidal::Error { error }, Tidal::Card),
         status_names: Status::ALL.map(Status::name),
     };
-    let wire = to_wire(&page).map_err(|e| e.to_string())?;
-    Ok(Frame {
-        json: wire.json,
-        numbers: wire.numbers,
-        codes: wire.codes,
+    Ok(PageWire {
+        wire: to_wire(&page).map_err(|e| e.to_string())?,
         records: serde_json::to_string(&records).map_err(|e| format!("records: {e}"))?,
+    })
+}
+
+/// The stick map's records (`rime map --format csv`) from the frame's arrays: `g` (n speeds),
+/// `eps_t` and class codes (n² each, row-major). Formatted only when the page downloads them:
+/// 14 400 rows cost ~40 ms, too much for every frame.
+pub fn map_records(g: &[f64], eps_t: &[f64], codes: &[u8]) -> Result<String, String> {
+    let n = g.len();
+    if eps_t.len() != n * n || codes.len() != n * n {
+        return Err(format!(
+            "mapRecords: epsT and class must hold n² = {} values (got {} and {})",
+            n * n,
+            eps_t.len(),
+            codes.len()
+        ));
+    }
+    let class = codes
+        .iter()
+        .map(|&c| {
+            StickClass::ALL
+                .get(usize::from(c))
+                .copied()
+                .ok_or_else(|| format!("mapRecords: unknown class code {c}"))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let map = crate::sweep::StickMap {
+        g: g.to_vec(),
+        eps_n: Vec::new(),
+        class,
+        eps_t: eps_t.to_vec(),
+        rhs_evaluations: 0,
+    };
+    Ok(records::map_csv(&map))
+}
+
+/// What the page's ring card sends (issue 24): τ, Ω or a planet and a distance, and the ε_N
+/// chart's speed range `[from, to]` \[m/s\] for the ε_cr line.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RingRequest {
+    tau: f64,
+    omega: Option<f64>,
+    planet_mass: Option<f64>,
+    distance: Option<f64>,
+    chart: (f64, f64),
+}
+
+/// The ring card as the page draws it: the core's card with the line's stroke by name.
+#[derive(Serialize)]
+pub struct RingPage {
+    /// The card's verdict in words.
+    pub verdict: &'static str,
+    /// Whether the ring reaches an equilibrium.
+    pub equilibrium: bool,
+    /// The card's sentence.
+    pub sentence: String,
+    /// The printed rows.
+    pub rows: Vec<super::ring::RingRow>,
+    /// The ε_cr line.
+    pub eps_cr_line: RingLine,
+    /// Where the scene's curve meets the line, `[g, ε]`.
+    pub meeting: Option<[f64; 2]>,
+    /// The ring's mean impact speed.
+    pub impact_marker: crate::figure::Marker,
+    /// `rime ring`'s prediction record.
+    pub record: crate::ring::RingRecord,
+}
+
+/// A chart line as the page draws it (`stroke` by name; `color` an index into the palette's series).
+#[derive(Serialize)]
+pub struct RingLine {
+    /// Legend text.
+    pub name: String,
+    /// Short legend text.
+    pub short: String,
+    /// `[x, y]` pairs.
+    pub points: Vec<(f64, f64)>,
+    /// Palette index.
+    pub color: usize,
+    /// `solid`, `dashed`, ….
+    pub stroke: &'static str,
+}
+
+/// The ring card for `scene` (JSON) and `input` (JSON `{tau, omega | planet_mass + distance,
+/// chart: [from, to]}`), built by [`super::ring::ring_card`]. Errors name the field
+/// (`ring.tau: …`).
+pub fn ring_page(scene: &str, input: &str) -> Result<RingPage, String> {
+    use crate::ring::{Orbit, RingInput};
+    let scene = parse_scene(scene)?;
+    let req: RingRequest = read_named(input, "ring", true)?;
+    let orbit = match (req.omega, req.planet_mass, req.distance) {
+        (Some(o), None, None) => Orbit::Omega(o),
+        (None, Some(m), Some(d)) => Orbit::Planet {
+            planet_mass: m,
+            distance: d,
+        },
+        _ => return Err("ring.omega: give omega, or planet_mass and distance".into()),
+    };
+    let input = RingInput {
+        tau: req.tau,
+        orbit,
+        damping_set_for_radius: None,
+    };
+    let card =
+        super::ring::ring_card(&scene, &input, req.chart).map_err(|e| format!("ring.{e}"))?;
+    let line = card.eps_cr_line;
+    Ok(RingPage {
+        verdict: card.verdict,
+        equilibrium: card.equilibrium,
+        sentence: card.sentence,
+        rows: card.rows,
+        eps_cr_line: RingLine {
+            name: line.name,
+            short: line.short,
+            points: line.points,
+            color: line.color,
+            stroke: line.stroke.name(),
+        },
+        meeting: card.meeting.map(|(g, e)| [g, e]),
+        impact_marker: card.impact_marker,
+        record: card.record,
     })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rime_core::explorer::range::auto_map_range;
-    use rime_core::{Accuracy, Contact};
+    use crate::explorer::range::auto_map_range;
+    use crate::normal::memo::NoMemo;
+    use crate::{Accuracy, Contact};
+    use alloc::vec;
     use serde_json::json;
+
+    /// A frame in the page's three parts.
+    #[derive(Debug)]
+    struct Frame {
+        json: String,
+        numbers: Vec<f64>,
+        codes: Vec<u8>,
+        records: String,
+    }
+
+    fn frame(scene: &str, view: &str) -> Result<Frame, String> {
+        let p = super::frame(scene, view, &NoMemo)?;
+        Ok(Frame {
+            json: p.wire.json,
+            numbers: p.wire.numbers,
+            codes: p.wire.codes,
+            records: p.records,
+        })
+    }
 
     fn get<'a>(f: &'a Frame, j: &Json) -> &'a [f64] {
         let at = j["$f64"][0].as_u64().unwrap() as usize;
@@ -314,7 +449,7 @@ mod tests {
     }
 
     fn frost() -> Scene {
-        rime_core::Preset::IceFrost.scene()
+        crate::Preset::IceFrost.scene()
     }
 
     /// The page's reader (www/app.js `decode`), written again: each `{"$f64": [at, len]}` or
@@ -349,18 +484,18 @@ mod tests {
         // Each field of the frame is declared once, on the core's type: the page's frame, read
         // back, holds the core frame's serde form key for key, and only the page's own keys beside.
         let scene = frost();
-        let mut req = rime_core::explorer::frame::Request::new(scene, Accuracy::Precise);
+        let mut req = Request::new(scene, Accuracy::Precise);
         req.points = 40;
         req.map_n = 8;
         req.overlays =
-            vec![rime_core::explorer::frame::Overlay::parse("model:muller_poschel2011").unwrap()];
-        let core = rime_core::explorer::frame::compute(&req, &|| false).unwrap();
+            vec![crate::explorer::frame::Overlay::parse("model:muller_poschel2011").unwrap()];
+        let core = crate::explorer::frame::compute(&req, &|| false).unwrap();
         let expected = serde_json::to_value(&core).unwrap();
         let text = serde_json::to_string(&scene).unwrap();
         let page = read(
             &frame(
                 &text,
-                r#"{"points": 40, "mapN": 8, "overlays": ["model:muller_poschel2011"]}"#,
+                r#"{"points": 40, "map_n": 8, "overlays": ["model:muller_poschel2011"]}"#,
             )
             .unwrap(),
         );
@@ -385,7 +520,7 @@ mod tests {
     fn frame_matches_the_core_and_the_old_getters() {
         let scene = frost();
         let text = serde_json::to_string(&scene).unwrap();
-        let f = frame(&text, r#"{"points": 50, "mapN": 20}"#).unwrap();
+        let f = frame(&text, r#"{"points": 50, "map_n": 20}"#).unwrap();
         let j: Json = serde_json::from_str(&f.json).unwrap();
         assert_eq!(j["errors"], json!([]), "{}", j["errors"]);
         let g = get(&f, &j["g"]);
@@ -408,21 +543,22 @@ mod tests {
     fn the_frame_carries_the_cores_records_and_figures_issue_11() {
         let scene = frost();
         let text = serde_json::to_string(&scene).unwrap();
-        let view = r#"{"points": 30, "mapN": 6, "from": 1e-6, "to": 1, "yLog": true, "date": "D"}"#;
+        let view =
+            r#"{"points": 30, "map_n": 6, "from": 1e-6, "to": 1, "y_log": true, "date": "D"}"#;
         let f = frame(&text, view).unwrap();
         let j: Json = serde_json::from_str(&f.json).unwrap();
         let records: Json = serde_json::from_str(&f.records).unwrap();
         // The records are the CSV `rime curve` prints: built here from the core's normal results.
         let contact = Contact::new(&scene).unwrap();
         let mut g = vec![0.0; 30];
-        rime_core::sweep::log_space(1e-6, 1.0, &mut g);
+        crate::sweep::log_space(1e-6, 1.0, &mut g);
         let points: Vec<_> = g
             .iter()
             .map(|&gi| Some(contact.normal(gi, Accuracy::Precise).unwrap()))
             .collect();
         assert_eq!(
             records["curve"],
-            rime_core::explorer::records::curve_csv(&g, &points)
+            crate::explorer::records::curve_csv(&g, &points)
         );
         assert!(
             records["context"]["curve"]
@@ -433,19 +569,15 @@ mod tests {
         // The map's records come on download, from the frame's arrays, equal to the core's.
         let m = &j["map"];
         let codes = &f.codes[m["map"]["class"]["$u8"][0].as_u64().unwrap() as usize..][..36];
-        let csv = crate::explorer::map_records(
-            get(&f, &m["map"]["g"]),
-            get(&f, &m["map"]["eps_t"]),
-            codes,
-        );
-        let mut req = rime_core::explorer::frame::Request::new(scene, Accuracy::Precise);
+        let csv = map_records(get(&f, &m["map"]["g"]), get(&f, &m["map"]["eps_t"]), codes);
+        let mut req = Request::new(scene, Accuracy::Precise);
         req.speeds = Some((1e-6, 1.0));
         req.points = 30;
         req.map_n = 6;
-        let core = rime_core::explorer::frame::compute(&req, &|| false).unwrap();
+        let core = crate::explorer::frame::compute(&req, &|| false).unwrap();
         assert_eq!(
             csv.unwrap(),
-            rime_core::explorer::records::frame_map_csv(&core).unwrap()
+            crate::explorer::records::frame_map_csv(&core).unwrap()
         );
         let figs = j["figures"].as_array().unwrap();
         assert_eq!(figs.len(), 2);
@@ -458,10 +590,10 @@ mod tests {
         // A preview asks for no records (it is never exported): everything else is the frame with
         // them, bit for bit, and `records` says null.
         let text = serde_json::to_string(&frost()).unwrap();
-        let with = frame(&text, r#"{"points": 30, "mapN": 6, "date": "D"}"#).unwrap();
+        let with = frame(&text, r#"{"points": 30, "map_n": 6, "date": "D"}"#).unwrap();
         let without = frame(
             &text,
-            r#"{"points": 30, "mapN": 6, "date": "D", "records": false}"#,
+            r#"{"points": 30, "map_n": 6, "date": "D", "records": false}"#,
         )
         .unwrap();
         assert_eq!(without.records, "null");
@@ -489,7 +621,7 @@ mod tests {
         scene.grains.radius_2 = 2e-6;
         scene.layer.as_mut().unwrap().thickness = 1e-5;
         let text = serde_json::to_string(&scene).unwrap();
-        let f = frame(&text, r#"{"points": 20, "mapN": 10}"#).unwrap();
+        let f = frame(&text, r#"{"points": 20, "map_n": 10}"#).unwrap();
         let j: Json = serde_json::from_str(&f.json).unwrap();
         assert_eq!(j["map"]["max"], 1e6);
         assert!(
@@ -507,7 +639,7 @@ mod tests {
         let scene = frost();
         let text = serde_json::to_string(&scene).unwrap();
         // A map range the core refuses: the map alone fails, named.
-        let f = frame(&text, r#"{"points": 20, "mapN": 10, "mapMax": 2e6}"#).unwrap();
+        let f = frame(&text, r#"{"points": 20, "map_n": 10, "map_max": 2e6}"#).unwrap();
         let j: Json = serde_json::from_str(&f.json).unwrap();
         assert!(j["map"]["map"].is_null(), "{}", j["map"]);
         assert_eq!(j["errors"][0]["part"], "stick map");
@@ -526,9 +658,9 @@ mod tests {
                 .contains("colour")
         );
         assert!(
-            frame(&text, r#"{"mapN": 1}"#)
+            frame(&text, r#"{"map_n": 1}"#)
                 .unwrap_err()
-                .starts_with("view.mapN")
+                .starts_with("view.map_n")
         );
         assert!(frame("{", "{}").is_err());
         assert!(
@@ -547,7 +679,7 @@ mod tests {
         let text = serde_json::to_string(&frost()).unwrap();
         let f = frame(
             &text,
-            r#"{"points": 80, "mapN": 10, "fail": ["curve", "map", "marker", "tidal", "family"]}"#,
+            r#"{"points": 80, "map_n": 10, "fail": ["curve", "map", "marker", "tidal", "family"]}"#,
         )
         .unwrap();
         let j: Json = serde_json::from_str(&f.json).unwrap();
@@ -582,7 +714,7 @@ mod tests {
         let text = serde_json::to_string(&Scene::default()).unwrap();
         let f = frame(
             &text,
-            r#"{"points": 20, "mapN": 4, "overlays": ["atlas:bridges1984", "model:muller_poschel2011"]}"#,
+            r#"{"points": 20, "map_n": 4, "overlays": ["atlas:bridges1984", "model:muller_poschel2011"]}"#,
         )
         .unwrap();
         let j: Json = serde_json::from_str(&f.json).unwrap();
@@ -599,7 +731,7 @@ mod tests {
         // The core's sweep policy: η* with a layer, γ with adhesion, else A (×0.1, 0.3, 3, 10).
         let family = |scene: &Scene| -> Json {
             let text = serde_json::to_string(scene).unwrap();
-            let f = frame(&text, r#"{"points": 10, "mapN": 4}"#).unwrap();
+            let f = frame(&text, r#"{"points": 10, "map_n": 4}"#).unwrap();
             serde_json::from_str::<Json>(&f.json).unwrap()
         };
         let f = family(&Scene::default());
@@ -630,7 +762,7 @@ mod tests {
     #[test]
     fn issue_36_the_records_keep_their_keys() {
         let text = serde_json::to_string(&frost()).unwrap();
-        let f = frame(&text, r#"{"points": 12, "mapN": 4, "date": "D"}"#).unwrap();
+        let f = frame(&text, r#"{"points": 12, "map_n": 4, "date": "D"}"#).unwrap();
         let records: Json = serde_json::from_str(&f.records).unwrap();
         let keys = |j: &Json| {
             let mut k: Vec<String> = j.as_object().unwrap().keys().cloned().collect();
@@ -657,5 +789,108 @@ mod tests {
                 .unwrap()
                 .starts_with("g_n [m/s],eps_n")
         );
+    }
+
+    #[test]
+    fn issue_36_an_old_links_view_still_loads() {
+        // A view written before issue 36 (its keys camelCase, as the page wrote them) loads as
+        // the snake_case view the page writes now, to the same frame.
+        let text = serde_json::to_string(&frost()).unwrap();
+        let old = r#"{"accuracy": "balanced", "from": 1e-6, "to": 1, "points": 20, "mapN": 6,
+            "mapMax": 0.5, "yLog": true, "experiments": false, "family": true,
+            "overlays": ["atlas:bridges1984"], "date": "D"}"#;
+        let (view, req) = prepare(&text, old).unwrap();
+        assert_eq!((req.map_n, req.map_max, req.points), (6, Some(0.5), 20));
+        assert_eq!(req.speeds, Some((1e-6, 1.0)));
+        assert_eq!(req.accuracy, Accuracy::Balanced);
+        assert!(view.y_log && !view.experiments);
+        let snake = old
+            .replace("mapN", "map_n")
+            .replace("mapMax", "map_max")
+            .replace("yLog", "y_log");
+        let (view2, req2) = prepare(&text, &snake).unwrap();
+        assert_eq!((req2.map_n, req2.map_max), (6, Some(0.5)));
+        assert!(view2.y_log);
+        let a = frame(&text, old).unwrap();
+        let b = frame(&text, &snake).unwrap();
+        assert_eq!((&a.json, &a.codes), (&b.json, &b.codes));
+    }
+
+    #[test]
+    fn issue_24_the_ring_card_is_the_cores_and_bad_input_names_the_field() {
+        let scene = serde_json::to_string(&crate::Preset::Ice.scene()).unwrap();
+        let input = r#"{"tau": 0.5, "omega": 1.3143527e-4, "chart": [1e-7, 1.0]}"#;
+        let card = serde_json::to_value(ring_page(&scene, input).unwrap()).unwrap();
+        let core = crate::explorer::ring::ring_card(
+            &crate::Preset::Ice.scene(),
+            &crate::ring::RingInput {
+                tau: 0.5,
+                orbit: crate::ring::Orbit::Omega(1.3143527e-4),
+                damping_set_for_radius: None,
+            },
+            (1e-7, 1.0),
+        )
+        .unwrap();
+        assert_eq!(card["sentence"], core.sentence);
+        assert_eq!(card["verdict"], "equilibrium at the monolayer floor");
+        assert_eq!(card["equilibrium"], true);
+        assert_eq!(card["rows"][0]["text"], core.rows[0].text);
+        assert_eq!(
+            card["record"]["rough"]["velocity_dispersion"],
+            core.record.rough.velocity_dispersion
+        );
+        assert_eq!(card["eps_cr_line"]["stroke"], "dashed");
+        let keys = |j: &Json| {
+            let mut k: Vec<String> = j.as_object().unwrap().keys().cloned().collect();
+            k.sort();
+            k
+        };
+        assert_eq!(
+            keys(&card),
+            [
+                "eps_cr_line",
+                "equilibrium",
+                "impact_marker",
+                "meeting",
+                "record",
+                "rows",
+                "sentence",
+                "verdict"
+            ]
+        );
+        assert_eq!(keys(&card["rows"][0]), ["label", "text"]);
+        assert_eq!(
+            keys(&card["eps_cr_line"]),
+            ["color", "name", "points", "short", "stroke"]
+        );
+        assert_eq!(
+            keys(&card["impact_marker"]),
+            ["color", "label", "short", "x"]
+        );
+        // Points are [x, y] pairs.
+        assert_eq!(
+            card["eps_cr_line"]["points"][0].as_array().map(Vec::len),
+            Some(2)
+        );
+        assert!(card["meeting"].is_null() || card["meeting"].as_array().map(Vec::len) == Some(2));
+        for (bad, field) in [
+            (
+                r#"{"tau": 0, "omega": 1e-4, "chart": [1e-7, 1]}"#,
+                "ring.tau:",
+            ),
+            (r#"{"tau": 0.5, "chart": [1e-7, 1]}"#, "ring.omega:"),
+            (
+                r#"{"tau": 0.5, "omega": 1e-4, "chart": [1, 0.1]}"#,
+                "ring.chart:",
+            ),
+            (r#"{"tau": 0.5, "omega": 1e-4}"#, "ring:"),
+            (
+                r#"{"tau": "x", "omega": 1e-4, "chart": [1e-7, 1]}"#,
+                "ring.tau:",
+            ),
+        ] {
+            let e = ring_page(&scene, bad).err().unwrap();
+            assert!(e.starts_with(field), "{bad}: {e}");
+        }
     }
 }
