@@ -10,7 +10,7 @@ import { $, el, errText, put } from './dom.js';
 import { app } from './state.js';
 
 /** The card's inputs as the page starts (a link carries only inputs that differ). */
-export const RING_DEFAULTS = Object.freeze({ tau: 0.5, omega: 1.3143527e-4, planet: false, onChart: false });
+export const RING_DEFAULTS = Object.freeze({ tau: 0.5, omega: 1.3143527e-4, planet: false, onChart: false, sizes: 'one' });
 
 /** The width of the ring's ε_cr line on the chart (px; comparisons 1.5, this scene 2.6 solid). */
 const RING_LINE_WIDTH = 2.6;
@@ -22,7 +22,7 @@ let hooks = { schedule: () => {} };
 
 /** The request for the core's card with the inputs `r` over the chart's speed range. */
 function request(r, chart) {
-  const input = { tau: r.tau, chart };
+  const input = { tau: r.tau, chart, sizes: r.sizes };
   const t = app.res && app.res.tidal ? app.res.tidal.input : null;
   if (r.planet && t) {
     input.planet_mass = t.planet_mass;
@@ -53,7 +53,7 @@ export function ringInputProblem(key, value, scene, range) {
 
 /** The ring card's inputs for a frame request (the worker computes the card with the frame). */
 export function ringInputs() {
-  return { tau: ring.tau, omega: ring.omega, planet: ring.planet, onChart: ring.onChart };
+  return { tau: ring.tau, omega: ring.omega, planet: ring.planet, onChart: ring.onChart, sizes: ring.sizes };
 }
 
 /** Takes the card the worker computed after the frame (`out`: {json} or {error}). */
@@ -121,7 +121,14 @@ export function buildRing(h) {
   };
   check('planet', 'Ω from the tidal card\'s planet and distance');
   check('onChart', 'draw ε_cr and the impact speed on the ε_N chart');
+  // The grain sizes (issue 38): the core's choices, named and labelled by the core.
+  const sizes = el('select', { id: 'r-sizes' });
+  for (const { name, label } of JSON.parse(wasm.ringSizes())) sizes.append(el('option', { value: name }, label));
+  sizes.value = ring.sizes;
+  sizes.addEventListener('change', () => { ring.sizes = sizes.value; hooks.schedule(); });
+  box.append(el('div', { class: 'tparam' }, el('label', { for: 'r-sizes' }, 'grain sizes'), sizes));
 }
+
 
 /** Shows the card's inputs as they are in `ring` (after a link set them). */
 export function reflectRing() {
@@ -137,6 +144,8 @@ export function reflectRing() {
     const input = $(`r-${key}`);
     if (input) input.checked = ring[key];
   }
+  const sizes = $('r-sizes');
+  if (sizes) sizes.value = ring.sizes;
 }
 
 let shownKey = null;
@@ -149,7 +158,7 @@ export function showRing() {
   const noteText = ring.error ? `⚠ not computed: ${ring.error}` : '';
   if (note.textContent !== noteText) note.textContent = noteText;
   put($('ring'), 'hidden', !c);
-  window.rimeState.ring = c ? { verdict: c.verdict, equilibrium: c.equilibrium, rows: c.rows, meeting: c.meeting, record: c.record } : null;
+  window.rimeState.ring = c ? { verdict: c.verdict, equilibrium: c.equilibrium, rows: c.rows, meeting: c.meeting, record: c.record, sizes: c.sizes, viscosity: c.viscosity } : null;
   if (!c) return;
   // Rebuilt only when what it prints changes (issue 26: rebuilding the table every frame was the
   // largest part of the page's layout per frame, and most edits leave the card as it is).

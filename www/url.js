@@ -234,6 +234,11 @@ function readRing(text, problems) {
     if (typeof obj[key] === 'boolean') ring[key] = obj[key];
     else problems.push(`ring.${key}: true or false`);
   }
+  if (obj.sizes !== undefined) {
+    const why = ringInputProblem('sizes', obj.sizes, app.ex.toJson(), [app.view.from, app.view.to]);
+    if (why) problems.push(why);
+    else ring.sizes = obj.sizes;
+  }
 }
 
 /** At most MAX_PROBLEMS distinct problems, each at most MAX_PROBLEM_CHARS long, then how many more

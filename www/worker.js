@@ -133,7 +133,7 @@ const splitTestKeys = ({ testPreviewExtraMs, testPauseRefinement, ...view }) => 
 /** The ring card of `scene` for the inputs `r` over the chart's speeds `chart` ([from, to]),
  *  with the tidal card's planet and distance `tidal` (or null; memoised). */
 function ring(scene, r, chart, tidal) {
-  const input = { tau: r.tau, chart };
+  const input = { tau: r.tau, chart, sizes: r.sizes };
   if (r.planet && tidal) {
     input.planet_mass = tidal.planet_mass;
     input.distance = tidal.distance;

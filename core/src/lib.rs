@@ -64,11 +64,11 @@ pub mod wire;
 pub mod wire_read;
 
 // The paths the modules had before they moved into folders (issue 36) keep working.
+#[doc(no_inline)]
+pub use applications::{dem, merge, ring, stick, tidal};
 #[cfg(feature = "alloc")]
 #[doc(no_inline)]
 pub use applications::{kernel, ring_sizes};
-#[doc(no_inline)]
-pub use applications::{dem, merge, ring, stick, tidal};
 #[doc(no_inline)]
 pub use collision::kinematics;
 #[doc(no_inline)]

@@ -209,6 +209,44 @@ try {
     }
   });
 
+  await check('issue 38: the card\'s grain sizes R–5R are `rime ring --radii R..5R --q 3` (ν too), shown first, and in the link', async () => {
+    const u = await updates();
+    await page.selectOption('#r-sizes', 'to_5r');
+    await waitUpdate(u);
+    const s = await page.evaluate(() => window.rimeState);
+    assert(s.ring.sizes && s.ring.sizes.size_bins.length === 3, `sizes: ${JSON.stringify(s.ring.sizes).slice(0, 200)}`);
+    const scene = JSON.parse(s.sceneJson);
+    const r = scene.grains.radius_1;
+    const sceneFile = path.join(os.tmpdir(), `rime-ring-e2e-sizes-${process.pid}.json`);
+    fs.writeFileSync(sceneFile, s.sceneJson);
+    const cli = JSON.parse(execFileSync(rime, ['ring', '--scene', sceneFile, '--tau', String(s.ring.record.tau), '--omega', String(s.ring.record.omega),
+      '--radii', `${r}m..${5 * r}m`, '--q', '3', '--format', 'json'], { encoding: 'utf8' }));
+    fs.rmSync(sceneFile);
+    // The same core computation on both sides: every digit agrees.
+    assert(s.ring.sizes.velocity_dispersion === cli.velocity_dispersion, `c: page ${s.ring.sizes.velocity_dispersion}, rime ring ${cli.velocity_dispersion}`);
+    assert(s.ring.viscosity.total === cli.viscosity.total, `ν: page ${s.ring.viscosity.total}, rime ring ${cli.viscosity.total}`);
+    assert(s.ring.sizes.size_bins.every((b, i) => b.velocity_dispersion === cli.size_bins[i].velocity_dispersion), 'c per bin differs');
+    assert(s.ring.rows[0].label.startsWith('sizes '), `first row: ${s.ring.rows[0].label}`);
+    await page.waitForFunction(() => {
+      const q = new URLSearchParams(location.hash.slice(1)).get('r');
+      return q !== null && JSON.parse(q).sizes === 'to_5r';
+    }, null, { timeout: GUARD_MS });
+    const link = await page.evaluate(() => location.href);
+    const again = await context.newPage();
+    try {
+      await again.goto(link, { waitUntil: 'load' });
+      await again.waitForFunction(() => window.rimeState && window.rimeState.ready === true && window.rimeState.ring, null, { timeout: GUARD_MS });
+      const shown = await again.evaluate(() => ({ sizes: document.getElementById('r-sizes').value, bins: window.rimeState.ring.sizes && window.rimeState.ring.sizes.size_bins.length }));
+      assert(shown.sizes === 'to_5r' && shown.bins === 3, `reloaded: ${JSON.stringify(shown)}`);
+    } finally {
+      await again.close();
+    }
+    const u2 = await updates();
+    await page.selectOption('#r-sizes', 'one');
+    await waitUpdate(u2);
+    return `c ${cli.velocity_dispersion} m/s, ν ${cli.viscosity.total} m²/s over ${r}–${5 * r} m`;
+  });
+
   await check('issue 37: a ring value in a link gets the card\'s range check (τ = 1e308 is named and not used)', async () => {
     const q = await context.newPage();
     try {

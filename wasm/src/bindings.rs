@@ -203,6 +203,13 @@ pub fn help() -> String {
     catalogue_json(&catalogue::help())
 }
 
+/// The ring card's grain-size choices `[{name, label}]` in order
+/// (`rime_core::explorer::catalogue::ring_sizes`).
+#[wasm_bindgen(js_name = ringSizes)]
+pub fn ring_sizes() -> String {
+    catalogue_json(&catalogue::ring_sizes())
+}
+
 /// `v` with `digits` significant digits (`rime_core::explorer::format::sig`); `—` when not finite.
 #[wasm_bindgen(js_name = fmtSig)]
 pub fn fmt_sig(v: f64, digits: i32) -> String {

@@ -49,15 +49,15 @@
 //! # Ok::<(), rime_core::Error>(())
 //! ```
 
-use crate::numerics::accuracy::Accuracy;
+use crate::applications::ring_sizes::DampingRule;
+use crate::applications::stick::{self, Convention, SEARCH_MAX};
 use crate::data::atlas;
-use crate::scene::contact::Contact;
 use crate::error::{Error, Result};
 use crate::master::{self, Resolution};
+use crate::numerics::accuracy::Accuracy;
 use crate::numerics::math::{exp, ln, log10};
-use crate::applications::ring_sizes::DampingRule;
+use crate::scene::contact::Contact;
 use crate::scene::{Adhesion, AdhesionModulus, ContactEnd, Damping, LayerReading, Scene};
-use crate::applications::stick::{self, Convention, SEARCH_MAX};
 use alloc::vec::Vec;
 
 /// The atlas entry γ(T) comes from.

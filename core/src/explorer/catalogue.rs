@@ -5,8 +5,8 @@
 use super::help::{
     ARTIFACT_NOTE, GLOSSARY, PAPER, class_is_artifact, option_label, parameter_help, slider_range,
 };
-use crate::params::{Kind, PARAMETERS};
-use crate::tidal::TidalInput;
+use crate::applications::tidal::TidalInput;
+use crate::scene::params::{Kind, PARAMETERS};
 use crate::{Accuracy, Preset, Scene, Status, StickClass};
 use alloc::collections::BTreeMap;
 use alloc::format;
@@ -126,7 +126,7 @@ pub enum OverlayEntry {
 
 /// The overlays: the measured laws and ranges of the atlas, then the other models.
 pub fn overlays() -> Vec<OverlayEntry> {
-    use crate::atlas::{ENTRIES, Kind as EntryKind};
+    use crate::data::atlas::{ENTRIES, Kind as EntryKind};
     use crate::models::Model;
     let mut list: Vec<OverlayEntry> = ENTRIES
         .iter()
@@ -366,6 +366,26 @@ pub fn help() -> Help {
     }
 }
 
+/// One of the ring card's size choices as the page offers it.
+#[derive(Debug, Clone, Serialize)]
+pub struct RingSizeChoice {
+    /// The name a request sends (`one`, `to_5r`, `to_10r`).
+    pub name: &'static str,
+    /// What the page shows (`one size`, `R–5R, q = 3`).
+    pub label: &'static str,
+}
+
+/// The ring card's grain-size choices in the order a key cycles them (issue 38).
+pub fn ring_sizes() -> Vec<RingSizeChoice> {
+    super::ring::CardSizeChoice::ALL
+        .iter()
+        .map(|c| RingSizeChoice {
+            name: c.name(),
+            label: c.label(),
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -484,7 +504,7 @@ mod tests {
 
     #[test]
     fn issue_36_overlays_and_experiments_keep_their_keys() {
-        use crate::atlas::{ENTRIES, Kind as EntryKind};
+        use crate::data::atlas::{ENTRIES, Kind as EntryKind};
         use crate::models::Model;
         let list = parse(&overlays());
         let list = list.as_array().expect("a list");

@@ -12,10 +12,10 @@ pub use super::json_path::{parse_scene, read_named};
 use super::session::{ParamValue, tidal_card};
 use super::tidal::TidalCard;
 use super::{figures, records};
+use crate::applications::tidal::TidalInput;
 use crate::figure::Figure;
 use crate::normal::memo::LayerMemo;
-use crate::params::PARAMETERS;
-use crate::tidal::TidalInput;
+use crate::scene::params::PARAMETERS;
 use crate::wire::{Wire, to_wire};
 use crate::{Scene, Status, StickClass};
 use alloc::collections::BTreeMap;
@@ -315,7 +315,7 @@ pub fn map_records(g: &[f64], eps_t: &[f64], codes: &[u8]) -> Result<String, Str
                 .ok_or_else(|| format!("mapRecords: unknown class code {c}"))
         })
         .collect::<Result<Vec<_>, _>>()?;
-    let map = crate::sweep::StickMap {
+    let map = crate::figure::sweep::StickMap {
         g: g.to_vec(),
         eps_n: Vec::new(),
         class,
@@ -335,6 +335,9 @@ struct RingRequest {
     planet_mass: Option<f64>,
     distance: Option<f64>,
     chart: (f64, f64),
+    /// The grain sizes (issue 38): `one` (default), `to_5r`, `to_10r`.
+    #[serde(default)]
+    sizes: super::ring::CardSizeChoice,
 }
 
 /// The ring card as the page draws it: the core's card with the line's stroke by name.
@@ -355,7 +358,13 @@ pub struct RingPage {
     /// The ring's mean impact speed.
     pub impact_marker: crate::figure::Marker,
     /// `rime ring`'s prediction record.
-    pub record: crate::ring::RingRecord,
+    pub record: crate::applications::ring::RingRecord,
+    /// The ring's kinematic viscosity (of the distribution when the card has one).
+    pub viscosity: crate::applications::ring_sizes::Viscosity,
+    /// The ring of many sizes, when the card has one.
+    pub sizes: Option<crate::applications::ring_sizes::SizeRingRecord>,
+    /// The size choices the card offers, in order.
+    pub size_choices: Vec<super::catalogue::RingSizeChoice>,
 }
 
 /// A chart line as the page draws it (`stroke` by name; `color` an index into the palette's series).
@@ -374,10 +383,10 @@ pub struct RingLine {
 }
 
 /// The ring card for `scene` (JSON) and `input` (JSON `{tau, omega | planet_mass + distance,
-/// chart: [from, to]}`), built by [`super::ring::ring_card`]. Errors name the field
+/// chart: [from, to], sizes?}`), built by [`super::ring::ring_card_with_sizes`]. Errors name the field
 /// (`ring.tau: …`).
 pub fn ring_page(scene: &str, input: &str) -> Result<RingPage, String> {
-    use crate::ring::{Orbit, RingInput};
+    use crate::applications::ring::{Orbit, RingInput};
     let scene = parse_scene(scene)?;
     let req: RingRequest = read_named(input, "ring", true)?;
     let orbit = match (req.omega, req.planet_mass, req.distance) {
@@ -393,8 +402,9 @@ pub fn ring_page(scene: &str, input: &str) -> Result<RingPage, String> {
         orbit,
         damping_set_for_radius: None,
     };
-    let card =
-        super::ring::ring_card(&scene, &input, req.chart).map_err(|e| format!("ring.{e}"))?;
+    let sizes = req.sizes.sizes(scene.grains.radius_1);
+    let card = super::ring::ring_card_with_sizes(&scene, &input, sizes.as_ref(), req.chart)
+        .map_err(|e| format!("ring.{e}"))?;
     let line = card.eps_cr_line;
     Ok(RingPage {
         verdict: card.verdict,
@@ -411,6 +421,9 @@ pub fn ring_page(scene: &str, input: &str) -> Result<RingPage, String> {
         meeting: card.meeting.map(|(g, e)| [g, e]),
         impact_marker: card.impact_marker,
         record: card.record,
+        viscosity: card.viscosity,
+        sizes: card.sizes,
+        size_choices: super::catalogue::ring_sizes(),
     })
 }
 
@@ -551,7 +564,7 @@ mod tests {
         // The records are the CSV `rime curve` prints: built here from the core's normal results.
         let contact = Contact::new(&scene).unwrap();
         let mut g = vec![0.0; 30];
-        crate::sweep::log_space(1e-6, 1.0, &mut g);
+        crate::figure::sweep::log_space(1e-6, 1.0, &mut g);
         let points: Vec<_> = g
             .iter()
             .map(|&gi| Some(contact.normal(gi, Accuracy::Precise).unwrap()))
@@ -823,9 +836,9 @@ mod tests {
         let card = serde_json::to_value(ring_page(&scene, input).unwrap()).unwrap();
         let core = crate::explorer::ring::ring_card(
             &crate::Preset::Ice.scene(),
-            &crate::ring::RingInput {
+            &crate::applications::ring::RingInput {
                 tau: 0.5,
-                orbit: crate::ring::Orbit::Omega(1.3143527e-4),
+                orbit: crate::applications::ring::Orbit::Omega(1.3143527e-4),
                 damping_set_for_radius: None,
             },
             (1e-7, 1.0),
@@ -855,7 +868,10 @@ mod tests {
                 "record",
                 "rows",
                 "sentence",
-                "verdict"
+                "size_choices",
+                "sizes",
+                "verdict",
+                "viscosity"
             ]
         );
         assert_eq!(keys(&card["rows"][0]), ["label", "text"]);
@@ -892,5 +908,43 @@ mod tests {
             let e = ring_page(&scene, bad).err().unwrap();
             assert!(e.starts_with(field), "{bad}: {e}");
         }
+    }
+
+    /// Issue 38: the page's card takes the core's size choices by name; one size has no `sizes`,
+    /// `to_5r` the core's distribution from the scene's radius; an unknown name is refused naming
+    /// `ring.sizes`.
+    #[test]
+    fn issue_38_the_page_card_takes_the_size_choice() {
+        let scene = serde_json::to_string(&crate::Preset::Ice.scene()).unwrap();
+        let one = serde_json::to_value(
+            ring_page(
+                &scene,
+                r#"{"tau": 0.5, "omega": 1.3143527e-4, "chart": [1e-7, 1.0]}"#,
+            )
+            .unwrap(),
+        )
+        .unwrap();
+        assert!(one["sizes"].is_null());
+        assert_eq!(one["size_choices"][1]["name"], "to_5r");
+        let many = serde_json::to_value(
+            ring_page(
+                &scene,
+                r#"{"tau": 0.5, "omega": 1.3143527e-4, "chart": [1e-7, 1.0], "sizes": "to_5r"}"#,
+            )
+            .unwrap(),
+        )
+        .unwrap();
+        let r = crate::Preset::Ice.scene().grains.radius_1;
+        let bins = many["sizes"]["size_bins"].as_array().unwrap();
+        assert_eq!(bins.len(), 3);
+        assert_eq!(bins[0]["radius_min"], r);
+        assert_eq!(many["viscosity"], many["sizes"]["viscosity"]);
+        let e = ring_page(
+            &scene,
+            r#"{"tau": 0.5, "omega": 1e-4, "chart": [1e-7, 1], "sizes": "huge"}"#,
+        )
+        .err()
+        .unwrap();
+        assert!(e.starts_with("ring.sizes:"), "{e}");
     }
 }

@@ -6,10 +6,10 @@
 use super::json_path::{parse_scene, read_named};
 use super::limits::{CHART_SPEED_DOMAIN, MAX_CURVE_POINTS, chart_speed_is_valid, speed_is_valid};
 use super::tidal::TidalCard;
+use crate::applications::tidal::TidalInput;
 use crate::collision::Trajectory;
-use crate::params::Value;
-use crate::sweep::log_space;
-use crate::tidal::TidalInput;
+use crate::figure::sweep::log_space;
+use crate::scene::params::Value;
 use crate::{Accuracy, Contact, Preset, Scene};
 use alloc::format;
 use alloc::string::{String, ToString};
@@ -30,19 +30,19 @@ fn param_err(path: &str, e: crate::Error) -> String {
 }
 
 fn check_speed(field: &str, g: f64) -> Result<f64, String> {
-    if crate::limits::speed_is_valid(g) {
+    if crate::scene::limits::speed_is_valid(g) {
         Ok(g)
     } else {
-        let domain = crate::limits::SPEED_DOMAIN;
+        let domain = crate::scene::limits::SPEED_DOMAIN;
         Err(format!("{field}: speed must lie in {domain} m/s (got {g})"))
     }
 }
 
 fn check_map_speed(field: &str, g: f64) -> Result<f64, String> {
-    if crate::limits::speed_or_zero_is_valid(g) {
+    if crate::scene::limits::speed_or_zero_is_valid(g) {
         Ok(g)
     } else {
-        let domain = crate::limits::SPEED_OR_ZERO_DOMAIN;
+        let domain = crate::scene::limits::SPEED_OR_ZERO_DOMAIN;
         Err(format!("{field}: speed must lie in {domain} m/s (got {g})"))
     }
 }
@@ -90,7 +90,12 @@ pub const MAX_BATCH: usize = 10_000_000;
 /// must be a speed the models accept (`(0, 1e6]` m/s). Errors name the field and show the value
 /// short (a 309-digit number reads `1e308`).
 pub fn parse_speed(field: &str, text: &str) -> Result<f64, String> {
-    speed_within(field, text, speed_is_valid, crate::limits::SPEED_DOMAIN)
+    speed_within(
+        field,
+        text,
+        speed_is_valid,
+        crate::scene::limits::SPEED_DOMAIN,
+    )
 }
 
 /// Parses a typed end of the chart's speed range: as [`parse_speed`], within the core's chart
@@ -130,7 +135,7 @@ fn shortened(text: &str, n: usize) -> String {
 /// errors name `field` and never carry the typed text at full length.
 pub fn parse_quantity(field: &str, text: &str, unit: &str) -> Result<f64, String> {
     let shown = shortened(text, 24);
-    let v = crate::units::parse_quantity("value", text, unit).map_err(|e| {
+    let v = crate::scene::units::parse_quantity("value", text, unit).map_err(|e| {
         let msg = e.to_string();
         let msg = shortened(msg.strip_prefix("value: ").unwrap_or(&msg), 160);
         format!("{field}: {msg} (typed \"{shown}\")")
@@ -413,9 +418,9 @@ impl Session {
     /// speeds it was measured at and, on success, makes the fitted scene current. On error the
     /// scene is unchanged.
     pub fn fit_to_entry(&mut self, id: &str, accuracy: &str) -> Result<FitRecord, String> {
-        let entry =
-            crate::atlas::find(id).ok_or_else(|| format!("overlays: unknown entry {id:?}"))?;
-        let f = crate::fit_scene::fit_to_entry(
+        let entry = crate::data::atlas::find(id)
+            .ok_or_else(|| format!("overlays: unknown entry {id:?}"))?;
+        let f = crate::fit::scene::fit_to_entry(
             &self.scene,
             entry,
             &["bulk.damping.time"],
