@@ -2765,3 +2765,30 @@ fn issue_37_open_and_save_name_the_file_they_used() {
     assert_eq!(msg, format!("opened scene {} (u undoes)", file.display()));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Issue 37 (review E1): a length typed where a time is expected names both kinds before the
+/// examples (a status line of 80 columns cuts the end): "expected a time, not a length"; the
+/// scene is unchanged.
+#[test]
+fn issue_37_a_length_typed_for_a_time_says_so() {
+    let mut app = app_on(Scene::default());
+    let before = app.scene;
+    select(&mut app, "bulk.damping.time");
+    update(&mut app, ch('e'));
+    update(
+        &mut app,
+        Event::Key(KeyEvent::new(KeyCode::Char('u'), KeyModifiers::CONTROL)),
+    );
+    for c in "2 um".chars() {
+        update(&mut app, ch(c));
+    }
+    update(&mut app, key(KeyCode::Enter));
+    let (msg, tone) = app.message.clone().expect("message");
+    assert_eq!(tone, Tone::Error);
+    assert!(
+        msg.starts_with("bulk.damping.time: expected a time, not a length"),
+        "{msg}"
+    );
+    assert!(msg.ends_with("(scene unchanged)"), "{msg}");
+    assert_eq!(app.scene, before);
+}
