@@ -877,3 +877,55 @@ fn issue_37_tidal_units_read_as_written_elsewhere() {
     assert_eq!(json["density"].as_f64(), Some(900.0));
     assert_eq!(json["surface_energy"].as_f64(), Some(0.1));
 }
+
+/// Issue 37 (review C6): `rime data --format table` fits 80 columns (it was 165, the formula
+/// right-aligned to 130) with every entry, its formula whole and the units of its symbols
+/// (`hatzes1988_frost`'s v is in cm/s); a law's values at speeds read with 4 significant digits.
+#[test]
+fn issue_37_the_atlas_table_fits_80_columns_and_says_the_units() {
+    let table = ok(&["data", "--format", "table"]);
+    for line in table.lines() {
+        assert!(
+            line.chars().count() <= 80,
+            "{} columns: {line}",
+            line.chars().count()
+        );
+    }
+    let json: serde_json::Value = serde_json::from_str(&ok(&["data", "--format", "json"])).unwrap();
+    let flat = table.split_whitespace().collect::<Vec<_>>().join(" ");
+    for e in json.as_array().unwrap() {
+        let id = e["id"].as_str().unwrap();
+        assert!(
+            table
+                .lines()
+                .any(|l| l.split_whitespace().next() == Some(id)),
+            "{id}: {table}"
+        );
+        let formula = e["formula"].as_str().unwrap();
+        let formula = formula.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(flat.contains(&formula), "{id}: {formula}");
+        let units = e["units"].as_str().unwrap();
+        if !units.is_empty() {
+            assert!(
+                flat.contains(&format!("{formula} [{units}]")),
+                "{id}: {units}"
+            );
+        }
+    }
+    assert!(flat.contains("eps = 0.48 v^-0.20 [v in cm/s]"), "{flat}");
+    let law = ok(&[
+        "data",
+        "--law",
+        "bridges1984",
+        "--g",
+        "0.01",
+        "--format",
+        "table",
+    ]);
+    let row: Vec<&str> = law.lines().nth(1).unwrap().split_whitespace().collect();
+    // (v / v_c)^-0.234 at v = 1 cm/s, v_c = 0.0077 cm/s: computed here from the law's formula.
+    let eps = (1.0f64 / 0.0077).powf(-0.234);
+    assert_eq!(row[..2], ["10", "mm/s"], "{law}");
+    assert!(digits(row[2]) <= 6, "{law}");
+    assert!((row[2].parse::<f64>().unwrap() - eps).abs() < 1e-3, "{law}");
+}
