@@ -929,3 +929,29 @@ fn issue_37_the_atlas_table_fits_80_columns_and_says_the_units() {
     assert!(digits(row[2]) <= 6, "{law}");
     assert!((row[2].parse::<f64>().unwrap() - eps).abs() < 1e-3, "{law}");
 }
+
+/// Issue 37 (review X1): `rime figures` writes captions.txt beside the figures (the README
+/// points at docs/figures/captions.txt; it was never written), its text the captions printed;
+/// a stick map's SVG draws a rectangle per run of equal cells, not per cell (2.2 MB each).
+#[test]
+fn issue_37_figures_write_their_captions_and_compact_maps() {
+    let dir = std::env::temp_dir().join(format!("rime-issue-37-x1-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = ok(&["figures", "--out", dir.to_str().unwrap()]);
+    let captions = std::fs::read_to_string(dir.join("captions.txt")).expect("captions.txt");
+    let printed: String = out
+        .lines()
+        .filter(|l| !l.starts_with("wrote "))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    assert_eq!(captions, printed);
+    assert!(captions.contains("fig4-hard: Fig. 4"), "{captions}");
+    for map in ["fig4-hard", "fig4-layer", "fig4-adhesion-zoom"] {
+        let svg = std::fs::read_to_string(dir.join(format!("{map}.svg"))).expect("svg");
+        let rects = svg.matches("<rect").count();
+        // The maps are grids of thousands of cells in a few regions (rolling, sliding, …).
+        assert!(rects < 2000, "{map}: {rects} rectangles");
+        assert!(rects > 100, "{map}: {rects} rectangles: no map drawn?");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
