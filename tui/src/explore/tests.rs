@@ -568,11 +568,13 @@ fn toggling_experiments_changes_the_chart() {
     let mut app = app_on(Scene::default());
     assert!(app.experiments, "on by default");
     let on = text(&screen(&app, 100, 30));
-    assert!(on.contains("Bridges'84") && on.contains("Heißelmann'10") && on.contains("Hill'15"));
+    assert!(
+        on.contains("bridges1984") && on.contains("heisselmann2010") && on.contains("hill2015")
+    );
     update(&mut app, ch('b'));
     assert!(!app.experiments);
     let off = text(&screen(&app, 100, 30));
-    assert!(!off.contains("Bridges"));
+    assert!(!off.contains("bridges1984"));
     // Not only the legend: the plotted cells differ too.
     let plot = |s: &str| -> String {
         s.lines()
@@ -2791,4 +2793,36 @@ fn issue_37_a_length_typed_for_a_time_says_so() {
     );
     assert!(msg.ends_with("(scene unchanged)"), "{msg}");
     assert_eq!(app.scene, before);
+}
+
+/// Issue 37 (review E6): a source has one name on every small surface: the chart's experiments
+/// (`b`) said `Bridges'84`, `Heißelmann'10`, `Hill'15` where the measured-ice comparison (`c`),
+/// `rime data`, the CSV columns and the fit message say `bridges1984`, `heisselmann2010`,
+/// `hill2015`: now the atlas id in both legends.
+#[test]
+fn issue_37_one_name_per_source_in_both_legends() {
+    let ids = ["bridges1984", "heisselmann2010", "hill2015"];
+    for id in ids {
+        assert!(rime_core::atlas::find(id).is_some(), "{id} is an atlas id");
+    }
+    let mut app = app_on(Scene::default());
+    let experiments = text(&screen(&app, 160, 45));
+    update(&mut app, ch('c'));
+    let req = app.take_request().expect("a new request");
+    let data = compute(&req, &|| false, &NoMemo).expect("frame");
+    update(&mut app, Event::Computed(Box::new(data)));
+    let compared = text(&screen(&app, 160, 45));
+    for id in ids {
+        assert!(
+            experiments.contains(id),
+            "experiments: no {id}\n{experiments}"
+        );
+        assert!(compared.contains(id), "comparison: no {id}\n{compared}");
+    }
+    for old in ["Bridges'84", "Heißelmann'10", "Hill'15"] {
+        assert!(
+            !experiments.contains(old) && !compared.contains(old),
+            "{old}"
+        );
+    }
 }
