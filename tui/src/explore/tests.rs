@@ -1221,10 +1221,7 @@ fn glossary_human_labels_timing_and_warnings_issue_12_item_9() {
     assert!(s.contains("as printed"), "{s}");
     assert!(s.contains("computed in 3 ms at fast"), "{s}");
     let s = text(&screen(&app, 160, 40));
-    assert!(
-        s.contains("g_s adhesion") && s.contains("(a rebound speed)"),
-        "{s}"
-    );
+    assert!(s.contains("g_s adhesion, on the rebound speed"), "{s}");
     let help = help_pages(&mut app, 100, 30);
     for sym in [
         "δ, δ(g)",
@@ -2179,6 +2176,9 @@ fn issue_37_a_closed_ring_card_is_not_exported() {
 #[test]
 fn issue_37_the_family_table_has_the_pinned_curve() {
     let mut app = app_on(Preset::IceFrost.scene());
+    // Without the experiments' law (its speeds are rows of their own since issue 37 F2.5).
+    update(&mut app, ch('b'));
+    assert!(!app.experiments);
     update(&mut app, ch('P'));
     let pinned = app.pinned.clone().expect("pinned");
     let rows = |files: &std::collections::BTreeMap<String, String>| -> Vec<Vec<String>> {
@@ -2826,3 +2826,65 @@ fn issue_37_one_name_per_source_in_both_legends() {
         );
     }
 }
+
+/// Issue 37 (review F2.5): `eps_family.csv` ("every ε_N curve of the chart") holds the measured
+/// law the chart draws (the experiments' Bridges law over its measured speeds, 0.15–20 mm/s) and,
+/// with the ring card open, the ring's ε_cr line on every row of the chart's speeds. The law's
+/// values are checked against its printed form, ε = 0.32 (v / 1 cm/s)^−0.234, written here.
+#[test]
+fn issue_37_the_all_curves_table_has_the_measured_law_and_the_ring_line() {
+    let mut app = app_on(Scene::default());
+    assert!(app.experiments);
+    let table = |files: &std::collections::BTreeMap<String, String>| -> Vec<Vec<String>> {
+        files["eps_family.csv"]
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .map(|l| l.split(',').map(str::to_string).collect())
+            .collect()
+    };
+    let rows = table(&exported_files(&mut app, "f25-law"));
+    let law = rows[0]
+        .iter()
+        .position(|h| h == "eps_n:bridges1984")
+        .unwrap_or_else(|| panic!("no law column: {:?}", rows[0]));
+    let mut cells = 0;
+    for r in &rows[1..] {
+        let g: f64 = r[0].parse().expect("g");
+        match r.get(law).filter(|c| !c.is_empty()) {
+            Some(c) => {
+                let eps: f64 = c.parse().expect("eps");
+                assert!(
+                    (1.5e-4 * (1.0 - 1e-12)..=2e-2 * (1.0 + 1e-12)).contains(&g),
+                    "{g}"
+                );
+                let printed = 0.32 * (g / 0.01).powf(-0.234);
+                assert!(
+                    (eps / printed - 1.0).abs() < 1e-12,
+                    "{g}: {eps} vs {printed}"
+                );
+                cells += 1;
+            }
+            None => {}
+        }
+    }
+    assert!(cells >= 20, "{cells} law cells");
+    // The ring card open: its ε_cr on every row of the chart's speeds.
+    update(&mut app, ch('r'));
+    let card = match app.ring_card.clone() {
+        Some(Ok(card)) => card,
+        other => panic!("no ring card: {other:?}"),
+    };
+    let eps_cr = card.record.prediction().eps_cr;
+    let rows = table(&exported_files(&mut app, "f25-ring"));
+    let head = format!("eps_cr [ring τ = {}]", card.record.tau);
+    let col = rows[0]
+        .iter()
+        .position(|h| *h == head)
+        .unwrap_or_else(|| panic!("no {head}: {:?}", rows[0]));
+    let frame_rows = rows[1..].iter().filter(|r| !r[1].is_empty()).count();
+    assert!(frame_rows > 50);
+    for r in rows[1..].iter().filter(|r| !r[1].is_empty()) {
+        assert_eq!(r[col].parse::<f64>().ok(), Some(eps_cr), "{r:?}");
+    }
+}
+
