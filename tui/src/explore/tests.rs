@@ -2888,3 +2888,28 @@ fn issue_37_the_all_curves_table_has_the_measured_law_and_the_ring_line() {
     }
 }
 
+/// Issue 37 (review web F1.1): the adhesion marker says what g_s is a threshold of — a rebound
+/// slower than it sticks — not "g_s …, a rebound speed", which read as a contradiction next to a
+/// sticking speed; the short legend says it is on the rebound speed.
+#[test]
+fn issue_37_the_adhesion_marker_says_what_it_holds() {
+    let mut app = app_on(Preset::IceSticky.scene());
+    let files = exported_files(&mut app, "f11");
+    // The SVG's words, its wrapped lines joined.
+    let svg = &files["eps_n.svg"];
+    let words: String = svg
+        .split('<')
+        .filter_map(|t| t.split_once('>').map(|(_, w)| w))
+        .collect::<Vec<_>>()
+        .join(" ")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(
+        words.contains("g_s adhesion (Eq. (15)): a rebound slower than g_s sticks; g_s = "),
+        "{words}"
+    );
+    assert!(!words.contains("a rebound speed ="), "{words}");
+    let s = text(&screen(&app, 160, 40));
+    assert!(s.contains("g_s adhesion, on the rebound speed"), "{s}");
+}
