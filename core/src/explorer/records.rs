@@ -888,11 +888,14 @@ pub struct Drawn<'a> {
     /// The pinned curve.
     pub pinned: Option<&'a super::frame::Pinned>,
     /// Whether the chart shows the experiments: the Bridges et al. 1984 law over its measured
-    /// speeds when no comparison is on ([`crate::figure::description::experiments`]).
+    /// speeds when no comparison is on ([`crate::figure::experiments`]).
     pub experiments: bool,
     /// The ring card's ε_cr line (τ, ε_cr) when it is on the chart.
     pub ring_eps_cr: Option<(f64, f64)>,
 }
+
+/// A column of [`family_csv_drawn`]: its header, its speeds and its values at them.
+type Column<'a> = (String, &'a [f64], alloc::borrow::Cow<'a, [f64]>);
 
 /// Every ε_N curve the chart draws (issue 37 F2.5: the all-curves CSV left out the measured laws
 /// and the ring's ε_cr line): [`family_csv`]'s columns, then each measured law drawn over its own
@@ -904,8 +907,7 @@ pub fn family_csv_drawn(frame: &Frame, drawn: &Drawn) -> String {
     let sweep = SWEEPS.get(frame.sweep).map_or("p", |s| s.symbol);
     let unit = SWEEPS.get(frame.sweep).map_or("", |s| s.unit);
     // Each column: header, speeds, values (ε_N at those speeds).
-    let mut columns: alloc::vec::Vec<(String, &[f64], alloc::borrow::Cow<'_, [f64]>)> =
-        alloc::vec::Vec::new();
+    let mut columns: alloc::vec::Vec<Column<'_>> = alloc::vec::Vec::new();
     let g: &[f64] = &frame.g;
     let nan = || alloc::borrow::Cow::Owned(alloc::vec![f64::NAN; g.len()]);
     columns.push((

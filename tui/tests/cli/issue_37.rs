@@ -605,7 +605,9 @@ fn issue_37_json_keys_come_in_the_documented_order() {
         .collect();
     tidal.extend(["stays_in_contact", "verdict"]);
     let scene_keys = key_order(&ok(&["scene"]));
-    let cases: Vec<(Vec<&str>, Vec<(&str, Vec<&str>)>)> = vec![
+    // (arguments, [(object path, its keys in order)])
+    type Case<'a> = (Vec<&'a str>, Vec<(&'a str, Vec<&'a str>)>);
+    let cases: Vec<Case> = vec![
         (vec!["tidal"], vec![("", tidal)]),
         (
             vec!["ring", "--tau", "0.1", "--omega", "1.3143527e-4"],
