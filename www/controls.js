@@ -177,7 +177,7 @@ export function buildControls(h) {
           // A typed value that carries its unit ("20 mm") has no unit column after it (issue 37: it
           // read "20 mm m"; a bare number is taken in the SI unit, as its title says); one written
           // bare ("900" kg/m³) keeps it.
-          el('span', { class: 'typed' }, el('span', { class: 'typed-box' }, typed), ...(carriesUnit(p) ? [] : [el('span', { class: 'unit' }, p.unit || '–')])),
+          el('span', { class: 'typed' }, el('span', { class: 'typed-box' }, typed), ...(carriesUnit(p) ? [] : [el('span', { class: 'unit' }, p.unit || '')])),
           helpLine(p.path, hid),
           err);
         box.append(root);

@@ -8,6 +8,7 @@ import { chartSpec } from './chart.js';
 import { classColors, epsTSpec, mapSpec } from './map.js';
 import { CanvasPainter, SvgPainter, chartLegendHeight, drawCaption, drawChart, drawLines, drawMap } from './plot.js';
 import { app } from './state.js';
+import { ring } from './ring.js';
 import { writeHashNow } from './url.js';
 
 let version = '';
@@ -21,9 +22,25 @@ export function curvesCsv(res = app.res) {
   return res.records.context.curve + res.records.curve;
 }
 
-/** Every curve of the chart (scene, clean surface, family) with its context. */
+/** Every curve of the chart (scene, clean surface, family, comparisons, measured laws, pinned)
+ *  with its context; with the ring card's ε_cr line on the chart, its column too (issue 37 F2.5),
+ *  as the terminal's export writes it: `eps_cr [ring τ = 0.5]`, on every row inside the frame's
+ *  speeds. */
 export function familyCsv(res = app.res) {
-  return res.records.context.family + res.records.family;
+  const c = ring.card;
+  const g = res.g;
+  if (!c || !ring.onChart || !g || g.length === 0) return res.records.context.family + res.records.family;
+  const epsCr = c.eps_cr_line.points[0][1];
+  const tau = c.record && Number.isFinite(c.record.tau) ? c.record.tau : ring.tau;
+  const [lo, hi] = [g[0], g[g.length - 1]];
+  const lines = res.records.family.split('\n');
+  const out = lines.map((line, k) => {
+    if (line === '') return line;
+    if (k === 0) return `${line},eps_cr [ring τ = ${String(tau)}]`;
+    const v = Number(line.slice(0, line.indexOf(',')));
+    return `${line},${v >= lo && v <= hi ? String(epsCr) : ''}`;
+  });
+  return res.records.context.family + out.join('\n');
 }
 
 /** The stick map's records (as `rime map --format csv`) with their context, or null. */

@@ -23,7 +23,7 @@ True
 >>> frost.set("layer.thickness", "2 kg")
 Traceback (most recent call last):
 ...
-ValueError: layer.thickness: expected a length, e.g. 1e-6, 1 um, 2 cm
+ValueError: layer.thickness: expected a length, not a mass, e.g. 1e-6, 1 um, 2 cm
 
 ``rime_grains.rebound.attach`` sets a REBOUND collision handler (native code in this wheel);
 ``rime_grains.data.law`` evaluates measured laws of ice; ``rime_grains.kernel`` gives the sticking

@@ -1929,6 +1929,24 @@ try {
     return `"${d.note}"; CSV header ends "${d.head.slice(-40)}"; help ${d.help} px; ${d.units.length} typed values, none followed by a unit column`;
   });
 
+  await check('issue 37: a dimensionless field (ν, μ, κ) has no "–" beside it; the adhesion marker says a rebound slower than g_s sticks', async () => {
+    const q = watch(await context.newPage(), 'no-dash');
+    // The opening scene is ice-sticky (adhesion on).
+    await q.goto(url, { waitUntil: 'load' });
+    await ready(q);
+    const d = await q.evaluate(() => ({
+      units: [...document.querySelectorAll('.param')].filter((p) => p.querySelector('input[type=text]')).map((p) => [p.querySelector('input[type=text]').dataset.path, p.querySelector('.unit')?.textContent ?? '']),
+      labels: window.rimeState.figure.series.concat(window.rimeState.figure.markers || []),
+    }));
+    await q.close();
+    const dashed = d.units.filter(([, u]) => u.trim() === '–' || u.trim() === '-');
+    assert(d.units.some(([p]) => p === 'bulk.poisson_ratio'), `no ν field: ${JSON.stringify(d.units)}`);
+    assert(dashed.length === 0, `fields with a dash for a unit: ${dashed.map(([p]) => p).join(', ')}`);
+    const text = JSON.stringify(d.labels);
+    assert(/a rebound slower than g_s sticks/.test(text) && !/a rebound speed =/.test(text), `marker words: ${text.slice(0, 400)}`);
+    return `${d.units.length} fields, none with "–"; adhesion marker words ok`;
+  });
+
   await check('issue 37: every equation link lands on the row of its equation in the physics notes ("Equations used"), not on a decision', async () => {
     const q = watch(await context.newPage(), 'eq-rows');
     await q.goto(url, { waitUntil: 'load' });

@@ -286,6 +286,37 @@ try {
     }
   });
 
+  await check('issue 37: the all-curves CSV has the measured law the chart draws and, with the ring\'s line on the chart, its ε_cr column on the chart\'s speeds', async () => {
+    const q = await context.newPage();
+    try {
+      const link = `${url}#r=${encodeURIComponent(JSON.stringify({ onChart: true }))}`;
+      await q.goto(link, { waitUntil: 'load' });
+      await q.waitForFunction(() => window.rimeState && window.rimeState.ready === true && window.rimeState.ring && window.rimeState.figure.series.some((n) => /^ε_cr of the ring/.test(n)), null, { timeout: GUARD_MS });
+      const d = await q.evaluate(() => ({ csv: window.rimeExports.familyCsv(), ring: window.rimeState.ring }));
+      const rows = d.csv.split('\n').filter((l) => l && !l.startsWith('#')).map((l) => l.split(','));
+      const head = rows[0];
+      const law = head.indexOf('eps_n:bridges1984');
+      const cr = head.findIndex((h) => /^eps_cr \[ring τ = /.test(h));
+      assert(law > 0, `no law column: ${head.join(',')}`);
+      assert(cr > 0, `no ring column: ${head.join(',')}`);
+      // The law as printed, ε = 0.32 (v / 1 cm/s)^−0.234, over its measured speeds (0.15–20 mm/s).
+      const lawRows = rows.slice(1).filter((r) => r[law] !== '');
+      assert(lawRows.length >= 20, `${lawRows.length} law cells`);
+      for (const r of lawRows) {
+        const g = Number(r[0]);
+        const want = 0.32 * (g / 0.01) ** -0.234;
+        assert(g >= 1.5e-4 * (1 - 1e-12) && g <= 2e-2 * (1 + 1e-12) && Math.abs(Number(r[law]) / want - 1) < 1e-12, `law at ${g}: ${r[law]} vs ${want}`);
+      }
+      // ε_cr on every row of the chart's own speeds (those with the scene's ε_N).
+      const frameRows = rows.slice(1).filter((r) => r[1] !== '');
+      const values = new Set(frameRows.map((r) => r[cr]));
+      assert(frameRows.length > 50 && values.size === 1 && Number([...values][0]) > 0 && Number([...values][0]) < 1, `ε_cr cells: ${[...values].join(' ')}`);
+      return `${head[law]} (${lawRows.length} rows), ${head[cr]} = ${[...values][0]} on ${frameRows.length} rows`;
+    } finally {
+      await q.close();
+    }
+  });
+
   await check('at 375 px the ring card fits the screen (its table does not scroll sideways)', async () => {
     const phone = await context.newPage();
     try {

@@ -234,12 +234,14 @@ fn scipy_comparison(min_sample: f64) -> CliResult<String> {
 }
 
 fn render(rows: &[Row], frame: &[(&str, f64)]) -> String {
-    let mut s = String::from(
-        "model              level      max rel err   ns/ε       ms/400-curve  ms/200²-map\n",
+    // At most 80 columns (issue 37 R3), the numbers right-aligned under their headers.
+    let mut s = format!(
+        "{:<16} {:<10} {:>11} {:>10} {:>12} {:>12}\n",
+        "model", "level", "max rel err", "ns/ε", "ms/400-curve", "ms/200²-map"
     );
     for r in rows {
         s.push_str(&format!(
-            "{:<18} {:<10} {:>10.2e} {:>10.1} {:>13.3} {:>12.3}\n",
+            "{:<16} {:<10} {:>11.2e} {:>10.1} {:>12.3} {:>12.3}\n",
             r.model, r.level, r.max_rel_error, r.ns_per_eps, r.ms_per_curve, r.ms_per_map
         ));
     }
@@ -404,4 +406,45 @@ fn work_precision_svg(rows: &[Row]) -> String {
     }
     s.push_str("</svg>\n");
     s
+}
+
+#[cfg(test)]
+mod issue_37_tests {
+    use super::{Row, models, render};
+
+    /// Issue 37 (review R3): `rime bench`'s table fits 80 columns with the longest model name and
+    /// numbers as wide as its columns take; each row's numbers read back.
+    #[test]
+    fn issue_37_the_bench_table_fits_80_columns() {
+        let rows: Vec<Row> = models()
+            .into_iter()
+            .map(|(model, _)| Row {
+                model,
+                level: "integrated",
+                max_rel_error: 2.68e-10,
+                ns_per_eps: 905217.7,
+                ms_per_curve: 12345.678,
+                ms_per_map: 23456.789,
+            })
+            .collect();
+        let text = render(&rows, &[("integrated", 20.966)]);
+        for line in text.lines() {
+            assert!(
+                line.chars().count() <= 80,
+                "{} columns: {line}",
+                line.chars().count()
+            );
+        }
+        for r in &rows {
+            let row = text
+                .lines()
+                .find(|l| l.starts_with(r.model))
+                .unwrap_or_else(|| panic!("{}: {text}", r.model));
+            let numbers: Vec<f64> = row[16..]
+                .split_whitespace()
+                .filter_map(|c| c.parse().ok())
+                .collect();
+            assert_eq!(numbers, [2.68e-10, 905217.7, 12345.678, 23456.789], "{row}");
+        }
+    }
 }

@@ -473,8 +473,8 @@ pub const SUBS: &[Sub] = &[
     Sub {
         name: "figures",
         usage: "figures [--out DIR] [--accuracy LEVEL] | figures --explorer [scene] [OPTIONS]",
-        about: "The paper's Figs. 2–4 rebuilt from the model, SVG + PNG (their scenes are the paper's; \
-                only --accuracy applies). With --explorer: a scene's ε_N chart and stick map with \
+        about: "The paper's Figs. 2–4 rebuilt from the model, SVG + PNG, with captions.txt (their \
+                scenes are the paper's; only --accuracy applies). With --explorer: a scene's ε_N chart and stick map with \
                 their records, exactly as the explorer's x and the page's downloads draw them.",
         flags: &[
             f("--out", "DIR", "directory to write into (default figures)"),

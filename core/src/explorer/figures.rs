@@ -131,7 +131,7 @@ fn overlay_short(o: &super::frame::OverlayCurve) -> String {
 fn marker_short(key: &str) -> &'static str {
     match key {
         "layer" => "g_s layer",
-        "adhesion" => "g_s adhesion (a rebound speed)",
+        "adhesion" => "g_s adhesion, on the rebound speed",
         _ => "sticks below",
     }
 }

@@ -910,7 +910,7 @@ impl Plan {
         if let Some(a) = &contact.adhesion {
             frame.markers.push(Marker {
                 key: "adhesion",
-                label: "g_s adhesion (Eq. (15)), a rebound speed",
+                label: "g_s adhesion (Eq. (15)): a rebound slower than g_s sticks; g_s",
                 value: a.critical_velocity,
             });
         }

@@ -260,7 +260,15 @@ pub fn page_wire(view: &View, req: &Request, f: &Frame) -> Result<PageWire, Stri
         Records {
             curve: records::frame_curve_csv(f),
             // Every curve the chart draws, the pinned one included (issue 37).
-            family: records::family_csv_pinned(f, pinned.as_ref()),
+            // and the measured laws (issue 37 F2.5); the page adds the ring's ε_cr column.
+            family: records::family_csv_drawn(
+                f,
+                &records::Drawn {
+                    pinned: pinned.as_ref(),
+                    experiments: view.experiments,
+                    ring_eps_cr: None,
+                },
+            ),
             map: None,
             context: RecordsContext {
                 curve: ctx(records::CURVE_WHAT),

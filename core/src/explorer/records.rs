@@ -874,86 +874,149 @@ pub fn family_csv(frame: &Frame) -> String {
 }
 
 /// [`family_csv`] with the pinned curve a surface draws (the terminal's `P`, the page's pin) as
-/// its last column, `eps_n [pinned: <label>]`: the table has every curve the figure draws. When
-/// the pinned curve was computed over other speeds (the range moved since it was pinned), its
-/// speeds are rows of their own, merged in order, with the frame's cells empty there (and its cell
-/// empty on the frame's rows): nothing interpolated.
+/// its last column, `eps_n [pinned: <label>]`: the table has every curve the figure draws.
 pub fn family_csv_pinned(frame: &Frame, pinned: Option<&super::frame::Pinned>) -> String {
+    family_csv_drawn(
+        frame,
+        &Drawn {
+            pinned,
+            ..Drawn::default()
+        },
+    )
+}
+
+/// What a surface draws on the ε_N chart beside the frame's own curves, for [`family_csv_drawn`].
+#[derive(Debug, Clone, Default)]
+pub struct Drawn<'a> {
+    /// The pinned curve.
+    pub pinned: Option<&'a super::frame::Pinned>,
+    /// Whether the chart shows the experiments: the Bridges et al. 1984 law over its measured
+    /// speeds when no comparison is on ([`crate::figure::experiments`]).
+    pub experiments: bool,
+    /// The ring card's ε_cr line (τ, ε_cr) when it is on the chart.
+    pub ring_eps_cr: Option<(f64, f64)>,
+}
+
+/// A column of [`family_csv_drawn`]: its header, its speeds and its values at them.
+type Column<'a> = (String, &'a [f64], alloc::borrow::Cow<'a, [f64]>);
+
+/// Every ε_N curve the chart draws (issue 37 F2.5: the all-curves CSV left out the measured laws
+/// and the ring's ε_cr line): [`family_csv`]'s columns, then each measured law drawn over its own
+/// speeds (`eps_n:bridges1984`: a comparison, or the experiments' law), the pinned curve
+/// (`eps_n [pinned: <label>]`) and the ring's line (`eps_cr [ring τ = 0.5]`, on every row inside
+/// the frame's speeds). A curve over other speeds than the frame's has its speeds as rows of
+/// their own, merged in order, with the other columns' cells empty there: nothing interpolated.
+pub fn family_csv_drawn(frame: &Frame, drawn: &Drawn) -> String {
     let sweep = SWEEPS.get(frame.sweep).map_or("p", |s| s.symbol);
     let unit = SWEEPS.get(frame.sweep).map_or("", |s| s.unit);
-    let mut s = String::from("g_n [m/s],eps_n");
-    let clean = frame.clean.as_ref().map(|c| c.eps());
-    if clean.is_some() {
-        s.push_str(",eps_n clean surfaces");
+    // Each column: header, speeds, values (ε_N at those speeds).
+    let mut columns: alloc::vec::Vec<Column<'_>> = alloc::vec::Vec::new();
+    let g: &[f64] = &frame.g;
+    let nan = || alloc::borrow::Cow::Owned(alloc::vec![f64::NAN; g.len()]);
+    columns.push((
+        "eps_n".into(),
+        g,
+        frame.curve.as_ref().map_or_else(nan, |c| c.eps().into()),
+    ));
+    if let Some(clean) = frame.clean.as_ref() {
+        columns.push(("eps_n clean surfaces".into(), g, clean.eps().into()));
     }
-    let members: alloc::vec::Vec<_> = frame
-        .family
-        .iter()
-        .filter_map(|m| Some((m, m.curve.as_ref()?.eps())))
-        .collect();
-    for (m, _) in &members {
+    for m in &frame.family {
+        let Some(curve) = m.curve.as_ref() else {
+            continue;
+        };
         let mark = if m.is_scene { " (this scene)" } else { "" };
         let unit = if unit.is_empty() {
             String::new()
         } else {
             format!(" {unit}")
         };
-        let _ = write!(s, ",eps_n [{sweep} = {}{unit}]{mark}", cell(m.value));
+        columns.push((
+            format!("eps_n [{sweep} = {}{unit}]{mark}", cell(m.value)),
+            g,
+            curve.eps().into(),
+        ));
     }
-    let overlays: alloc::vec::Vec<_> = frame.overlays.iter().filter(|o| o.g == frame.g).collect();
-    for o in &overlays {
-        let _ = write!(s, ",{}", overlay_column(&o.overlay));
+    // A measured range is a box, not a curve: its two corners are no ε_N at two speeds.
+    for o in frame.overlays.iter().filter(|o| !o.band) {
+        columns.push((
+            overlay_column(&o.overlay),
+            &o.g,
+            alloc::borrow::Cow::Borrowed(&o.eps[..]),
+        ));
     }
-    if let Some(p) = pinned {
+    // The experiments' law, as the chart draws it (only without comparisons), named as its
+    // comparison is.
+    let experiment = if drawn.experiments && frame.overlays.is_empty() {
+        let (g0, g1) = (
+            g.first().copied().unwrap_or(1e-7),
+            g.last().copied().unwrap_or(10.0),
+        );
+        crate::figure::experiments::bridges_measured(g0, g1, 0)
+    } else {
+        None
+    };
+    let experiment_points: Option<(alloc::vec::Vec<f64>, alloc::vec::Vec<f64>)> =
+        experiment.map(|s| s.points.iter().copied().unzip());
+    if let Some((eg, ee)) = &experiment_points {
+        columns.push((
+            format!("eps_n:{}", crate::figure::experiments::BRIDGES_ID),
+            eg,
+            alloc::borrow::Cow::Borrowed(&ee[..]),
+        ));
+    }
+    if let Some(p) = drawn.pinned {
         // A comma in the label would split the column.
-        let _ = write!(s, ",eps_n [pinned: {}]", p.label.replace(',', ";"));
+        columns.push((
+            format!("eps_n [pinned: {}]", p.label.replace(',', ";")),
+            &p.g,
+            alloc::borrow::Cow::Borrowed(&p.eps[..]),
+        ));
+    }
+    let ring = drawn
+        .ring_eps_cr
+        .map(|(tau, eps_cr)| (format!("eps_cr [ring τ = {}]", cell(tau)), eps_cr));
+    let mut s = String::from("g_n [m/s]");
+    for (header, _, _) in &columns {
+        let _ = write!(s, ",{header}");
+    }
+    if let Some((header, _)) = &ring {
+        let _ = write!(s, ",{header}");
     }
     s.push('\n');
-    let eps = frame.curve.as_ref().map(|c| c.eps());
-    let at = |v: Option<&alloc::vec::Vec<f64>>, k: usize| {
-        v.and_then(|v| v.get(k)).map_or(String::new(), |e| cell(*e))
-    };
-    // Rows: the frame's speeds (index into its curves) and the pinned curve's speeds (index into
-    // it), merged by speed; one row where both have the same speed.
-    let none: &[f64] = &[];
-    let pinned_g = pinned.map_or(none, |p| p.g.as_slice());
-    let (mut i, mut j) = (0, 0);
-    while i < frame.g.len() || j < pinned_g.len() {
-        let (gi, gj) = (frame.g.get(i).copied(), pinned_g.get(j).copied());
-        let (row_frame, row_pinned) = match (gi, gj) {
-            (Some(a), Some(b)) if a == b => (Some(i), Some(j)),
-            (Some(a), Some(b)) if b < a => (None, Some(j)),
-            (Some(_), _) => (Some(i), None),
-            (None, _) => (None, Some(j)),
-        };
-        let g = row_frame
-            .and_then(|k| frame.g.get(k))
-            .or_else(|| row_pinned.and_then(|k| pinned_g.get(k)))
-            .copied()
-            .unwrap_or(f64::NAN);
-        s.push_str(&cell(g));
-        let frame_cell =
-            |v: Option<&alloc::vec::Vec<f64>>| row_frame.map_or(String::new(), |k| at(v, k));
-        let _ = write!(s, ",{}", frame_cell(eps.as_ref()));
-        if clean.is_some() {
-            let _ = write!(s, ",{}", frame_cell(clean.as_ref()));
+    // Rows: every column's speeds merged in order, one row per distinct speed; each column
+    // advances past the speeds it has.
+    let (lo, hi) = (
+        g.first().copied().unwrap_or(f64::NAN),
+        g.last().copied().unwrap_or(f64::NAN),
+    );
+    let mut at = alloc::vec![0usize; columns.len()];
+    loop {
+        let next = columns
+            .iter()
+            .zip(&at)
+            .filter_map(|((_, cg, _), &k)| cg.get(k).copied())
+            .fold(f64::INFINITY, f64::min);
+        if next == f64::INFINITY {
+            break;
         }
-        for (_, e) in &members {
-            let _ = write!(s, ",{}", frame_cell(Some(e)));
+        s.push_str(&cell(next));
+        for ((_, cg, eps), k) in columns.iter().zip(at.iter_mut()) {
+            s.push(',');
+            if cg.get(*k) == Some(&next) {
+                if let Some(e) = eps.get(*k) {
+                    s.push_str(&cell(*e));
+                }
+                *k += 1;
+            }
         }
-        for o in &overlays {
-            let _ = write!(s, ",{}", frame_cell(Some(&o.eps)));
-        }
-        if let Some(p) = pinned {
-            let _ = write!(
-                s,
-                ",{}",
-                row_pinned.map_or(String::new(), |k| at(Some(&p.eps), k))
-            );
+        if let Some((_, eps_cr)) = &ring {
+            s.push(',');
+            if (lo..=hi).contains(&next) {
+                s.push_str(&cell(*eps_cr));
+            }
         }
         s.push('\n');
-        i += usize::from(row_frame.is_some());
-        j += usize::from(row_pinned.is_some());
     }
     s
 }

@@ -286,6 +286,11 @@ pub mod experiments {
     use super::*;
     use crate::format::qty;
 
+    /// The Bridges law's short name: its atlas id, as the comparisons, `rime data`, the CSV
+    /// columns and the fit name it (issue 37: the chart's experiments said `Bridges'84` where the
+    /// measured-ice comparison said `bridges1984`, for the same source).
+    pub const BRIDGES_ID: &str = "bridges1984";
+
     /// Bridges, Hatzes & Lin (1984), Nature 309, 333: ε = 0.32 (v / 1 cm/s)^−0.234 (frosty ice at
     /// ~185 K), drawn over `from..to`.
     pub fn bridges(from: f64, to: f64, color: usize) -> Series {
@@ -293,7 +298,7 @@ pub mod experiments {
         sweep::log_space(from, to, &mut g);
         Series {
             name: "Bridges et al. 1984: 0.32 (v/1 cm/s)^-0.234".to_string(),
-            short: "Bridges'84".to_string(),
+            short: BRIDGES_ID.to_string(),
             points: g
                 .into_iter()
                 .map(|v| (v, crate::fit::BRIDGES_1984.eval(v).min(1.0)))
@@ -317,7 +322,7 @@ pub mod experiments {
         sweep::log_space(a, b, &mut g);
         Some(Series {
             name: "Bridges et al. 1984 (measured 0.15–20 mm/s): 0.32 (v/1 cm/s)^-0.234".to_string(),
-            short: "Bridges'84".to_string(),
+            short: BRIDGES_ID.to_string(),
             points: g
                 .into_iter()
                 .map(|v| (v, crate::fit::BRIDGES_1984.eval(v)))
@@ -336,7 +341,6 @@ pub mod experiments {
             .iter()
             .filter_map(|e| {
                 let [lo, hi] = e.band()?;
-                let first = e.citation.short_authors().first;
                 let diameter = diameter_range(e.radius);
                 Some(Band {
                     x: (e.valid_speed[0], e.valid_speed[1]),
@@ -346,7 +350,8 @@ pub mod experiments {
                         e.citation.short_authors(),
                         e.citation.year
                     ),
-                    short: format!("{first}'{:02}", e.citation.year % 100),
+                    // The atlas id: the one name of a source on every small surface.
+                    short: e.id.to_string(),
                     color,
                 })
             })
@@ -623,10 +628,10 @@ mod tests {
         let (h10, h15) = (&bands[0], &bands[1]);
         assert_eq!((h10.x, h10.y), ((0.06, 0.22), (0.06, 0.84)));
         assert_eq!(h10.label, "Heißelmann et al. 2010 (15 mm ice, µg)");
-        assert_eq!(h10.short, "Heißelmann'10");
+        assert_eq!(h10.short, "heisselmann2010");
         assert_eq!((h15.x, h15.y), ((0.27, 0.51), (0.08, 0.65)));
         assert_eq!(h15.label, "Hill et al. 2015 (4.7–10.8 mm ice, µg)");
-        assert_eq!(h15.short, "Hill'15");
+        assert_eq!(h15.short, "hill2015");
         assert!(bands.iter().all(|b| b.color == 3));
     }
 }

@@ -384,25 +384,34 @@ fn draw<DB: DrawingBackend>(fig: &Figure, root: DrawingArea<DB, Shift>) -> Resul
         let n = map.g.len();
         let step = if n > 1 { map.g[1] - map.g[0] } else { 1.0 };
         for i in 0..n {
-            for j in 0..n {
+            // One rectangle per run of equal cells along the row (issue 37 X1: a rectangle per
+            // cell made each stick-map SVG 2.2 MB); the same picture.
+            let mut j = 0;
+            while j < n {
                 let Some(c) = map.classes.get(i * n + j) else {
+                    j += 1;
                     continue;
                 };
-                let (gx, gy) = (map.g[j], map.g[i]);
+                let mut end = j;
+                while end + 1 < n && map.classes.get(i * n + end + 1) == Some(c) {
+                    end += 1;
+                }
+                let (gx0, gx1, gy) = (map.g[j], map.g[end], map.g[i]);
                 let rect = Rectangle::new(
                     [
                         (
-                            to_axis((gx - step / 2.0).max(fig.x.min), xl),
+                            to_axis((gx0 - step / 2.0).max(fig.x.min), xl),
                             to_axis((gy - step / 2.0).max(fig.y.min), yl),
                         ),
                         (
-                            to_axis((gx + step / 2.0).min(fig.x.max), xl),
+                            to_axis((gx1 + step / 2.0).min(fig.x.max), xl),
                             to_axis((gy + step / 2.0).min(fig.y.max), yl),
                         ),
                     ],
                     rgb(class_color(*c)).filled(),
                 );
                 chart.draw_series(std::iter::once(rect)).map_err(plot_err)?;
+                j = end + 1;
             }
         }
         // Legend of the classes present.

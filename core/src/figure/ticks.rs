@@ -191,12 +191,52 @@ fn linear_ticks(lo: f64, hi: f64, max_labels: usize) -> Vec<Tick> {
         libm::ceil(lo / step - 1e-9) as i64,
         libm::floor(hi / step + 1e-9) as i64,
     );
-    (i0..=i1)
+    let mut ticks: Vec<Tick> = (i0..=i1)
         .map(|i| Tick {
             value: (i * m) as f64 * crate::numerics::grid::exact_decade(e),
             label: Some(decimal_label(i * m, e)),
         })
-        .collect()
+        .collect();
+    // One notation per axis (issue 37 X1: Fig. 4's axis read `5e-3, 0.01, 0.015`): where the
+    // labels mix plain and exponent forms and every value lies between 1e-4 and 1e6, all plain.
+    let exponent = |t: &Tick| t.label.as_deref().is_some_and(|l| l.contains('e'));
+    let plain = |t: &Tick| {
+        t.label
+            .as_deref()
+            .is_some_and(|l| l != "0" && !l.contains('e'))
+    };
+    let within = ticks
+        .iter()
+        .all(|t| t.value == 0.0 || (1e-4..1e6).contains(&libm::fabs(t.value)));
+    if within && ticks.iter().any(exponent) && ticks.iter().any(plain) {
+        for (t, i) in ticks.iter_mut().zip(i0..=i1) {
+            t.label = Some(plain_label(i * m, e));
+        }
+    }
+    ticks
+}
+
+/// `n`·10^`e` written exactly without an exponent (`0.005`, `150000`).
+fn plain_label(n: i64, e: i32) -> String {
+    if n == 0 {
+        return "0".to_string();
+    }
+    let sign = if n < 0 { "-" } else { "" };
+    let (mut m, mut e) = (n.unsigned_abs(), e);
+    while m % 10 == 0 {
+        m /= 10;
+        e += 1;
+    }
+    let digits = m.to_string();
+    let len = digits.len() as i32;
+    if e >= 0 {
+        format!("{sign}{digits}{}", "0".repeat(e as usize))
+    } else if -e < len {
+        let (a, b) = digits.split_at((len + e) as usize);
+        format!("{sign}{a}.{b}")
+    } else {
+        format!("{sign}0.{}{digits}", "0".repeat((-e - len) as usize))
+    }
 }
 
 impl Axis {
@@ -350,6 +390,26 @@ mod tests {
         assert_eq!(l, ["0", "1e-9", "2e-9", "3e-9"]);
         let l = labels(&axis(false, -0.0123, 0.0456), 5);
         assert_eq!(l, ["0", "0.02", "0.04"]);
+    }
+
+    /// Issue 37 (review X1): one notation per axis: Fig. 4's 0–2 cm/s axis read
+    /// `0, 5e-3, 0.01, 0.015, 0.02`; the values are exact decimals written by hand here.
+    #[test]
+    fn issue_37_an_axis_writes_its_labels_one_way() {
+        assert_eq!(
+            labels(&axis(false, 0.0, 0.02), 5),
+            ["0", "0.005", "0.01", "0.015", "0.02"]
+        );
+        assert_eq!(
+            labels(&axis(false, 0.0, 150000.0), 4),
+            ["0", "50000", "100000", "150000"]
+        );
+        // All small or all large: the exponent form stays.
+        assert_eq!(
+            labels(&axis(false, 0.0, 3.1e-9), 4),
+            ["0", "1e-9", "2e-9", "3e-9"]
+        );
+        assert_eq!(labels(&axis(false, 0.0, 1.0), 3), ["0", "0.5", "1"]);
     }
 
     #[test]

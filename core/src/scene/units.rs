@@ -101,23 +101,36 @@ pub fn parse_quantity(field: &'static str, text: &str, unit: &str) -> Result<f64
     }
     let mut a = [0u8; 32];
     let mut b = [0u8; 32];
-    let wrong_unit = Error::InvalidValue {
-        field,
-        expected: unit_expectation(unit),
-    };
     let (Some(la), Some(lb)) = (normalise(suffix, &mut a), normalise(unit, &mut b)) else {
-        return Err(wrong_unit);
+        return Err(Error::InvalidValue {
+            field,
+            expected: unit_expectation(unit, None),
+        });
     };
     let (given, si) = (&a[..la], &b[..lb]);
+    match scaled(value, given, si) {
+        Some(v) => Ok(v),
+        // A unit of another kind is named (issue 37 E1: `2 um` for a time read only "expected a
+        // time", as `5 parsecs` did).
+        None => Err(Error::InvalidValue {
+            field,
+            expected: unit_expectation(unit, kind_of(given)),
+        }),
+    }
+}
+
+/// `value` in the normalised unit `given` expressed in the normalised SI unit `si`, when `given`
+/// is `si` with an SI prefix (or a special spelling); `None` when it is another unit.
+fn scaled(value: f64, given: &[u8], si: &[u8]) -> Option<f64> {
     if si.is_empty() {
-        return Err(wrong_unit);
+        return None;
     }
     if given == si {
-        return Ok(value);
+        return Some(value);
     }
     // Special spellings.
     if si == b"kg/m3" && given == b"g/cm3" {
-        return Ok(value * 1000.0);
+        return Some(value * 1000.0);
     }
     for (prefix, factor) in PREFIXES {
         let p = if prefix == "µ" || prefix == "μ" {
@@ -133,29 +146,84 @@ pub fn parse_quantity(field: &'static str, text: &str, unit: &str) -> Result<f64
         {
             // Divide by the exact power of ten for sub-unit prefixes: 100 µs is then the double
             // nearest 1e-4, as typed (100 × 1e-6 is 9.999999999999999e-5).
-            return Ok(if factor < 1.0 {
+            return Some(if factor < 1.0 {
                 value / libm::round(1.0 / factor)
             } else {
                 value * factor
             });
         }
     }
-    Err(wrong_unit)
+    None
 }
 
-fn unit_expectation(unit: &str) -> &'static str {
+/// What the fields' units measure, for naming a unit typed into a field of another kind.
+const KINDS: [(&str, Kind); 9] = [
+    ("m", Kind::Length),
+    ("m/s", Kind::Speed),
+    ("s", Kind::Time),
+    ("Pa", Kind::Pressure),
+    ("Pa s", Kind::Viscosity),
+    ("J/m²", Kind::SurfaceEnergy),
+    ("kg/m³", Kind::Density),
+    ("kg", Kind::Mass),
+    ("K", Kind::Temperature),
+];
+
+/// The kind of quantity a typed unit measures.
+#[derive(Clone, Copy)]
+enum Kind {
+    Length,
+    Speed,
+    Time,
+    Pressure,
+    Viscosity,
+    SurfaceEnergy,
+    Density,
+    Mass,
+    Temperature,
+}
+
+/// The kind of the normalised unit `given` (`um` → a length), if it is one of the fields' units.
+fn kind_of(given: &[u8]) -> Option<Kind> {
+    KINDS.iter().find_map(|(unit, kind)| {
+        let mut b = [0u8; 32];
+        let n = normalise(unit, &mut b)?;
+        scaled(1.0, given, &b[..n]).map(|_| *kind)
+    })
+}
+
+/// What a field of SI unit `unit` expects, and what was typed when it was a unit of another kind
+/// ("a time, not a length, e.g. …": the kinds before the examples, which a narrow status line
+/// may cut): static text (the core has no allocator), every pair spelled out by `concat!`.
+fn unit_expectation(unit: &str, got: Option<Kind>) -> &'static str {
+    macro_rules! got {
+        ($noun:literal, $examples:literal) => {
+            match got {
+                Some(Kind::Length) => concat!($noun, ", not a length", $examples),
+                Some(Kind::Speed) => concat!($noun, ", not a speed", $examples),
+                Some(Kind::Time) => concat!($noun, ", not a time", $examples),
+                Some(Kind::Pressure) => concat!($noun, ", not a pressure", $examples),
+                Some(Kind::Viscosity) => concat!($noun, ", not a viscosity", $examples),
+                Some(Kind::SurfaceEnergy) => concat!($noun, ", not a surface energy", $examples),
+                Some(Kind::Density) => concat!($noun, ", not a density", $examples),
+                Some(Kind::Mass) => concat!($noun, ", not a mass", $examples),
+                Some(Kind::Temperature) => concat!($noun, ", not a temperature", $examples),
+                None => concat!($noun, $examples),
+            }
+        };
+    }
     match unit {
-        "m" => "a length, e.g. 1e-6, 1 um, 2 cm",
-        "m/s" => "a speed, e.g. 0.01, 1 cm/s, 5 mm/s",
-        "s" => "a time, e.g. 1e-4, 0.1 ms",
-        "Pa" => "a pressure, e.g. 1e10, 10 GPa",
-        "Pa s" => "a viscosity, e.g. 1000, 1 kPa s",
-        "J/m²" => "a surface energy, e.g. 0.1, 100 mJ/m^2",
-        "kg/m³" => "a density, e.g. 900, 0.9 g/cm^3",
-        "kg" => "a mass, e.g. 5.688e26",
-        "K" => "a temperature, e.g. 200, 200 K",
-        "" => "a plain number without unit",
-        _ => "a number in SI units",
+        "m" => got!("a length", ", e.g. 1e-6, 1 um, 2 cm"),
+        "m/s" => got!("a speed", ", e.g. 0.01, 1 cm/s, 5 mm/s"),
+        "s" => got!("a time", ", e.g. 1e-4, 0.1 ms"),
+        "Pa" => got!("a pressure", ", e.g. 1e10, 10 GPa"),
+        "Pa s" => got!("a viscosity", ", e.g. 1000, 1 kPa s"),
+        "J/m²" => got!("a surface energy", ", e.g. 0.1, 100 mJ/m^2"),
+        "kg/m³" => got!("a density", ", e.g. 900, 0.9 g/cm^3"),
+        "kg" => got!("a mass", ", e.g. 5.688e26"),
+        "K" => got!("a temperature", ", e.g. 200, 200 K"),
+        "" => got!("a plain number without unit", ""),
+        _ => got!("a number in SI units", ""),
     }
 }
 
@@ -218,6 +286,42 @@ mod tests {
             let e = parse_quantity("layer.thickness", text, unit).unwrap_err();
             let msg = alloc_free_message(&e);
             assert!(msg.contains("layer.thickness"), "{text}: {msg}");
+        }
+    }
+
+    /// Issue 37 (review E1): a unit of another kind is named (`2 um` where a time is expected
+    /// read "expected a time", as `5 parsecs` did); a unit of no known kind is not.
+    #[test]
+    fn issue_37_a_unit_of_another_kind_is_named() {
+        for (text, unit, got) in [
+            ("2 um", "s", "a length"),
+            ("2um", "s", "a length"),
+            ("3 ms", "m", "a time"),
+            ("1 cm/s", "m", "a speed"),
+            ("10 GPa", "Pa s", "a pressure"),
+            ("1 kPa s", "Pa", "a viscosity"),
+            ("0.9 g/cm^3", "kg", "a density"),
+            ("5 kg", "kg/m³", "a mass"),
+            ("200 K", "s", "a temperature"),
+            ("100 mJ/m²", "m", "a surface energy"),
+            ("1 m", "", "a length"),
+        ] {
+            let e = parse_quantity("bulk.damping.time", text, unit).unwrap_err();
+            let msg = alloc_free_message(&e);
+            let (want, not) = msg
+                .strip_prefix("bulk.damping.time: expected ")
+                .and_then(|m| m.split_once(", not "))
+                .unwrap_or_else(|| panic!("{text}: {msg}"));
+            assert!(!want.is_empty() && want != got, "{text}: {msg}");
+            assert!(not.starts_with(got), "{text}: {msg}");
+        }
+        for text in ["5 parsecs", "2 furlongs/s"] {
+            let msg =
+                alloc_free_message(&parse_quantity("bulk.damping.time", text, "s").unwrap_err());
+            assert_eq!(
+                msg, "bulk.damping.time: expected a time, e.g. 1e-4, 0.1 ms",
+                "{text}"
+            );
         }
     }
 

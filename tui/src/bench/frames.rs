@@ -323,10 +323,12 @@ pub fn run(out_dir: &Path, quick: bool) -> CliResult<(Vec<Record>, String)> {
     Ok((records.clone(), table(&records)))
 }
 
-/// The records as a table, one block per size.
+/// The records as a table, one block per size, each scene on a line of its own with its levels
+/// beneath: at most 80 columns (issue 37 R3: rows of 110 columns wrapped in an 80-column terminal).
 pub fn table(records: &[Record]) -> String {
     let mut s = format!(
-        "input → frame of the terminal explorer, median [ms] ({} cores, load average {:.2} at the start)\n",
+        "input → frame of the terminal explorer, median [ms] ({} cores, load average {:.2}\n\
+         at the start); 1× = on one core\n",
         records.first().map_or(cores(), |r| r.cores),
         records.first().map_or(f64::NAN, |r| r.load)
     );
@@ -334,13 +336,17 @@ pub fn table(records: &[Record]) -> String {
     sizes.dedup();
     for size in sizes {
         s.push_str(&format!(
-            "\n{size}\n{:<34} {:<10} {:>8} {:>8} {:>10} {:>10} {:>10} {:>8}\n",
-            "scene", "level", "first", "final", "final 1×", "compute", "compute 1×", "speed-up"
+            "\n{size}\n{:<14} {:>8} {:>8} {:>9} {:>9} {:>11} {:>9}\n",
+            "scene / level", "first", "final", "final 1×", "compute", "compute 1×", "speed-up"
         ));
+        let mut scene = "";
         for r in records.iter().filter(|r| r.size == size) {
+            if r.scene != scene {
+                scene = &r.scene;
+                s.push_str(&format!("{scene}\n"));
+            }
             s.push_str(&format!(
-                "{:<34} {:<10} {:>8.2} {:>8.2} {:>10.2} {:>10.2} {:>10.2} {:>7.2}×\n",
-                r.scene,
+                "  {:<12} {:>8.2} {:>8.2} {:>9.2} {:>9.2} {:>11.2} {:>8.2}×\n",
                 r.level,
                 r.first_ms,
                 r.final_ms,
@@ -352,4 +358,54 @@ pub fn table(records: &[Record]) -> String {
         }
     }
     s
+}
+
+#[cfg(test)]
+mod issue_37_tests {
+    use super::{Record, table};
+
+    /// Issue 37 (review R3): the frames table fits 80 columns (it was 110 wide) and still carries
+    /// every scene, level and number of its records.
+    #[test]
+    fn issue_37_the_frames_table_fits_80_columns() {
+        let long = "ice-frost, layer.reading=literal";
+        let records: Vec<Record> = ["fast", "precise", "integrated"]
+            .iter()
+            .enumerate()
+            .map(|(k, level)| Record {
+                surface: "terminal",
+                scene: long.to_string(),
+                edit: "bulk.damping.time",
+                level,
+                size: "80x24".into(),
+                first_ms: 12345.67,
+                final_ms: 23456.78 + k as f64,
+                sequential_final_ms: 34567.89,
+                compute_ms: 4567.8,
+                sequential_compute_ms: 5678.9,
+                runs: 3,
+                cores: 2,
+                load: 12.34,
+            })
+            .collect();
+        let text = table(&records);
+        for line in text.lines() {
+            assert!(
+                line.chars().count() <= 80,
+                "{} columns: {line}",
+                line.chars().count()
+            );
+        }
+        assert!(text.lines().any(|l| l == long), "{text}");
+        for (k, level) in ["fast", "precise", "integrated"].iter().enumerate() {
+            let row = text
+                .lines()
+                .find(|l| l.trim_start().starts_with(level))
+                .unwrap_or_else(|| panic!("{level}: {text}"));
+            let cells: Vec<&str> = row.split_whitespace().collect();
+            assert_eq!(cells[1], "12345.67");
+            assert_eq!(cells[2], format!("{:.2}", 23456.78 + k as f64));
+            assert_eq!(cells[6], format!("{:.2}×", 5678.9 / 4567.8));
+        }
+    }
 }

@@ -1,7 +1,7 @@
 //! `rime data`: the atlas of measured ice (rime_core::atlas), listed or evaluated.
 
 use crate::args::{Common, Format, quantity, speed_list};
-use crate::output::{num, table};
+use crate::output::num;
 use crate::scene_io::{CliError, CliResult, err};
 use rime_core::atlas::{ENTRIES, Entry, Kind, find};
 use rime_core::explorer::records::{AtlasRecord, LAW_HEADER, LawRecord};
@@ -95,25 +95,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                 }
                 s
             }
-            Format::Table => {
-                let rows: Vec<Vec<String>> = ENTRIES
-                    .iter()
-                    .map(|e| {
-                        vec![
-                            e.id.to_string(),
-                            e.kind.name().to_string(),
-                            range(e.valid_speed),
-                            range(e.temperature),
-                            e.geometry.name().to_string(),
-                            e.formula.to_string(),
-                        ]
-                    })
-                    .collect();
-                table(
-                    &["id", "kind", "speed [m/s]", "T [K]", "geometry", "formula"],
-                    &rows,
-                ) + "Provenance and what was verified: rime data --format json (field verified).\n"
-            }
+            Format::Table => atlas_table(TABLE_WIDTH),
         });
     };
     let entry = law("--law", id)?;
@@ -142,9 +124,81 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
             }
             s
         }
-        Format::Table => table(
+        // For people: 4 significant digits, speeds with a prefixed unit (issue 37).
+        Format::Table => crate::output::human_table(
             &LAW_HEADER,
             &rows.iter().map(|r| r.cells().to_vec()).collect::<Vec<_>>(),
         ),
     })
+}
+
+/// Width of `rime data`'s table: an 80-column terminal.
+pub const TABLE_WIDTH: usize = 80;
+
+/// The atlas for people (issue 37 C6: 165 columns, the formula right-aligned with no unit for v):
+/// one row per entry, text columns left-aligned, then the formula with the units of its symbols
+/// on lines of their own, wrapped at word boundaries to `width` columns.
+fn atlas_table(width: usize) -> String {
+    let header = ["id", "kind", "speed [m/s]", "T [K]", "geometry"];
+    let rows: Vec<[String; 5]> = ENTRIES
+        .iter()
+        .map(|e| {
+            [
+                e.id.to_string(),
+                e.kind.name().to_string(),
+                range(e.valid_speed),
+                range(e.temperature),
+                e.geometry.name().to_string(),
+            ]
+        })
+        .collect();
+    let widths: Vec<usize> = (0..header.len())
+        .map(|k| {
+            rows.iter()
+                .map(|r| r[k].chars().count())
+                .chain([header[k].chars().count()])
+                .max()
+                .unwrap_or(0)
+        })
+        .collect();
+    let line = |cells: &[&str]| -> String {
+        let mut s = String::new();
+        for (k, (c, w)) in cells.iter().zip(&widths).enumerate() {
+            if k > 0 {
+                s.push_str("  ");
+            }
+            s.push_str(&format!("{c:<w$}"));
+        }
+        s.trim_end().to_string() + "\n"
+    };
+    let mut out = line(&header);
+    for (e, r) in ENTRIES.iter().zip(&rows) {
+        out.push_str(&line(&r.each_ref().map(String::as_str)));
+        out.push_str(&wrap_words(e.formula, width, 4));
+        if !e.units.is_empty() {
+            out.push_str(&wrap_words(&format!("[{}]", e.units), width, 4));
+        }
+    }
+    out + "Provenance and what was verified: rime data --format json (field verified).\n"
+}
+
+/// `text` in lines of at most `width` columns broken at spaces, each indented by `indent`.
+fn wrap_words(text: &str, width: usize, indent: usize) -> String {
+    let room = width.saturating_sub(indent).max(20);
+    let mut out = String::new();
+    let mut line = String::new();
+    for word in text.split_whitespace() {
+        if !line.is_empty() && line.chars().count() + 1 + word.chars().count() > room {
+            out.push_str(&format!("{}{line}\n", " ".repeat(indent)));
+            line.clear();
+        }
+        if !line.is_empty() {
+            line.push(' ');
+        }
+        line.push_str(word);
+    }
+    if !line.is_empty() {
+        out.push_str(&format!("{}{line}\n", " ".repeat(indent)));
+    }
+    out
 }

@@ -29,8 +29,10 @@ pub fn run(c: &Common, out: &Path, explorer: Option<&ExplorerFigures>) -> CliRes
             .map_err(|e| CliError::input(format!("{}: cannot write: {e}", png.display())))?;
         s.push_str(&format!("{}: {}\n  {}\n", f.name, f.title, f.caption));
     }
+    // The captions beside the figures, as docs/figures/captions.txt holds them (issue 37 X1).
+    scene_io::write_atomic(&out.join("captions.txt"), s.as_bytes())?;
     s.push_str(&format!(
-        "wrote {} figures (SVG + PNG) into {}\n",
+        "wrote {} figures (SVG + PNG) and captions.txt into {}\n",
         figures.len(),
         out.display()
     ));

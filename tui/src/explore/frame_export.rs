@@ -56,7 +56,16 @@ pub fn write_frame(
         ),
         (
             "eps_family.csv".to_string(),
-            context(records::FAMILY_WHAT) + &records::family_csv_pinned(f, view.pinned.as_ref()),
+            // Every curve the chart draws: measured laws, pinned curve, the ring's ε_cr line.
+            context(records::FAMILY_WHAT)
+                + &records::family_csv_drawn(
+                    f,
+                    &records::Drawn {
+                        pinned: view.pinned.as_ref(),
+                        experiments: view.experiments,
+                        ring_eps_cr: ring.map(|c| (c.record.tau, c.record.prediction().eps_cr)),
+                    },
+                ),
         ),
     ];
     if let Some(map) = records::frame_map_csv(f) {

@@ -568,11 +568,13 @@ fn toggling_experiments_changes_the_chart() {
     let mut app = app_on(Scene::default());
     assert!(app.experiments, "on by default");
     let on = text(&screen(&app, 100, 30));
-    assert!(on.contains("Bridges'84") && on.contains("Heißelmann'10") && on.contains("Hill'15"));
+    assert!(
+        on.contains("bridges1984") && on.contains("heisselmann2010") && on.contains("hill2015")
+    );
     update(&mut app, ch('b'));
     assert!(!app.experiments);
     let off = text(&screen(&app, 100, 30));
-    assert!(!off.contains("Bridges"));
+    assert!(!off.contains("bridges1984"));
     // Not only the legend: the plotted cells differ too.
     let plot = |s: &str| -> String {
         s.lines()
@@ -1255,10 +1257,7 @@ fn glossary_human_labels_timing_and_warnings_issue_12_item_9() {
     assert!(s.contains("as printed"), "{s}");
     assert!(s.contains("computed in 3 ms at fast"), "{s}");
     let s = text(&screen(&app, 160, 40));
-    assert!(
-        s.contains("g_s adhesion") && s.contains("(a rebound speed)"),
-        "{s}"
-    );
+    assert!(s.contains("g_s adhesion, on the rebound speed"), "{s}");
     let help = help_pages(&mut app, 100, 30);
     for sym in [
         "δ, δ(g)",
@@ -2213,6 +2212,9 @@ fn issue_37_a_closed_ring_card_is_not_exported() {
 #[test]
 fn issue_37_the_family_table_has_the_pinned_curve() {
     let mut app = app_on(Preset::IceFrost.scene());
+    // Without the experiments' law (its speeds are rows of their own since issue 37 F2.5).
+    update(&mut app, ch('b'));
+    assert!(!app.experiments);
     update(&mut app, ch('P'));
     let pinned = app.pinned.clone().expect("pinned");
     let rows = |files: &std::collections::BTreeMap<String, String>| -> Vec<Vec<String>> {
@@ -2800,4 +2802,147 @@ fn issue_37_open_and_save_name_the_file_they_used() {
     assert_eq!(tone, Tone::Info, "{msg}");
     assert_eq!(msg, format!("opened scene {} (u undoes)", file.display()));
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 37 (review E1): a length typed where a time is expected names both kinds before the
+/// examples (a status line of 80 columns cuts the end): "expected a time, not a length"; the
+/// scene is unchanged.
+#[test]
+fn issue_37_a_length_typed_for_a_time_says_so() {
+    let mut app = app_on(Scene::default());
+    let before = app.scene;
+    select(&mut app, "bulk.damping.time");
+    update(&mut app, ch('e'));
+    update(
+        &mut app,
+        Event::Key(KeyEvent::new(KeyCode::Char('u'), KeyModifiers::CONTROL)),
+    );
+    for c in "2 um".chars() {
+        update(&mut app, ch(c));
+    }
+    update(&mut app, key(KeyCode::Enter));
+    let (msg, tone) = app.message.clone().expect("message");
+    assert_eq!(tone, Tone::Error);
+    assert!(
+        msg.starts_with("bulk.damping.time: expected a time, not a length"),
+        "{msg}"
+    );
+    assert!(msg.ends_with("(scene unchanged)"), "{msg}");
+    assert_eq!(app.scene, before);
+}
+
+/// Issue 37 (review E6): a source has one name on every small surface: the chart's experiments
+/// (`b`) said `Bridges'84`, `Heißelmann'10`, `Hill'15` where the measured-ice comparison (`c`),
+/// `rime data`, the CSV columns and the fit message say `bridges1984`, `heisselmann2010`,
+/// `hill2015`: now the atlas id in both legends.
+#[test]
+fn issue_37_one_name_per_source_in_both_legends() {
+    let ids = ["bridges1984", "heisselmann2010", "hill2015"];
+    for id in ids {
+        assert!(rime_core::atlas::find(id).is_some(), "{id} is an atlas id");
+    }
+    let mut app = app_on(Scene::default());
+    let experiments = text(&screen(&app, 160, 45));
+    update(&mut app, ch('c'));
+    let req = app.take_request().expect("a new request");
+    let data = compute(&req, &|| false, &NoMemo).expect("frame");
+    update(&mut app, Event::Computed(Box::new(data)));
+    let compared = text(&screen(&app, 160, 45));
+    for id in ids {
+        assert!(
+            experiments.contains(id),
+            "experiments: no {id}\n{experiments}"
+        );
+        assert!(compared.contains(id), "comparison: no {id}\n{compared}");
+    }
+    for old in ["Bridges'84", "Heißelmann'10", "Hill'15"] {
+        assert!(
+            !experiments.contains(old) && !compared.contains(old),
+            "{old}"
+        );
+    }
+}
+
+/// Issue 37 (review F2.5): `eps_family.csv` ("every ε_N curve of the chart") holds the measured
+/// law the chart draws (the experiments' Bridges law over its measured speeds, 0.15–20 mm/s) and,
+/// with the ring card open, the ring's ε_cr line on every row of the chart's speeds. The law's
+/// values are checked against its printed form, ε = 0.32 (v / 1 cm/s)^−0.234, written here.
+#[test]
+fn issue_37_the_all_curves_table_has_the_measured_law_and_the_ring_line() {
+    let mut app = app_on(Scene::default());
+    assert!(app.experiments);
+    let table = |files: &std::collections::BTreeMap<String, String>| -> Vec<Vec<String>> {
+        files["eps_family.csv"]
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .map(|l| l.split(',').map(str::to_string).collect())
+            .collect()
+    };
+    let rows = table(&exported_files(&mut app, "f25-law"));
+    let law = rows[0]
+        .iter()
+        .position(|h| h == "eps_n:bridges1984")
+        .unwrap_or_else(|| panic!("no law column: {:?}", rows[0]));
+    let mut cells = 0;
+    for r in &rows[1..] {
+        let g: f64 = r[0].parse().expect("g");
+        if let Some(c) = r.get(law).filter(|c| !c.is_empty()) {
+            let eps: f64 = c.parse().expect("eps");
+            assert!(
+                (1.5e-4 * (1.0 - 1e-12)..=2e-2 * (1.0 + 1e-12)).contains(&g),
+                "{g}"
+            );
+            let printed = 0.32 * (g / 0.01).powf(-0.234);
+            assert!(
+                (eps / printed - 1.0).abs() < 1e-12,
+                "{g}: {eps} vs {printed}"
+            );
+            cells += 1;
+        }
+    }
+    assert!(cells >= 20, "{cells} law cells");
+    // The ring card open: its ε_cr on every row of the chart's speeds.
+    update(&mut app, ch('r'));
+    let card = match app.ring_card.clone() {
+        Some(Ok(card)) => card,
+        other => panic!("no ring card: {other:?}"),
+    };
+    let eps_cr = card.record.prediction().eps_cr;
+    let rows = table(&exported_files(&mut app, "f25-ring"));
+    let head = format!("eps_cr [ring τ = {}]", card.record.tau);
+    let col = rows[0]
+        .iter()
+        .position(|h| *h == head)
+        .unwrap_or_else(|| panic!("no {head}: {:?}", rows[0]));
+    let frame_rows = rows[1..].iter().filter(|r| !r[1].is_empty()).count();
+    assert!(frame_rows > 50);
+    for r in rows[1..].iter().filter(|r| !r[1].is_empty()) {
+        assert_eq!(r[col].parse::<f64>().ok(), Some(eps_cr), "{r:?}");
+    }
+}
+
+/// Issue 37 (review web F1.1): the adhesion marker says what g_s is a threshold of — a rebound
+/// slower than it sticks — not "g_s …, a rebound speed", which read as a contradiction next to a
+/// sticking speed; the short legend says it is on the rebound speed.
+#[test]
+fn issue_37_the_adhesion_marker_says_what_it_holds() {
+    let mut app = app_on(Preset::IceSticky.scene());
+    let files = exported_files(&mut app, "f11");
+    // The SVG's words, its wrapped lines joined.
+    let svg = &files["eps_n.svg"];
+    let words: String = svg
+        .split('<')
+        .filter_map(|t| t.split_once('>').map(|(_, w)| w))
+        .collect::<Vec<_>>()
+        .join(" ")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(
+        words.contains("g_s adhesion (Eq. (15)): a rebound slower than g_s sticks; g_s = "),
+        "{words}"
+    );
+    assert!(!words.contains("a rebound speed ="), "{words}");
+    let s = text(&screen(&app, 160, 40));
+    assert!(s.contains("g_s adhesion, on the rebound speed"), "{s}");
 }

@@ -605,7 +605,9 @@ fn issue_37_json_keys_come_in_the_documented_order() {
         .collect();
     tidal.extend(["stays_in_contact", "verdict"]);
     let scene_keys = key_order(&ok(&["scene"]));
-    let cases: Vec<(Vec<&str>, Vec<(&str, Vec<&str>)>)> = vec![
+    // (arguments, [(object path, its keys in order)])
+    type Case<'a> = (Vec<&'a str>, Vec<(&'a str, Vec<&'a str>)>);
+    let cases: Vec<Case> = vec![
         (vec!["tidal"], vec![("", tidal)]),
         (
             vec!["ring", "--tau", "0.1", "--omega", "1.3143527e-4"],
@@ -876,4 +878,82 @@ fn issue_37_tidal_units_read_as_written_elsewhere() {
         serde_json::from_str(&ok(&["tidal", "--format", "json"])).unwrap();
     assert_eq!(json["density"].as_f64(), Some(900.0));
     assert_eq!(json["surface_energy"].as_f64(), Some(0.1));
+}
+
+/// Issue 37 (review C6): `rime data --format table` fits 80 columns (it was 165, the formula
+/// right-aligned to 130) with every entry, its formula whole and the units of its symbols
+/// (`hatzes1988_frost`'s v is in cm/s); a law's values at speeds read with 4 significant digits.
+#[test]
+fn issue_37_the_atlas_table_fits_80_columns_and_says_the_units() {
+    let table = ok(&["data", "--format", "table"]);
+    for line in table.lines() {
+        assert!(
+            line.chars().count() <= 80,
+            "{} columns: {line}",
+            line.chars().count()
+        );
+    }
+    let json: serde_json::Value = serde_json::from_str(&ok(&["data", "--format", "json"])).unwrap();
+    let flat = table.split_whitespace().collect::<Vec<_>>().join(" ");
+    for e in json.as_array().unwrap() {
+        let id = e["id"].as_str().unwrap();
+        assert!(
+            table
+                .lines()
+                .any(|l| l.split_whitespace().next() == Some(id)),
+            "{id}: {table}"
+        );
+        let formula = e["formula"].as_str().unwrap();
+        let formula = formula.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(flat.contains(&formula), "{id}: {formula}");
+        let units = e["units"].as_str().unwrap();
+        if !units.is_empty() {
+            assert!(
+                flat.contains(&format!("{formula} [{units}]")),
+                "{id}: {units}"
+            );
+        }
+    }
+    assert!(flat.contains("eps = 0.48 v^-0.20 [v in cm/s]"), "{flat}");
+    let law = ok(&[
+        "data",
+        "--law",
+        "bridges1984",
+        "--g",
+        "0.01",
+        "--format",
+        "table",
+    ]);
+    let row: Vec<&str> = law.lines().nth(1).unwrap().split_whitespace().collect();
+    // (v / v_c)^-0.234 at v = 1 cm/s, v_c = 0.0077 cm/s: computed here from the law's formula.
+    let eps = (1.0f64 / 0.0077).powf(-0.234);
+    assert_eq!(row[..2], ["10", "mm/s"], "{law}");
+    assert!(digits(row[2]) <= 6, "{law}");
+    assert!((row[2].parse::<f64>().unwrap() - eps).abs() < 1e-3, "{law}");
+}
+
+/// Issue 37 (review X1): `rime figures` writes captions.txt beside the figures (the README
+/// points at docs/figures/captions.txt; it was never written), its text the captions printed;
+/// a stick map's SVG draws a rectangle per run of equal cells, not per cell (2.2 MB each).
+#[test]
+fn issue_37_figures_write_their_captions_and_compact_maps() {
+    let dir = std::env::temp_dir().join(format!("rime-issue-37-x1-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = ok(&["figures", "--out", dir.to_str().unwrap()]);
+    let captions = std::fs::read_to_string(dir.join("captions.txt")).expect("captions.txt");
+    let printed: String = out
+        .lines()
+        .filter(|l| !l.starts_with("wrote "))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    assert_eq!(captions, printed);
+    assert!(captions.contains("fig4-hard: Fig. 4"), "{captions}");
+    for map in ["fig4-hard", "fig4-layer", "fig4-adhesion-zoom"] {
+        let svg = std::fs::read_to_string(dir.join(format!("{map}.svg"))).expect("svg");
+        let rects = svg.matches("<rect").count();
+        // The maps are grids of thousands of cells in a few regions (rolling, sliding, …).
+        assert!(rects < 2000, "{map}: {rects} rectangles");
+        assert!(rects > 100, "{map}: {rects} rectangles: no map drawn?");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
 }
