@@ -63,9 +63,16 @@ pub(crate) fn ring_equilibrium<'py>(
     let note = patch.damping_note(&rec, "scale_damping=True");
     // The fields of the core's record, as `rime ring --format json` writes them: the flat ones
     // at the top, `smooth.*` and `rough.*` in their own dicts.
-    let out = rime_core::explorer::records::RingOutput::new(&rec, note);
+    let viscosity = py
+        .detach(|| rime_core::ring_sizes::one_size_viscosity(&patch.scene, &patch.input))
+        .map_err(core_error)?;
+    let out = rime_core::explorer::records::RingOutput::new(&rec, note).with_viscosity(viscosity);
     let d = PyDict::new(py);
-    let nested = [("smooth", PyDict::new(py)), ("rough", PyDict::new(py))];
+    let nested = [
+        ("smooth", PyDict::new(py)),
+        ("rough", PyDict::new(py)),
+        ("viscosity", PyDict::new(py)),
+    ];
     let put = |key: &str, value: Bound<'py, PyAny>| -> PyResult<()> {
         match key.split_once('.') {
             Some((outer, inner)) => match nested.iter().find(|(n, _)| *n == outer) {
@@ -81,6 +88,10 @@ pub(crate) fn ring_equilibrium<'py>(
     for (k, w) in out.verdicts {
         put(k, w.into_pyobject(py)?.into_any())?;
     }
+    put(
+        "viscosity.overstability",
+        viscosity.overstability.into_pyobject(py)?.into_any(),
+    )?;
     d.set_item("equilibrium", out.equilibrium)?;
     d.set_item("verdict_words", out.verdict_words)?;
     d.set_item("damping_note", out.damping_note)?;

@@ -634,6 +634,9 @@ pub struct RingOutput {
     pub verdict_words: &'static str,
     /// What A describes when it was set for, or scaled from, another grain size.
     pub damping_note: Option<String>,
+    /// The ring's kinematic viscosity (issue 38), when added by [`RingOutput::with_viscosity`]:
+    /// its numbers are also in `values` as `viscosity.*`.
+    pub viscosity: Option<crate::applications::ring_sizes::Viscosity>,
 }
 
 impl RingOutput {
@@ -693,7 +696,23 @@ impl RingOutput {
             equilibrium: p.verdict.is_equilibrium(),
             verdict_words: p.verdict.words(),
             damping_note,
+            viscosity: None,
         }
+    }
+
+    /// With the ring's viscosity `v` (`viscosity.translational`, `.collisional`, `.total` in m²/s,
+    /// `.dlnnu_dlntau`, and the word `.overstability`), as a ring of many sizes writes it.
+    pub fn with_viscosity(mut self, v: crate::applications::ring_sizes::Viscosity) -> Self {
+        for (k, x, u) in [
+            ("translational", v.translational, "m²/s"),
+            ("collisional", v.collisional, "m²/s"),
+            ("total", v.total, "m²/s"),
+            ("dlnnu_dlntau", v.dlnnu_dlntau, "1"),
+        ] {
+            self.values.push((format!("viscosity.{k}"), Some(x), u));
+        }
+        self.viscosity = Some(v);
+        self
     }
 }
 
@@ -740,6 +759,7 @@ impl serde::Serialize for RingOutput {
         let mut nested = [
             ("smooth", Nested(alloc::vec::Vec::new())),
             ("rough", Nested(alloc::vec::Vec::new())),
+            ("viscosity", Nested(alloc::vec::Vec::new())),
         ];
         for (k, v) in entries {
             match k.split_once('.') {
@@ -755,8 +775,16 @@ impl serde::Serialize for RingOutput {
         for (k, v) in &top {
             m.serialize_entry(k, v)?;
         }
+        if let Some(v) = &self.viscosity {
+            nested[2]
+                .1
+                .0
+                .push(("overstability", Value::Word(v.overstability)));
+        }
         for (k, n) in &nested {
-            m.serialize_entry(k, n)?;
+            if !n.0.is_empty() {
+                m.serialize_entry(k, n)?;
+            }
         }
         m.serialize_entry("damping_note", &self.damping_note)?;
         m.serialize_entry("equilibrium", &self.equilibrium)?;

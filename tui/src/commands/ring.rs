@@ -184,7 +184,10 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
     let p = rec.prediction();
     let note = patch.damping_note(&rec, "--scale-damping");
     // The core's record of this ring (field names are a contract, docs/cli.md).
-    let out = rime_core::explorer::records::RingOutput::new(&rec, note.clone());
+    // ν of this one-size ring (issue 38): the one-bin ring of many sizes, the same c to the digit.
+    let viscosity = rime_core::ring_sizes::one_size_viscosity(&patch.scene, &patch.input)?;
+    let out =
+        rime_core::explorer::records::RingOutput::new(&rec, note.clone()).with_viscosity(viscosity);
     let (values, verdicts) = (&out.values, out.verdicts);
     Ok(match common.format {
         Format::Json => {
@@ -208,6 +211,10 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                     v.map(output::num).unwrap_or_default()
                 ));
             }
+            s.push_str(&format!(
+                "viscosity.overstability,{},\n",
+                viscosity.overstability
+            ));
             if let Some(n) = &note {
                 s.push_str(&format!("damping_note,\"{}\",\n", n.replace('"', "'")));
             }
@@ -228,13 +235,23 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                 .into(),
                 String::new(),
             ]);
-            rows.extend(values.iter().map(|(k, v, u)| {
-                vec![
+            // ν in one area unit for all three (as the many-sizes table writes it).
+            let (area_scale, area) = area_unit(viscosity.total);
+            rows.extend(values.iter().map(|(k, v, u)| match (*u, v) {
+                ("m²/s", Some(x)) => {
+                    vec![k.clone(), output::num(x / area_scale), area.to_string()]
+                }
+                _ => vec![
                     k.clone(),
                     v.map(output::num).unwrap_or_else(|| "none".into()),
                     u.to_string(),
-                ]
+                ],
             }));
+            rows.push(vec![
+                "viscosity.overstability".into(),
+                viscosity.overstability.into(),
+                String::new(),
+            ]);
             let mut s = output::table(&["name", "value", "unit"], &output::human_value_rows(rows));
             if let Some(n) = note {
                 s.push_str(&format!("note: {n}\n"));
@@ -472,7 +489,7 @@ fn bin_values(b: &rime_core::ring_sizes::BinPrediction) -> Vec<(&'static str, f6
 
 /// One size's JSON keys in the order docs/cli.md lists them (issue 37 C5: they were sorted): the
 /// verdicts, what the ring does, the inputs, then each prediction.
-const RING_KEYS: [(&str, &[&str]); 3] = [
+const RING_KEYS: [(&str, &[&str]); 4] = [
     (
         "",
         &[
@@ -497,10 +514,20 @@ const RING_KEYS: [(&str, &[&str]); 3] = [
             "damping_note",
             "smooth",
             "rough",
+            "viscosity",
         ],
     ),
     ("smooth", &PREDICTION_KEYS),
     ("rough", &PREDICTION_KEYS),
+    ("viscosity", &VISCOSITY_KEYS),
+];
+
+const VISCOSITY_KEYS: [&str; 5] = [
+    "translational",
+    "collisional",
+    "total",
+    "dlnnu_dlntau",
+    "overstability",
 ];
 
 const PREDICTION_KEYS: [&str; 8] = [

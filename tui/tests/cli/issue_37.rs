@@ -636,6 +636,7 @@ fn issue_37_json_keys_come_in_the_documented_order() {
                         "damping_note",
                         "smooth",
                         "rough",
+                        "viscosity",
                     ],
                 ),
                 ("smooth", ring_prediction.to_vec()),

@@ -126,17 +126,27 @@ fn issue_38_a_list_with_fractions_and_the_a_rule() {
     );
 }
 
-/// One size through `--radii` is today's `rime ring` (c, H, verdict), and today's output is unchanged.
+/// One size through `--radii` is today's `rime ring` (c, H, verdict); one-size output has no bins
+/// and gains the same `viscosity` (the issue: ν for one size and for a distribution), every digit.
 #[test]
 fn issue_38_one_size_is_todays_ring() {
     let today = json(&with(&["--format", "json"]));
-    assert!(today.get("size_bins").is_none() && today.get("viscosity").is_none());
+    assert!(today.get("size_bins").is_none());
     let one = json(&with(&["--radii", "2cm", "--format", "json"]));
     let bin = &one["size_bins"][0];
     assert_eq!(bin["velocity_dispersion"], today["velocity_dispersion"]);
     assert_eq!(bin["thickness"], today["thickness"]);
     assert_eq!(one["verdict"], today["verdict"]);
     assert_eq!(one["verdict_words"], today["verdict_words"]);
+    assert_eq!(one["viscosity"], today["viscosity"]);
+    let nu = &today["viscosity"];
+    let (t, c) = (
+        nu["translational"].as_f64().unwrap(),
+        nu["collisional"].as_f64().unwrap(),
+    );
+    assert!(t > 0.0 && c > 0.0);
+    assert_eq!(nu["total"].as_f64().unwrap(), t + c);
+    assert_eq!(nu["overstability"], "not_assessed");
 }
 
 #[test]
