@@ -36,7 +36,9 @@
 // level (`finestPreview`); a preview's time in the worker counted `previewExtraMs` longer (a test
 // clock, no wait: it counts as slow on any machine, and the check reads the time the page read);
 // the next refinement paused in its worker after its first unit, where it would look for a newer
-// request, until `resumeRefinement()` (`pauseRefinement`, once); an input landing just before a
+// request, until `resumeRefinement()` (`pauseRefinement`, once); a split refinement waiting for its
+// peer's share however long the share takes (`waitForShare`: on a busy machine the share may come
+// after the refining worker stopped waiting and computed it itself); an input landing just before a
 // frame is drawn (`beforeFrame`); and a canvas's pixels wherever it is drawn (`layers`, set by
 // app.js).
 
@@ -51,6 +53,7 @@ export const testHooks = {
   previewExtraMs: 0,
   beforeFrame: null,
   pauseRefinement: false,
+  waitForShare: false,
   events: [],
   /** Parks every later event of `name` until `fire` or `release`. */
   hold(name) { if (!held.has(name)) held.set(name, []); },
@@ -110,12 +113,14 @@ export function testView(view) {
   if (testHooks.fail.length) view.fail = [...testHooks.fail];
   if (testHooks.sweep) view.sweep = testHooks.sweep;
   if (testHooks.pauseRefinement) { view.testPauseRefinement = true; testHooks.pauseRefinement = false; }
+  if (testHooks.waitForShare) view.testWaitShare = true;
   return view;
 }
 
 /** A preview's view with the check's stand-in: its time in the worker counted `previewExtraMs` longer. */
 export function testPreview(view) {
   delete view.testPauseRefinement;
+  delete view.testWaitShare;
   if (testHooks.previewExtraMs > 0) view.testPreviewExtraMs = testHooks.previewExtraMs;
   return view;
 }

@@ -50,8 +50,9 @@ function takeShare(gen, waitMs) {
   inbox.clear();
   if (got) return Promise.resolve(got);
   return new Promise((resolve) => {
-    const timer = setTimeout(() => { waiter = null; resolve(null); }, waitMs);
-    waiter = { gen, resolve: (m) => { clearTimeout(timer); waiter = null; resolve(m); } };
+    // null: a check waits for the share however long it takes (www/test-hooks.js `waitForShare`).
+    const timer = waitMs === null ? null : setTimeout(() => { waiter = null; resolve(null); }, waitMs);
+    waiter = { gen, resolve: (m) => { if (timer !== null) clearTimeout(timer); waiter = null; resolve(m); } };
   });
 }
 
@@ -60,7 +61,7 @@ function takeShare(gen, waitMs) {
  *  cancelled when the next edit arrives, and the worker keeps its memo); with `split`, the peer's
  *  share, waited for as long as this worker's own units took (computing the rest here takes about
  *  that long); then whatever did not come. The frame `computeFrame` gives, bit for bit. */
-async function refine(gen, scene, view, split, pause) {
+async function refine(gen, scene, view, split, pause, waitShare) {
   const p = new PendingFrame(scene, view, split ? 2 : 1);
   try {
     const t0 = performance.now();
@@ -80,7 +81,7 @@ async function refine(gen, scene, view, split, pause) {
     let helped = 0;
     if (split) {
       const tw = performance.now();
-      const share = await takeShare(gen, Math.max(2, tw - t0 - waited));
+      const share = await takeShare(gen, waitShare ? null : Math.max(2, tw - t0 - waited));
       waited += performance.now() - tw;
       // A share that has not come is computed here: the peer may stop.
       if (!share && peer) peer.postMessage({ type: 'done', gen });
@@ -126,9 +127,9 @@ const ringMemo = { key: '', out: null };
 
 /** An exception's message for the page. */
 const message = (e) => String(e && e.message ? e.message : e);
-/** A view without the end-to-end test's stand-ins (`testPreviewExtraMs`, `testPauseRefinement`;
+/** A view without the end-to-end test's stand-ins (`testPreviewExtraMs`, `testPauseRefinement`, `testWaitShare`;
  *  www/test-hooks.js), and them. */
-const splitTestKeys = ({ testPreviewExtraMs, testPauseRefinement, ...view }) => ({ view, testPreviewExtraMs, testPauseRefinement });
+const splitTestKeys = ({ testPreviewExtraMs, testPauseRefinement, testWaitShare, ...view }) => ({ view, testPreviewExtraMs, testPauseRefinement, testWaitShare });
 
 /** The ring card of `scene` for the inputs `r` over the chart's speeds `chart` ([from, to]),
  *  with the tidal card's planet and distance `tidal` (or null; memoised). */
@@ -211,7 +212,7 @@ self.onmessage = async (ev) => {
     const t0 = performance.now();
     try {
       // The end-to-end test's stand-in: a preview's time counted longer (a test clock, no wait).
-      const { view, testPreviewExtraMs, testPauseRefinement } = splitTestKeys(full);
+      const { view, testPreviewExtraMs, testPauseRefinement, testWaitShare } = splitTestKeys(full);
       const t1 = performance.now();
       // A preview is never exported: it goes without records (issue 26).
       const viewJson = JSON.stringify(preview ? { ...view, records: false } : view);
@@ -220,7 +221,7 @@ self.onmessage = async (ev) => {
       let waited = 0;
       if (preview) f = computeFrame(msg.scene, viewJson);
       else {
-        const done = await refine(msg.gen, msg.scene, viewJson, Boolean(split && peer), Boolean(testPauseRefinement));
+        const done = await refine(msg.gen, msg.scene, viewJson, Boolean(split && peer), Boolean(testPauseRefinement), Boolean(testWaitShare));
         if (!done) {
           self.postMessage({ type: 'frame', gen: msg.gen, preview, last: true, stale: true, ms: performance.now() - t0 });
           return;

@@ -823,6 +823,9 @@ try {
     // ice at `integrated` costs more than a frame's time, so from the second edit on the preview's
     // worker computes a share of the refinement's units and sends it to the other (rime_core::explorer::share).
     const ps = await openPreset(context, 'split', 'ice', 'integrated', '?workers=2');
+    // The refining worker waits for its peer's share however long it takes (on a busy machine the
+    // share used to come after the wait, and the refinement computed it itself: no split).
+    await ps.evaluate(() => { window.rimeTest.waitForShare = true; });
     const slider = ps.locator('input[type=range][data-path="bulk.youngs_modulus"]');
     let split = false;
     for (let k = 0; k < 4 && !split; k++) {
