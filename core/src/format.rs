@@ -73,6 +73,18 @@ pub fn qty(v: f64, unit: &str) -> String {
     qty_sig(v, unit, 4)
 }
 
+/// The unit a kinematic viscosity (or any area per time) of size `x` \[m²/s\] is written in, with
+/// its scale: m²/s, cm²/s, mm²/s or µm²/s, the largest that keeps `x` at or above 0.01 of it. A
+/// ring's ν and its parts are written in the unit of the total, so that they add up as printed.
+pub fn area_per_time_unit(x: f64) -> (f64, &'static str) {
+    for (scale, unit) in [(1.0, "m²/s"), (1e-4, "cm²/s"), (1e-6, "mm²/s")] {
+        if x.abs() >= 0.01 * scale {
+            return (scale, unit);
+        }
+    }
+    (1e-12, "µm²/s")
+}
+
 /// Like [`qty`] with 3 significant digits.
 pub fn qty3(v: f64, unit: &str) -> String {
     qty_sig(v, unit, 3)
@@ -179,6 +191,17 @@ pub fn agrees_to_printed(computed: f64, printed: f64) -> bool {
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn area_per_time_units_keep_the_value_at_or_above_a_hundredth() {
+        assert_eq!(area_per_time_unit(0.01), (1.0, "m²/s"));
+        assert_eq!(area_per_time_unit(0.0099), (1e-4, "cm²/s"));
+        assert_eq!(area_per_time_unit(1.01e-6), (1e-4, "cm²/s"));
+        assert_eq!(area_per_time_unit(9.9e-7), (1e-6, "mm²/s"));
+        assert_eq!(area_per_time_unit(1.01e-8), (1e-6, "mm²/s"));
+        assert_eq!(area_per_time_unit(9.9e-9), (1e-12, "µm²/s"));
+        assert_eq!(area_per_time_unit(-0.5), (1.0, "m²/s"));
+    }
     use super::*;
 
     #[test]

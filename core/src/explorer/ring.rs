@@ -330,11 +330,13 @@ pub fn ring_card_with_sizes(
 
 /// ν with its two parts and d ln ν/d ln τ, as a row prints it.
 fn viscosity_text(v: &Viscosity) -> String {
+    let (scale, unit) = crate::format::area_per_time_unit(v.total);
+    let q = |x: f64| format!("{} {unit}", sig(x / scale, 4));
     format!(
         "{} (translational {}, collisional {}); d ln ν/d ln τ = {}",
-        qty(v.total, "m²/s"),
-        qty(v.translational, "m²/s"),
-        qty(v.collisional, "m²/s"),
+        q(v.total),
+        q(v.translational),
+        q(v.collisional),
         sig(v.dlnnu_dlntau, 3)
     )
 }
@@ -606,7 +608,10 @@ mod tests {
         assert!(v.translational > 0.0 && v.collisional > 0.0);
         assert_eq!(v.total, v.translational + v.collisional);
         let row = card.rows.iter().find(|r| r.label == "viscosity ν").unwrap();
-        assert!(row.text.starts_with(&qty(v.total, "m²/s")), "{}", row.text);
+        // 2 cm ice at τ = 0.5 has ν ~ 1e-7 m²/s: written in mm²/s, 4 significant digits.
+        assert!((1e-8..1e-6).contains(&v.total), "{}", v.total);
+        let printed = format!("{} mm²/s", sig(v.total * 1e6, 4));
+        assert!(row.text.starts_with(&printed), "{} vs {printed}", row.text);
     }
 
     /// A distribution adds its rows after the one-size rows and leaves the chart's parts alone;
@@ -661,7 +666,11 @@ mod tests {
         let (s, l) = (rec.size_bins[0], rec.size_bins[2]);
         assert!(s.velocity_dispersion > l.velocity_dispersion);
         assert!(small.contains(&qty(s.velocity_dispersion, "m/s")));
-        assert!(text("viscosity ν (all sizes)").starts_with(&qty(rec.viscosity.total, "m²/s")));
+        let nu = rec.viscosity.total;
+        assert!((1e-8..1e-6).contains(&nu), "{nu}");
+        assert!(
+            text("viscosity ν (all sizes)").starts_with(&format!("{} mm²/s", sig(nu * 1e6, 4)))
+        );
     }
 
     #[test]

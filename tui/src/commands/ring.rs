@@ -236,7 +236,7 @@ pub fn run(common: &Common, args: &Args) -> CliResult<String> {
                 String::new(),
             ]);
             // ν in one area unit for all three (as the many-sizes table writes it).
-            let (area_scale, area) = area_unit(viscosity.total);
+            let (area_scale, area) = rime_core::format::area_per_time_unit(viscosity.total);
             rows.extend(values.iter().map(|(k, v, u)| match (*u, v) {
                 ("m²/s", Some(x)) => {
                     vec![k.clone(), output::num(x / area_scale), area.to_string()]
@@ -359,7 +359,8 @@ fn run_sizes(
                     let (v, u) = v.split_once(',').unwrap_or((&v, ""));
                     match (u, v.parse::<f64>()) {
                         ("m²/s", Ok(x)) => {
-                            let (scale, u) = area_unit(rec.viscosity.total);
+                            let (scale, u) =
+                                rime_core::format::area_per_time_unit(rec.viscosity.total);
                             vec![k.to_string(), output::num(x / scale), u.to_string()]
                         }
                         _ => vec![k.to_string(), v.to_string(), u.to_string()],
@@ -393,7 +394,7 @@ fn run_sizes(
                 &bins,
             ));
             let nu = |x: f64| {
-                let (scale, u) = area_unit(rec.viscosity.total);
+                let (scale, u) = rime_core::format::area_per_time_unit(rec.viscosity.total);
                 format!("{} {u}", sig(x / scale, 4))
             };
             s.push_str(&format!(
@@ -420,17 +421,6 @@ fn run_sizes(
             s
         }
     })
-}
-
-/// The unit \[scale in m²/s, name\] for kinematic viscosities of the size of `x`: the largest of
-/// m²/s, cm²/s, mm²/s, µm²/s that leaves it at least 0.01 (tables for people).
-fn area_unit(x: f64) -> (f64, &'static str) {
-    for (scale, unit) in [(1.0, "m²/s"), (1e-4, "cm²/s"), (1e-6, "mm²/s")] {
-        if x.abs() >= 0.01 * scale {
-            return (scale, unit);
-        }
-    }
-    (1e-12, "µm²/s")
 }
 
 /// The ring-wide rows `name → "value,unit"` (CSV with every digit).
