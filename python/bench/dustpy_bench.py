@@ -35,24 +35,10 @@ def best(f, repeats):
 
 
 def import_dustpy_offline():
-    """`import dustpy` asks PyPI for a newer version (a socket to 8.8.8.8, left open); the
-    benchmark refuses the connection (DustPy then skips the check) and restores the timeout."""
-    import socket
+    """DustPy without its network check (`rime_grains.dustpy.import_offline`)."""
+    from rime_grains.dustpy import import_offline
 
-    connect, timeout = socket.socket.connect, socket.getdefaulttimeout()
-
-    def refuse(self, address):
-        raise OSError("benchmark: no network for DustPy's version check")
-
-    socket.socket.connect = refuse
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", ResourceWarning)
-            import dustpy
-    finally:
-        socket.socket.connect = connect
-        socket.setdefaulttimeout(timeout)
-    return dustpy
+    return import_offline()
 
 
 def main():

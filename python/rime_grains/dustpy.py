@@ -350,6 +350,36 @@ class Attachment:
         self._attached = False
 
 
+def import_offline():
+    """Imports DustPy without its network check and returns the module.
+
+    `import dustpy` (1.0.9) opens a socket to 8.8.8.8 and asks PyPI for a newer version, leaves
+    that socket unclosed (a ResourceWarning) and the process's default socket timeout at 0.5 s.
+    Here the connection is refused while DustPy is imported (DustPy then skips the check), and the
+    default timeout is put back: for machines without a network (clusters, CI) and for runs that
+    should not touch it. A DustPy already imported is returned as it is.
+    """
+    import socket
+    import sys
+
+    if "dustpy" in sys.modules:
+        return sys.modules["dustpy"]
+    connect, timeout = socket.socket.connect, socket.getdefaulttimeout()
+
+    def refuse(self, address):
+        raise OSError("rime_grains.dustpy.import_offline: no network for DustPy's version check")
+
+    socket.socket.connect = refuse
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ResourceWarning)
+            import dustpy
+    finally:
+        socket.socket.connect = connect
+        socket.setdefaulttimeout(timeout)
+    return dustpy
+
+
 def attach(sim, scene, *, a_rule="given", fit=None, temperature_rule="hold", convention="surface",
            accuracy="precise", velocity_distribution="maxwell", v_frag=None, v_frag_source=None,
            v_stick=None, temperature_step=0.01, cache_size=256):

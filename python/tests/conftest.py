@@ -29,30 +29,10 @@ def rime_cli():
 
 
 def import_dustpy_offline():
-    """Imports DustPy without its network check: `import dustpy` (1.0.9) opens a socket to
-    8.8.8.8 and asks PyPI for a newer version, leaves that socket unclosed (a ResourceWarning) and
-    the process's default socket timeout at 0.5 s. Here the connection is refused (DustPy then
-    skips the check), and the default timeout is put back."""
-    import socket
-    import sys
-    import warnings
+    """DustPy without its network check (the package's `rime_grains.dustpy.import_offline`)."""
+    from rime_grains.dustpy import import_offline
 
-    if "dustpy" in sys.modules:
-        return sys.modules["dustpy"]
-    connect, timeout = socket.socket.connect, socket.getdefaulttimeout()
-
-    def refuse(self, address):
-        raise OSError("tests: no network for DustPy's version check")
-
-    socket.socket.connect = refuse
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", ResourceWarning)
-            import dustpy
-    finally:
-        socket.socket.connect = connect
-        socket.setdefaulttimeout(timeout)
-    return dustpy
+    return import_offline()
 
 
 import_dustpy_offline()

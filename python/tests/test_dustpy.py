@@ -415,3 +415,30 @@ def test_issue_39_kernel_equals_the_command_line():
         # Both outcomes compared (with the fitted A of 7 ns every pair has a threshold).
         assert any(r["status"] == "threshold" for r in cli["records"])
         assert any(r["status"] == "always_sticks" for r in cli["records"]) == (rule == "given")
+
+
+def test_import_offline_touches_no_network_and_keeps_the_timeout():
+    """`rime_grains.dustpy.import_offline` in a fresh process: DustPy imported with every
+    connection refused (none is attempted past it) and the default socket timeout unchanged."""
+    code = """
+import socket, sys
+attempts = []
+def recording(self, address):
+    attempts.append(address)
+    raise OSError("no network in this test")
+socket.socket.connect = recording
+socket.setdefaulttimeout(7.0)
+from rime_grains.dustpy import import_offline
+dustpy = import_offline()
+assert "dustpy" in sys.modules and dustpy is sys.modules["dustpy"]
+assert attempts == [], attempts
+assert socket.getdefaulttimeout() == 7.0, socket.getdefaulttimeout()
+assert socket.socket.connect is recording
+print("ok")
+"""
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr[-2000:]
+    assert done.stdout.strip() == "ok"
