@@ -34,6 +34,17 @@ if [ -n "$missing" ]; then
     scripts/setup-apt.sh
   fi
   echo "setup-python: installing $(echo $missing | tr '\n' ' ')"
-  # shellcheck disable=SC2086
-  "$venv/bin/python" -m pip install -q --disable-pip-version-check $missing
+  # REBOUNDx links librebound through a run path to the site-packages it was built for: a wheel
+  # from pip's cache, built for another virtual environment, cannot load it. So REBOUNDx is built
+  # here for this one (about 5 s), after rebound is in place, and never taken from the cache.
+  others=$(echo "$missing" | grep -v '^reboundx==' || true)
+  reboundx=$(echo "$missing" | grep '^reboundx==' || true)
+  if [ -n "$others" ]; then
+    # shellcheck disable=SC2086
+    "$venv/bin/python" -m pip install -q --disable-pip-version-check $others
+  fi
+  if [ -n "$reboundx" ]; then
+    "$venv/bin/python" -m pip install -q --disable-pip-version-check --no-binary reboundx \
+      --no-cache-dir "$reboundx"
+  fi
 fi
