@@ -371,8 +371,6 @@ pub struct RingPage {
     pub viscosity: crate::applications::ring_sizes::Viscosity,
     /// The ring of many sizes, when the card has one.
     pub sizes: Option<crate::applications::ring_sizes::SizeRingRecord>,
-    /// The size choices the card offers, in order.
-    pub size_choices: Vec<super::catalogue::RingSizeChoice>,
 }
 
 /// A chart line as the page draws it (`stroke` by name; `color` an index into the palette's series).
@@ -431,7 +429,6 @@ pub fn ring_page(scene: &str, input: &str) -> Result<RingPage, String> {
         record: card.record,
         viscosity: card.viscosity,
         sizes: card.sizes,
-        size_choices: super::catalogue::ring_sizes(),
     })
 }
 
@@ -876,7 +873,6 @@ mod tests {
                 "record",
                 "rows",
                 "sentence",
-                "size_choices",
                 "sizes",
                 "verdict",
                 "viscosity"
@@ -933,7 +929,8 @@ mod tests {
         )
         .unwrap();
         assert!(one["sizes"].is_null());
-        assert_eq!(one["size_choices"][1]["name"], "to_5r");
+        // The page offers the choices from the catalogue (`ringSizes`), by the names it sends.
+        assert_eq!(crate::explorer::catalogue::ring_sizes()[1].name, "to_5r");
         let many = serde_json::to_value(
             ring_page(
                 &scene,
