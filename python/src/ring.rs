@@ -5,6 +5,32 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rime_core::ring::{Orbit, RingPatch, equilibrium};
 
+/// The orbit from Ω or a planet's mass and distance, refused naming the field (both functions of
+/// this module take the same three keywords).
+fn orbit_of(
+    omega: Option<f64>,
+    planet_mass: Option<f64>,
+    distance: Option<f64>,
+) -> PyResult<Orbit> {
+    match (omega, planet_mass, distance) {
+        (Some(o), None, None) => Ok(Orbit::Omega(o)),
+        (None, Some(m), Some(d)) => Ok(Orbit::Planet {
+            planet_mass: m,
+            distance: d,
+        }),
+        (Some(_), _, _) => Err(value_error(
+            "omega",
+            "give omega or planet_mass and distance, not both",
+        )),
+        (None, Some(_), None) => Err(value_error("distance", "required with planet_mass")),
+        (None, None, Some(_)) => Err(value_error("planet_mass", "required with distance")),
+        (None, None, None) => Err(value_error(
+            "omega",
+            "required (or planet_mass and distance)",
+        )),
+    }
+}
+
 /// The ring's equilibrium: the same fields as `rime ring --format json`.
 #[pyfunction]
 #[pyo3(signature = (scene, *, tau, omega = None, planet_mass = None, distance = None, radius = None, scale_damping = false, damping_set_for = None))]
@@ -22,27 +48,7 @@ pub(crate) fn ring_equilibrium<'py>(
     scale_damping: bool,
     damping_set_for: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let orbit = match (omega, planet_mass, distance) {
-        (Some(o), None, None) => Orbit::Omega(o),
-        (None, Some(m), Some(d)) => Orbit::Planet {
-            planet_mass: m,
-            distance: d,
-        },
-        (Some(_), _, _) => {
-            return Err(value_error(
-                "omega",
-                "give omega or planet_mass and distance, not both",
-            ));
-        }
-        (None, Some(_), None) => return Err(value_error("distance", "required with planet_mass")),
-        (None, None, Some(_)) => return Err(value_error("planet_mass", "required with distance")),
-        (None, None, None) => {
-            return Err(value_error(
-                "omega",
-                "required (or planet_mass and distance)",
-            ));
-        }
-    };
+    let orbit = orbit_of(omega, planet_mass, distance)?;
     // core_error names the field (`scale_damping: expected a radius other than the scene's …`).
     // A given for other grains than the scene's (issue 35): `damping_set_for`, else the scene's.
     let set_for = damping_set_for.unwrap_or(scene.scene.grains.radius_1);
@@ -123,27 +129,7 @@ pub(crate) fn ring_sizes_equilibrium(
     damping_rule: &str,
 ) -> PyResult<String> {
     use rime_core::ring_sizes::{DampingRule, SizeDistribution, SizeRingInput};
-    let orbit = match (omega, planet_mass, distance) {
-        (Some(o), None, None) => Orbit::Omega(o),
-        (None, Some(m), Some(d)) => Orbit::Planet {
-            planet_mass: m,
-            distance: d,
-        },
-        (Some(_), _, _) => {
-            return Err(value_error(
-                "omega",
-                "give omega or planet_mass and distance, not both",
-            ));
-        }
-        (None, Some(_), None) => return Err(value_error("distance", "required with planet_mass")),
-        (None, None, Some(_)) => return Err(value_error("planet_mass", "required with distance")),
-        (None, None, None) => {
-            return Err(value_error(
-                "omega",
-                "required (or planet_mass and distance)",
-            ));
-        }
-    };
+    let orbit = orbit_of(omega, planet_mass, distance)?;
     let rule = match damping_rule {
         "same" => DampingRule::Same,
         "keep_epsilon" => DampingRule::KeepEpsilon,
