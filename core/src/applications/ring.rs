@@ -57,6 +57,21 @@ pub enum Orbit {
 }
 
 impl Orbit {
+    /// Ω \[1/s\]: as given, or `√(GM/d³)`; errors name `omega`, `planet_mass` or `distance`.
+    pub fn omega(self) -> Result<f64> {
+        match self {
+            Orbit::Omega(o) => positive("omega", o),
+            Orbit::Planet {
+                planet_mass,
+                distance,
+            } => {
+                let m = positive("planet_mass", planet_mass)?;
+                let d = positive("distance", distance)?;
+                positive("omega", sqrt(G * m / d / d / d))
+            }
+        }
+    }
+
     /// The tidal appendix's planet and distance (the explorer's tidal card), as an orbit.
     pub fn of_tidal(input: &crate::applications::tidal::TidalInput) -> Orbit {
         Orbit::Planet {
@@ -572,17 +587,7 @@ pub fn equilibrium(scene: &Scene, input: &RingInput) -> Result<RingRecord> {
         5.0,
         "must lie in (0, 5]",
     )?;
-    let omega = match input.orbit {
-        Orbit::Omega(o) => positive("omega", o)?,
-        Orbit::Planet {
-            planet_mass,
-            distance,
-        } => {
-            let m = positive("planet_mass", planet_mass)?;
-            let d = positive("distance", distance)?;
-            positive("omega", sqrt(G * m / d / d / d))?
-        }
-    };
+    let omega = input.orbit.omega()?;
     let radius = scene.grains.radius_1;
     if scene.grains.radius_2 != radius {
         return Err(Error::InvalidValue {

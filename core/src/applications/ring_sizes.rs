@@ -29,7 +29,6 @@ use crate::scene::contact::Contact;
 
 /// The inputs an impact average's error blames for a ring of many sizes.
 const RADII: &str = "tau, omega, radii";
-use crate::applications::tidal::G;
 use crate::scene::{Damping, Scene};
 use alloc::vec::Vec;
 use core::f64::consts::PI;
@@ -604,20 +603,6 @@ fn solve_linear(a: &mut [f64], mut b: Vec<f64>, k: usize) -> Option<Vec<f64>> {
     x.iter().all(|v| v.is_finite()).then_some(x)
 }
 
-fn omega_of(orbit: Orbit) -> Result<f64> {
-    match orbit {
-        Orbit::Omega(o) => positive("omega", o),
-        Orbit::Planet {
-            planet_mass,
-            distance,
-        } => {
-            let m = positive("planet_mass", planet_mass)?;
-            let d = positive("distance", distance)?;
-            positive("omega", sqrt(G * m / d / d / d))
-        }
-    }
-}
-
 fn build(scene: &Scene, tau: f64, omega: f64, bins: &[Bin], rule: DampingRule) -> Result<Model> {
     let r_ref = scene.grains.radius_1;
     if scene.grains.radius_2 != r_ref {
@@ -816,7 +801,7 @@ pub fn equilibrium(scene: &Scene, input: &SizeRingInput) -> Result<SizeRingRecor
         5.0,
         "must lie in (0, 5]",
     )?;
-    let omega = omega_of(input.orbit)?;
+    let omega = input.orbit.omega()?;
     let bins = input.sizes.bins()?;
     let model = build(scene, tau, omega, &bins, input.damping_rule)?;
     let state = model.solve()?;
