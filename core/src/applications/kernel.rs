@@ -19,7 +19,7 @@
 //! `v_stick = 10^(5(u* − log₁₀ β))` with `Ψ(u*) = c`: `v_stick/g_s` is a function of the
 //! dimensionless damping at the elastic threshold, `β g_s^(1/5)`, alone. `g_s ∝ γ^(5/6)` and `β`
 //! and `g_s` of a pair are computed once for all temperatures; each (pair, temperature) then costs
-//! one root of `Ψ` on the master curve's Chebyshev table ([`crate::master`]), bracketed between
+//! one root of `Ψ` on the master curve's Chebyshev table ([`crate::normal::viscoelastic::master`]), bracketed between
 //! `g_s` (ε ≤ 1: sticks there) and [`crate::applications::stick::SEARCH_MAX`], never an integration. With an
 //! offset layer the bulk is reached at `g − g_s,layer` (Eq. (9)): the threshold shifts by
 //! `g_s,layer`. The literal layer reading and the integrated accuracy levels have no such form:
@@ -53,11 +53,11 @@ use crate::applications::ring_sizes::DampingRule;
 use crate::applications::stick::{self, Convention, SEARCH_MAX};
 use crate::data::atlas;
 use crate::error::{Error, Result};
-use crate::master::{self, Resolution};
+use crate::normal::viscoelastic::master::{self, Resolution};
 use crate::numerics::accuracy::Accuracy;
 use crate::numerics::math::{exp, ln, log10};
 use crate::scene::contact::Contact;
-use crate::scene::{Adhesion, AdhesionModulus, ContactEnd, Damping, LayerReading, Scene};
+use crate::scene::{ContactEnd, Damping, LayerReading, Scene};
 use alloc::vec::Vec;
 
 /// The atlas entry γ(T) comes from.
@@ -313,16 +313,7 @@ pub fn gamma(temperature: f64, options: &KernelOptions) -> Result<Gamma> {
 /// `base` with radii `r1`, `r2`, adhesion on with the paper's γ `gamma` (the modulus reading of
 /// `base`'s adhesion, `as_printed` if it has none) and, when given, damping time `a`.
 fn pair_scene(base: &Scene, r1: f64, r2: f64, gamma: f64, a: Option<f64>) -> Result<Scene> {
-    let mut s = *base;
-    s.grains.radius_1 = r1;
-    s.grains.radius_2 = r2;
-    s.adhesion = Some(Adhesion {
-        surface_energy: gamma,
-        modulus: base
-            .adhesion
-            .map_or(AdhesionModulus::AsPrinted, |a| a.modulus),
-        jkr_end: Default::default(),
-    });
+    let mut s = stick::pair_scene_for(base, r1, r2, gamma)?;
     if let Some(a) = a {
         s.bulk.damping = Damping::Time(a);
     }

@@ -87,9 +87,15 @@ pub struct Threshold {
 /// The scene used for a threshold: `base` with both radii set to `radius` and adhesion on with the
 /// paper's γ (the modulus reading of `base`'s adhesion, `as_printed` if it has none).
 pub fn scene_for(base: &Scene, radius: f64, gamma: f64) -> Result<Scene> {
+    pair_scene_for(base, radius, radius, gamma)
+}
+
+/// [`scene_for`] with two radii: `base` with radii `r1`, `r2` and adhesion on with the paper's γ
+/// (the kernel's pairs of unequal grains).
+pub fn pair_scene_for(base: &Scene, r1: f64, r2: f64, gamma: f64) -> Result<Scene> {
     let mut s = *base;
-    s.grains.radius_1 = radius;
-    s.grains.radius_2 = radius;
+    s.grains.radius_1 = r1;
+    s.grains.radius_2 = r2;
     s.adhesion = Some(Adhesion {
         surface_energy: gamma,
         modulus: base
