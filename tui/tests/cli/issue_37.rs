@@ -2,17 +2,8 @@
 //! JSON and CSV with every digit), `ring`'s "heats" line, units on `collision`'s tangential rows,
 //! `tidal`'s verdict, did-you-mean, `--set` on an absent section, underflow, help width, exit codes.
 
-use crate::bin::rime_binary;
+use crate::bin::rime;
 use std::process::Command;
-
-fn rime(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(rime_binary()).args(args).output().unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).to_string(),
-        String::from_utf8_lossy(&out.stderr).to_string(),
-    )
-}
 
 fn ok(args: &[&str]) -> String {
     let (code, out, err) = rime(args);

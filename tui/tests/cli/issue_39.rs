@@ -2,18 +2,8 @@
 //! records, equal radii against `rime stick`, symmetry, the provenance, the A rules, the figure,
 //! the table for people and bad flags named.
 
-use crate::bin::rime_binary;
+use crate::bin::rime;
 use serde_json::Value;
-use std::process::Command;
-
-fn rime(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(rime_binary()).args(args).output().unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).to_string(),
-        String::from_utf8_lossy(&out.stderr).to_string(),
-    )
-}
 
 fn json(args: &[&str]) -> Value {
     let (code, out, err) = rime(args);
